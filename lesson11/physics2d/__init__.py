@@ -1,0 +1,25 @@
+"""physics2d: the Lesson 11 rigid-body physics, one concept per module.
+
+    vectors    cross, spin_velocity, input checks
+    shapes     box_points, regular_polygon, convex_polygon, polygon_inertia, Polygon, Circle
+    bodies     Body
+    collision  sat, inside, circle_polygon, circle_circle, contact points, circle_toi
+    response   apply_impulse, resolve, separate
+    world      World (fixed step, solver iterations, declared effects)
+    draw       debug drawing with pygame
+
+Units: px, s, rad; y grows downward; a positive angle turns clockwise on screen.
+"""
+from .bodies import Body
+from .collision import (TOUCH_TOLERANCE, centre_of, circle_circle, circle_polygon, circle_polygon_toi,
+                        circle_toi, clip_contact_points, closest_on_segment, contact_points,
+                        edge_normals, inside, orient_a_to_b, project, sat)
+from .response import (PERCENT, RESTING_SPEED, SLOP, apply_impulse, effective_mass_inverse,
+                       relative_velocity, resolve, separate)
+from .shapes import (Circle, Polygon, box_points, convex_polygon, polygon_area, polygon_centroid,
+                     polygon_inertia, regular_polygon)
+from .vectors import Vector2, cross, spin_velocity
+from .world import EFFECTS, LESSON_EFFECTS, Contact, World
+
+GRAVITY = Vector2(0, 980)  # px/s², the course's gravity
+STEP = 1 / 120             # s, the course's fixed physics step

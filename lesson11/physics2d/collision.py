@@ -1,0 +1,256 @@
+"""Collision detection: is there an overlap, along which normal, how deep, and where?
+
+Every test here works on world-space points (lists of Vector2, px). Each
+answer that has a direction gives the normal pointing from A to B, so that
+moving B by normal * depth (or A by the opposite) separates the pair.
+
+Exact touching counts as apart: an overlap of at most TOUCH_TOLERANCE px is
+reported as no contact, so a pair pushed out by exactly its depth stays apart
+despite rounding.
+"""
+import math
+
+from .vectors import Vector2, cross
+
+TOUCH_TOLERANCE = 1e-6  # px: overlaps this small are "touching", i.e. apart
+
+
+def edge_normals(points):
+    """Unit normals (-e.y, e.x) / |e| of each edge e = p[i+1] - p[i]; zero-length edges are skipped."""
+    normals = []
+    for i, a in enumerate(points):
+        edge = points[(i + 1) % len(points)] - a
+        if edge.length_squared() > 0:
+            normals.append(Vector2(-edge.y, edge.x).normalize())
+    return normals
+
+
+def project(points, axis):
+    """The shadow of the points on a unit axis: (min p·axis, max p·axis), in px."""
+    dots = [p.dot(axis) for p in points]
+    return min(dots), max(dots)
+
+
+def centre_of(points):
+    """Average of the points (px): the centre the lesson uses to orient normals."""
+    return sum(points, Vector2()) / len(points)
+
+
+def sat(pa, pb):
+    """Separating Axis Test for two convex polygons given as world points.
+
+    Projects both onto every edge normal of both. One axis with
+    overlap = min(max_a, max_b) - max(min_a, min_b) <= TOUCH_TOLERANCE means
+    apart: returns None. Otherwise returns (normal, depth): the axis with the
+    smallest overlap, oriented from A to B, and that overlap in px (the
+    minimum translation vector).
+    """
+    best_axis, best_depth = None, math.inf
+    for axis in edge_normals(pa) + edge_normals(pb):
+        min_a, max_a = project(pa, axis)
+        min_b, max_b = project(pb, axis)
+        overlap = min(max_a, max_b) - max(min_a, min_b)
+        if overlap <= TOUCH_TOLERANCE:
+            return None  # a gap (or exact touching): apart
+        if overlap < best_depth:
+            best_axis, best_depth = axis, overlap
+    return orient_a_to_b(best_axis, pa, pb), best_depth
+
+
+def orient_a_to_b(axis, pa, pb):
+    """Flip the axis if needed so it points from A's centre to B's: (cB - cA)·axis >= 0.
+
+    When the centres coincide along the axis, the middles of the two shadows
+    decide; when those coincide too (the pair is symmetric), the axis is made
+    to point right, or down if vertical, so the answer is still well defined.
+    """
+    along = (centre_of(pb) - centre_of(pa)).dot(axis)
+    if abs(along) <= TOUCH_TOLERANCE:
+        min_a, max_a = project(pa, axis)
+        min_b, max_b = project(pb, axis)
+        along = (min_b + max_b) - (min_a + max_a)
+    if abs(along) <= TOUCH_TOLERANCE:
+        along = axis.x if abs(axis.x) > TOUCH_TOLERANCE else axis.y
+    return -axis if along < 0 else Vector2(axis)
+
+
+def inside(point, points):
+    """True if point is inside or on the outline of a convex polygon (either winding).
+
+    For each edge a→b the signed distance cross(b - a, point - a) / |b - a|
+    must have the same sign for every edge; distances within TOUCH_TOLERANCE px
+    of an edge count as on it.
+    """
+    left = right = False
+    for i, a in enumerate(points):
+        edge = points[(i + 1) % len(points)] - a
+        side = edge.cross(point - a)  # Vector2.cross is the same 2D cross product as cross()
+        limit = TOUCH_TOLERANCE * edge.length()
+        if side > limit:
+            left = True
+        elif side < -limit:
+            right = True
+        if left and right:
+            return False  # on the outer side of some edge
+    return True
+
+
+def closest_on_segment(p, a, b):
+    """The point of segment a–b nearest to p: a + (b - a) t with t = clamp((p - a)·(b - a) / |b - a|², 0, 1)."""
+    ab = b - a
+    length_squared = ab.dot(ab)
+    if length_squared == 0:
+        return Vector2(a)  # a zero-length edge is a point
+    t = max(0.0, min(1.0, (p - a).dot(ab) / length_squared))
+    return a + ab * t
+
+
+def circle_polygon(center, radius, points):
+    """Circle (center px, radius px) against a convex polygon (world points).
+
+    Finds the closest point q on the outline. Outside and |q - center| < radius:
+    normal = (q - center) / |q - center|, depth = radius - |q - center|.
+    Centre inside: the push goes the other way, depth = radius + |q - center|.
+    Centre on the outline: normal points from the centre to the polygon's middle.
+    Returns None when apart (touching counts as apart), else (normal from the
+    circle into the polygon, depth px).
+    """
+    closest = min((closest_on_segment(center, points[i], points[(i + 1) % len(points)])
+                   for i in range(len(points))), key=lambda q: center.distance_squared_to(q))
+    offset = closest - center
+    dist = offset.length()
+    if dist <= TOUCH_TOLERANCE:  # centre on the outline: push away from the middle
+        return (centre_of(points) - center).normalize(), radius
+    if inside(center, points):  # centre already inside: push out the other way
+        return -offset / dist, radius + dist
+    if dist >= radius - TOUCH_TOLERANCE:
+        return None
+    return offset / dist, radius - dist
+
+
+def circle_circle(center_a, radius_a, center_b, radius_b):
+    """Two circles: None if apart, else (normal from A to B, depth = ra + rb - |cB - cA|).
+
+    Coincident centres get the normal (1, 0).
+    """
+    offset = center_b - center_a
+    dist = offset.length()
+    depth = radius_a + radius_b - dist
+    if depth <= TOUCH_TOLERANCE:
+        return None
+    normal = offset / dist if dist > TOUCH_TOLERANCE else Vector2(1, 0)
+    return normal, depth
+
+
+def contact_points(pa, pb, normal):
+    """The lesson's contact rule: corners of A inside B, then corners of B inside A, at most two.
+
+    If edges cross with no corner inside, the deepest corner of B along the
+    normal (smallest p·normal) stands in.
+    """
+    corners = [p for p in pa if inside(p, pb)] + [p for p in pb if inside(p, pa)]
+    if not corners:
+        corners = [min(pb, key=lambda p: p.dot(normal))]
+    return corners[:2]
+
+
+def _best_edge(points, direction):
+    """The edge (v1, v2) whose outward face looks most along `direction`, and its farthest corner."""
+    n = len(points)
+    i = max(range(n), key=lambda k: points[k].dot(direction))
+    v, before, after = points[i], points[i - 1], points[(i + 1) % n]
+    to_before = v - before
+    to_after = v - after
+    if to_before.length_squared() > 0 and to_after.length_squared() > 0 and \
+            abs(to_before.normalize().dot(direction)) <= abs(to_after.normalize().dot(direction)):
+        return before, v, v
+    return v, after, v
+
+
+def _clip(v1, v2, direction, offset):
+    """Keep the part of segment v1–v2 where p·direction >= offset (Sutherland–Hodgman, one plane)."""
+    d1, d2 = v1.dot(direction) - offset, v2.dot(direction) - offset
+    kept = [p for p, d in ((v1, d1), (v2, d2)) if d >= 0]
+    if d1 * d2 < 0:
+        kept.append(v1 + (v2 - v1) * (d1 / (d1 - d2)))
+    return kept
+
+
+def clip_contact_points(pa, pb, normal):
+    """Contact points by edge clipping, as production engines compute them (up to two).
+
+    The reference edge is the face most perpendicular to the normal (of A along
+    +normal or of B along -normal); the other shape's facing edge (incident) is
+    clipped to the reference edge's side planes, and points behind the
+    reference face are kept. Returns the clipped points (world px).
+    """
+    a1, a2, a_far = _best_edge(pa, normal)
+    b1, b2, b_far = _best_edge(pb, -normal)
+    if abs((a2 - a1).normalize().dot(normal)) <= abs((b2 - b1).normalize().dot(normal)):
+        ref1, ref2, ref_far, inc1, inc2, ref_normal = a1, a2, a_far, b1, b2, normal
+    else:
+        ref1, ref2, ref_far, inc1, inc2, ref_normal = b1, b2, b_far, a1, a2, -normal
+    side = (ref2 - ref1).normalize()
+    kept = _clip(inc1, inc2, side, side.dot(ref1))
+    if len(kept) == 2:
+        kept = _clip(kept[0], kept[1], -side, -side.dot(ref2))
+    face = ref_normal.dot(ref_far)
+    points = [p for p in kept if ref_normal.dot(p) <= face + TOUCH_TOLERANCE]
+    return points or contact_points(pa, pb, normal)
+
+
+def circle_toi(p1, v1, r1, p2, v2, r2, dt):
+    """Time in [0, dt] (s) when two moving circles first touch, or None.
+
+    Solves |dp + dv t| = r1 + r2 with dp = p2 - p1, dv = v2 - v1:
+    a t² + b t + c = 0 with a = dv·dv, b = 2 dp·dv, c = dp·dp - (r1 + r2)²,
+    and takes the earlier root t = (-b - √(b² - 4ac)) / 2a. Returns 0.0 when
+    already touching.
+    """
+    dp, dv = p2 - p1, v2 - v1
+    radius = r1 + r2
+    c = dp.dot(dp) - radius * radius
+    if c <= 0:
+        return 0.0  # already touching
+    a = dv.dot(dv)
+    b = 2 * dp.dot(dv)
+    disc = b * b - 4 * a * c
+    if a == 0 or disc < 0:
+        return None  # not moving relative to each other, or the paths miss
+    t = (-b - math.sqrt(disc)) / (2 * a)  # the earlier root: first contact
+    return t if 0 <= t <= dt else None
+
+
+def circle_polygon_toi(center, vel, radius, points, dt):
+    """Swept test of a circle moving at vel (px/s) against a still convex polygon, over dt s.
+
+    The circle first touches either an edge face, when its centre reaches the
+    edge's line moved out by radius, t = (radius - (c - a)·n) / (v·n) with n the
+    outward normal, or a corner, found by circle_toi against a circle of radius 0.
+    Returns (t, normal from the circle into the polygon) for the earliest t in
+    [0, dt], or None.
+    """
+    hit = circle_polygon(center, radius, points)
+    if hit is not None:
+        return 0.0, hit[0]
+    middle = centre_of(points)
+    best = None
+    for i, a in enumerate(points):
+        b = points[(i + 1) % len(points)]
+        edge = b - a
+        if edge.length_squared() == 0:
+            continue
+        normal = Vector2(-edge.y, edge.x).normalize()
+        if (a - middle).dot(normal) < 0:
+            normal = -normal  # outward
+        if vel.dot(normal) < 0:  # moving towards this face
+            t = (radius - (center - a).dot(normal)) / vel.dot(normal)
+            foot = center + vel * t - normal * radius
+            on_edge = closest_on_segment(foot, a, b).distance_to(foot) <= TOUCH_TOLERANCE * 1e3
+            if 0 <= t <= dt and on_edge and (best is None or t < best[0]):
+                best = (t, -normal)
+        t = circle_toi(center, vel, radius, a, Vector2(), 0.0, dt)
+        if t is not None and (best is None or t < best[0]):
+            touch = center + vel * t
+            best = (t, (a - touch).normalize())
+    return best

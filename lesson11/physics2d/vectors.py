@@ -1,0 +1,50 @@
+"""The two small vector helpers every other module uses, and input checks.
+
+Conventions for the whole package: positions in px, time in s, angles in rad,
+y grows downward, so a positive angle turns a shape clockwise on screen.
+"""
+import math
+
+from pygame import Vector2
+
+__all__ = ["Vector2", "cross", "spin_velocity", "finite_number", "finite_vector"]
+
+
+def cross(a, b):
+    """2D cross product of two vectors, a scalar in px² (or px²/s, ...).
+
+    cross(a, b) = a.x * b.y - a.y * b.x, the z component of the 3D cross
+    product. It is positive when b lies clockwise of a on the screen.
+    """
+    return a.x * b.y - a.y * b.x
+
+
+def spin_velocity(omega, r):
+    """Velocity (px/s) of a point at offset r (px) on a body spinning at omega (rad/s).
+
+    This is omega × r in 2D: the vector (-omega * r.y, omega * r.x), at right
+    angles to r and omega * |r| long.
+    """
+    return Vector2(-omega * r.y, omega * r.x)
+
+
+def finite_number(value, name):
+    """Return value as a float, or raise ValueError naming `name` if it is NaN, infinite or not a number."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number, got {value!r}") from None
+    if not math.isfinite(number):
+        raise ValueError(f"{name} must be finite, got {number}")
+    return number
+
+
+def finite_vector(value, name):
+    """Return value as a new Vector2, or raise ValueError naming `name` if it is not two finite numbers."""
+    try:
+        vector = Vector2(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a pair of numbers (x, y), got {value!r}") from None
+    if not (math.isfinite(vector.x) and math.isfinite(vector.y)):
+        raise ValueError(f"{name} must be finite, got ({vector.x}, {vector.y})")
+    return vector
