@@ -57,8 +57,6 @@ def _load_from_environment():
             configure(json.load(handle))
 
 
-_load_from_environment()
-
 
 def active():
     """True when the checker drives this run."""
@@ -147,3 +145,6 @@ def write_record():
     _written = True
     with open(_settings["record"], "w", encoding="utf-8") as handle:
         json.dump({"frames_run": min(_frame, _settings.get("frames", 600)), "records": _records}, handle)
+
+
+_load_from_environment()
