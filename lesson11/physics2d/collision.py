@@ -148,7 +148,10 @@ def contact_points(pa, pb, normal):
     If edges cross with no corner inside, the deepest corner of B along the
     normal (smallest p·normal) stands in.
     """
-    corners = [p for p in pa if inside(p, pb)] + [p for p in pb if inside(p, pa)]
+    corners = []
+    for p in [p for p in pa if inside(p, pb)] + [p for p in pb if inside(p, pa)]:
+        if p not in corners:  # a repeated corner is one contact, not two
+            corners.append(p)
     if not corners:
         corners = [min(pb, key=lambda p: p.dot(normal))]
     return corners[:2]
@@ -156,6 +159,7 @@ def contact_points(pa, pb, normal):
 
 def _best_edge(points, direction):
     """The edge (v1, v2) whose outward face looks most along `direction`, and its farthest corner."""
+    points = [p for i, p in enumerate(points) if p != points[i - 1]] or points[:1]  # no zero-length edges
     n = len(points)
     i = max(range(n), key=lambda k: points[k].dot(direction))
     v, before, after = points[i], points[i - 1], points[(i + 1) % n]
