@@ -353,7 +353,7 @@ def save_screenshots(folder):
 
 
 def main(argv=None, frames=None):
-    """Open the window and run until it is closed (or for `frames` frames, for scripted runs)."""
+    """Open the window and run until it is closed (or for `frames` frames). Returns the exit code."""
     parser = argparse.ArgumentParser(prog="python -m lesson11.explorer", description="The SAT explorer.")
     parser.add_argument("--screenshots", metavar="FOLDER",
                         help="save sat_explorer.png and sat_explorer_overlap.png in FOLDER and exit")
@@ -372,21 +372,30 @@ def main(argv=None, frames=None):
         screen = pygame.display.set_mode((WIDTH, HEIGHT))
         pygame.display.set_caption("SAT explorer")
         pygame.key.set_repeat(300, 40)  # hold an arrow key to keep moving
-        clock = pygame.time.Clock()
-        explorer = Explorer()
-        running = True
-        frame = 0
-        while running and (frames is None or frame < frames):
-            for event in pygame.event.get():
-                if not explorer.handle_event(event):
-                    running = False
-            explorer.draw(screen)
-            pygame.display.flip()
-            clock.tick(60)
-            frame += 1
+        run(Explorer(), screen, frames)
         return 0
     finally:
         pygame.quit()
+
+
+def run(explorer, screen, frames=None):
+    """The event loop: handle events, draw, show, 60 frames a second.
+
+    Stops when the window is closed or Escape is pressed, or after `frames`
+    frames if given. Returns the number of frames drawn.
+    """
+    clock = pygame.time.Clock()
+    running = True
+    frame = 0
+    while running and (frames is None or frame < frames):
+        for event in pygame.event.get():
+            if not explorer.handle_event(event):
+                running = False
+        explorer.draw(screen)
+        pygame.display.flip()
+        clock.tick(60)
+        frame += 1
+    return frame
 
 
 if __name__ == "__main__":

@@ -1,0 +1,117 @@
+"""The terminal quiz: its five questions, and `python -m lesson11.quiz` driven through stdin."""
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+from lesson11 import quiz
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+QUESTIONS = quiz.load_questions()
+KEY = [q["answer"] for q in QUESTIONS]
+
+
+def run_quiz(stdin, *args):
+    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    return subprocess.run([sys.executable, "-m", "lesson11.quiz", *args], cwd=ROOT, env=env, input=stdin,
+                          capture_output=True, text=True, timeout=60)
+
+
+def wrong(letter):
+    return "A" if letter != "A" else "B"
+
+
+def test_the_lessons_five_questions_with_answers_and_one_line_explanations():
+    assert len(QUESTIONS) == 5
+    topics = ["gap between their shadows", "flip the best axis", "cross(ra, n) ** 2 * a.inv_inertia",
+              "jt = max(-mu * j, min(mu * j, jt))", "3000 px/s bullet"]
+    for item, topic in zip(QUESTIONS, topics):
+        assert topic in item["question"]
+        assert item["answer"] in "ABCD"
+        assert "\n" not in item["explanation"] and len(item["explanation"]) > 40
+        assert len(set(item["choices"].values())) == 4
+    assert len(set(KEY)) >= 3  # the right answers are not all in one place
+    # the right choices say what the lesson says
+    assert "not touching" in QUESTIONS[0]["choices"][KEY[0]]
+    assert "from A to B" in QUESTIONS[1]["choices"][KEY[1]]
+    assert "turns body A" in QUESTIONS[2]["choices"][KEY[2]]
+    assert "never larger than mu times the normal impulse" in QUESTIONS[3]["choices"][KEY[3]]
+    assert "time of impact" in QUESTIONS[4]["choices"][KEY[4]]
+
+
+def test_all_right_scores_five():
+    result = run_quiz("\n".join(KEY) + "\n")
+    assert result.returncode == 0 and result.stderr == ""
+    assert result.stdout.count("Right!") == 5
+    assert "Score: 5 of 5 answered right." in result.stdout
+
+
+def test_wrong_answers_are_corrected_with_the_explanation():
+    answers = [wrong(k).lower() for k in KEY]  # lower case is accepted
+    result = run_quiz("\n".join(answers) + "\n")
+    assert result.returncode == 0
+    for item in QUESTIONS:
+        assert f"Not quite: the answer is {item['answer']}. {item['explanation']}" in result.stdout
+    assert "Right!" not in result.stdout
+    assert "Score: 0 of 5 answered right." in result.stdout
+
+
+def test_bad_input_is_asked_again_and_end_of_input_stops_cleanly():
+    stdin = f"E\n\n  {KEY[0]}  \n42\n{wrong(KEY[1])}\n"  # then the input ends during question 3
+    result = run_quiz(stdin)
+    assert result.returncode == 0 and result.stderr == ""
+    assert result.stdout.count("Please answer with one letter") == 3
+    assert "'E'" in result.stdout and "'42'" in result.stdout
+    assert "Question 3 of 5" in result.stdout and "Question 4 of 5" not in result.stdout
+    assert "end of input" in result.stdout
+    assert "Score: 1 of 2 answered right (3 not answered)." in result.stdout
+
+
+def test_empty_input_ends_with_a_zero_score():
+    result = run_quiz("")
+    assert result.returncode == 0 and "Traceback" not in result.stderr
+    assert "Score: 0 of 0 answered right (5 not answered)." in result.stdout
+
+
+def test_answer_key():
+    result = run_quiz("", "--answers")
+    lines = result.stdout.splitlines()
+    assert [line.split(":")[0] for line in lines] == [f"{n}. {k}" for n, k in enumerate(KEY, start=1)]
+
+
+@pytest.mark.parametrize("content, message", [
+    (None, "cannot read"),
+    ("[{\"question\": ", "not valid JSON"),
+    ("[]", "non-empty list"),
+    (json.dumps([{"question": "q", "choices": {"A": "", "B": "", "C": "", "D": ""}, "answer": "A"}]),
+     "question 1 has no 'explanation'"),
+    (json.dumps([{"question": "q", "choices": {"A": "", "B": ""}, "answer": "A", "explanation": "e"}]),
+     "exactly the letters A, B, C and D"),
+    (json.dumps([{"question": "q", "choices": {"A": "", "B": "", "C": "", "D": ""}, "answer": "E",
+                  "explanation": "e"}]), "'answer' must be one of"),
+])
+def test_bad_question_files_give_one_line_errors(tmp_path, content, message):
+    path = tmp_path / "questions.json"
+    if content is not None:
+        path.write_text(content, encoding="utf-8")
+    result = run_quiz("", "--questions", str(path))
+    assert result.returncode == 2
+    assert result.stdout == ""
+    assert result.stderr.count("\n") == 1
+    assert str(path) in result.stderr and message in result.stderr
+
+
+def test_run_quiz_in_process_counts_right_and_asked(capsys):
+    replies = iter(["x", KEY[0], wrong(KEY[1])])
+
+    def ask(prompt):
+        try:
+            return next(replies)
+        except StopIteration:
+            raise EOFError from None
+
+    assert quiz.run_quiz(QUESTIONS, ask) == (1, 2)
+    out = capsys.readouterr().out
+    assert "Please answer" in out and "Score: 1 of 2" in out
