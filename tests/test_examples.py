@@ -88,3 +88,23 @@ def test_ball_push_out_moves_only_the_ball_by_exactly_the_depth():
     # one hundredth of a pixel back towards the ramp, and they overlap again by that much
     closer = circle_polygon(ball.pos + normal * 0.01, 12, ramp.world_points())
     assert closer is not None and closer[1] == pytest.approx(0.01, abs=1e-6)
+
+
+def test_lesson_text_quotes_what_the_examples_print_and_its_links_resolve():
+    import re
+    text = open(os.path.join(ROOT, "lesson11", "README.md"), encoding="utf-8").read()
+    for name, lines in LESSON_LINES.items():
+        for line in lines:
+            if not line.startswith("Body(") and not line.startswith("box formula") and \
+                    not line.startswith("polygon_inertia("):
+                assert line in text, f"lesson11/README.md does not quote {name}: {line!r}"
+    assert "I = 216.67" in text
+    for folder, readme in (("lesson11", "README.md"), ("lesson11/examples", "README.md")):
+        body = open(os.path.join(ROOT, folder, readme), encoding="utf-8").read()
+        targets = re.findall(r"\]\(([^)#\s]+)", body)
+        assert targets
+        for target in targets:
+            path = os.path.normpath(os.path.join(ROOT, folder, target))
+            if path.startswith(os.path.join(ROOT, "starters")) or path.startswith(os.path.join(ROOT, "checker")):
+                continue  # the exercise's starter and the checker are other parts of the bundle
+            assert os.path.exists(path), f"{folder}/{readme} links to missing {target}"
