@@ -294,7 +294,8 @@ class Explorer:
         surface.blit(big, (20, 16))
         for row, line in enumerate(self.lines()):
             surface.blit(self.font.render(line, True, TEXT), (20, 66 + 24 * row))
-        help_text = "arrows/drag: move orange   Q/E, wheel: turn orange   A/D: turn blue   N/Space: next axis   R: reset"
+        help_text = ("arrows/drag: move orange   Q/E, wheel: turn orange   A/D: turn blue   "
+                     "N/Space: next axis   R: reset")
         surface.blit(self.font.render(help_text, True, DIM_TEXT), (20, self.height - 28))
 
         # the Next axis button
