@@ -52,8 +52,11 @@ class Body:
             self.inv_mass = self.inv_inertia = 0.0
             self.inertia = 0.0
         else:
-            self.inv_mass = 1 / mass
             self.inertia = shape.inertia(mass)
+            if not (0 < self.inertia < math.inf and 1 / mass < math.inf and 1 / self.inertia < math.inf):
+                raise ValueError(f"body mass {mass:g} with this shape gives a moment of inertia of {self.inertia:g}, "
+                                 "too small or too large to invert; use a mass and size nearer 1")
+            self.inv_mass = 1 / mass
             self.inv_inertia = 1 / self.inertia
 
     @classmethod

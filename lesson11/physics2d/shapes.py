@@ -77,9 +77,14 @@ def convex_polygon(points):
     """Validate a convex polygon and return its corners re-centred on the centroid.
 
     Accepts either winding. Duplicate consecutive points are dropped. Raises
-    ValueError when there are fewer than 3 distinct points, a point is not
-    finite, the area is zero, or the outline turns both ways (not convex).
+    ValueError when `points` is not a list of points, there are fewer than 3
+    distinct points, a point is not finite, the area is zero, the outline turns
+    both ways (not convex), or it goes round more than once (a star).
     """
+    try:
+        points = list(points)
+    except TypeError:
+        raise ValueError(f"a polygon needs a list of (x, y) points, got {points!r}") from None
     pts = [finite_vector(p, f"polygon point {i}") for i, p in enumerate(points)]
     distinct = []
     for p in pts:
@@ -92,13 +97,18 @@ def convex_polygon(points):
     area = polygon_area(distinct)
     scale = max(max(abs(p.x), abs(p.y)) for p in distinct)
     if abs(area) <= POINT_TOLERANCE * max(1.0, scale * scale):
-        raise ValueError("a polygon needs a non-zero area; these points lie on one line")
+        raise ValueError("a polygon needs a non-zero area; these points lie on one line or the outline crosses itself")
     turns = [cross(distinct[(i + 1) % len(distinct)] - a,
                    distinct[(i + 2) % len(distinct)] - distinct[(i + 1) % len(distinct)])
              for i, a in enumerate(distinct)]
     tolerance = POINT_TOLERANCE * max(1.0, scale * scale)
     if any(t > tolerance for t in turns) and any(t < -tolerance for t in turns):
         raise ValueError("a polygon must be convex (no dents); split a concave shape into convex pieces")
+    edges = [distinct[(i + 1) % len(distinct)] - a for i, a in enumerate(distinct)]
+    winding = sum(math.atan2(cross(e, edges[(i + 1) % len(edges)]), e.dot(edges[(i + 1) % len(edges)]))
+                  for i, e in enumerate(edges))
+    if abs(abs(winding) - 2 * math.pi) > 1e-6:  # a star turns one way but goes round more than once
+        raise ValueError("a polygon must be convex (no dents); this outline goes round more than once and crosses itself")
     centre = polygon_centroid(distinct)
     return [p - centre for p in distinct]
 

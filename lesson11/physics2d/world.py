@@ -48,6 +48,12 @@ class World:
         self.slop = finite_number(slop, "world slop")
         self.percent = finite_number(percent, "world percent")
         self.resting_speed = finite_number(resting_speed, "world resting_speed")
+        if self.slop < 0:
+            raise ValueError(f"world slop must be >= 0 px, got {self.slop}")
+        if not 0 <= self.percent <= 1:
+            raise ValueError(f"world percent must be between 0 and 1, got {self.percent}")
+        if self.resting_speed < 0:
+            raise ValueError(f"world resting_speed must be >= 0 px/s, got {self.resting_speed}")
         self.max_frame = self._positive(max_frame, "world max_frame")
         if contact_rule not in ("corners", "clip"):
             raise ValueError(f"contact_rule must be 'corners' or 'clip', got {contact_rule!r}")
