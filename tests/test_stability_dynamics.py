@@ -1,0 +1,199 @@
+"""Stability suite, dynamics: scenes that make naive engines sink, jitter, explode or tunnel.
+
+Every world uses the lesson's solver (corners contact rule, 6 iterations,
+slop 0.5 px, percent 0.4, step 1/120 s) unless the scene declares otherwise.
+Measured figures (2026-11-22) sit next to each bound.
+
+Three cases of the issue are NOT met by the lesson's solver and are kept as
+strict xfails, so they turn into failures the day the solver is improved and
+the bound can be tightened: the 10-box stack, the base-8 pyramid and the
+100:1 mass ratio. Why (measured, see the reasons): the friction impulse is
+clamped by the normal impulse of the same pass, not an accumulated one, which
+leaves a resting box a residual spin of 0.0021 rad/s that no number of
+iterations removes (6 → 24 iterations: same), and there is no warm starting,
+so the support from the floor must be rebuilt every step through the whole
+stack (10 boxes) or against a 100:1 mass ratio (heavy box loses 1/101 of its
+speed per pass). Declared settings were tried (clip contacts; 12, 24, 100,
+300 iterations; slop 0.1 with percent 0.2; step 1/480 s; no friction): none
+holds.
+"""
+import pytest
+
+from lesson11.physics2d import LESSON_EFFECTS, Body, Circle, Polygon, World, box_points
+from scenes import (FLOOR_TOP, box_pyramid, box_stack, busy_box, crate_pile, displacement, floor, positions,
+                    total_energy)
+
+TWENTY_SECONDS = 2400  # steps of 1/120 s
+
+
+def steps_until_drift(world, steps, bound):
+    """Step up to `steps` times; return (largest displacement px, steps run), stopping once it passes `bound`."""
+    start = positions(world.bodies)
+    worst = 0.0
+    for done in range(1, steps + 1):
+        world.step()
+        worst = max(worst, displacement(world.bodies, start))
+        if worst > bound:
+            return worst, done
+    return worst, steps
+
+
+def test_single_box_rests_for_20_s():
+    """Hard case: one box resting on the floor for 20 simulated seconds does not walk or sink."""
+    world = World(box_stack(1))
+    drift, _ = steps_until_drift(world, TWENTY_SECONDS, bound=1.0)
+    # measured 0.50 px (0.24 px sinking to the slop, then the residual spin of the friction clamp); bound 1 px
+    assert drift < 1.0
+    assert abs(world.bodies[1].angle) < 0.05  # measured 0.0132 rad
+
+
+@pytest.mark.xfail(strict=True, reason="lesson solver: per-pass friction clamp, no warm starting; measured: the "
+                   "top box sinks 3.7 px in 10 steps and the stack falls (corners: 150 000 px; clip: 321 px)")
+@pytest.mark.parametrize("rule", ["corners", "clip"])
+def test_stack_of_10_boxes_stands_for_20_s(rule):
+    """Hard case: a vertical stack of 10 boxes (40 px, mass 1) stands 20 s with drift under 1 px."""
+    drift, steps = steps_until_drift(World(box_stack(10), contact_rule=rule), TWENTY_SECONDS, bound=1.0)
+    assert drift < 1.0, f"drift {drift:.2f} px after {steps} steps"
+
+
+@pytest.mark.xfail(strict=True, reason="lesson solver: no accumulated impulses; measured: the pyramid sinks "
+                   "6.6 px in the first second and drifts 84 px between 1 s and 5 s")
+def test_pyramid_of_base_8_stands_for_20_s():
+    """Hard case: a pyramid of 36 boxes, 8 on the bottom row, stands 20 s with drift under 1 px."""
+    drift, steps = steps_until_drift(World(box_pyramid(8)), TWENTY_SECONDS, bound=1.0)
+    assert drift < 1.0, f"drift {drift:.2f} px after {steps} steps"
+
+
+@pytest.mark.xfail(strict=True, reason="lesson solver: a light box under a 100× heavier one stops only 1/101 of "
+                   "its speed per pass; measured: the heavy box ends fully inside the light one with 6, 30, 100 "
+                   "and 300 iterations")
+def test_heavy_box_on_light_box_does_not_sink_through():
+    """Hard case: a box 100 times heavier resting on a light one (both 40 px) stays on top for 20 s."""
+    light = Body(box_points(40, 40), (400, FLOOR_TOP - 20), 1.0)
+    heavy = Body(box_points(40, 40), (400, FLOOR_TOP - 60), 100.0)
+    world = World([floor(), light, heavy])
+    for _ in range(TWENTY_SECONDS):
+        world.step()
+        sunk = 40 - (light.pos.y - heavy.pos.y)
+        assert sunk < 2.0, f"heavy box sank {sunk:.2f} px into the light one at t = {world.time:.2f} s"
+
+
+def test_light_box_on_heavy_box_stays_on_top():
+    """Hard case, the easy direction: a light box on a 100× heavier one must not sink either."""
+    heavy = Body(box_points(40, 40), (400, FLOOR_TOP - 20), 100.0)
+    light = Body(box_points(40, 40), (400, FLOOR_TOP - 60), 1.0)
+    world = World([floor(), heavy, light])
+    worst = 0.0
+    for _ in range(TWENTY_SECONDS // 4):
+        world.step()
+        worst = max(worst, 40 - (heavy.pos.y - light.pos.y))
+    assert worst < 1.0  # measured 0.51 px (the 0.5 px slop plus one step of gravity); bound 1 px
+
+
+@pytest.mark.parametrize("gravity", [(0, 0), (0, 980)])
+def test_boxes_starting_25_percent_overlapped_separate_without_exploding(gravity):
+    """Hard case: two 40 px boxes placed 10 px (25 %) into each other on the floor.
+
+    The push-out must separate them down to the slop without giving them speed.
+    """
+    a = Body(box_points(40, 40), (400, FLOOR_TOP - 20), 1.0)
+    b = Body(box_points(40, 40), (430, FLOOR_TOP - 20), 1.0)
+    world = World([floor(), a, b], gravity=gravity)
+    fastest = spin = 0.0
+    for _ in range(600):
+        world.step()
+        fastest = max(fastest, a.vel.length(), b.vel.length())
+        spin = max(spin, abs(a.omega), abs(b.omega))
+    assert fastest < 1.0     # measured 0 px/s without gravity, 0.058 px/s with it; bound 1 px/s
+    assert spin < 0.05       # measured 0 and 0.0023 rad/s
+    overlap = 40 - (b.pos.x - a.pos.x)
+    assert overlap <= world.slop + 0.01  # measured 0.500 and 0.494 px: separated down to the slop
+
+
+@pytest.mark.parametrize("shape, height", [("circle", 200.0), ("circle", 400.0), ("box", 200.0)])
+def test_restitution_1_bounce_never_rises_above_the_drop(shape, height):
+    """Hard case: restitution 1 on both bodies: no bounce may come back higher than 1.001 × the drop height."""
+    body_shape = Circle(10) if shape == "circle" else Polygon(box_points(20, 20))
+    rest_y = FLOOR_TOP - 10
+    ball = Body(body_shape, (400, rest_y - height), 1.0, restitution=1.0)
+    world = World([floor(restitution=1.0), ball])
+    peaks, best, rising = [], None, False
+    for _ in range(6 * 120):
+        world.step()
+        if ball.vel.y < 0:
+            rising = True
+            best = ball.pos.y if best is None else min(best, ball.pos.y)
+        elif rising:
+            peaks.append((rest_y - best) / height)
+            rising, best = False, None
+    assert peaks, "the body never bounced"
+    # measured highest bounce: 0.9923 (circle, 200 px), 0.9818 (circle, 400 px), 0.112 (box: spins); bound 1.001
+    assert max(peaks) <= 1.001
+
+
+def test_fast_bullet_with_ccd_stops_at_a_thin_wall_and_tunnels_without():
+    """Hard case: a 3000 px/s, 2 px bullet against a 4 px static wall (25 px per step, 6 × the wall).
+
+    Without "ccd" it passes through; with it, it never gets past the wall's near face.
+    """
+    def shoot(effects, speed):
+        wall = Body(box_points(4, 600), (300, 300), 0)
+        bullet = Body(Circle(2), (100, 300), 0.1, vel=(speed, 0), bullet=True)
+        world = World([wall, bullet], effects=effects)
+        furthest = bullet.pos.x
+        for _ in range(60):
+            world.step()
+            furthest = max(furthest, bullet.pos.x)
+        return furthest
+
+    assert shoot(LESSON_EFFECTS, 3000) > 1000  # measured 1603 px: tunnelled
+    for speed in (3000, 12000, 100000):
+        # near face at x = 298, so the centre may reach 296; measured exactly 296.0 at all three speeds
+        assert shoot(LESSON_EFFECTS | {"ccd"}, speed) <= 296 + 1e-6
+
+
+@pytest.mark.parametrize("steps", [
+    10_000,
+    pytest.param(100_000, marks=pytest.mark.slow),
+])
+def test_busy_scene_stays_finite_and_bounded(steps):
+    """Hard case: 10⁵ steps (833 simulated s) of a box, a ball and a CCD bullet bouncing in a closed box.
+
+    No NaN or infinity (World.step raises on one), nobody leaves the container,
+    and the total energy never exceeds its start. ~0.5 ms per step: the 10⁵
+    version (about 50 s) is marked slow.
+    """
+    world = busy_box()
+    start_energy = total_energy(world, ground=300)
+    worst_energy = worst_outside = 0.0
+    for done in range(1, steps + 1):
+        world.step()
+        if done % 50 == 0:
+            worst_energy = max(worst_energy, total_energy(world, ground=300))
+            for body in world.bodies[4:]:
+                left, top, right, bottom = body.aabb()
+                worst_outside = max(worst_outside, -left, right - 400, -top, bottom - 300)
+    assert all(body.is_finite() for body in world.bodies)
+    assert worst_energy <= start_energy  # measured: falls from 1.05e6 to 3.4e4 within 1000 steps
+    assert worst_outside < 2.0           # measured 0.70 px over 10⁴ steps (slop-sized overlaps at the walls)
+
+
+def test_resting_pile_energy_stays_bounded():
+    """Hard case: 6 random crates piled in a bin; once settled (3 s) their energy must not grow.
+
+    The push-out lifts bodies a little (potential energy), so a small rise is
+    allowed: bound 1 % of the settled energy, and no crate above 10 units of
+    kinetic energy (a 40 px crate at ~4 px/s).
+    """
+    world = World(crate_pile())
+    for _ in range(360):
+        world.step()
+    settled = total_energy(world)
+    highest = settled
+    liveliest = 0.0
+    for _ in range(840):
+        world.step()
+        highest = max(highest, total_energy(world))
+        liveliest = max(liveliest, max(b.kinetic_energy() for b in world.bodies))
+    assert highest <= settled * 1.01  # measured +0.16 % over 7 s; bound 1 %
+    assert liveliest < 10.0           # measured 1.87
