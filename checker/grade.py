@@ -1,0 +1,130 @@
+"""Grading one lab file, and many in parallel.
+
+A lab file is graded in two stages, each in isolated child processes:
+  1. the probe: import the file and test its own functions (one child);
+  2. if it imports and keeps its lab-runtime lines: one child per scenario.
+All children of all files share one pool of `jobs` worker slots, so a class
+folder keeps every core busy. A file's source is read once (the checker never
+writes to it); if the file changes while it is graded the result is an error.
+"""
+import hashlib
+import os
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+
+from .checks import ERROR, PASS, Error, skipped_all
+from .sandbox import Limits, run_child
+
+
+@dataclass
+class Context:
+    """What the checks of one lab see."""
+    path: str
+    name: str
+    source: str
+    probe: object = None
+    scenarios: dict = field(default_factory=dict)
+    diagnoses: set = field(default_factory=set)
+
+
+@dataclass
+class LabReport:
+    """The graded result of one file."""
+    path: str
+    lab: object
+    results: list
+    seconds: float
+
+    @property
+    def score(self):
+        return sum(r.score for r in self.results)
+
+    @property
+    def max_score(self):
+        return sum(r.max_score for r in self.results)
+
+    @property
+    def passed(self):
+        return all(r.status == PASS for r in self.results)
+
+    @property
+    def status(self):
+        if self.passed:
+            return "pass"
+        return "error" if any(r.status == ERROR for r in self.results) else "fail"
+
+
+class Grader:
+    """Runs child processes for many labs with at most `jobs` at a time and an overall deadline."""
+
+    def __init__(self, limits=None, jobs=None, total_timeout=None):
+        self.limits = limits or Limits()
+        self.jobs = max(1, jobs or os.cpu_count() or 1)
+        self.slots = threading.Semaphore(self.jobs)
+        self.deadline = None if not total_timeout else time.monotonic() + total_timeout
+        self.total_timeout = total_timeout
+
+    def _out_of_time(self):
+        return self.deadline is not None and time.monotonic() >= self.deadline
+
+    def run(self, lab_path, task, settings):
+        """One child run, waiting for a free slot; None if the whole run's time limit has passed."""
+        with self.slots:
+            if self._out_of_time():
+                return None
+            limits = self.limits
+            if self.deadline is not None:
+                left = self.deadline - time.monotonic()
+                limits = Limits(min(limits.timeout, max(left, 0.5)), limits.memory_mb, limits.max_output)
+            run = run_child(lab_path, task, settings, limits)
+        run.lab_path = lab_path
+        run.timeout = limits.timeout
+        run.memory_mb = limits.memory_mb
+        run.max_output = limits.max_output
+        return run
+
+    def grade(self, path, lab):
+        """Grade one file as `lab`; returns a LabReport. Never raises for anything the file does."""
+        start = time.monotonic()
+        path = os.path.abspath(path)
+        with open(path, "rb") as handle:
+            raw = handle.read()
+        digest = hashlib.sha256(raw).hexdigest()
+        source = raw.decode("utf-8", "replace")
+        ctx = Context(path=path, name=os.path.basename(path), source=source)
+        ctx.probe = self.run(path, "probe", {})
+        if ctx.probe is None:
+            return LabReport(path, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start)
+        if self._gate(lab, ctx):
+            wanted = lab.scenarios()
+            with ThreadPoolExecutor(max_workers=len(wanted)) as pool:
+                futures = {name: pool.submit(self.run, path, "scenario", settings)
+                           for name, settings in wanted.items()}
+                for name, future in futures.items():
+                    run = future.result()
+                    if run is not None:
+                        ctx.scenarios[name] = run
+        results = lab.checks.run(ctx)
+        with open(path, "rb") as handle:
+            if hashlib.sha256(handle.read()).hexdigest() != digest:
+                results = skipped_all(lab.checks, f"{ctx.name} changed while it was being graded; grade it again.")
+        return LabReport(path, lab, results, time.monotonic() - start)
+
+    def _late_message(self):
+        return f"not graded: the time limit for the whole run ({self.total_timeout:g} s) ran out first."
+
+    @staticmethod
+    def _gate(lab, ctx):
+        """True when the checks the scenarios depend on pass (so running the scenarios is worth it)."""
+        gate_ids = {"loads", "runtime_lines"}
+        for chk in lab.checks.checks:
+            if chk.id in gate_ids:
+                try:
+                    chk.func(ctx)
+                except Error:
+                    return False
+                except Exception:
+                    return False
+        return True

@@ -1,0 +1,39 @@
+"""The lab registry: which labs the checker knows, and how it tells which lab a file is.
+
+To add a lab, write a module like checker/tumbling_crates.py (CHECKS, TITLE,
+recognise(path, source), scenarios()) and add one row to LABS.
+"""
+from dataclasses import dataclass
+
+from . import tumbling_crates
+
+
+@dataclass(frozen=True)
+class Lab:
+    """One lab: its id (used in JSON and CSV), its title, and the module holding its checks."""
+    id: str
+    title: str
+    module: object
+
+    @property
+    def checks(self):
+        return self.module.CHECKS
+
+    def recognise(self, path, source):
+        return self.module.recognise(path, source)
+
+    def scenarios(self):
+        return self.module.scenarios()
+
+
+LABS = (
+    Lab("tumbling_crates", tumbling_crates.TITLE, tumbling_crates),
+)
+
+
+def identify(path, source):
+    """The Lab a file belongs to, or None."""
+    for lab in LABS:
+        if lab.recognise(path, source):
+            return lab
+    return None
