@@ -21,7 +21,12 @@ Settings (all optional):
   scenario      list of crates {"w", "h", "pos": [x, y], "angle" (rad), "vel", "omega"}
                 that replace the lab's dynamic bodies (static ones are kept)
   record        path of the JSON record to write at exit
-  record_every  record one frame in this many (default 1)
+  record_every  record one frame in this many (default 1); the last frame is always recorded
+  screenshot    path of a PNG of the window as it looked after the last frame
+
+Each recorded frame holds "frame", "contacts" (how many), "touching" (each
+contact: body indices "a" and "b", "point", "normal" A→B, "depth") and
+"bodies" (each: "static", "pos", "vel", "angle", "omega", "points").
 """
 import atexit
 import json
@@ -32,6 +37,8 @@ import pygame
 from .physics2d import Body, box_points
 
 ENV_VAR = "LESSON11_LAB_SETTINGS"
+SETTINGS = {"frames": int, "fps": (int, float), "seed": (int, float, str), "script": list, "scenario": list,
+            "record": str, "record_every": int, "screenshot": str}
 
 _settings = None       # None: a student's run, every hook passes through
 _frame = 0
@@ -39,9 +46,34 @@ _records = []
 _written = False
 
 
-def configure(settings):
+def check_settings(settings, source="lab settings"):
+    """Raise ValueError (one line naming `source` and the key) unless `settings` is a valid settings dict."""
+    if not isinstance(settings, dict):
+        raise ValueError(f"{source}: expected a JSON object of settings, got {type(settings).__name__}")
+    for key, value in settings.items():
+        if key not in SETTINGS:
+            raise ValueError(f"{source}: unknown setting {key!r}; known: {', '.join(SETTINGS)}")
+        if isinstance(value, bool) or not isinstance(value, SETTINGS[key]):
+            raise ValueError(f"{source}: setting {key!r} has the wrong type ({value!r})")
+    for key in ("fps", "record_every"):
+        if key in settings and settings[key] <= 0:
+            raise ValueError(f"{source}: setting {key!r} must be > 0, got {settings[key]!r}")
+    if settings.get("frames", 0) < 0:
+        raise ValueError(f"{source}: setting 'frames' must be >= 0, got {settings['frames']!r}")
+    for item in settings.get("script", []):
+        if not isinstance(item, dict) or not isinstance(item.get("frame"), int) \
+                or item.get("type") not in ("click", "key", "quit"):
+            raise ValueError(f"{source}: bad script item {item!r}; "
+                             'expected {"frame": n, "type": "click"|"key"|"quit", ...}')
+    for crate in settings.get("scenario", []):
+        if not isinstance(crate, dict) or not {"w", "h", "pos"} <= set(crate):
+            raise ValueError(f"{source}: bad scenario crate {crate!r}; expected {{\"w\", \"h\", \"pos\", ...}}")
+
+
+def configure(settings, source="lab settings"):
     """Switch the hooks to checker mode with `settings` (a dict, see the module docstring)."""
     global _settings, _frame, _records, _written
+    check_settings(settings, source)
     _settings = dict(settings)
     _frame = 0
     _records = []
@@ -50,12 +82,28 @@ def configure(settings):
         atexit.register(write_record)
 
 
-def _load_from_environment():
-    path = os.environ.get(ENV_VAR)
-    if path and _settings is None:
-        with open(path, encoding="utf-8") as handle:
-            configure(json.load(handle))
+def reset():
+    """Back to a student's run: every hook passes through again (nothing recorded so far is written)."""
+    global _settings, _frame, _records, _written
+    _settings, _frame, _records, _written = None, 0, [], False
 
+
+def _load_from_environment():
+    """Configure from the JSON file named by LESSON11_LAB_SETTINGS; a bad file stops with a one-line message."""
+    path = os.environ.get(ENV_VAR)
+    if not path or _settings is not None:
+        return
+    source = f"{ENV_VAR}={path}"
+    try:
+        with open(path, encoding="utf-8") as handle:
+            settings = json.load(handle)
+        configure(settings, source)
+    except OSError as exc:
+        raise SystemExit(f"{source}: cannot read the settings file ({exc.strerror})") from None
+    except json.JSONDecodeError as exc:
+        raise SystemExit(f"{source}: not valid JSON (line {exc.lineno}: {exc.msg})") from None
+    except ValueError as exc:
+        raise SystemExit(str(exc)) from None
 
 
 def active():
@@ -76,7 +124,19 @@ def frame_budget():
     if _settings is None:
         return True
     _frame += 1
-    return _frame <= _settings.get("frames", 600)
+    if _frame <= _settings.get("frames", 600):
+        return True
+    if _frame == _settings.get("frames", 600) + 1:
+        _save_screenshot()
+    return False
+
+
+def _save_screenshot():
+    """Save the window as it looked after the last frame to the settings' `screenshot` path (if any)."""
+    path = _settings.get("screenshot")
+    surface = pygame.display.get_surface() if pygame.display.get_init() else None
+    if path and surface is not None:
+        pygame.image.save(surface, path)
 
 
 def tick(clock, fps):
@@ -121,11 +181,14 @@ def record(bodies, contacts=()):
     """Remember this frame's body states (and contact count) for the checker; nothing for a student."""
     if _settings is None or not _settings.get("record"):
         return
-    if (_frame - 1) % _settings.get("record_every", 1):
+    last = _frame == _settings.get("frames", 600)
+    if (_frame - 1) % _settings.get("record_every", 1) and not last:
         return
+    index = {id(body): i for i, body in enumerate(bodies)}
     _records.append({
         "frame": _frame,
         "contacts": len(contacts),
+        "touching": [_contact(c, index) for c in contacts],
         "bodies": [{
             "static": body.inv_mass == 0,
             "pos": [body.pos.x, body.pos.y],
@@ -135,6 +198,13 @@ def record(bodies, contacts=()):
             "points": [[p.x, p.y] for p in body.world_points()],
         } for body in bodies],
     })
+
+
+def _contact(contact, index):
+    """One contact as plain data; works for physics2d Contact tuples (a, b, point, normal, depth)."""
+    return {"a": index.get(id(contact.a)), "b": index.get(id(contact.b)),
+            "point": [contact.point.x, contact.point.y], "normal": [contact.normal.x, contact.normal.y],
+            "depth": contact.depth}
 
 
 def write_record():

@@ -1,10 +1,14 @@
-"""Tumbling Crates: the Lesson 11 practice exercise (solution).
+"""Tumbling Crates: the Lesson 11 practice exercise.
 
-Rotating crates fall onto a floor and a 22° ramp. Your sat() finds each
-overlap, and your resolve() and apply_impulse() turn it into an impulse at
-the contact point that changes both velocity and spin, with Coulomb friction.
-Everything else (bodies, contact points, the push-out, the fixed-step world,
-drawing) comes from lesson11.physics2d.
+Rotating crates fall onto a floor and a 22° ramp. sat() finds each overlap,
+and resolve() and apply_impulse() turn it into an impulse at the contact point
+that changes both velocity and spin, with Coulomb friction. Everything else
+(bodies, contact points, the push-out, the fixed-step world, drawing) comes
+from lesson11.physics2d.
+
+The comments "Step 1" to "Step 7" follow the exercise's seven steps. Steps 2
+to 6 are the code between the lines `# --- step N: ... ---` and
+`# --- end of step N ---`: yours to write in the starter, done in the solution.
 
 Controls: left click drops a crate, R resets, D shows contact points and normals.
 Lines marked `# lab runtime` let the checker run this file headless; they
