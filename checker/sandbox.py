@@ -28,7 +28,7 @@ RECORD_LIMIT = 48 * 1024 * 1024  # bytes: largest record the parent will read
 class Limits:
     """Per-run limits: wall-clock seconds, address-space MB, output bytes (stdout + stderr)."""
     timeout: float = 20.0
-    memory_mb: int = 1024
+    memory_mb: int = 768
     max_output: int = 256 * 1024
 
 

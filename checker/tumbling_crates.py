@@ -198,8 +198,8 @@ def _record(ctx, name):
     record = run.record or {}
     frames = record.get("records") or []
     if not frames:
-        raise Fail(f"the '{name}' run recorded no frames: lab.record(...) was not called in the main loop.",
-                   HINTS["runtime"])
+        raise Fail(f"the '{name}' scene recorded no frames: main() returned before its loop ran, or the loop "
+                   "does not call lab.record(...).", HINTS["runtime"])
     if not scenes.finite(frames):
         _fail_with(ctx, f"in the '{name}' scene a crate's position or speed became infinite or NaN.", "settle")
     return record
@@ -212,7 +212,7 @@ def loads(ctx):
     """The file imports without errors and defines sat, apply_impulse, resolve and main."""
     run = ctx.probe
     if run.status != "done":
-        raise Error(describe_run_failure(run, ctx.name, "Importing the file"), HINTS["crash"])
+        raise Error(describe_run_failure(run, ctx.name, "The file"), HINTS["crash"])
     missing = run.result["probe"]["missing"]
     if missing:
         raise Error(f"{ctx.name} defines no function {missing[0]}() (missing: {', '.join(missing)}).",

@@ -1,0 +1,6 @@
+"""python -m checker PATH...: grade lab files (see checker/README.md)."""
+import sys
+
+from .cli import main
+
+sys.exit(main())

@@ -1,0 +1,251 @@
+"""The checker grades labs headless: solutions pass, each Hint bug gets its hint, hostile files get a verdict.
+
+Every lab run happens once per module (module-scoped fixtures run the checker's
+command line with --json on a batch of files); the tests read the JSON.
+"""
+import hashlib
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+FIXTURES = os.path.join(ROOT, "tests", "fixtures", "checker")
+SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
+STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
+ORDER = ["loads", "runtime_lines", "sat", "apply_impulse", "resolve", "runs",
+         "corner_tips", "ramp_holds", "pile_stable", "fast_movers_zero"]
+CRITERIA = ORDER[6:]
+HOSTILE_TIMEOUT = 4.0
+
+
+def fixture(name):
+    return os.path.join(FIXTURES, name + ".py")
+
+
+def run_checker(*args, cwd=ROOT):
+    """Run `python -m checker ARGS`; returns (exit status, stdout, stderr)."""
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    proc = subprocess.run([sys.executable, "-m", "checker", *args], cwd=cwd, env=env,
+                          capture_output=True, text=True, timeout=600)
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+def by_file(document):
+    return {os.path.basename(lab["path"]): {c["id"]: c for c in lab["criteria"]} | {"_lab": lab}
+            for lab in document["labs"]}
+
+
+def digests(paths):
+    return {p: hashlib.sha256(open(p, "rb").read()).hexdigest() for p in paths}
+
+
+MUTANTS = sorted(f[:-3] for f in os.listdir(FIXTURES) if f.startswith("mutant_"))
+HOSTILE = sorted(f[:-3] for f in os.listdir(FIXTURES) if f.startswith("hostile_"))
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    """The solution, every mutant and the starter (if present), graded in one run with --json."""
+    files = [SOLUTION] + [fixture(m) for m in MUTANTS] + ([STARTER] if os.path.exists(STARTER) else [])
+    before = digests(files)
+    csv_path = tmp_path_factory.mktemp("csv") / "grades.csv"
+    status, out, err = run_checker("--json", "--csv", str(csv_path), *files)
+    after = digests(files)
+    return {"status": status, "doc": json.loads(out), "files": by_file(json.loads(out)), "stderr": err,
+            "unchanged": before == after, "csv": csv_path}
+
+
+@pytest.fixture(scope="module")
+def hostile(tmp_path_factory):
+    """Every hostile fixture graded in one run with short limits."""
+    files = [fixture(h) for h in HOSTILE]
+    before = digests(files)
+    results = tmp_path_factory.mktemp("gradescope") / "results.json"
+    status, out, err = run_checker("--json", "--csv", "none", "--timeout", str(HOSTILE_TIMEOUT), "--memory", "512",
+                                   "--max-output", "64", "--gradescope", str(results), *files)
+    return {"status": status, "doc": json.loads(out), "files": by_file(json.loads(out)),
+            "unchanged": before == digests(files), "gradescope": results}
+
+
+def failing(lab):
+    return {cid: c for cid, c in lab.items() if cid != "_lab" and c["status"] in ("fail", "error")}
+
+
+# ---------------------------------------------------------------- the solution
+
+def test_solution_passes_every_check_in_order(graded):
+    lab = graded["files"]["tumbling_crates.py"]
+    assert [c["id"] for c in lab["_lab"]["criteria"]] == ORDER
+    assert failing(lab) == {}, failing(lab)
+    assert lab["_lab"]["score"] == lab["_lab"]["max_score"] == 14
+
+
+def test_solution_alone_exits_zero_and_prints_a_mark_per_check():
+    status, out, err = run_checker("solutions/")
+    assert status == 0, out + err
+    assert out.count(":)") == len(ORDER)
+    assert "14/14" in out
+
+
+def test_every_schema_field_is_present(graded):
+    doc = graded["doc"]
+    assert doc["schema"] == "lesson11-checker/1" and doc["passed"] is False
+    for lab in doc["labs"]:
+        assert {"path", "lab", "title", "status", "score", "max_score", "seconds", "criteria"} <= set(lab)
+        for c in lab["criteria"]:
+            assert set(c) == {"id", "name", "status", "message", "hint", "step", "score", "max_score"}
+            assert c["status"] in ("pass", "fail", "skip", "error")
+            assert c["score"] == (c["max_score"] if c["status"] == "pass" else 0)
+            assert bool(c["hint"]) == (c["status"] in ("fail", "error")) or c["id"] == "runs"
+    assert graded["status"] == 1  # mutants fail, so the run fails
+
+
+def test_grading_never_changes_a_submitted_file(graded, hostile):
+    assert graded["unchanged"] and hostile["unchanged"]
+    assert not os.path.exists(os.path.join(FIXTURES, "__pycache__"))
+
+
+def test_csv_has_one_row_per_file(graded):
+    rows = graded["csv"].read_text().strip().splitlines()
+    assert rows[0].startswith("path,lab,status,score,max_score,loads,")
+    assert len(rows) == 1 + len(graded["doc"]["labs"])
+
+
+# ---------------------------------------------------------------- one mutant per Hint diagnosis
+
+# mutant -> (check that must fail, lesson step named, words the hint must contain, checks that must pass)
+EXPECTED = {
+    "mutant_sat_never_overlaps": ("sat", 2, "fall through", ["loads", "apply_impulse", "resolve"]),
+    "mutant_normal_not_flipped": ("sat", 3, "from A to B", ["apply_impulse", "resolve"]),
+    "mutant_spin_terms_missing": ("resolve", 4, "spin terms", ["sat", "apply_impulse"]),
+    "mutant_friction_unclamped": ("resolve", 5, "not clamped", ["sat", "apply_impulse"] + CRITERIA),
+    "mutant_friction_flipped": ("resolve", 5, "a sign in the friction or spin update is flipped",
+                                ["sat", "apply_impulse"]),
+    "mutant_spin_missing": ("apply_impulse", 6, "never tip over", ["sat"]),
+    "mutant_spin_swapped": ("apply_impulse", 6, "swapped signs", ["sat"]),
+    "mutant_no_push_out": ("pile_stable", 7, "push-out", ["sat", "apply_impulse", "resolve", "ramp_holds"]),
+}
+
+
+def test_there_is_a_mutant_for_every_diagnosis():
+    assert sorted(EXPECTED) == MUTANTS
+
+
+@pytest.mark.parametrize("mutant", sorted(EXPECTED))
+def test_mutant_fails_with_its_hint(graded, mutant):
+    lab = graded["files"][mutant + ".py"]
+    check_id, step, words, passing = EXPECTED[mutant]
+    result = lab[check_id]
+    assert result["status"] == "fail", result
+    assert result["step"] == step and words in result["hint"], result
+    for other in passing:
+        assert lab[other]["status"] == "pass", (other, lab[other])
+    # every failing lesson criterion points at the same diagnosis (or, for sinking, the push-out)
+    for cid in CRITERIA:
+        if lab[cid]["status"] == "fail":
+            assert lab[cid]["step"] == step, (cid, lab[cid])
+
+
+def test_spin_missing_fails_the_tipping_criterion(graded):
+    lab = graded["files"]["mutant_spin_missing.py"]
+    assert lab["corner_tips"]["status"] == "fail" and "did not tip" in lab["corner_tips"]["message"]
+    assert lab["resolve"]["status"] == "skip"  # resolve goes through apply_impulse
+
+
+def test_sinking_is_measured_in_px(graded):
+    message = graded["files"]["mutant_no_push_out.py"]["pile_stable"]["message"]
+    assert "px into the floor" in message
+    depth = float(message.split("crates end ")[1].split(" px")[0])
+    assert depth > 10  # measured 41.8 px; the solution stays below 1 px
+
+
+def test_starter_fails_with_the_step_2_message(graded):
+    if not os.path.exists(STARTER):
+        pytest.skip("starters/tumbling_crates_starter.py is not written yet")
+    lab = graded["files"]["tumbling_crates_starter.py"]
+    assert lab["loads"]["status"] == "pass"
+    assert lab["sat"]["status"] == "fail" and lab["sat"]["step"] == 2
+    assert "never" in lab["sat"]["hint"] or "None" in lab["sat"]["message"]
+
+
+# ---------------------------------------------------------------- hostile files
+
+@pytest.mark.parametrize("name, words", [
+    ("hostile_loop_at_import", "did not finish importing within 4 s"),
+    ("hostile_exception_at_import", "IndexError"),
+    ("hostile_syntax_error", "SyntaxError"),
+    ("hostile_sys_exit", "sys.exit('bye')"),
+    ("hostile_os_exit", "os._exit(3)"),
+    ("hostile_output_flood", "printed more than 64 KB"),
+    ("hostile_memory_hog", "ran out of memory"),
+    ("hostile_missing_main", "defines no function"),
+])
+def test_hostile_file_is_reported_once_at_import(hostile, name, words):
+    lab = hostile["files"][name + ".py"]
+    assert lab["loads"]["status"] == "error", lab["loads"]
+    assert words in lab["loads"]["message"], lab["loads"]["message"]
+    assert all(lab[cid]["status"] == "skip" for cid in ORDER[1:])
+
+
+@pytest.mark.parametrize("name, line", [("hostile_exception_at_import", 5), ("hostile_syntax_error", 5),
+                                        ("hostile_loop_at_import", 6), ("hostile_memory_hog", 5),
+                                        ("hostile_sys_exit", 4)])
+def test_hostile_message_names_file_and_line(hostile, name, line):
+    message = hostile["files"][name + ".py"]["loads"]["message"]
+    assert f"{name}.py, line {line}" in message, message
+
+
+def test_deleted_runtime_line_is_named(hostile):
+    lab = hostile["files"]["hostile_loop_in_main.py"]
+    assert lab["runtime_lines"]["status"] == "fail"
+    assert "lab.frame_budget()" in lab["runtime_lines"]["message"]
+    assert all(lab[cid]["status"] == "skip" for cid in ["runs"] + CRITERIA)
+
+
+def test_loop_inside_the_main_loop_is_stopped_and_located(hostile):
+    lab = hostile["files"]["hostile_loop_inside_frame.py"]
+    assert lab["runs"]["status"] == "error"
+    assert "was stopped after 4 s" in lab["runs"]["message"]
+    assert "line 137" in lab["runs"]["message"] or "line 136" in lab["runs"]["message"]
+    assert all(lab[cid]["status"] == "skip" for cid in CRITERIA)
+    assert lab["sat"]["status"] == "pass"
+
+
+def test_fake_printed_line_fails_criterion_4(hostile):
+    lab = hostile["files"]["hostile_fake_line.py"]
+    result = lab["fast_movers_zero"]
+    assert result["status"] == "fail" and "recorded no simulated frames" in result["message"]
+
+
+def test_hostile_files_end_within_their_limits(hostile):
+    for lab in hostile["doc"]["labs"]:
+        # at most a probe and four scene runs, each killed at the limit
+        assert lab["seconds"] < 5 * (HOSTILE_TIMEOUT + 3), (lab["path"], lab["seconds"])
+    assert hostile["status"] == 1
+
+
+def test_gradescope_results_json(hostile):
+    data = json.loads(hostile["gradescope"].read_text())
+    assert set(data) >= {"score", "tests"}
+    assert len(data["tests"]) == len(HOSTILE) * len(ORDER)
+    for test in data["tests"]:
+        assert {"name", "score", "max_score", "status", "output"} <= set(test)
+        assert test["status"] in ("passed", "failed")
+    assert data["score"] == sum(t["score"] for t in data["tests"])
+
+
+# ---------------------------------------------------------------- paths
+
+def test_missing_path_gets_a_one_line_error():
+    status, out, err = run_checker("no/such/lab.py")
+    assert status == 2
+    assert err.strip().count("\n") == 0 and "no/such/lab.py" in err and "Traceback" not in err
+
+
+def test_file_that_is_not_a_lab_gets_a_one_line_error():
+    status, out, err = run_checker("tests/conftest.py")
+    assert status == 2
+    assert err.strip().count("\n") == 0 and "not a lab" in err
