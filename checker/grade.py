@@ -81,6 +81,8 @@ class Grader:
             run = run_child(lab_path, task, settings, limits)
         run.lab_path = lab_path
         run.timeout = limits.timeout
+        run.cut_short = limits.timeout < self.limits.timeout and run.status == "timeout"
+        run.total_timeout = self.total_timeout
         run.memory_mb = limits.memory_mb
         run.max_output = limits.max_output
         return run

@@ -115,14 +115,17 @@ def describe_run_failure(run, lab_name, what):
     error = run.result.get("error") or {}
     at = f"{lab_name}, line {error['line']}" if error.get("line") else lab_name
     text = f": {error['text']}" if error.get("text") else ""
+    if run.status == "timeout" and getattr(run, "cut_short", False):
+        return (f"{what} was still running when the time limit for the whole run ({run.total_timeout:g} s) ran "
+                "out; grade this file again with a longer --total-timeout.")
     if run.status == "timeout":
         line = _timeout_line(run.timeout_trace, run.lab_path)
         where = f" (it was at {lab_name}, line {line[0]}{': ' + line[1] if line[1] else ''})" if line else ""
         phase = run.result.get("phase")
         if phase == "import":
-            return (f"{what} did not finish importing within {run.timeout:g} s{where}: is there an endless loop "
+            return (f"{what} did not finish importing within {run.timeout:.3g} s{where}: is there an endless loop "
                     "outside main()?")
-        return (f"{what} was stopped after {run.timeout:g} s{where}: the loop never ended. Is "
+        return (f"{what} was stopped after {run.timeout:.3g} s{where}: the loop never ended. Is "
                 "`and lab.frame_budget()` still in the while condition?")
     if run.status == "flood":
         return f"{what} printed more than {run.max_output // 1024} KB of output and was stopped."
