@@ -39,11 +39,16 @@ def centre_of(points):
 def sat(pa, pb):
     """Separating Axis Test for two convex polygons given as world points.
 
-    Projects both onto every edge normal of both. One axis with
-    overlap = min(max_a, max_b) - max(min_a, min_b) <= TOUCH_TOLERANCE means
-    apart: returns None. Otherwise returns (normal, depth): the axis with the
-    smallest overlap, oriented from A to B, and that overlap in px (the
-    minimum translation vector).
+    Projects both onto every edge normal of both. One axis whose shadows do not
+    overlap, min(max_a, max_b) - max(min_a, min_b) <= TOUCH_TOLERANCE, means
+    apart: returns None. Otherwise returns (normal, depth), the minimum
+    translation vector: moving B by normal * depth separates the pair.
+
+    On each axis B can leave forwards, by max_a - min_b, or backwards, by
+    max_b - min_a; the shorter way is that axis's depth and direction. This is
+    the lesson's overlap whenever neither shadow contains the other; when one
+    does (a deep hit), the lesson's overlap is too short to separate the pair.
+    When both ways are equally long, the normal points from A's centre to B's.
     """
     best_axis, best_depth = None, math.inf
     for axis in edge_normals(pa) + edge_normals(pb):
@@ -52,9 +57,15 @@ def sat(pa, pb):
         overlap = min(max_a, max_b) - max(min_a, min_b)
         if overlap <= TOUCH_TOLERANCE:
             return None  # a gap (or exact touching): apart
-        if overlap < best_depth:
-            best_axis, best_depth = axis, overlap
-    return orient_a_to_b(best_axis, pa, pb), best_depth
+        forwards, backwards = max_a - min_b, max_b - min_a
+        depth = min(forwards, backwards)
+        if depth < best_depth:
+            if abs(forwards - backwards) <= TOUCH_TOLERANCE:
+                best_axis = orient_a_to_b(axis, pa, pb)
+            else:
+                best_axis = axis if forwards < backwards else -axis
+            best_depth = depth
+    return best_axis, best_depth
 
 
 def orient_a_to_b(axis, pa, pb):

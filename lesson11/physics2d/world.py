@@ -9,9 +9,11 @@ them inside its loop, so a student's functions run the whole simulation.
 from collections import namedtuple
 
 from . import collision, response
+from .arbiter import Arbiter
 from .vectors import Vector2, finite_number, finite_vector
 
 EFFECTS = ("gravity", "rotation", "friction", "restitution", "correction", "ccd")
+SOLVERS = ("lesson", "accumulated")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
 
 Contact = namedtuple("Contact", "a b point normal depth")
@@ -31,6 +33,9 @@ class World:
       max_frame      0.25 s; longer frames are clamped (window drags, breakpoints)
       contact_rule   "corners" (the lesson's corners-inside rule) or "clip" (edge clipping)
       effects        which effects run, a subset of EFFECTS; LESSON_EFFECTS by default
+      solver         "lesson" (fresh impulses every pass, push-out by separate) or
+                     "accumulated" (arbiter.py: impulses kept across passes and steps,
+                     warm started; for tall stacks and large mass ratios)
     Hooks: sat(pa, pb), resolve(a, b, normal, point), separate(a, b, normal, depth).
     After each step: `contacts` (list of Contact from the last solver pass) and
     `counters` (how many pair tests, contacts, swept tests ran in all).
@@ -38,7 +43,7 @@ class World:
 
     def __init__(self, bodies=(), *, gravity=(0, 980), step=1 / 120, iterations=6,
                  slop=response.SLOP, percent=response.PERCENT, resting_speed=response.RESTING_SPEED,
-                 max_frame=0.25, contact_rule="corners", effects=LESSON_EFFECTS,
+                 max_frame=0.25, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
                  sat=None, resolve=None, separate=None):
         self.gravity = finite_vector(gravity, "world gravity")
         self.step_seconds = self._positive(step, "world step")
@@ -58,6 +63,10 @@ class World:
         if contact_rule not in ("corners", "clip"):
             raise ValueError(f"contact_rule must be 'corners' or 'clip', got {contact_rule!r}")
         self.contact_rule = contact_rule
+        if solver not in SOLVERS:
+            raise ValueError(f"solver must be one of {list(SOLVERS)}, got {solver!r}")
+        self.solver = solver
+        self.arbiters = {}
         unknown = set(effects) - set(EFFECTS)
         if unknown:
             raise ValueError(f"unknown effects {sorted(unknown)}; choose from {list(EFFECTS)}")
@@ -121,14 +130,21 @@ class World:
     def step(self, dt=None):
         """Advance every body by one step of dt seconds (default: the fixed step).
 
+        The lesson's solver:
         1. integrate: v += g dt; then x += v dt and angle += ω dt (or a swept move for bullets)
         2. solve: `iterations` passes of broad phase, narrow phase, impulses, push-out.
+        The accumulated solver: v += g dt; find contacts once; warm start and
+        `iterations` passes of accumulated impulses; then x += v dt.
         Raises ValueError if any body ends the step with a non-finite state.
         """
         dt = self.step_seconds if dt is None else self._positive(dt, "step dt")
-        self.integrate(dt)
-        for _ in range(self.iterations):
-            self.solve_contacts()
+        if self.solver == "accumulated":
+            self.step_accumulated(dt)
+        else:
+            self.integrate_velocities(dt)
+            self.integrate_positions(dt)
+            for _ in range(self.iterations):
+                self.solve_contacts()
         self.time += dt
         self.counters["steps"] += 1
         for index, body in enumerate(self.bodies):
@@ -136,16 +152,21 @@ class World:
                 raise ValueError(f"body {index} {body!r} became non-finite at t = {self.time:.4f} s; "
                                  "check its mass, the step and the hooks")
 
-    def integrate(self, dt):
-        """Semi-implicit Euler for every dynamic body: v += g dt, x += v dt, angle += ω dt."""
-        gravity = "gravity" in self.effects
+    def integrate_velocities(self, dt):
+        """Gravity for every dynamic body: v += g dt (only if the scene declares "gravity")."""
+        if "gravity" not in self.effects:
+            return
+        for body in self.bodies:
+            if body.inv_mass != 0:
+                body.vel += self.gravity * dt
+
+    def integrate_positions(self, dt):
+        """Move every dynamic body: x += v dt, angle += ω dt (semi-implicit Euler, after the velocities)."""
         rotation = "rotation" in self.effects
         ccd = "ccd" in self.effects
         for body in self.bodies:
             if body.inv_mass == 0:
                 continue
-            if gravity:
-                body.vel += self.gravity * dt
             if ccd and body.bullet and body.shape.kind == "circle":
                 self.swept_move(body, dt)
             else:
@@ -212,13 +233,15 @@ class World:
         circle, direction = (a, normal) if a.shape.kind == "circle" else (b, -normal)
         return normal, depth, [circle.pos + direction * (circle.radius - depth / 2)]
 
-    def solve_contacts(self):
-        """One solver pass: bounding boxes, then narrow phase, impulses and push-out for each pair."""
-        self.contacts = []
+    def hits(self):
+        """Every touching pair now: yields (a, b, normal A→B, depth, contact points).
+
+        Broad phase first: pairs of static bodies and pairs whose bounding boxes
+        are apart are skipped; the rest go to the narrow phase (collide).
+        """
         bodies = self.bodies
         shapes = self.world_shapes()
         boxes = [body.aabb(points) for body, points in zip(bodies, shapes)]
-        correction = "correction" in self.effects
         for i in range(len(bodies)):
             for j in range(i + 1, len(bodies)):
                 a, b = bodies[i], bodies[j]
@@ -230,12 +253,39 @@ class World:
                     continue  # broad phase: bounding boxes apart
                 self.counters["narrow_tests"] += 1
                 hit = self.collide(a, b, shapes[i], shapes[j])
-                if hit is None:
-                    continue
-                normal, depth, points = hit
-                for point in points:
-                    self.resolve(a, b, normal, point)
-                    self.contacts.append(Contact(a, b, point, normal, depth))
-                self.counters["contacts"] += len(points)
-                if correction:
-                    self.separate(a, b, normal, depth)
+                if hit is not None:
+                    self.counters["contacts"] += len(hit[2])
+                    yield (a, b) + hit
+
+    def solve_contacts(self):
+        """One pass of the lesson's solver: for each touching pair, impulses at its points, then the push-out."""
+        self.contacts = []
+        correction = "correction" in self.effects
+        for a, b, normal, depth, points in self.hits():
+            for point in points:
+                self.resolve(a, b, normal, point)
+                self.contacts.append(Contact(a, b, point, normal, depth))
+            if correction:
+                self.separate(a, b, normal, depth)
+
+    def step_accumulated(self, dt):
+        """One step of the accumulated solver (arbiter.py), in Box2D-Lite's order.
+
+        v += g dt; contacts found once and matched with last step's; warm start;
+        `iterations` passes of clamped accumulated impulses; x += v dt.
+        """
+        self.integrate_velocities(dt)
+        arbiters = {}
+        for a, b, normal, depth, points in self.hits():
+            arbiter = self.arbiters.get((id(a), id(b))) or Arbiter(a, b)
+            arbiter.update(normal, depth, points)
+            arbiters[(id(a), id(b))] = arbiter
+        self.arbiters = arbiters
+        for arbiter in arbiters.values():
+            arbiter.prepare(self, dt)
+        for _ in range(self.iterations):
+            for arbiter in arbiters.values():
+                arbiter.apply(self)
+        self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, arb.depth)
+                         for arb in arbiters.values() for c in arb.points]
+        self.integrate_positions(dt)
