@@ -100,8 +100,8 @@ def clicks(positions, first_frame, every):
             for k, pos in enumerate(positions)]
 
 
-# a dozen drop points over the floor, right of the ramp's lower end (x > 480), three heights
-PILE_DROPS = [(520 + 70 * (k % 5), 180 + 60 * (k // 5)) for k in range(12)]
+# a dozen drop points over the floor right of the ramp (four columns 70 px apart), so they pile up
+PILE_DROPS = [(590 + 70 * (k % 4), 150 + 50 * (k // 4)) for k in range(12)]
 
 
 def pile_settings(settle_frames=240, every=20):
