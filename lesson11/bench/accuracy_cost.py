@@ -1,0 +1,482 @@
+"""What accuracy costs in time: five studies measured side by side in one run.
+
+    python -m lesson11.bench.accuracy_cost            # full run, a few minutes; writes the table and plot
+    python -m lesson11.bench.accuracy_cost --quick    # small sizes, seconds; prints only (add --out-dir to write)
+
+1. tunnelling     a 3 px bullet against a 4 px wall: discrete steps, sub-steps ×2..×16, CCD
+2. iterations     a 10-crate pyramid with 1..20 solver passes (and the accumulated solver, if physics2d has it)
+3. contact rule   "corners" (the lesson's) against "clip" (edge clipping) on the same piles
+4. effects        the same scene with only the effects it needs, with everything, with "ccd" but no bullet
+5. pymunk         the same piles in pymunk (skipped with a message if pymunk is missing)
+
+Each study has a baseline, and its times are reported as ratios to that
+baseline, measured in the same run. Every case is repeated (--repeats, 3 by
+default) in round-robin order, so a slow moment on a shared machine hits every
+case alike, and the median is kept. Only the calls that step the simulation
+are timed (time.perf_counter); measuring accuracy between steps is not.
+Accuracy figures are deterministic: the repeats must agree, and the run says
+so if they do not.
+"""
+import argparse
+import math
+import os
+import platform
+import statistics
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lesson11.physics2d import LESSON_EFFECTS, World
+from lesson11.physics2d import world as world_module
+
+from . import scenes
+
+FRAME = 1 / 120  # s: the course's fixed step; sub-stepping splits it into n steps
+
+
+@dataclass(frozen=True)
+class Settings:
+    """Sizes of one run. FULL is the published run; QUICK is for the smoke test."""
+    shots: int                    # tunnelling shots per speed, start offsets spread over one step's travel
+    speeds: tuple                 # px/s
+    substeps: tuple               # n for the sub-stepping cases (step = FRAME / n)
+    iterations: tuple             # solver passes per step
+    pile_seconds: float           # simulated s per pile run
+    rule_scenes: tuple            # piles for the contact-rule study
+    compare_scenes: tuple         # piles for the pymunk study
+    effects_seconds: float        # simulated s per effects run
+    repeats: int                  # timing repeats (median kept)
+
+
+FULL = Settings(shots=60, speeds=(500, 1000, 2000, 3000, 4000, 6000, 8000, 12000), substeps=(2, 4, 8, 16),
+                iterations=(1, 2, 4, 6, 10, 20), pile_seconds=4.0, rule_scenes=("pyramid4", "stack4"),
+                compare_scenes=("pyramid4", "stack8"), effects_seconds=3.0, repeats=3)
+QUICK = Settings(shots=6, speeds=(500, 2000, 6000, 12000), substeps=(2, 4, 16),
+                 iterations=(1, 6, 20), pile_seconds=0.5, rule_scenes=("pyramid4",),
+                 compare_scenes=("pyramid4",), effects_seconds=0.5, repeats=1)
+
+NEEDED_EFFECTS = frozenset({"gravity", "restitution", "correction"})  # all the settling-balls scene uses
+
+
+@dataclass
+class Measurement:
+    """One run of one case: accuracy figures, the time spent stepping (s), and what it stepped."""
+    accuracy: dict
+    seconds: float
+    units: float                  # steps, or simulated seconds (see Row.unit)
+    counters: dict = field(default_factory=dict)
+    final_state: list = None
+
+
+@dataclass
+class Row:
+    """One line of the table: a case of a study with its median time and accuracy."""
+    study: str
+    scene: str
+    variant: str
+    accuracy: dict
+    times: list                   # s per unit, one per repeat
+    unit: str                     # "ms/step" or "ms per simulated s"
+    counters: dict = field(default_factory=dict)
+    baseline: bool = False
+    ratio: float = math.nan
+    consistent: bool = True
+    final_state: list = None      # the effects study compares final states between rows
+
+    @property
+    def ms(self):
+        """Median time per unit, in ms."""
+        return 1000 * statistics.median(self.times)
+
+    @property
+    def spread(self):
+        """(slowest - fastest repeat) / median: how noisy this row's timing was (0 with one repeat)."""
+        return (max(self.times) - min(self.times)) / statistics.median(self.times)
+
+
+@dataclass
+class Case:
+    """A case to measure: run() returns a Measurement."""
+    study: str
+    scene: str
+    variant: str
+    unit: str
+    run: object
+    baseline: bool = False
+
+
+# ---------------------------------------------------------------- running
+
+def measure(cases, repeats, progress=None):
+    """Run every case `repeats` times in round-robin order; return one Row per case (median time)."""
+    results = [[] for _ in cases]
+    for repeat in range(repeats):
+        for case, runs in zip(cases, results):
+            if progress:
+                progress(f"  repeat {repeat + 1}/{repeats}: {case.study} · {case.scene} · {case.variant}")
+            runs.append(case.run())
+    rows = []
+    for case, runs in zip(cases, results):
+        first = runs[0]
+        rows.append(Row(case.study, case.scene, case.variant, first.accuracy,
+                        [m.seconds / m.units for m in runs], case.unit, first.counters, case.baseline,
+                        consistent=all(m.accuracy == first.accuracy and m.final_state == first.final_state
+                                       for m in runs),
+                        final_state=first.final_state))
+    for row in rows:  # ratios against the baseline of the same study and scene
+        base = [r for r in rows if r.baseline and r.study == row.study and r.scene == row.scene]
+        if base:
+            row.ratio = row.ms / base[0].ms
+    return rows
+
+
+def step_timed(step, count):
+    """Call step() `count` times; return the seconds spent inside the calls."""
+    spent = 0.0
+    for _ in range(count):
+        start = time.perf_counter()
+        step()
+        spent += time.perf_counter() - start
+    return spent
+
+
+# ---------------------------------------------------------------- 1. tunnelling
+
+def shot_frames(speed):
+    """Frames (of 1/120 s) a shot runs: enough for a caught bullet to hit and a tunnelled one to be past."""
+    travel = speed * FRAME
+    distance = 2 * travel + 1 + scenes.WALL_WIDTH + 2 * scenes.BULLET_RADIUS + 1
+    return math.ceil(distance / travel) + 1
+
+
+def tunnelling_run(settings, substeps, ccd):
+    """All shots at all speeds with one method: {speed: share of shots that tunnel}, and the stepping time."""
+    accuracy, spent, simulated = {}, 0.0, 0.0
+    for speed in settings.speeds:
+        travel = speed * FRAME
+        tunnels = 0
+        frames = shot_frames(speed)
+        for k in range(settings.shots):
+            phase = (k + 0.5) / settings.shots  # spread the start over one frame's travel
+            start_x = scenes.WALL_X - scenes.WALL_WIDTH / 2 - scenes.BULLET_RADIUS - 1 - travel * (1 + phase)
+            world, bullet = scenes.bullet_world(start_x, speed, ccd, FRAME / substeps)
+            spent += step_timed(world.step, frames * substeps)
+            simulated += frames * FRAME
+            tunnels += scenes.tunnelled(bullet)
+        accuracy[speed] = tunnels / settings.shots
+    return Measurement(accuracy, spent, simulated)
+
+
+def tunnelling_cases(settings):
+    """Discrete ×1 (the baseline), sub-stepping ×n, and CCD."""
+    cases = [Case("1 tunnelling", "3 px bullet, 4 px wall", "discrete, 1/120 s", "ms per simulated s",
+                  lambda: tunnelling_run(settings, 1, False), baseline=True)]
+    for n in settings.substeps:
+        cases.append(Case("1 tunnelling", "3 px bullet, 4 px wall", f"sub-steps ×{n} (1/{120 * n} s)",
+                          "ms per simulated s", lambda n=n: tunnelling_run(settings, n, False)))
+    cases.append(Case("1 tunnelling", "3 px bullet, 4 px wall", "CCD (swept test), 1/120 s", "ms per simulated s",
+                      lambda: tunnelling_run(settings, 1, True)))
+    return cases
+
+
+# ---------------------------------------------------------------- 2, 3, 5. piles
+
+class Physics2dPile:
+    """A pile scene in a physics2d World, seen through the same four calls as pymunk_pile.PymunkPile."""
+
+    def __init__(self, name, **settings):
+        self.world = scenes.pile_world(name, **settings)
+        self.crates = self.world.bodies[1:]
+        self.step = self.world.step
+
+    def crate_corners(self):
+        return [crate.world_points() for crate in self.crates]
+
+    def top_position(self):
+        return self.crates[-1].pos
+
+    def kinetic_energy(self):
+        return sum(crate.kinetic_energy() for crate in self.crates)
+
+
+def pile_run(make_pile, seconds):
+    """Step a pile for `seconds`: floor penetration (worst, px), top-crate drift (px) and kinetic energy at the end."""
+    pile = make_pile()
+    start = tuple(pile.top_position())
+    steps = round(seconds / FRAME)
+    spent, penetration = 0.0, 0.0
+    for _ in range(steps):
+        spent += step_timed(pile.step, 1)
+        penetration = max(penetration, scenes.floor_penetration(pile.crate_corners()))
+    top = pile.top_position()
+    drift = math.hypot(top[0] - start[0], top[1] - start[1])
+    accuracy = {"penetration": round(penetration, 6), "drift": round(drift, 6),
+                "energy": round(pile.kinetic_energy(), 6)}
+    counters = dict(pile.world.counters) if hasattr(pile, "world") else {}
+    return Measurement(accuracy, spent, steps, counters)
+
+
+def solvers():
+    """The physics2d solvers this version offers: ("lesson",) or ("lesson", "accumulated")."""
+    return tuple(getattr(world_module, "SOLVERS", ("lesson",)))
+
+
+def iteration_cases(settings):
+    """The pyramid with each iteration count, for each solver physics2d has; the lesson's 6 is the baseline."""
+    cases = []
+    for solver in solvers():
+        extra = {} if solver == "lesson" else {"solver": solver}
+        for n in settings.iterations:
+            cases.append(Case("2 iterations", "pyramid4", f"{solver} solver, {n} iteration{'s' if n > 1 else ''}", "ms/step",
+                              lambda n=n, extra=extra: pile_run(
+                                  lambda: Physics2dPile("pyramid4", iterations=n, **extra), settings.pile_seconds),
+                              baseline=(solver == "lesson" and n == 6)))
+    return cases
+
+
+def rule_cases(settings):
+    """Each rule-study pile with the corners rule (baseline) and with clipping, 6 iterations."""
+    cases = []
+    for name in settings.rule_scenes:
+        for rule in ("corners", "clip"):
+            cases.append(Case("3 contact rule", name, f'"{rule}"', "ms/step",
+                              lambda name=name, rule=rule: pile_run(
+                                  lambda: Physics2dPile(name, contact_rule=rule), settings.pile_seconds),
+                              baseline=(rule == "corners")))
+    return cases
+
+
+def pymunk_cases(settings):
+    """Each comparison pile in physics2d (lesson solver: the baseline; accumulated if present) and in pymunk."""
+    try:
+        from .pymunk_pile import PymunkPile
+    except ImportError:
+        return []
+    cases = []
+    for name in settings.compare_scenes:
+        cases.append(Case("5 vs pymunk", name, "physics2d, lesson solver, 6 iterations", "ms/step",
+                          lambda name=name: pile_run(lambda: Physics2dPile(name), settings.pile_seconds),
+                          baseline=True))
+        if "accumulated" in solvers():
+            cases.append(Case("5 vs pymunk", name, "physics2d, accumulated solver, 6 iterations", "ms/step",
+                              lambda name=name: pile_run(lambda: Physics2dPile(name, solver="accumulated"),
+                                                         settings.pile_seconds)))
+        cases.append(Case("5 vs pymunk", name, f"pymunk {pymunk_version()}, 6 iterations", "ms/step",
+                          lambda name=name: pile_run(lambda: PymunkPile(name, iterations=6), settings.pile_seconds)))
+    return cases
+
+
+# ---------------------------------------------------------------- 4. effects
+
+def world_run(make_world, seconds):
+    """Step a world for `seconds`; keep its counters per step and its final state."""
+    world = make_world()
+    steps = round(seconds / FRAME)
+    spent = step_timed(world.step, steps)
+    counters = {key: value / steps for key, value in world.counters.items() if key != "steps"}
+    return Measurement({}, spent, steps, counters, scenes.state_of(world))
+
+
+def effects_cases(settings):
+    """Frictionless balls with all the lesson's effects (baseline), with only the three they need,
+    with "ccd" declared but no bullet, and with "ccd" and every ball a bullet."""
+    seconds = settings.effects_seconds
+    balls = "24 frictionless balls in a box"
+
+    def case(variant, effects, bullets=False, baseline=False):
+        return Case("4 effects", balls, variant, "ms/step",
+                    lambda: world_run(lambda: scenes.settling_balls_world(effects, bullets), seconds), baseline)
+
+    return [case("LESSON_EFFECTS (all five)", LESSON_EFFECTS, baseline=True),
+            case("only gravity, restitution, correction", NEEDED_EFFECTS),
+            case('LESSON_EFFECTS + "ccd", no bullet', LESSON_EFFECTS | {"ccd"}),
+            case('LESSON_EFFECTS + "ccd", every ball a bullet', LESSON_EFFECTS | {"ccd"}, bullets=True)]
+
+
+def finish_effects(rows):
+    """Accuracy of the effects study: how far each run's final state is from its baseline's (same scene)."""
+    for row in rows:
+        base = next(r for r in rows if r.baseline and r.scene == row.scene)
+        row.accuracy = {"difference": scenes.largest_difference(row.final_state, base.final_state)}
+
+
+# ---------------------------------------------------------------- the table
+
+def accuracy_text(row):
+    """The accuracy cell of a row, in words and units."""
+    a = row.accuracy
+    if row.study.startswith("1"):
+        clean = [speed for speed, share in a.items() if share == 0]
+        safe = max((s for s in a if all(a[t] == 0 for t in a if t <= s)), default=None)
+        share = 100 * sum(a.values()) / len(a)
+        if len(clean) == len(a):
+            text = f"no shot tunnels at any speed ({min(a)}–{max(a)} px/s)"
+        elif safe is None:
+            text = f"shots tunnel already at {min(a)} px/s; {share:.0f} % of all shots"
+        else:
+            text = f"no tunnelling up to {safe} px/s; {share:.0f} % of all shots tunnel"
+    elif row.study.startswith("4"):
+        c = row.counters
+        text = (f"positions at the end differ from the baseline's by {a['difference']:.2g} px; per step: "
+                f"{c['pair_tests']:.0f} pair tests, {c['contacts']:.1f} contacts, {c['swept_tests']:.0f} swept tests")
+    else:
+        text = (f"floor penetration {a['penetration']:.2f} px · top drift {a['drift']:.2f} px · "
+                f"kinetic energy {a['energy']:.3g}")
+    return text + ("" if row.consistent else " (repeats disagreed!)")
+
+
+def table(rows):
+    """The Markdown table: one row set per study."""
+    lines = ["| study | scene | variant | accuracy | time (median) | spread | × baseline |",
+             "|---|---|---|---|---|---|---|"]
+    for row in rows:
+        ratio = "1 (baseline)" if row.baseline else f"{row.ratio:.3g}"
+        lines.append(f"| {row.study} | {row.scene} | {row.variant} | {accuracy_text(row)} | "
+                     f"{row.ms:.3g} {row.unit} | {100 * row.spread:.0f} % | {ratio} |")
+    return "\n".join(lines)
+
+
+def tunnelling_table(rows):
+    """Share of shots that tunnel, per method and speed (%)."""
+    speeds = list(rows[0].accuracy)
+    lines = ["| method | " + " | ".join(f"{s} px/s" for s in speeds) + " | time × discrete |",
+             "|---|" + "---|" * (len(speeds) + 1)]
+    for row in rows:
+        cells = " | ".join(f"{100 * row.accuracy[s]:.0f} %" for s in speeds)
+        lines.append(f"| {row.variant} | {cells} | {row.ratio:.2f} |")
+    return "\n".join(lines)
+
+
+def pymunk_version():
+    try:
+        import pymunk
+    except ImportError:
+        return None
+    return pymunk.version
+
+
+def machine_note():
+    """Cores, Python, pygame-ce, pymunk, the platform and the load when the run started."""
+    import pygame
+    load = " / ".join(f"{x:.2f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "n/a"
+    return (f"{os.cpu_count()} cores · Python {platform.python_version()} · pygame-ce {pygame.version.ver} · "
+            f"pymunk {pymunk_version() or 'not installed'} · {platform.platform()} · load average {load}")
+
+
+# ---------------------------------------------------------------- main
+
+def run(settings, progress=None):
+    """Every study, in one run. Returns (rows by study name, notes)."""
+    notes = []
+    groups = {"tunnelling": tunnelling_cases(settings), "iterations": iteration_cases(settings),
+              "rule": rule_cases(settings), "effects": effects_cases(settings),
+              "pymunk": pymunk_cases(settings)}
+    if not groups["pymunk"]:
+        notes.append("Study 5 skipped: pymunk is not installed (pip install -e \".[compare]\").")
+    if "accumulated" not in solvers():
+        notes.append("physics2d has no accumulated solver in this version: study 2 runs the lesson solver only.")
+    rows = {}
+    for name, cases in groups.items():
+        if cases:
+            rows[name] = measure(cases, settings.repeats, progress)
+    finish_effects(rows["effects"])
+    return rows, notes
+
+
+def report(rows, notes, settings, elapsed, mode):
+    """The whole Markdown report: machine note, the table, the tunnelling detail, the notes."""
+    all_rows = [row for group in rows.values() for row in group]
+    parts = [
+        "# What accuracy costs: measured side by side",
+        "",
+        f"Run: `python -m lesson11.bench.accuracy_cost{' --quick' if mode == 'quick' else ''}` · {mode} run, "
+        f"{settings.repeats} repeat(s) per case, median kept · whole run {elapsed:.0f} s · "
+        f"{time.strftime('%Y-%m-%d')}",
+        "",
+        f"Machine: {machine_note()}",
+        "",
+        "Times are medians of the time spent inside `step()` only; *spread* is (slowest - fastest repeat) / "
+        "median, a measure of how noisy the machine was. *× baseline* divides by the baseline row "
+        "of the same study and scene, measured in the same run. Pile figures: *floor penetration* is the "
+        "deepest any crate corner went below the floor's top face during the run; *top drift* is how far the "
+        "top crate ended from where it started; *kinetic energy* (mass·px²/s²) is what is left at the end "
+        f"(0 = at rest). Piles run {settings.pile_seconds:g} simulated s at 1/120 s per step; the effects "
+        f"study runs {settings.effects_seconds:g} s.",
+        "",
+        table(all_rows),
+        "",
+        "## Tunnelling by speed",
+        "",
+        f"Share of {settings.shots} shots per speed whose bullet (radius {scenes.BULLET_RADIUS:g} px) ended on the "
+        f"far side of the {scenes.WALL_WIDTH:g} px wall; the shots start at offsets spread evenly over one "
+        "step's travel.",
+        "",
+        tunnelling_table(rows["tunnelling"]),
+    ]
+    if notes:
+        parts += ["", "## Notes", ""] + [f"- {note}" for note in notes]
+    return "\n".join(parts) + "\n"
+
+
+def default_out_dir():
+    """The repository's assets/ folder when run from a checkout, else ./assets."""
+    repo_assets = Path(__file__).resolve().parents[2] / "assets"
+    return repo_assets if repo_assets.is_dir() else Path("assets")
+
+
+def positive_int(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a whole number >= 1, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a whole number >= 1, got {value}")
+    return value
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python -m lesson11.bench.accuracy_cost",
+                                     description="What accuracy costs in time: tunnelling, iterations, contact "
+                                                 "rule, declared effects, pymunk, measured side by side.")
+    parser.add_argument("--quick", action="store_true",
+                        help="tiny sizes, one repeat; prints only unless --out-dir is given")
+    parser.add_argument("--out-dir", type=Path, default=None,
+                        help="where bench_accuracy_cost.md/.png go (default: the repository's assets/)")
+    parser.add_argument("--repeats", type=positive_int, default=None, help="timing repeats per case (median kept)")
+    parser.add_argument("--no-plot", action="store_true", help="skip the matplotlib figure")
+    args = parser.parse_args(argv)
+    settings = QUICK if args.quick else FULL
+    if args.repeats:
+        settings = Settings(**{**settings.__dict__, "repeats": args.repeats})
+    mode = "quick" if args.quick else "full"
+    out_dir = args.out_dir if args.out_dir is not None else (None if args.quick else default_out_dir())
+    if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
+        print(f"--out-dir {out_dir} is a file, not a folder", file=sys.stderr)
+        return 2
+
+    print(f"Machine: {machine_note()}")
+    started = time.perf_counter()
+    rows, notes = run(settings, progress=lambda text: print(text, file=sys.stderr, flush=True))
+    elapsed = time.perf_counter() - started
+    text = report(rows, notes, settings, elapsed, mode)
+    print(text)
+    if out_dir is None:
+        return 0
+    out_dir.mkdir(parents=True, exist_ok=True)
+    (out_dir / "bench_accuracy_cost.md").write_text(text, encoding="utf-8")
+    print(f"wrote {out_dir / 'bench_accuracy_cost.md'}")
+    if args.no_plot:
+        return 0
+    try:
+        from .plot import plot
+    except ImportError:
+        print("matplotlib is not installed: no plot (pip install -e \".[compare]\")")
+        return 0
+    path = plot(rows, out_dir / "bench_accuracy_cost.png", f"{mode} run · {machine_note()}")
+    print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,158 @@
+"""The figure for accuracy_cost: one panel per study, accuracy against time.
+
+Needs matplotlib (the `compare` extra); it draws off-screen (Agg) and saves a PNG.
+"""
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
+
+FLOOR = 1e-3  # px: figures of 0 are drawn here on the log axes
+
+
+def _tunnelling_by_speed(ax, rows):
+    for row in rows:
+        speeds = list(row.accuracy)
+        shares = [100 * row.accuracy[s] for s in speeds]
+        style = dict(lw=3, color="black") if "CCD" in row.variant else dict(lw=1.8)
+        cost = "1 (baseline)" if row.baseline else f"{row.ratio:.1f}"
+        ax.plot(speeds, shares, marker="o", ms=4, label=f"{row.variant.split(' (')[0].split(',')[0]}  "
+                                                          f"(time × {cost})", **style)
+    ax.set_xscale("log")
+    ax.set_xticks(speeds)
+    ax.set_xticklabels([f"{s / 1000:g}k" for s in speeds])
+    ax.minorticks_off()
+    ax.set_xlabel("bullet speed (px/s, log scale)")
+    ax.set_ylabel("shots that tunnel through the wall (%)")
+    ax.set_ylim(-4, 104)
+    ax.set_title("1a  Tunnelling: 3 px bullet, 4 px wall")
+    ax.legend(fontsize=8, loc="upper left")
+
+
+def _safe_speed(row):
+    """Highest tested speed below which no shot tunnelled (0 if even the slowest tunnels)."""
+    speeds = sorted(row.accuracy)
+    safe = 0
+    for speed in speeds:
+        if row.accuracy[speed] > 0:
+            break
+        safe = speed
+    return safe
+
+
+def _tunnelling_cost(ax, rows):
+    top = max(rows[0].accuracy)
+    for row in rows:
+        ratio = 1.0 if row.baseline else row.ratio
+        safe = _safe_speed(row)
+        ccd = "CCD" in row.variant
+        ax.scatter([ratio], [safe], s=90 if ccd else 50, color="black" if ccd else "tab:blue", zorder=3)
+        name = "CCD" if ccd else ("discrete" if row.baseline else row.variant.split(" (")[0])
+        label = f"{name}: none tunnel\nat any tested speed" if ccd and safe == top else name
+        ax.annotate(label, (ratio, safe), textcoords="offset points", xytext=(8, -4), fontsize=8)
+    ax.set_xscale("log", base=2)
+    ax.set_xlabel("time per simulated second (× discrete, log scale)")
+    ax.set_ylabel("highest speed with no tunnelling (px/s)")
+    ax.set_ylim(0, top * 1.15)
+    ax.set_xlim(0.7, max(r.ratio for r in rows if not r.baseline) * 2.2)
+    ax.set_title("1b  What each fix buys, and what it costs")
+    ax.grid(alpha=0.3)
+
+
+def _iterations(ax, rows):
+    colors = {"lesson": "tab:red", "accumulated": "tab:green"}
+    for solver, color in colors.items():
+        chosen = [r for r in rows if r.variant.startswith(solver)]
+        if not chosen:
+            continue
+        times = [r.ms for r in chosen]
+        ax.plot(times, [max(r.accuracy["drift"], FLOOR) for r in chosen], "-o", color=color,
+                label=f"{solver} solver: top crate drift")
+        ax.plot(times, [max(r.accuracy["penetration"], FLOOR) for r in chosen], "--s", color=color, ms=4,
+                label=f"{solver} solver: floor penetration")
+        for r in chosen:
+            n = r.variant.split(", ")[1].split()[0]
+            ax.annotate(n, (r.ms, max(r.accuracy["drift"], FLOOR)), textcoords="offset points",
+                        xytext=(4, 4), fontsize=8, color=color)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("time per step (ms, log scale)")
+    ax.set_ylabel("error (px, log scale; lower is better)")
+    ax.set_title("2  Solver iterations (numbers = passes): 10-crate pyramid")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, which="both")
+
+
+def _contact_rule(ax, rows):
+    markers = {'"corners"': "o", '"clip"': "s"}
+    colors = {}
+    for r in rows:
+        color = colors.setdefault(r.scene, f"C{len(colors)}")
+        for key, style, filled in (("drift", "", True), ("penetration", "", False)):
+            ax.scatter([r.ms], [max(r.accuracy[key], FLOOR)], marker=markers[r.variant], s=60,
+                       facecolors=color if filled else "none", edgecolors=color, zorder=3)
+        ax.annotate(f"{r.scene} {r.variant.strip(chr(34))}", (r.ms, max(r.accuracy["drift"], FLOOR)),
+                    textcoords="offset points", xytext=(6, 2), fontsize=8)
+    ax.scatter([], [], marker="o", color="gray", label="filled: top crate drift")
+    ax.scatter([], [], marker="o", facecolors="none", edgecolors="gray", label="hollow: floor penetration")
+    ax.scatter([], [], marker="o", color="gray", label="circle: corners rule")
+    ax.scatter([], [], marker="s", color="gray", label="square: clip rule")
+    ax.set_yscale("log")
+    ax.set_xlabel("time per step (ms)")
+    ax.set_ylabel("error (px, log scale; lower is better)")
+    ax.set_title("3  Contact rule, lesson solver, 6 passes")
+    ax.legend(fontsize=8, loc="center right")
+    ax.grid(alpha=0.3, which="both")
+
+
+def _effects(ax, rows):
+    labels = [r.variant.replace("LESSON_EFFECTS", "all").replace(", ", ",\n", 1) for r in rows]
+    y = list(range(len(rows)))[::-1]
+    ax.barh(y, [r.ms for r in rows], color=["tab:gray" if r.baseline else "tab:blue" for r in rows])
+    for yy, r in zip(y, rows):
+        swept = r.counters.get("swept_tests", 0)
+        text = f" ×{1 if r.baseline else r.ratio:.2f}; {swept:.0f} swept tests/step; moved {r.accuracy['difference']:.2g} px"
+        ax.text(r.ms, yy, text, va="center", fontsize=8)
+    ax.set_yticks(y)
+    ax.set_yticklabels(labels, fontsize=8)
+    ax.set_xlabel("time per step (ms)")
+    ax.set_xlim(0, max(r.ms for r in rows) * 2.1)
+    ax.set_title(f"4  Declared effects: {rows[0].scene}")
+
+
+def _pymunk(ax, rows):
+    colors = {}
+    for r in rows:
+        engine = r.variant.split(",")[0] if "pymunk" in r.variant else r.variant.split(", ")[1]
+        color = colors.setdefault(engine, f"C{len(colors) + 3}")
+        marker = "o" if r.scene.startswith("pyramid") else "^"
+        ax.scatter([r.ms], [max(r.accuracy["drift"], FLOOR)], marker=marker, s=70, color=color, zorder=3)
+        ax.annotate(f"{engine}\n{r.scene}", (r.ms, max(r.accuracy["drift"], FLOOR)), textcoords="offset points",
+                    xytext=(6, -2), fontsize=7)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("time per step (ms, log scale)")
+    ax.set_ylabel("top crate drift (px, log scale)")
+    ax.set_title("5  physics2d against pymunk, 6 passes")
+    ax.grid(alpha=0.3, which="both")
+
+
+def plot(rows, path, subtitle):
+    """Draw every study present in `rows` (a dict of study name -> list of Row) and save a PNG at `path`."""
+    fig, axes = plt.subplots(2, 3, figsize=(18, 10.5))
+    _tunnelling_by_speed(axes[0][0], rows["tunnelling"])
+    _tunnelling_cost(axes[0][1], rows["tunnelling"])
+    _iterations(axes[0][2], rows["iterations"])
+    _contact_rule(axes[1][0], rows["rule"])
+    _effects(axes[1][1], rows["effects"])
+    if "pymunk" in rows:
+        _pymunk(axes[1][2], rows["pymunk"])
+    else:
+        axes[1][2].text(0.5, 0.5, "pymunk not installed:\nstudy 5 skipped", ha="center", va="center")
+        axes[1][2].set_axis_off()
+    fig.suptitle("What accuracy costs in time (lesson11 physics2d)", fontsize=15)
+    fig.text(0.5, 0.945, subtitle, ha="center", fontsize=8, color="dimgray")
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path

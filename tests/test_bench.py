@@ -1,0 +1,116 @@
+"""Smoke test of the accuracy-cost benchmark (lesson11/bench) at tiny sizes.
+
+It checks the benchmark's measured accuracy figures, never its times: the
+machine is shared, so wall time proves nothing here.
+"""
+import pytest
+
+from lesson11.bench import accuracy_cost as ac
+from lesson11.bench import scenes
+
+TINY = ac.Settings(shots=8, speeds=(500, 3000, 12000), substeps=(2, 4, 16), iterations=(1, 6, 20),
+                   pile_seconds=0.5, rule_scenes=("pyramid4",), compare_scenes=("pyramid4",),
+                   effects_seconds=1.0, repeats=1)
+
+
+@pytest.fixture(scope="module")
+def results():
+    rows, notes = ac.run(TINY)
+    return rows, notes
+
+
+def by_variant(rows, text):
+    return next(row for row in rows if text in row.variant)
+
+
+def test_ccd_never_tunnels_while_discrete_steps_do(results):
+    rows = results[0]["tunnelling"]
+    ccd = by_variant(rows, "CCD")
+    discrete = by_variant(rows, "discrete")
+    assert all(share == 0 for share in ccd.accuracy.values()), ccd.accuracy
+    assert discrete.accuracy[12000] == 1.0  # 100 px per step against a 10 px window: every shot passes
+    assert discrete.accuracy[500] == 0.0    # 4.2 px per step: always caught
+
+
+def test_more_sub_steps_tunnel_less(results):
+    rows = results[0]["tunnelling"]
+    chain = [by_variant(rows, "discrete")] + [by_variant(rows, f"×{n} ") for n in TINY.substeps]
+    for speed in TINY.speeds:
+        shares = [row.accuracy[speed] for row in chain]
+        assert shares == sorted(shares, reverse=True), f"{speed} px/s: {shares}"
+    totals = [sum(row.accuracy.values()) for row in chain]
+    assert totals[-1] < totals[0]
+    assert by_variant(rows, "×16").accuracy[12000] > 0  # sub-stepping still fails fast enough
+
+
+def test_shot_geometry_starts_clear_of_the_wall_and_ends_past_it():
+    for speed in (500, 12000):
+        travel = speed * ac.FRAME
+        start_x = scenes.WALL_X - scenes.WALL_WIDTH / 2 - scenes.BULLET_RADIUS - 1 - travel * 2
+        end_x = start_x + speed * ac.FRAME * ac.shot_frames(speed)
+        assert end_x > scenes.WALL_X + scenes.WALL_WIDTH / 2 + scenes.BULLET_RADIUS  # a free flight gets past
+
+
+def test_more_iterations_sink_less(results):
+    rows = [r for r in results[0]["iterations"] if r.variant.startswith("lesson")]
+    penetration = [r.accuracy["penetration"] for r in rows]  # iterations 1, 6, 20
+    assert penetration[0] > penetration[1] > penetration[2]
+    assert penetration[0] > 2.0   # measured 3.20 px with one pass
+    assert penetration[2] < 0.6   # measured 0.51 px with 20 passes: slop 0.5 px plus one step of gravity
+    baseline = [r for r in rows if r.baseline]
+    assert len(baseline) == 1 and "6 iterations" in baseline[0].variant
+
+
+def test_every_accuracy_figure_is_the_same_in_every_repeat():
+    settings = ac.Settings(**{**TINY.__dict__, "speeds": (3000,), "shots": 4, "pile_seconds": 0.2,
+                              "iterations": (2,), "effects_seconds": 0.2, "repeats": 2})
+    rows, _ = ac.run(settings)
+    assert all(row.consistent for group in rows.values() for row in group)
+    assert all(len(row.times) == 2 for group in rows.values() for row in group)
+
+
+def test_undeclared_effects_change_nothing_and_ccd_without_bullets_runs_no_swept_test(results):
+    rows = results[0]["effects"]
+    all_five, needed, ccd_idle, ccd_used = rows
+    assert all_five.baseline
+    assert needed.accuracy["difference"] < 1e-6       # same positions without friction and rotation
+    assert ccd_idle.accuracy["difference"] == 0.0     # "ccd" with no bullet: bit-for-bit the same run
+    assert ccd_idle.counters["swept_tests"] == 0
+    assert needed.counters["pair_tests"] == all_five.counters["pair_tests"]
+    assert ccd_used.counters["swept_tests"] == 24 * 27  # each of 24 bullets against the 27 other bodies
+
+
+def test_table_has_a_row_per_case_and_names_the_baselines(results):
+    rows, notes = results
+    text = ac.table([row for group in rows.values() for row in group])
+    body = text.splitlines()[2:]
+    assert len(body) == sum(len(group) for group in rows.values())
+    assert sum("1 (baseline)" in line for line in body) == sum(r.baseline for g in rows.values() for r in g)
+    assert "no shot tunnels at any speed" in next(line for line in body if "CCD" in line)
+
+
+def test_pymunk_pile_holds_up_like_the_lesson_world(results):
+    pytest.importorskip("pymunk")
+    rows = results[0]["pymunk"]
+    mine = next(r for r in rows if "lesson solver" in r.variant)
+    theirs = next(r for r in rows if "pymunk" in r.variant)
+    assert theirs.accuracy["penetration"] < 0.2   # measured 0.06 px (pymunk's slop is 0.1 px)
+    assert theirs.accuracy["drift"] < mine.accuracy["drift"]
+
+
+def test_quick_run_writes_table_and_plot(tmp_path, monkeypatch):
+    pytest.importorskip("matplotlib")
+    smaller = ac.Settings(**{**TINY.__dict__, "shots": 3, "pile_seconds": 0.2, "effects_seconds": 0.2})
+    monkeypatch.setattr(ac, "QUICK", smaller)
+    assert ac.main(["--quick", "--out-dir", str(tmp_path)]) == 0
+    table = (tmp_path / "bench_accuracy_cost.md").read_text(encoding="utf-8")
+    assert "| study | scene | variant |" in table and "Machine:" in table
+    png = (tmp_path / "bench_accuracy_cost.png").read_bytes()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 20_000
+
+
+def test_bad_repeats_is_a_one_line_error(capsys):
+    with pytest.raises(SystemExit) as stop:
+        ac.main(["--repeats", "0"])
+    assert stop.value.code == 2
+    assert "must be a whole number >= 1, got 0" in capsys.readouterr().err
