@@ -284,3 +284,38 @@ def test_nan_set_by_hand_is_caught_before_it_spreads():
         bad = Body(box_points(5, 5), (0, 0), 1)
         bad.pos = Vector2(math.inf, 0)
         world.add(bad)
+
+
+# ---- the accumulated solver (arbiter.py) ----------------------------------------------------------------
+
+def test_clip_manifold_gives_each_point_its_own_depth():
+    from lesson11.physics2d.collision import clip_manifold
+    floor = placed_box(200, 20, (0, 10))
+    tilted = placed_box(40, 20, (0, -9.5), 1)  # 1° tilt: one corner deeper than the other
+    normal, _ = sat(floor, tilted)
+    depths = sorted(d for _, d in clip_manifold(floor, tilted, normal))
+    assert len(depths) == 2 and depths[0] < depths[1]
+    one = math.radians(1)
+    assert depths[1] == pytest.approx(-9.5 + 10 * math.cos(one) + 20 * math.sin(one), abs=1e-9)  # lower corner
+    assert depths[0] == pytest.approx(-9.5 + 10 * math.cos(one) - 20 * math.sin(one), abs=1e-9)
+
+
+def test_accumulated_solver_rests_without_creep_and_respects_effects():
+    """A crate on the 22° slope of a static ramp: the accumulated solver holds it (solve, then move)."""
+    ramp = Body(box_points(600, 40), (0, 0), 0, angle=math.radians(22))
+    normal = Vector2(0, -1).rotate_rad(math.radians(22))
+    crate = Body(box_points(40, 40), normal * 40.2, 1, angle=math.radians(22))
+    world = World([ramp, crate], solver="accumulated", contact_rule="clip", iterations=10)
+    start = crate.pos.copy()
+    for _ in range(360):
+        world.step()
+    assert (crate.pos - start).length() < 1.0  # measured 0.2 px in 3 s; the lesson's solver creeps 3.1 px/s
+    frictionless = World([Body(box_points(600, 40), (0, 0), 0, angle=math.radians(22)),
+                          Body(box_points(40, 40), normal * 40.2, 1, angle=math.radians(22))],
+                         solver="accumulated", effects=LESSON_EFFECTS - {"friction"})
+    for _ in range(120):
+        frictionless.step()
+    assert frictionless.bodies[1].vel.length() > 300  # slides: g sin 22° ≈ 367 px/s after 1 s
+    assert all(c.friction_impulse == 0 for arb in frictionless.arbiters.values() for c in arb.points)
+    with pytest.raises(ValueError, match="solver must be"):
+        World(solver="magic")

@@ -36,7 +36,7 @@ def centre_of(points):
     return sum(points, Vector2()) / len(points)
 
 
-def sat(pa, pb):
+def sat(pa, pb, margin=0.0):
     """Separating Axis Test for two convex polygons given as world points.
 
     Projects both onto every edge normal of both. One axis whose shadows do not
@@ -49,13 +49,16 @@ def sat(pa, pb):
     the lesson's overlap whenever neither shadow contains the other; when one
     does (a deep hit), the lesson's overlap is too short to separate the pair.
     When both ways are equally long, the normal points from A's centre to B's.
+
+    margin (px, default 0) also reports pairs less than `margin` apart, with a
+    negative depth (minus the gap): the accumulated solver's speculative contacts.
     """
     best_axis, best_depth = None, math.inf
     for axis in edge_normals(pa) + edge_normals(pb):
         min_a, max_a = project(pa, axis)
         min_b, max_b = project(pb, axis)
         overlap = min(max_a, max_b) - max(min_a, min_b)
-        if overlap <= TOUCH_TOLERANCE:
+        if overlap <= TOUCH_TOLERANCE - margin:
             return None  # a gap (or exact touching): apart
         forwards, backwards = max_a - min_b, max_b - min_a
         depth = min(forwards, backwards)
@@ -191,13 +194,15 @@ def _clip(v1, v2, direction, offset):
     return kept
 
 
-def clip_contact_points(pa, pb, normal):
-    """Contact points by edge clipping, as production engines compute them (up to two).
+def clip_manifold(pa, pb, normal, margin=0.0):
+    """Contact points by edge clipping, each with its own depth: [(point, depth px), ...], up to two.
 
     The reference edge is the face most perpendicular to the normal (of A along
     +normal or of B along -normal); the other shape's facing edge (incident) is
     clipped to the reference edge's side planes, and points behind the
-    reference face are kept. Returns the clipped points (world px).
+    reference face are kept, with depth = how far behind the face they are.
+    Falls back to the corners rule (with the pair's depth) if clipping keeps nothing.
+    With a margin (px), points up to `margin` in front of the face are kept too, with negative depth.
     """
     a1, a2, a_far = _best_edge(pa, normal)
     b1, b2, b_far = _best_edge(pb, -normal)
@@ -210,8 +215,17 @@ def clip_contact_points(pa, pb, normal):
     if len(kept) == 2:
         kept = _clip(kept[0], kept[1], -side, -side.dot(ref2))
     face = ref_normal.dot(ref_far)
-    points = [p for p in kept if ref_normal.dot(p) <= face + TOUCH_TOLERANCE]
-    return points or contact_points(pa, pb, normal)
+    manifold = [(p, face - ref_normal.dot(p)) for p in kept if ref_normal.dot(p) <= face + TOUCH_TOLERANCE + margin]
+    if manifold:
+        return manifold
+    hit = sat(pa, pb, margin)
+    depth = hit[1] if hit is not None else 0.0
+    return [(p, depth) for p in contact_points(pa, pb, normal)]
+
+
+def clip_contact_points(pa, pb, normal):
+    """Contact points by edge clipping, as production engines compute them (up to two): clip_manifold's points."""
+    return [point for point, _ in clip_manifold(pa, pb, normal)]
 
 
 def circle_toi(p1, v1, r1, p2, v2, r2, dt):
