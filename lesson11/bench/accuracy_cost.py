@@ -22,6 +22,7 @@ import math
 import os
 import platform
 import statistics
+import subprocess
 import sys
 import time
 from dataclasses import dataclass, field
@@ -97,7 +98,8 @@ class Row:
 
 @dataclass
 class Case:
-    """A case to measure: run() returns a Measurement."""
+    """A case to measure: run() makes a generator that yields after each piece of work
+    and finally returns a Measurement."""
     study: str
     scene: str
     variant: str
@@ -109,13 +111,18 @@ class Case:
 # ---------------------------------------------------------------- running
 
 def measure(cases, repeats, progress=None):
-    """Run every case `repeats` times in round-robin order; return one Row per case (median time)."""
+    """Run every case `repeats` times; return one Row per case with the median time.
+
+    Within a repeat the cases advance in lockstep, one small piece of work
+    (a step, or a shot) each in turn, so a slow moment on a shared machine
+    slows every case of the study alike and the ratios stay fair.
+    """
     results = [[] for _ in cases]
     for repeat in range(repeats):
-        for case, runs in zip(cases, results):
-            if progress:
-                progress(f"  repeat {repeat + 1}/{repeats}: {case.study} · {case.scene} · {case.variant}")
-            runs.append(case.run())
+        if progress:
+            progress(f"  {cases[0].study}: repeat {repeat + 1}/{repeats}, {len(cases)} cases in lockstep")
+        for runs, measurement in zip(results, lockstep([case.run() for case in cases])):
+            runs.append(measurement)
     rows = []
     for case, runs in zip(cases, results):
         first = runs[0]
@@ -129,6 +136,20 @@ def measure(cases, repeats, progress=None):
         if base:
             row.ratio = row.ms / base[0].ms
     return rows
+
+
+def lockstep(runs):
+    """Advance generator runs one yield each in turn until all have returned; their Measurements, in order."""
+    results = [None] * len(runs)
+    alive = list(range(len(runs)))
+    while alive:
+        for index in list(alive):
+            try:
+                next(runs[index])
+            except StopIteration as done:
+                results[index] = done.value
+                alive.remove(index)
+    return results
 
 
 def step_timed(step, count):
@@ -151,7 +172,10 @@ def shot_frames(speed):
 
 
 def tunnelling_run(settings, substeps, ccd):
-    """All shots at all speeds with one method: {speed: share of shots that tunnel}, and the stepping time."""
+    """All shots at all speeds with one method: {speed: share of shots that tunnel}, and the stepping time.
+
+    A generator (see measure): it yields after each shot.
+    """
     accuracy, spent, simulated = {}, 0.0, 0.0
     for speed in settings.speeds:
         travel = speed * FRAME
@@ -164,6 +188,7 @@ def tunnelling_run(settings, substeps, ccd):
             spent += step_timed(world.step, frames * substeps)
             simulated += frames * FRAME
             tunnels += scenes.tunnelled(bullet)
+            yield
         accuracy[speed] = tunnels / settings.shots
     return Measurement(accuracy, spent, simulated)
 
@@ -201,7 +226,10 @@ class Physics2dPile:
 
 
 def pile_run(make_pile, seconds):
-    """Step a pile for `seconds`: floor penetration (worst, px), top-crate drift (px) and kinetic energy at the end."""
+    """Step a pile for `seconds`: floor penetration (worst, px), top-crate drift (px) and kinetic energy at the end.
+
+    A generator (see measure): it yields after each step.
+    """
     pile = make_pile()
     start = tuple(pile.top_position())
     steps = round(seconds / FRAME)
@@ -209,6 +237,7 @@ def pile_run(make_pile, seconds):
     for _ in range(steps):
         spent += step_timed(pile.step, 1)
         penetration = max(penetration, scenes.floor_penetration(pile.crate_corners()))
+        yield
     top = pile.top_position()
     drift = math.hypot(top[0] - start[0], top[1] - start[1])
     accuracy = {"penetration": round(penetration, 6), "drift": round(drift, 6),
@@ -270,10 +299,13 @@ def pymunk_cases(settings):
 # ---------------------------------------------------------------- 4. effects
 
 def world_run(make_world, seconds):
-    """Step a world for `seconds`; keep its counters per step and its final state."""
+    """Step a world for `seconds`; keep its counters per step and its final state. Yields after each step."""
     world = make_world()
     steps = round(seconds / FRAME)
-    spent = step_timed(world.step, steps)
+    spent = 0.0
+    for _ in range(steps):
+        spent += step_timed(world.step, 1)
+        yield
     counters = {key: value / steps for key, value in world.counters.items() if key != "steps"}
     return Measurement({}, spent, steps, counters, scenes.state_of(world))
 
@@ -356,12 +388,28 @@ def pymunk_version():
     return pymunk.version
 
 
+def physics2d_note():
+    """Which physics2d was measured: its last git commit, and whether the working tree changes it."""
+    folder = Path(world_module.__file__).resolve().parent
+    try:
+        commit = subprocess.run(["git", "log", "-1", "--format=%h %cs", "--", "."], cwd=folder, capture_output=True,
+                                text=True, timeout=10).stdout.strip()
+        changed = subprocess.run(["git", "status", "--porcelain", "--", "."], cwd=folder, capture_output=True,
+                                 text=True, timeout=10).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return "physics2d: not in a git checkout"
+    if not commit:
+        return "physics2d: not in a git checkout"
+    return f"physics2d at commit {commit}" + (" plus uncommitted changes" if changed else "")
+
+
 def machine_note():
     """Cores, Python, pygame-ce, pymunk, the platform and the load when the run started."""
     import pygame
     load = " / ".join(f"{x:.2f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "n/a"
     return (f"{os.cpu_count()} cores · Python {platform.python_version()} · pygame-ce {pygame.version.ver} · "
-            f"pymunk {pymunk_version() or 'not installed'} · {platform.platform()} · load average {load}")
+            f"pymunk {pymunk_version() or 'not installed'} · {platform.platform()} · load average {load} · "
+            f"{physics2d_note()}")
 
 
 # ---------------------------------------------------------------- main

@@ -15,16 +15,17 @@ def _tunnelling_by_speed(ax, rows):
         speeds = list(row.accuracy)
         shares = [100 * row.accuracy[s] for s in speeds]
         style = dict(lw=3, color="black") if "CCD" in row.variant else dict(lw=1.8)
-        cost = "1 (baseline)" if row.baseline else f"{row.ratio:.1f}"
-        ax.plot(speeds, shares, marker="o", ms=4, label=f"{row.variant.split(' (')[0].split(',')[0]}  "
-                                                          f"(time × {cost})", **style)
+        cost = 1.0 if row.baseline else row.ratio
+        name = "CCD, 1/120 s" if "CCD" in row.variant else row.variant.replace(" (", ", ").rstrip(")")
+        ax.plot(speeds, shares, marker="o", ms=4, label=f"{name}   time ×{cost:.1f}", **style)
     ax.set_xscale("log")
     ax.set_xticks(speeds)
     ax.set_xticklabels([f"{s / 1000:g}k" for s in speeds])
     ax.minorticks_off()
     ax.set_xlabel("bullet speed (px/s, log scale)")
     ax.set_ylabel("shots that tunnel through the wall (%)")
-    ax.set_ylim(-4, 104)
+    ax.set_ylim(-4, 140)
+    ax.set_yticks(range(0, 101, 20))
     ax.set_title("1a  Tunnelling: 3 px bullet, 4 px wall")
     ax.legend(fontsize=8, loc="upper left")
 
@@ -51,7 +52,10 @@ def _tunnelling_cost(ax, rows):
         label = f"{name}: none tunnel\nat any tested speed" if ccd and safe == top else name
         ax.annotate(label, (ratio, safe), textcoords="offset points", xytext=(8, -4), fontsize=8)
     ax.set_xscale("log", base=2)
-    ax.set_xlabel("time per simulated second (× discrete, log scale)")
+    ax.set_xticks([1, 2, 4, 8, 16])
+    ax.set_xticklabels(["×1", "×2", "×4", "×8", "×16"])
+    ax.minorticks_off()
+    ax.set_xlabel("time per simulated second, relative to discrete (log scale)")
     ax.set_ylabel("highest speed with no tunnelling (px/s)")
     ax.set_ylim(0, top * 1.15)
     ax.set_xlim(0.7, max(r.ratio for r in rows if not r.baseline) * 2.2)
@@ -88,30 +92,34 @@ def _contact_rule(ax, rows):
     colors = {}
     for r in rows:
         color = colors.setdefault(r.scene, f"C{len(colors)}")
-        for key, style, filled in (("drift", "", True), ("penetration", "", False)):
-            ax.scatter([r.ms], [max(r.accuracy[key], FLOOR)], marker=markers[r.variant], s=60,
-                       facecolors=color if filled else "none", edgecolors=color, zorder=3)
-        ax.annotate(f"{r.scene} {r.variant.strip(chr(34))}", (r.ms, max(r.accuracy["drift"], FLOOR)),
-                    textcoords="offset points", xytext=(6, 2), fontsize=8)
+        rule = r.variant.strip('"')
+        ax.scatter([r.ms], [r.accuracy["drift"]], marker=markers[r.variant], s=70, color=color, zorder=3)
+        ax.scatter([r.ms], [r.accuracy["penetration"]], marker=markers[r.variant], s=70, facecolors="none",
+                   edgecolors=color, zorder=3)
+        ax.annotate(f"{r.scene}, {rule}", (r.ms, r.accuracy["drift"]), textcoords="offset points",
+                    xytext=(7, 3), fontsize=8, color=color)
     ax.scatter([], [], marker="o", color="gray", label="filled: top crate drift")
     ax.scatter([], [], marker="o", facecolors="none", edgecolors="gray", label="hollow: floor penetration")
-    ax.scatter([], [], marker="o", color="gray", label="circle: corners rule")
-    ax.scatter([], [], marker="s", color="gray", label="square: clip rule")
-    ax.set_yscale("log")
+    ax.scatter([], [], marker="o", color="gray", label='circle: "corners" (lesson)')
+    ax.scatter([], [], marker="s", color="gray", label='square: "clip" (edge clipping)')
+    ax.set_ylim(0, max(max(r.accuracy["drift"], r.accuracy["penetration"]) for r in rows) * 1.25)
+    ax.set_xlim(0, max(r.ms for r in rows) * 1.45)
     ax.set_xlabel("time per step (ms)")
-    ax.set_ylabel("error (px, log scale; lower is better)")
+    ax.set_ylabel("error (px; lower is better)")
     ax.set_title("3  Contact rule, lesson solver, 6 passes")
-    ax.legend(fontsize=8, loc="center right")
-    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8, loc="upper right")
+    ax.grid(alpha=0.3)
 
 
 def _effects(ax, rows):
-    labels = [r.variant.replace("LESSON_EFFECTS", "all").replace(", ", ",\n", 1) for r in rows]
+    labels = [r.variant.replace("LESSON_EFFECTS (all five)", "all five lesson effects")
+              .replace("LESSON_EFFECTS", "all five").replace(", ", ",\n", 1) for r in rows]
     y = list(range(len(rows)))[::-1]
     ax.barh(y, [r.ms for r in rows], color=["tab:gray" if r.baseline else "tab:blue" for r in rows])
     for yy, r in zip(y, rows):
         swept = r.counters.get("swept_tests", 0)
-        text = f" ×{1 if r.baseline else r.ratio:.2f}; {swept:.0f} swept tests/step; moved {r.accuracy['difference']:.2g} px"
+        text = (f" ×{1 if r.baseline else r.ratio:.2f};  {swept:.0f} swept tests/step;\n"
+                f" end positions differ by {r.accuracy['difference']:.2g} px")
         ax.text(r.ms, yy, text, va="center", fontsize=8)
     ax.set_yticks(y)
     ax.set_yticklabels(labels, fontsize=8)
@@ -125,14 +133,22 @@ def _pymunk(ax, rows):
     for r in rows:
         engine = r.variant.split(",")[0] if "pymunk" in r.variant else r.variant.split(", ")[1]
         color = colors.setdefault(engine, f"C{len(colors) + 3}")
-        marker = "o" if r.scene.startswith("pyramid") else "^"
-        ax.scatter([r.ms], [max(r.accuracy["drift"], FLOOR)], marker=marker, s=70, color=color, zorder=3)
-        ax.annotate(f"{engine}\n{r.scene}", (r.ms, max(r.accuracy["drift"], FLOOR)), textcoords="offset points",
-                    xytext=(6, -2), fontsize=7)
+        pyramid = r.scene.startswith("pyramid")
+        ratio = 1 if r.baseline else r.ratio
+        ax.scatter([r.ms], [max(r.accuracy["drift"], FLOOR)], marker="o" if pyramid else "^", s=80, color=color,
+                   zorder=3)
+        ax.annotate(f"{engine}, {r.scene}\ntime ×{ratio:.3g}", (r.ms, max(r.accuracy["drift"], FLOOR)),
+                    textcoords="offset points", xytext=(8, -22) if pyramid else (-20, 9), fontsize=8, color=color)
     ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.set_xlim(min(r.ms for r in rows) / 2, max(r.ms for r in rows) * 40)
     ax.set_xlabel("time per step (ms, log scale)")
-    ax.set_ylabel("top crate drift (px, log scale)")
+    ax.set_ylabel("top crate drift (px, log scale; lower is better)")
+    ax.scatter([], [], marker="o", color="gray", label="pyramid4: 10 crates")
+    ax.scatter([], [], marker="^", color="gray", label="stack8: 8 crates in a column")
+    ax.legend(fontsize=8, loc="upper left")
+    drifts = [max(r.accuracy["drift"], FLOOR) for r in rows]
+    ax.set_ylim(min(drifts) / 15, max(drifts) * 40)
     ax.set_title("5  physics2d against pymunk, 6 passes")
     ax.grid(alpha=0.3, which="both")
 
@@ -153,6 +169,6 @@ def plot(rows, path, subtitle):
     fig.suptitle("What accuracy costs in time (lesson11 physics2d)", fontsize=15)
     fig.text(0.5, 0.945, subtitle, ha="center", fontsize=8, color="dimgray")
     fig.tight_layout(rect=(0, 0, 1, 0.94))
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=100)
     plt.close(fig)
     return path
