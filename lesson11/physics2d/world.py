@@ -181,22 +181,23 @@ class World:
         """Continuous collision detection for a circle bullet: move it to its first contact.
 
         Finds the earliest time of impact t in [0, dt] against every other body
-        (held still during the sweep; circles by circle_toi, polygons by
-        circle_polygon_toi), moves there, resolves the hit, and spends the rest
-        of dt moving with the new velocity.
+        (held still during the sweep, so the contact point lies where both
+        bodies are; circles by circle_toi, polygons by circle_polygon_toi),
+        moves there, resolves the hit, and spends the rest of dt moving with the
+        new velocity. A body that itself moves fast towards the bullet can
+        still be missed: only the bullet is swept.
         """
         first = None
         for other in self.bodies:
             if other is bullet:
                 continue
             self.counters["swept_tests"] += 1
-            motion = bullet.vel - other.vel
             if other.shape.kind == "circle":
-                t = collision.circle_toi(bullet.pos, motion, bullet.radius, other.pos, Vector2(),
+                t = collision.circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(),
                                          other.radius, dt)
-                hit = None if t is None else (t, (other.pos - bullet.pos - motion * t).normalize())
+                hit = None if t is None else (t, (other.pos - bullet.pos - bullet.vel * t).normalize())
             else:
-                hit = collision.circle_polygon_toi(bullet.pos, motion, bullet.radius,
+                hit = collision.circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius,
                                                    other.world_points(), dt)
             if hit is not None and (first is None or hit[0] < first[0]):
                 first = (hit[0], hit[1], other)
