@@ -1,7 +1,10 @@
 """The checker grades labs headless: solutions pass, each Hint bug gets its hint, hostile files get a verdict.
 
 Every lab run happens once per module (module-scoped fixtures run the checker's
-command line with --json on a batch of files); the tests read the JSON.
+command line with --json on a batch of files); the tests read the JSON. The
+mutants and the hostile near-copies of the solution are built from
+solutions/tumbling_crates.py by tests/mutants.py into a temporary directory;
+the short hostile files live in tests/fixtures/checker.
 """
 import hashlib
 import json
@@ -10,6 +13,8 @@ import subprocess
 import sys
 
 import pytest
+
+import mutants
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FIXTURES = os.path.join(ROOT, "tests", "fixtures", "checker")
@@ -42,14 +47,21 @@ def digests(paths):
     return {p: hashlib.sha256(open(p, "rb").read()).hexdigest() for p in paths}
 
 
-MUTANTS = sorted(f[:-3] for f in os.listdir(FIXTURES) if f.startswith("mutant_"))
-HOSTILE = sorted(f[:-3] for f in os.listdir(FIXTURES) if f.startswith("hostile_"))
+MUTANTS = sorted(mutants.MUTANTS)
+HOSTILE_FILES = sorted(f[:-3] for f in os.listdir(FIXTURES) if f.startswith("hostile_") and f.endswith(".py"))
+HOSTILE = sorted(HOSTILE_FILES + list(mutants.HOSTILE_COPIES))
 
 
 @pytest.fixture(scope="module")
-def graded(tmp_path_factory):
+def built(tmp_path_factory):
+    """The mutants and hostile near-copies, written from the current solution: {name: path}."""
+    return mutants.write_variants(tmp_path_factory.mktemp("mutants"), mutants.VARIANTS)
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory, built):
     """The solution, every mutant and the starter (if present), graded in one run with --json."""
-    files = [SOLUTION] + [fixture(m) for m in MUTANTS] + ([STARTER] if os.path.exists(STARTER) else [])
+    files = [SOLUTION] + [built[m] for m in MUTANTS] + ([STARTER] if os.path.exists(STARTER) else [])
     before = digests(files)
     csv_path = tmp_path_factory.mktemp("csv") / "grades.csv"
     status, out, err = run_checker("--json", "--csv", str(csv_path), *files)
@@ -59,9 +71,9 @@ def graded(tmp_path_factory):
 
 
 @pytest.fixture(scope="module")
-def hostile(tmp_path_factory):
-    """Every hostile fixture graded in one run with short limits."""
-    files = [fixture(h) for h in HOSTILE]
+def hostile(tmp_path_factory, built):
+    """Every hostile file (fixtures and built copies) graded in one run with short limits."""
+    files = [built[h] if h in built else fixture(h) for h in HOSTILE]
     before = digests(files)
     results = tmp_path_factory.mktemp("gradescope") / "results.json"
     status, out, err = run_checker("--json", "--csv", "none", "--timeout", str(HOSTILE_TIMEOUT), "--memory", "512",
@@ -103,9 +115,33 @@ def test_every_schema_field_is_present(graded):
     assert graded["status"] == 1  # mutants fail, so the run fails
 
 
-def test_grading_never_changes_a_submitted_file(graded, hostile):
+def test_grading_never_changes_a_submitted_file(graded, hostile, built):
     assert graded["unchanged"] and hostile["unchanged"]
     assert not os.path.exists(os.path.join(FIXTURES, "__pycache__"))
+    assert not os.path.exists(os.path.join(os.path.dirname(built[MUTANTS[0]]), "__pycache__"))
+
+
+# ---------------------------------------------------------------- the files built from the solution
+
+@pytest.mark.parametrize("name", sorted(mutants.VARIANTS))
+def test_each_built_file_differs_from_the_solution_only_by_its_edits(name):
+    solution = open(SOLUTION, encoding="utf-8").read()
+    source = mutants.variant_source(name, solution)
+    _, edits = mutants.VARIANTS[name]
+    assert source != solution
+    for old, new in edits:
+        assert new in source and (old in new or old not in source), (name, old)
+    # apart from the docstring's first line (which names the bug), every new line comes from an edit
+    added = [line for line in source.splitlines() if line not in solution.splitlines()]
+    assert added[0].startswith(mutants.TITLE[:-1] + " (")
+    assert all(any(line in new for _, new in edits) for line in added[1:]), added
+
+
+def test_an_edit_that_no_longer_fits_the_solution_fails_loudly():
+    with pytest.raises(AssertionError, match="occurs 0 times"):
+        mutants.apply_edits("a = 1\n", [("b = 2", "b = 3")], "mutant_x")
+    with pytest.raises(AssertionError, match="occurs 2 times"):
+        mutants.apply_edits("a = 1\na = 1\n", [("a = 1", "a = 2")], "mutant_x")
 
 
 def test_csv_has_one_row_per_file(graded):
