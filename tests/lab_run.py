@@ -3,7 +3,8 @@
 Used by tests/test_lab_*.py and tests/test_runtime.py. The child is the plain
 `python LAB.py` a student runs, with LESSON11_LAB_SETTINGS naming a settings
 file and SDL's dummy drivers, so the file's `if __name__ == "__main__"` path
-is the one under test.
+is the one under test. Measurements of a record (speed, floor penetration,
+overlaps, flat error) are the checker's: checker/crates_scenarios.py.
 
 Scene geometry of Tumbling Crates (px; y grows downward): the floor's top face
 is at y = 560 (a 900 × 40 box centred at (450, 580)); the ramp is a 420 × 24
@@ -69,23 +70,6 @@ def run_lab(lab_path, settings, work_dir, timeout=120):
     with open(settings["record"], encoding="utf-8") as handle:
         record = json.load(handle)
     return LabRun(proc.stdout, record)
-
-
-def speed(body):
-    """Speed (px/s) of a recorded body."""
-    return math.hypot(*body["vel"])
-
-
-def flat_error(angle):
-    """Distance (rad) from `angle` to the nearest multiple of 90°: 0 when a crate lies on a flat side."""
-    quarter = math.pi / 2
-    rest = angle % quarter
-    return min(rest, quarter - rest)
-
-
-def floor_depth(body):
-    """How far (px) the body's lowest corner is below the floor's top face (negative: above it)."""
-    return max(p[1] for p in body["points"]) - FLOOR_TOP
 
 
 def ramp_crate(along, w, h, gap=0.25):
