@@ -209,6 +209,8 @@ def test_declared_effects_only_those_run():
     assert world.counters["contacts"] > 0
     with pytest.raises(ValueError, match="unknown effects"):
         World(effects={"gravity", "magnetism"})
+    with pytest.raises(ValueError, match="not the string 'gravity'"):
+        World(effects="gravity")  # a bare string would otherwise be read letter by letter
     assert LESSON_EFFECTS < set(EFFECTS)
 
 

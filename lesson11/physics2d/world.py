@@ -67,6 +67,8 @@ class World:
             raise ValueError(f"solver must be one of {list(SOLVERS)}, got {solver!r}")
         self.solver = solver
         self.arbiters = {}
+        if isinstance(effects, str):
+            raise ValueError(f"effects must be a set of names such as {{{effects!r}}}, not the string {effects!r}")
         unknown = set(effects) - set(EFFECTS)
         if unknown:
             raise ValueError(f"unknown effects {sorted(unknown)}; choose from {list(EFFECTS)}")
