@@ -7,7 +7,8 @@ dummy video and audio drivers, in its own process group, with:
   - RLIMIT_AS (`memory_mb`): a memory hog gets MemoryError or dies;
   - RLIMIT_CPU: the timeout plus a margin, a second line of defence;
   - RLIMIT_FSIZE: no file the lab writes can grow past 64 MB;
-  - an output cap (`max_output` bytes over stdout + stderr): a flood is cut off and the child killed.
+  - an output cap (`max_output` bytes over stdout + stderr): the child raises at the print() that
+    crosses it (so the report names the line); past FLOOD_SLACK more the parent kills the group.
 """
 import json
 import os
@@ -22,6 +23,7 @@ from dataclasses import dataclass, field
 PROJECT_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
 RECORD_LIMIT = 48 * 1024 * 1024  # bytes: largest record the parent will read
+FLOOD_SLACK = 64 * 1024          # bytes past max_output before the parent kills a run (the child stops first)
 
 
 @dataclass
@@ -79,7 +81,7 @@ def run_child(lab_path, task, settings, limits):
     """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour."""
     lab_path = os.path.abspath(lab_path)
     with tempfile.TemporaryDirectory(prefix="checker-") as work:
-        settings = dict(settings)
+        settings = dict(settings, max_output=limits.max_output)  # the child stops a flood at its print()
         if task == "scenario":
             settings["record"] = os.path.join(work, "record.json")
         settings_path = os.path.join(work, "settings.json")
@@ -122,7 +124,7 @@ def run_child(lab_path, task, settings, limits):
                 room = limits.max_output - total
                 chunks[key.data].append(data[:max(room, 0)])
                 total += len(data)
-                if total > limits.max_output:
+                if total > limits.max_output + FLOOD_SLACK:
                     status = "flood"
                     break
             if status:
