@@ -11,7 +11,8 @@ the module name "lab_under_test", so its `if __name__ == "__main__":` guard does
 not run main(). No bytecode is written next to the submitted file.
 
 The parent sets the resource limits and the wall-clock timeout; this file only
-arms faulthandler so that a run killed for taking too long leaves a traceback
+arms faulthandler (on SIGXCPU, the CPU-time limit, and shortly before the
+wall-clock limit) so that a run killed for taking too long leaves a traceback
 (where the lab was looping) in "timeout_traceback.txt" in the working directory.
 """
 import faulthandler
@@ -131,14 +132,14 @@ def _alarm(signum, frame):
 
 
 def call_limited(func, seconds, *args):
-    """func(*args), interrupted with FunctionTimeout after `seconds` of wall time (SIGALRM)."""
-    previous = signal.signal(signal.SIGALRM, _alarm)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
+    """func(*args), interrupted with FunctionTimeout after `seconds` of CPU time (SIGPROF)."""
+    previous = signal.signal(signal.SIGPROF, _alarm)
+    signal.setitimer(signal.ITIMER_PROF, seconds)
     try:
         return func(*args)
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, previous)
 
 
 def run_probe(module, lab_path, probes, seconds):
@@ -155,7 +156,7 @@ def run_probe(module, lab_path, probes, seconds):
             result["functions"][name] = {"ok": True, "data": call_limited(probe, seconds, module)}
         except FunctionTimeout as exc:
             error = describe(exc, lab_path)
-            error.update(kind="timeout", message=f"{name}() was still running after {seconds:g} s")
+            error.update(kind="timeout", message=f"{name}() was still running after {seconds:g} s of CPU time")
             result["functions"][name] = {"ok": False, "error": error}
         except Exception as exc:  # the student's function raised: report it with file and line
             result["functions"][name] = {"ok": False, "error": describe(exc, lab_path)}
@@ -180,6 +181,7 @@ def main(argv):
     trace = open("timeout_traceback.txt", "w")
     if budget > 0:
         faulthandler.dump_traceback_later(budget, exit=True, file=trace)
+    faulthandler.register(signal.SIGXCPU, file=trace, all_threads=False)  # the CPU-time limit: where it looped
     os._exit = _blocked_os_exit
     with open(settings_path, encoding="utf-8") as handle:
         settings = json.load(handle)

@@ -15,9 +15,9 @@ def describe_run_failure(run, lab_name, what):
         where = f" (it was at {lab_name}, line {line[0]}{': ' + line[1] if line[1] else ''})" if line else ""
         phase = run.result.get("phase")
         if phase == "import":
-            return (f"{what} did not finish importing within {run.timeout:.3g} s{where}: is there an endless loop "
+            return (f"{what} did not finish importing within {run.timeout:.3g} s of CPU time{where}: is there an endless loop "
                     "outside main()?")
-        return (f"{what} was stopped after {run.timeout:.3g} s{where}: the loop never ended. Is "
+        return (f"{what} was stopped after {run.timeout:.3g} s of CPU time{where}: the loop never ended. Is "
                 "`and lab.frame_budget()` still in the while condition?")
     if error.get("kind") == "flood":
         return (f"{what} printed more than {run.max_output // 1024} KB of output and was stopped; it was "

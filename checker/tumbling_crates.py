@@ -150,6 +150,9 @@ def _vec(v):
     return f"({v[0]:.2f}, {v[1]:.2f})"
 
 
+STEPS_OF = {"sat": "2 and 3", "resolve": "4 and 5", "apply_impulse": "6"}
+
+
 def _function(sub, functions, name):
     """The probe data of one lab function; Error (once, under this function's check) if it raised or looped."""
     entry = functions.get(name)
@@ -157,7 +160,9 @@ def _function(sub, functions, name):
         raise Error(f"{sub.name} defines no {name}().", HINTS["crash"])
     if not entry["ok"]:
         error = entry["error"]
-        raise Error(describe_function_error(name, error, sub.name), HINTS["crash"])
+        hint = Hint(None, f"the error in {name}()", f"Your code in {name}() (steps {STEPS_OF[name]}) stopped with "
+                    "the error above; fix it at the line shown, then run the checker again.")
+        raise Error(describe_function_error(name, error, sub.name), hint)
     return entry["data"]
 
 
