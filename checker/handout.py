@@ -141,11 +141,26 @@ def _dump(node):
     return ast.dump(node, annotate_fields=True, include_attributes=False)
 
 
-def _text(lines, lineno):
+def _text(lines, lineno, width=70):
     if lineno and 0 < lineno <= len(lines):
         text = lines[lineno - 1].strip()
-        return text if len(text) <= 70 else text[:67] + "..."
+        return text if width is None or len(text) <= width else text[:width - 3] + "..."
     return ""
+
+
+def _around_difference(mine, theirs, width=70):
+    """Both lines cut to `width` characters around where they first differ."""
+    if len(mine) <= width and len(theirs) <= width:
+        return mine, theirs
+    same = 0
+    while same < min(len(mine), len(theirs)) and mine[same] == theirs[same]:
+        same += 1
+    start = max(0, same - 25)
+
+    def cut(text):
+        piece = text[start:start + width]
+        return ("..." if start else "") + piece + ("..." if start + width < len(text) else "")
+    return cut(mine), cut(theirs)
 
 
 BODIES = ("body", "orelse", "finalbody", "handlers")
@@ -215,7 +230,8 @@ def compare(submission, starter, submission_name="the file", starter_name="the h
         line = my_origin[x.lineno - 1] if x is not None else None
         hand = their_origin[y.lineno - 1] if y is not None else None
         if x is not None and y is not None:
-            problems.append(f"line {line} `{_text(sub_lines, line)}` (the handout has `{_text(start_lines, hand)}`)")
+            mine_text, their_text = _around_difference(_text(sub_lines, line, None), _text(start_lines, hand, None))
+            problems.append(f"line {line} `{mine_text}` (the handout has `{their_text}`)")
         elif x is not None:
             problems.append(f"line {line} `{_text(sub_lines, line)}` was added")
         else:
