@@ -143,20 +143,22 @@ def call_limited(func, seconds, *args):
 
 
 def run_probe(module, lab_path, probes, seconds):
-    """Each of the lab's probes (name -> function(module)) in turn; a failing one gets its own error.
+    """Each of the lab's probes in turn; a failing one gets its own error.
 
-    Returns {"missing": [...], "functions": {name: {"ok": True, "data": ...} or {"ok": False, "error": ...}}}.
-    A probe that runs longer than `seconds` is stopped and reported with the line it was at.
+    `probes.PROBES` maps a probe's name to (the lab function it needs, probe(module, lab_path)).
+    Returns {"missing": [...], "functions": {probe name: {"ok": True, "data": ...} or
+    {"ok": False, "error": ...}}}. A probe that runs longer than `seconds` of CPU is stopped
+    and reported with the line it was at.
     """
     result = {"functions": {}, "missing": [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]}
-    for name, probe in probes.PROBES.items():
-        if not callable(getattr(module, name, None)):
+    for name, (function, probe) in probes.PROBES.items():
+        if not callable(getattr(module, function, None)):
             continue
         try:
-            result["functions"][name] = {"ok": True, "data": call_limited(probe, seconds, module)}
+            result["functions"][name] = {"ok": True, "data": call_limited(probe, seconds, module, lab_path)}
         except FunctionTimeout as exc:
             error = describe(exc, lab_path)
-            error.update(kind="timeout", message=f"{name}() was still running after {seconds:g} s of CPU time")
+            error.update(kind="timeout", message=f"{function}() was still running after {seconds:g} s of CPU time")
             result["functions"][name] = {"ok": False, "error": error}
         except Exception as exc:  # the student's function raised: report it with file and line
             result["functions"][name] = {"ok": False, "error": describe(exc, lab_path)}

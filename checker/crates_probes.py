@@ -19,7 +19,9 @@ the first configuration that differs.
 
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
+import ast
 import math
+import os
 
 from pygame import Vector2
 
@@ -29,6 +31,45 @@ from lesson11.physics2d import apply_impulse as reference_apply_impulse
 
 REQUIRED = ("sat", "apply_impulse", "resolve", "main")
 RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
+SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "solutions",
+                        "tumbling_crates.py")
+
+
+def with_reference_steps(module, lab_path, function, steps):
+    """The lab's `function` rebuilt with the inside of each step in `steps` taken from the solution.
+
+    Grading step 2 with the solution's step 3 (and so on) tells a mistake in one step from a
+    mistake in the next: e.g. a step 3 that negates the depth instead of the axis. The rest of
+    the function is the student's, compiled under the lab's file name at its own line numbers
+    and run in a copy of the lab's globals. Returns None if the steps' markers cannot be found.
+    """
+    from .handout import MarkerError, step_regions
+    try:
+        with open(lab_path, encoding="utf-8") as handle:
+            mine = handle.read().splitlines()
+        with open(SOLUTION, encoding="utf-8") as handle:
+            theirs = handle.read().splitlines()
+        my_regions, their_regions = step_regions(mine), step_regions(theirs)
+        tree = ast.parse("\n".join(mine))
+    except (OSError, MarkerError, SyntaxError, ValueError):
+        return None
+    node = next((n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == function), None)
+    if node is None or any(step not in my_regions or step not in their_regions for step in steps):
+        return None
+    first, last = node.lineno - 1, node.end_lineno
+    lines = list(mine)
+    for step in sorted(steps, reverse=True):
+        start, end, indent = my_regions[step]
+        their_start, their_end, their_indent = their_regions[step]
+        if not first < start < end < last + 1:
+            return None
+        body = [indent + line[len(their_indent):] if line.startswith(their_indent) else line
+                for line in theirs[their_start + 1:their_end]]
+        last += len(body) - (end - start - 1)
+        lines[start + 1:end] = body
+    namespace = dict(module.__dict__)
+    exec(compile("\n" * first + "\n".join(lines[first:last]) + "\n", lab_path, "exec"), namespace)
+    return namespace[function]
 
 
 def _placed(points, centre, angle_deg=0.0):
@@ -126,12 +167,25 @@ def _short_repr(value):
     return text if len(text) <= 60 else text[:57] + "..."
 
 
-def probe_sat(module):
+def probe_sat(module, lab_path):
     """The student's sat() on every pair, both orders, beside the lesson's answer and the shorter-way-out one."""
+    return _sat_cases(module.sat)
+
+
+def probe_sat_step2(module, lab_path):
+    """As probe_sat, with the solution's step 3 spliced into the student's sat(): step 2 graded on its own.
+
+    None when the step markers cannot be found (the checks then use probe_sat's cases).
+    """
+    spliced = with_reference_steps(module, lab_path, "sat", (3,))
+    return _sat_cases(spliced) if spliced else None
+
+
+def _sat_cases(sat):
     cases = []
     for name, pa, pb in sat_pairs():
         for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
-            got = module.sat([Vector2(p) for p in first], [Vector2(p) for p in second])
+            got = sat([Vector2(p) for p in first], [Vector2(p) for p in second])
             cases.append({
                 "pair": name, "order": order,
                 "a": [[p.x, p.y] for p in first], "b": [[p.x, p.y] for p in second],
@@ -179,7 +233,7 @@ def impulse_cases():
     ]
 
 
-def probe_apply_impulse(module):
+def probe_apply_impulse(module, lab_path):
     """The student's apply_impulse() on each case: each body's velocity and spin before, after and expected.
 
     Expected (the lesson): vA -= P/mA, ωA -= (ra × P)/IA, vB += P/mB, ωB += (rb × P)/IB.
@@ -260,7 +314,7 @@ def _k_forms(a, b, ra, rb, n):
     }
 
 
-def probe_resolve(module):
+def probe_resolve(module, lab_path):
     """The student's resolve() on each contact, with every impulse it applies recorded.
 
     Per case: the closing speed vn (px/s, < 0), e, the lesson's k and the mistakes' k's,
@@ -331,4 +385,6 @@ def _resolve_case(name, a, b, normal, ra, rb, vn, e, calls):
     return case
 
 
-PROBES = {"sat": probe_sat, "apply_impulse": probe_apply_impulse, "resolve": probe_resolve}
+# probe name -> (the lab function it needs, the probe)
+PROBES = {"sat_step2": ("sat", probe_sat_step2), "sat": ("sat", probe_sat),
+          "apply_impulse": ("apply_impulse", probe_apply_impulse), "resolve": ("resolve", probe_resolve)}

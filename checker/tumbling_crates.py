@@ -150,19 +150,15 @@ def _vec(v):
     return f"({v[0]:.2f}, {v[1]:.2f})"
 
 
-STEPS_OF = {"sat": "2 and 3", "resolve": "4 and 5", "apply_impulse": "6"}
-
-
-def _function(sub, functions, name):
-    """The probe data of one lab function; Error (once, under this function's check) if it raised or looped."""
-    entry = functions.get(name)
+def _function(sub, functions, probe, function, step):
+    """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped."""
+    entry = functions.get(probe)
     if entry is None:
-        raise Error(f"{sub.name} defines no {name}().", HINTS["crash"])
+        raise Error(f"{sub.name} defines no {function}().", HINTS["crash"])
     if not entry["ok"]:
-        error = entry["error"]
-        hint = Hint(None, f"the error in {name}()", f"Your code in {name}() (steps {STEPS_OF[name]}) stopped with "
-                    "the error above; fix it at the line shown, then run the checker again.")
-        raise Error(describe_function_error(name, error, sub.name), hint)
+        hint = Hint(step, f"the error in {function}()", f"Your code in {function}() stopped with the error above; "
+                    "fix it at the line shown, then run the checker again.")
+        raise Error(describe_function_error(function, entry["error"], sub.name), hint)
     return entry["data"]
 
 
@@ -272,7 +268,9 @@ def _depth_mistake(case, depth):
 @CHECKS.check(depends=["loads"])
 def sat_axes(sub, functions):
     """Step 2: sat() finds the smallest overlap over both shapes' edge normals (depth and axis), and None when apart."""
-    cases = _function(sub, functions, "sat")
+    cases = _function(sub, functions, "sat_step2", "sat", 2)  # your step 2 with the lesson's step 3
+    if cases is None:  # the step markers are broken (handout_unchanged says so): grade sat() as it is
+        cases = _function(sub, functions, "sat", "sat", 2)
     for case in cases:
         if case["got"] is not None and "bad" in case["got"]:
             raise Fail(f"sat() must return (normal, depth) or None; for {_label(case)} it returned "
@@ -318,13 +316,26 @@ def sat_axes(sub, functions):
     return Passed(f"all {len(cases)} pairs give the lesson's depth and axis", value=cases)
 
 
-@CHECKS.check(depends=["sat_axes"])
-def sat_normal(sub, cases):
+@CHECKS.check(depends=["loads", "sat_axes"])
+def sat_normal(sub, functions, step2_cases):
     """Step 3: the normal sat() returns points from A to B, with a positive depth."""
-    for case in cases:
-        got, want = case["got"], case["lesson"]
+    cases = _function(sub, functions, "sat", "sat", 3)
+    for case, step2 in zip(cases, step2_cases):
+        got, want, before = case["got"], case["lesson"], step2["got"]
+        if (got is None) != (before is None) or (got is not None and "bad" in got):
+            said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
+                                                f"overlaps by {got['depth']:.2f} px")
+            raise Fail(f"with your step 3, sat() says {_label(case)} {said}; with step 2 alone it was "
+                       f"{'apart' if before is None else 'a hit'}. Step 3 only turns the normal round.",
+                       HINTS["normal_flipped"])
         if got is None or want is None:
             continue
+        if not _close(abs(got["depth"]), abs(before["depth"])) or \
+                abs(abs(got["normal"][0] * before["normal"][0] + got["normal"][1] * before["normal"][1]) - 1) > 1e-6:
+            raise Fail(f"your step 3 changes more than the normal's direction: for {_label(case)} step 2 found "
+                       f"{abs(before['depth']):.2f} px along {_vec(before['normal'])} (or its opposite), but sat() "
+                       f"returns {got['depth']:.2f} px along {_vec(got['normal'])}. Turn the whole axis round: "
+                       "best_axis = -best_axis.", HINTS["normal_flipped"])
         if got["depth"] < 0:
             raise Fail(f"sat() gives a negative depth ({got['depth']:.2f} px) for {_label(case)}: flip the axis "
                        "(best_axis = -best_axis), not the depth.", HINTS["normal_flipped"])
@@ -355,7 +366,7 @@ K_MISTAKES = {
 @CHECKS.check(depends=["loads"])
 def resolve_k(sub, functions):
     """Step 4: resolve() applies the normal impulse j = -(1 + e) vn / k with both spin terms in k."""
-    cases = _function(sub, functions, "resolve")
+    cases = _function(sub, functions, "resolve", "resolve", 4)
     for case in cases:
         if case["calls"] == 0 or case["j"] is None:
             raise Fail(f"resolve() applied no impulse in '{case['case']}', where the contact closes at "
@@ -374,7 +385,7 @@ def resolve_k(sub, functions):
 @CHECKS.check(depends=["loads"])
 def resolve_friction(sub, functions):
     """Step 5: resolve() clamps friction with Coulomb's law, |jt| <= mu j, and leaves smaller jt alone."""
-    cases = _function(sub, functions, "resolve")
+    cases = _function(sub, functions, "resolve", "resolve", 5)
     for case in cases:
         friction, j, mu = case["friction"], case["j"], case["mu"]
         if friction is None or j is None:
@@ -440,7 +451,7 @@ def _spin_mistake(case, body, delta, want):
 @CHECKS.check(depends=["loads"])
 def apply_impulse_spin(sub, functions):
     """Step 6: apply_impulse() changes both spins, A by -(ra × P)/I_A and B by +(rb × P)/I_B."""
-    cases = _function(sub, functions, "apply_impulse")
+    cases = _function(sub, functions, "apply_impulse", "apply_impulse", 6)
     for case in cases:
         for body in ("a", "b"):
             before, after, want = case["before"][body], case["after"][body], case["expected"][body]
