@@ -257,13 +257,14 @@ class LabPanel:
                     WARNING)
         else:
             note = ("runs your sat() and resolve()" if hooked else "runs physics2d's sat() and resolve()", DIM)
-        warm = ("on" if now["warm_starting"] else "off") + ("" if reference else "  (reference solver only)")
+        warm = ("on" if now["warm_starting"] else "off") + (missing("warm_starting") or
+                                                             ("" if reference else "  (reference solver only)"))
         return [("S", "solver", "accumulated (reference)" if reference else "lesson",
                  WARNING if reference else colour("solver")),
                 ("", "", note[0], note[1]),
                 ("Up/Down", "iterations", str(now["iterations"]), colour("iterations")),
                 ("Left/Right", "sub-steps", f"{now['substeps']}{missing('substeps')}", colour("substeps")),
-                ("W", "warm start", warm + missing("warm_starting"),
+                ("W", "warm start", warm,
                  colour("warm_starting") if reference else DIM),
                 ("C", "correction", "on" if now["correction"] else "off", colour("correction")),
                 ("K", "contact rule", now["contact_rule"], colour("contact_rule"))]
