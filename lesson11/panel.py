@@ -303,7 +303,7 @@ class LabPanel:
             self.box = self.placed[0][0]
             return
         rows = self.lines(world)
-        m = self.shown
+        m = dict(self.shown, contacts=len(world.contacts))  # contacts as in a lab's own HUD line, every frame
         state = "PAUSED" if self.paused else f"{m['steps']} step{'' if m['steps'] == 1 else 's'} this frame"
         measured = [(f"physics {m['ms']:.1f} ms/frame", state),
                     (f"contacts {m['contacts']}", f"deepest {m['deepest']:.2f} px"),
