@@ -121,8 +121,12 @@ class LabPanel:
         self.shown = None       # the measured numbers on screen, refreshed every REFRESH_FRAMES
         self.font = None
         self.cache = {}
-        self.box = None         # after draw(): the panel's rectangle (px)
-        self.placed = []        # after draw(): (rectangle, text) of every line of text drawn
+        self.box = None         # after draw(): the panel's rectangle in the window (px)
+        self.placed = []        # after draw(): (rectangle, text) of every line of text on the panel
+        self.image = None       # the panel's picture, redrawn by render()
+        self.rendered = []      # (rectangle, text) of the lines in self.image
+        self.contacts_at = (0, 0)
+        self.dirty = True       # redraw the picture at the next draw()
 
     # ---- settings -----------------------------------------------------------------------
 
@@ -131,6 +135,7 @@ class LabPanel:
         if world is self.world:
             return
         self.world = world
+        self.dirty = True
         self.supported = {name: name not in NEW_ATTRIBUTES or hasattr(world, name) for name in SETTING_NAMES}
         self.base = {name: read_setting(world, name) for name in SETTING_NAMES}
         for name, value in self.overrides.items():
@@ -166,6 +171,7 @@ class LabPanel:
         """
         if event.type != pygame.KEYDOWN:
             return False
+        self.dirty = True
         key = event.key
         if key == pygame.K_p:
             self.paused = not self.paused
@@ -280,59 +286,78 @@ class LabPanel:
             self.cache[key] = self.font.render(words, True, colour)
         return self.cache[key]
 
-    def put(self, surface, words, colour, pos):
-        """Blit one line of text at pos (px, top-left) and remember its rectangle in self.placed."""
+    def put(self, target, words, colour, pos):
+        """Blit one line of text onto `target` at pos (px, top-left); remember where it lands in the window."""
         image = self.text(words, colour)
-        self.placed.append((image.get_rect(topleft=pos), words))
-        surface.blit(image, pos)
+        target.blit(image, pos)
+        self.rendered.append((image.get_rect(topleft=pos).move(self.box.topleft), words))
 
     def draw(self, surface, world):
         """Draw the panel in the window's top-right corner (below a lab's own HUD line).
 
-        Afterwards self.box is the panel's rectangle and self.placed lists (rectangle, text) of every line drawn.
+        The panel's picture is redrawn every REFRESH_FRAMES frames or after a key, and blitted
+        in between (so it costs a lab about one blit a frame); the contact count is drawn
+        every frame, like a lab's own HUD line. Afterwards self.box is the panel's rectangle
+        in the window and self.placed lists (rectangle, text) of every line of text on it.
         """
         self.adopt(world)
-        self.placed = []
-        if self.shown is None or self.frames % REFRESH_FRAMES == 0:
+        refresh = self.shown is None or self.frames % REFRESH_FRAMES == 0
+        if refresh:
             self.shown = self.measure(world)
         self.frames += 1
         right = surface.get_width() - 10
         if not self.visible:
             label = "[H] show the solver panel"
-            self.put(surface, label, DIM, (right - self.text(label, DIM).get_width(), 36))
-            self.box = self.placed[0][0]
+            image = self.text(label, DIM)
+            self.box = image.get_rect(topright=(right, 36))
+            surface.blit(image, self.box)
+            self.placed = [(self.box, label)]
             return
+        if refresh or self.dirty or self.image is None or self.box.right != right:
+            self.render(world, right)
+        surface.blit(self.image, self.box.topleft)
+        contacts = f"contacts {len(world.contacts)}"
+        image = self.text(contacts, TEXT)
+        surface.blit(image, self.contacts_at)
+        self.placed = self.rendered + [(image.get_rect(topleft=self.contacts_at), contacts)]
+
+    def render(self, world, right):
+        """Draw the panel's picture (all but the contact count) into self.image, its right edge at `right` px."""
+        self.dirty = False
+        self.rendered = []
         rows = self.lines(world)
-        m = dict(self.shown, contacts=len(world.contacts))  # contacts as in a lab's own HUD line, every frame
+        m = self.shown
         state = "PAUSED" if self.paused else f"{m['steps']} step{'' if m['steps'] == 1 else 's'} this frame"
         measured = [(f"physics {m['ms']:.1f} ms/frame", state),
-                    (f"contacts {m['contacts']}", f"deepest {m['deepest']:.2f} px"),
+                    (None, f"deepest {m['deepest']:.2f} px"),   # None: the contact count, drawn every frame
                     (f"kinetic energy {m['energy']:.3g}", "mass·px²/s²")]
         height = PADDING * 2 + LINE_HEIGHT * (len(rows) + len(measured) + 3) + GRAPH_HEIGHT + 8
-        box = self.box = pygame.Rect(right - PANEL_WIDTH, 36, PANEL_WIDTH, height)
-        shade = pygame.Surface(box.size, pygame.SRCALPHA)
-        shade.fill(BACKGROUND)
-        surface.blit(shade, box.topleft)
-        x, y = box.x + PADDING, box.y + PADDING
-        self.put(surface, "SOLVER PANEL", KEY, (x, y))
-        self.put(surface, "[H] hide", DIM, (box.right - PADDING - self.text("[H] hide", DIM).get_width(), y))
+        self.box = pygame.Rect(right - PANEL_WIDTH, 36, PANEL_WIDTH, height)
+        image = self.image = pygame.Surface(self.box.size, pygame.SRCALPHA)
+        image.fill(BACKGROUND)
+        x, y = PADDING, PADDING
+        self.put(image, "SOLVER PANEL", KEY, (x, y))
+        self.put(image, "[H] hide", DIM, (PANEL_WIDTH - PADDING - self.text("[H] hide", DIM).get_width(), y))
         y += LINE_HEIGHT
         for key, name, value, colour in rows:
             if key:
-                self.put(surface, f"[{key}]", KEY, (x, y))
-                self.put(surface, name, DIM, (x + 95, y))
-            self.put(surface, value, colour, (x + (190 if key else 95), y))
+                self.put(image, f"[{key}]", KEY, (x, y))
+                self.put(image, name, DIM, (x + 95, y))
+            self.put(image, value, colour, (x + (190 if key else 95), y))
             y += LINE_HEIGHT
-        self.put(surface, "[P] pause    [O] one step    [0] the World's own settings", KEY, (x, y))
+        self.put(image, "[P] pause    [O] one step    [0] the World's own settings", KEY, (x, y))
         y += LINE_HEIGHT + 4
         for left, right_text in measured:
-            self.put(surface, left, TEXT, (x, y))
-            self.put(surface, right_text, WARNING if right_text == "PAUSED" else DIM, (x + 215, y))
+            if left is None:
+                self.contacts_at = (self.box.x + x, self.box.y + y)
+            else:
+                self.put(image, left, TEXT, (x, y))
+            self.put(image, right_text, WARNING if right_text == "PAUSED" else DIM, (x + 215, y))
             y += LINE_HEIGHT
-        top = self.draw_graph(surface, pygame.Rect(x, y + 4, PANEL_WIDTH - 2 * PADDING, GRAPH_HEIGHT))
+        top = self.draw_graph(image, pygame.Rect(x, y + 4, PANEL_WIDTH - 2 * PADDING, GRAPH_HEIGHT))
         y += GRAPH_HEIGHT + 8
-        self.put(surface, f"{top} ms", DIM, (x + 4, y - GRAPH_HEIGHT - 4 + 2))  # the graph's top value
-        self.put(surface, f"physics ms per frame, last {GRAPH_SECONDS} s; red: 60 fps budget", DIM, (x, y))
+        self.put(image, f"{top} ms", DIM, (x + 4, y - GRAPH_HEIGHT - 4 + 2))  # the graph's top value
+        self.put(image, f"physics ms per frame, last {GRAPH_SECONDS} s; red: 60 fps budget", DIM, (x, y))
 
     def draw_graph(self, surface, rect):
         """Physics ms per frame over the last GRAPH_FRAMES frames, newest on the right, in `rect` (px).

@@ -192,6 +192,7 @@ def test_hud_text_stays_inside_the_panel_and_no_two_lines_overlap():
             panel.handle(key(name))
         surface = hud(panel, world)
         panel.history.extend([1234.5] * 10)  # a slow machine: the graph's top label gets long
+        panel.dirty = True
         panel.draw(surface, world)
         assert surface.get_rect().contains(panel.box)
         assert panel.box.top >= 30, "the lab's own HUD line (y 10-26) stays clear"
