@@ -59,6 +59,7 @@ KEY = (250, 220, 80)
 CHANGED = (120, 200, 255)       # a setting that differs from the World's own
 WARNING = (255, 140, 90)
 GRAPH_LINE = (90, 210, 120)
+GRAPH_BACKGROUND = (40, 44, 56)
 BUDGET_LINE = (235, 80, 80)
 
 SOLVERS = ("lesson", "accumulated")
@@ -356,7 +357,9 @@ class LabPanel:
             y += LINE_HEIGHT
         top = self.draw_graph(image, pygame.Rect(x, y + 4, PANEL_WIDTH - 2 * PADDING, GRAPH_HEIGHT))
         y += GRAPH_HEIGHT + 8
-        self.put(image, f"{top} ms", DIM, (x + 4, y - GRAPH_HEIGHT - 4 + 2))  # the graph's top value
+        label_at = (x + 4, y - GRAPH_HEIGHT - 4 + 2)  # the graph's top value, on its own patch of background
+        image.fill(GRAPH_BACKGROUND, self.text(f"{top} ms", DIM).get_rect(topleft=label_at).inflate(4, 0))
+        self.put(image, f"{top} ms", DIM, label_at)
         self.put(image, f"physics ms per frame, last {GRAPH_SECONDS} s; red: 60 fps budget", DIM, (x, y))
 
     def draw_graph(self, surface, rect):
@@ -366,7 +369,7 @@ class LabPanel:
         95 % of the values, so one slow frame (a busy machine, a window drag) does not flatten the rest;
         the few frames above the top are drawn at the top.
         """
-        pygame.draw.rect(surface, (40, 44, 56), rect)
+        pygame.draw.rect(surface, GRAPH_BACKGROUND, rect)
         values = list(self.history)
         typical = sorted(values)[int(0.95 * (len(values) - 1))] if values else 0.0
         top = next((s for s in SCALES_MS if s >= max(typical, FRAME_BUDGET_MS * 1.1)), SCALES_MS[-1])
