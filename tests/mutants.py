@@ -63,7 +63,7 @@ HOSTILE_COPIES = {
         ("    while running and lab.frame_budget():  # lab runtime: frame_budget()\n",
          "    while running:  # lab runtime: frame_budget()\n"),
     ]),
-    # the endless loop sits on lines 136-137 of the solution as it is; test_checker.py looks for that line
+    # test_checker.py works out the endless loop's two line numbers from this variant's text and looks for them
     "hostile_loop_inside_frame": ("an endless loop inside the main loop, every runtime line kept", [
         ("        dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)\n",
          "        dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)\n"
