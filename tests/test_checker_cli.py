@@ -427,3 +427,8 @@ def test_not_graded_row_reads_like_a_lab_report():
     stream = io.StringIO()
     report.summary_table([row], stream)
     assert "not graded: cannot read: Permission denied" in stream.getvalue()
+
+
+def test_help_names_the_output_options_and_exit_statuses():
+    status, out, err = run_checker("--help")
+    assert status == 0 and "--gradescope-dir DIR" in out and "Exit status: 0" in out and "No file is written" in out
