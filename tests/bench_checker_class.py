@@ -87,7 +87,7 @@ def main(argv=None):
         print(f"wall time: {wall:.1f} s   files per second: {args.n / wall:.2f}   "
               f"seconds per file: {wall / args.n:.2f}")
         print(f"passed: {counts['pass']} (expected {expected['pass']})   failed: {counts['fail']} "
-              f"(expected {expected['fail']})   could not be graded: {counts['error']}   exit status: {proc.returncode}")
+              f"(expected {expected['fail']})   error (timed out, crashed or not graded): {counts['error']}   exit status: {proc.returncode}")
         if proc.stderr.strip():
             print("checker stderr (last lines):\n" + "\n".join(proc.stderr.strip().splitlines()[-5:]))
         if args.keep:
