@@ -16,6 +16,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from . import outputs, report
 from .entries import discover, graded_folders
 from .grade import Grader
+from .labs import LABS
 from .report import NotGraded
 from .sandbox import Limits
 
@@ -38,8 +39,10 @@ def parse_args(argv):
         epilog="Exit status: 0 every entry graded and passing; 1 an entry fails or could not be graded; 2 a wrong "
                "command line (nothing graded, nothing written). No file is written unless --csv, --gradescope or "
                "--gradescope-dir asks. See checker/README.md.")
-    parser.add_argument("paths", nargs="+", metavar="PATH",
+    parser.add_argument("paths", nargs="*", metavar="PATH",
                         help="lab files, folders of lab files, or folders of submission folders")
+    parser.add_argument("--list", action="store_true",
+                        help="list every lab the checker knows with its checks, their steps and points, and stop")
     parser.add_argument("--json", action="store_true", help="print the results as JSON (schema in checker/README.md)")
     parser.add_argument("--csv", metavar="FILE",
                         help="write one CSV row per entry to FILE (only when asked; an existing FILE is replaced)")
@@ -50,7 +53,8 @@ def parse_args(argv):
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
                         help="child processes at once (default: all cores, %(default)s here)")
     parser.add_argument("--timeout", type=float, default=20.0,
-                        help="wall-clock seconds for each run of a lab (its import check and each scene; default 20)")
+                        help="CPU seconds for each run of a lab (its import check and each scene; default 20); "
+                             "its wall-clock limit is 3 x that + 5 s")
     parser.add_argument("--total-timeout", type=float, default=1800.0,
                         help="wall-clock seconds for the whole run; labs not started by then are errors (default 1800)")
     parser.add_argument("--memory", type=int, default=768, help="address-space limit per run in MB (default 768)")
@@ -60,6 +64,8 @@ def parse_args(argv):
     parser.add_argument("--allow-edits", action="store_true",
                         help="code changed outside the steps is a warning, not a failure (the scenes still run)")
     args = parser.parse_args(argv)
+    if not args.paths and not args.list:
+        parser.error("give at least one PATH to grade (or --list)")
     for name in ("timeout", "total_timeout"):
         if not getattr(args, name) > 0:
             parser.error(f"--{name.replace('_', '-')} must be > 0 s, got {getattr(args, name):g}")
@@ -162,6 +168,9 @@ def main(argv=None):
     """Grade the paths; returns the exit status (see the module docstring)."""
     try:
         args = parse_args(sys.argv[1:] if argv is None else argv)
+        if args.list:
+            report.list_labs(LABS, sys.stdout)
+            return 0
         entries = plan(args)
     except UsageError as exc:
         for line in str(exc).splitlines():

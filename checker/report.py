@@ -204,3 +204,14 @@ def _rel(path, root):
         return os.path.relpath(path, root or os.getcwd())
     except ValueError:
         return path
+
+
+def list_labs(labs, stream):
+    """Every lab with its checks in order: id, points, and the description the student sees."""
+    for lab in labs:
+        checks = lab.checks.checks
+        stream.write(f"{lab.title} ({lab.id}): {len(checks)} checks, {lab.checks.max_score:g} points\n")
+        width = max(len(c.id) for c in checks)
+        for c in checks:
+            stream.write(f"  {c.id:<{width}}  {c.max_score:g} pt  {c.description}\n")
+        stream.write("\n")

@@ -148,3 +148,14 @@ def test_a_check_cannot_depend_on_a_later_one():
 def test_a_failing_value_never_reads_equal_to_its_bound(value, bound, text):
     assert shown(value, bound) == text
     assert shown(value, bound) != f"{bound:g}"
+
+
+def test_list_prints_every_check_of_every_lab_with_its_points(capsys):
+    from checker.cli import main
+    from checker.labs import LABS
+    assert main(["--list"]) == 0
+    out = capsys.readouterr().out
+    for lab in LABS:
+        assert f"{lab.title} ({lab.id}): {len(lab.checks.checks)} checks, {lab.checks.max_score:g} points" in out
+        for check in lab.checks.checks:
+            assert f"{check.id}" in out and check.description in out
