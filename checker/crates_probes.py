@@ -101,6 +101,11 @@ def sat_pairs():
         ("a triangle and a hexagon, apart", ngon(3, 40, (0, 0), 12), ngon(6, 24, (48, -30), 5)),
         ("a small crate deep inside a big one", box(200, 120, (0, 0), 10), box(30, 20, (24, 12), 35)),
         ("a hexagon resting into a wide crate", box(160, 30, (0, 0), 0), ngon(6, 25, (22, -36), 17)),
+        ("a small crate inside a big one, near its top-left corner", box(200, 120, (0, 0), 10),
+         box(30, 20, (-60, -30), -25)),
+        ("two triangles", ngon(3, 37, (0, 0), 345), ngon(3, 34, (46, -32), 224)),
+        ("a pentagon and a small hexagon", ngon(5, 40.7, (0, 0), 265), ngon(6, 16.3, (-33, -29), 179)),
+        ("a pentagon and a triangle, apart", ngon(5, 29, (0, 0), 76), ngon(3, 34.6, (47, 23), 179)),
         ("two crates exactly touching edge to edge", box(40, 40, (0, 0)), box(40, 40, (40, 7))),
         ("two crates far apart", box(40, 40, (0, 0)), box(30, 60, (300, -50), 25)),
     ]
@@ -310,6 +315,8 @@ def _k_forms(a, b, ra, rb, n):
         "spin_only": ran * ran * ia + rbn * rbn * ib,
         "inertias_swapped": ima + imb + ran * ran * ib + rbn * rbn * ia,
         "subtracted": ima + imb - ran * ran * ia - rbn * rbn * ib,
+        "a_subtracted": ima + imb - ran * ran * ia + rbn * rbn * ib,
+        "b_subtracted": ima + imb + ran * ran * ia - rbn * rbn * ib,
         "dot_not_cross": ima + imb + dan * dan * ia + dbn * dbn * ib,
     }
 

@@ -258,6 +258,10 @@ def _depth_mistake(case, depth):
     lesson = [o for _, o, _ in overlaps]
     if _close(depth, max(lesson)):
         return " That is the LARGEST overlap: keep the smallest one (best_depth starts at math.inf, update when overlap < best_depth)."
+    closing = lesson[:count_a - 1] + lesson[count_a:-1]  # every edge but each shape's closing edge
+    if closing and _close(depth, min(closing)):
+        return (" That is the smallest overlap with an edge left out: test the normal of every edge of both shapes, "
+                "the closing edge from the last point back to the first included (edge_normals does).")
     if _close(depth, min(lesson[:count_a])) or _close(depth, min(lesson[count_a:])):
         which = "A's" if _close(depth, min(lesson[:count_a])) else "B's"
         return (f" That is the smallest overlap over {which} edge normals only: loop over the edge normals of "
@@ -359,6 +363,8 @@ K_MISTAKES = {
     "spin_only": "k = replaced the inverse masses instead of adding to them (use k +=)",
     "inertias_swapped": "A's term uses B's inertia and B's uses A's",
     "subtracted": "the spin terms are subtracted; they add to k",
+    "a_subtracted": "A's spin term is subtracted; it adds to k",
+    "b_subtracted": "B's spin term is subtracted; it adds to k",
     "dot_not_cross": "the spin terms use ra · n (a dot product) where the cross product ra × n belongs",
 }
 
@@ -391,11 +397,11 @@ def resolve_friction(sub, functions):
         if friction is None or j is None:
             continue
         stop, jt = friction["stop"], friction["jt"]
-        bound = mu * abs(j)
+        bound = mu * j  # with your own j, so a mistake in step 4 does not show here
         want = max(-bound, min(bound, stop))
         if _close(jt, want) and friction["off_tangent"] <= ABS + REL * abs(jt):
             continue
-        active = abs(stop) > bound
+        active = abs(stop) > abs(bound)
         where = f"in '{case['case']}'"
         numbers = (f"the impulse that stops the slip is {stop:.4g}, mu·j = {mu:.2g} × {j:.4g} = {bound:.4g}, "
                    f"so jt should be {want:.4g}; yours is {jt:.4g}")
@@ -410,13 +416,13 @@ def resolve_friction(sub, functions):
         speeds = {"the closing speed |vn|": abs(case["vn"]), "the slip speed": abs(friction["slip"]),
                   "the relative speed |rel|": friction["rel_length"], "k": case["k"]["right"]}
         for what, value in speeds.items():
-            if _close(abs(jt), min(abs(stop), mu * value)) and not _close(mu * value, bound):
+            if _close(abs(jt), min(abs(stop), mu * value)) and not _close(mu * value, abs(bound)):
                 raise Fail(f"{where} the clamp uses mu × {what} ({mu * value:.4g}) where Coulomb's law uses "
                            f"mu × the normal impulse j ({bound:.4g}): {numbers}.", HINTS["friction_clamp"])
-        if not active and _close(abs(jt), bound):
+        if not active and _close(abs(jt), abs(bound)):
             raise Fail(f"{where} friction always takes its full mu·j, but a smaller impulse already stops the slip: "
                        f"{numbers}. Clamp only when |jt| > mu·j.", HINTS["friction_clamp"])
-        if active and abs(jt) < bound:
+        if active and abs(jt) < abs(bound):
             raise Fail(f"{where} the clamp is too tight: {numbers} (|jt| may reach mu·j).", HINTS["friction_clamp"])
         raise Fail(f"{where} {numbers}.", HINTS["friction_clamp"])
     active = sum(1 for c in cases if c["friction"] and abs(c["friction"]["stop"]) > c["mu"] * abs(c["j"] or 0))
