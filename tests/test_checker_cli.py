@@ -19,6 +19,9 @@ import pytest
 
 from checker import cli, entries, outputs, report
 from checker.report import NotGraded
+from checker.tumbling_crates import CHECKS
+
+MAX = CHECKS.max_score  # Tumbling Crates' points
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
@@ -126,7 +129,7 @@ def test_every_bad_entry_is_its_own_row_with_its_reason(klass):
         assert f"{path}: not graded: " in klass["stderr"]
     # rows whose lab is known by the file name count 0 of the lab's points, not 0 of 0
     assert rows["dangling/tumbling_crates.py"]["lab"] == "tumbling_crates"
-    assert rows["dangling/tumbling_crates.py"]["max_score"] == 14
+    assert rows["dangling/tumbling_crates.py"]["max_score"] == MAX
     assert rows["alice/helper.py"]["lab"] is None and rows["alice/helper.py"]["max_score"] == 0
     assert {e["path"] for e in klass["doc"]["errors"]} == {os.path.join("submissions", p) for p in BAD}
 
@@ -134,7 +137,7 @@ def test_every_bad_entry_is_its_own_row_with_its_reason(klass):
 def test_every_other_file_is_still_graded(klass):
     rows = rows_by_path(klass["doc"])
     assert rows["alice/tumbling_crates.py"]["status"] == "pass", rows["alice/tumbling_crates.py"]
-    assert rows["alice/tumbling_crates.py"]["score"] == 14
+    assert rows["alice/tumbling_crates.py"]["score"] == MAX
     for path in ("bob/tumbling_crates.py", "carol/my crates (1).py"):
         assert rows[path]["lab"] == "tumbling_crates" and rows[path]["criteria"], rows[path]
         assert rows[path]["criteria"][0]["status"] == "error"  # hostile_missing_main: no main()
@@ -159,10 +162,10 @@ def test_gradescope_dir_has_one_results_json_per_submission(klass):
             with open(os.path.join(here, "results.json"), encoding="utf-8") as handle:
                 found[os.path.relpath(here, klass["gradescope"])] = json.load(handle)
     assert len(found) == len(klass["doc"]["labs"])
-    assert found["alice/tumbling_crates"]["score"] == 14 and len(found["alice/tumbling_crates"]["tests"]) == 10
+    assert found["alice/tumbling_crates"]["score"] == MAX and len(found["alice/tumbling_crates"]["tests"]) == len(CHECKS.checks)
     dangling = found["dangling/tumbling_crates"]
     assert dangling["score"] == 0 and dangling["tests"][0]["status"] == "failed"
-    assert "dangling symbolic link" in dangling["tests"][0]["output"] and dangling["tests"][0]["max_score"] == 14
+    assert "dangling symbolic link" in dangling["tests"][0]["output"] and dangling["tests"][0]["max_score"] == MAX
     assert "carol/my crates (1)" in found
 
 
@@ -291,7 +294,7 @@ def test_a_grader_crash_on_one_file_is_an_error_row_and_the_batch_goes_on(tmp_pa
     assert labs["a_tumbling_crates.py"]["status"] == labs["c_tumbling_crates.py"]["status"] == "pass"
     boom = labs["boom_tumbling_crates.py"]
     assert boom["status"] == "error" and "KeyError" in boom["message"] and "bug in the checker" in boom["message"]
-    assert boom["max_score"] == 14
+    assert boom["max_score"] == MAX
     assert status == 1 and "internal error KeyError" in err
 
 
@@ -397,7 +400,7 @@ def test_single_gradescope_file_for_an_entry_that_cannot_be_graded(tmp_path):
     status, out, err = run_checker("tumbling_crates.py", "--gradescope", "results.json", cwd=str(tmp_path))
     data = json.load(open(str(tmp_path / "results.json")))
     assert status == 1 and data["score"] == 0 and len(data["tests"]) == 1
-    assert data["tests"][0]["max_score"] == 14 and "dangling" in data["tests"][0]["output"]
+    assert data["tests"][0]["max_score"] == MAX and "dangling" in data["tests"][0]["output"]
 
 
 def test_write_atomic_leaves_the_old_file_when_it_fails(tmp_path, monkeypatch):
@@ -422,7 +425,7 @@ def test_submission_names_are_relative_to_the_common_folder_and_unique():
 def test_not_graded_row_reads_like_a_lab_report():
     from checker.labs import LABS
     row = NotGraded("x/tumbling_crates.py", LABS[0], "cannot read: Permission denied")
-    assert (row.score, row.max_score, row.passed, row.status, list(row.results)) == (0, 14, False, "error", [])
+    assert (row.score, row.max_score, row.passed, row.status, list(row.results)) == (0, MAX, False, "error", [])
     assert NotGraded("notes.py", None, "not a lab").max_score == 0
     stream = io.StringIO()
     report.summary_table([row], stream)
