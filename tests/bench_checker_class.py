@@ -3,8 +3,11 @@
     python tests/bench_checker_class.py [--n 100] [--jobs J] [--root REPO] [--keep]
 
 Writes N per-student folders (student_001/tumbling_crates.py, ...) into a
-temporary directory: every other one a copy of solutions/tumbling_crates.py,
-the rest the mutants of tests/mutants.py in turn (each fails one check). Then
+temporary directory from the mistake corpus (tests/corpus_tumbling_crates.py):
+every other one a correct completion (in turn through the corpus's correct
+entries), the rest its wrong completions in turn (each fails one check). Half
+correct is a pessimistic class: a correct file runs all four scenes, a wrong
+one stops after the function checks. Then
 runs, from REPO (default: this repository),
 
     python -m checker DIR --quiet --csv OUT
@@ -27,23 +30,22 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
-import mutants  # noqa: E402  (tests/mutants.py)
+import corpus_tumbling_crates as corpus  # noqa: E402  (tests/corpus_tumbling_crates.py)
 
 
 def make_class(directory, n):
     """N student folders; returns {"pass": count, "fail": count} expected."""
-    with open(mutants.SOLUTION, encoding="utf-8") as handle:
-        solution = handle.read()
-    names = sorted(mutants.MUTANTS)
+    right = [entry.name for entry in corpus.ENTRIES if entry.check == "pass"]
+    wrong = [entry.name for entry in corpus.WRONG]
     expected = {"pass": 0, "fail": 0}
     for i in range(n):
         folder = os.path.join(directory, f"student_{i + 1:03d}")
         os.makedirs(folder)
         if i % 2 == 0:
-            text = solution
+            text = corpus.build(right[(i // 2) % len(right)])
             expected["pass"] += 1
         else:
-            text = mutants.variant_source(names[(i // 2) % len(names)], solution)
+            text = corpus.build(wrong[(i // 2) % len(wrong)])
             expected["fail"] += 1
         with open(os.path.join(folder, "tumbling_crates.py"), "w", encoding="utf-8") as handle:
             handle.write(text)
@@ -82,7 +84,7 @@ def main(argv=None):
                 for row in csv.DictReader(handle):
                     counts[row["status"]] = counts.get(row["status"], 0) + 1
         print(f"checker: {' '.join(command[1:])}  (from {args.root})")
-        print(f"submissions: {args.n} ({expected['pass']} solution copies, {expected['fail']} mutants), "
+        print(f"submissions: {args.n} ({expected['pass']} correct, {expected['fail']} wrong, from the corpus), "
               f"cores: {os.cpu_count()}, load average before/after: {load_before[0]:.2f} / {load_after[0]:.2f}")
         print(f"wall time: {wall:.1f} s   files per second: {args.n / wall:.2f}   "
               f"seconds per file: {wall / args.n:.2f}")
