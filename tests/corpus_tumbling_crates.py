@@ -33,8 +33,12 @@ why the code is behaviourally the same as the lesson's (for a correct one).
 """
 import os
 import re
+import sys
 import textwrap
 from typing import NamedTuple
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
@@ -650,14 +654,8 @@ def fill(source, codes, where="file"):
 
 
 def apply_edits(source, edits, name):
-    """source with each (old, new) replacement made in turn; each old must occur exactly once."""
-    for old, new in edits:
-        count = source.count(old)
-        if count != 1:
-            raise AssertionError(f"{name}: the text to replace occurs {count} times (expected once) in the built "
-                                 f"file; update tests/corpus_tumbling_crates.py. Text: {old!r}")
-        source = source.replace(old, new)
-    return source
+    """source with each (old, new) replacement made in turn; each old must occur exactly once (tests/mutants.py)."""
+    return mutants.apply_edits(source, edits, name, "the built file", "tests/corpus_tumbling_crates.py")
 
 
 def _read(path):

@@ -79,13 +79,17 @@ HOSTILE_COPIES = {
 VARIANTS = {**MUTANTS, **EDITED, **HOSTILE_COPIES}
 
 
-def apply_edits(source, edits, name="file"):
-    """source with each (old, new) replacement made in turn; each old must occur exactly once."""
+def apply_edits(source, edits, name="file", where="solutions/tumbling_crates.py", owner="tests/mutants.py"):
+    """source with each (old, new) replacement made in turn; each old must occur exactly once.
+
+    Otherwise AssertionError naming the file (`name`), the text it was applied to (`where`) and the
+    module whose edits must be updated (`owner`).
+    """
     for old, new in edits:
         count = source.count(old)
         if count != 1:
             raise AssertionError(f"{name}: the text to replace occurs {count} times (expected once) in "
-                                 f"solutions/tumbling_crates.py; update tests/mutants.py. Text: {old!r}")
+                                 f"{where}; update {owner}. Text: {old!r}")
         source = source.replace(old, new)
     return source
 
