@@ -16,7 +16,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from . import outputs, report
 from .entries import discover, graded_folders
 from .grade import Grader
-from .labs import LABS
+from . import labs
 from .report import NotGraded
 from .sandbox import Limits
 
@@ -169,7 +169,7 @@ def main(argv=None):
     try:
         args = parse_args(sys.argv[1:] if argv is None else argv)
         if args.list:
-            report.list_labs(LABS, sys.stdout)
+            report.list_labs(labs.LABS, sys.stdout)
             return 0
         entries = plan(args)
     except UsageError as exc:

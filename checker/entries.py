@@ -18,7 +18,8 @@ import stat
 import tokenize
 from dataclasses import dataclass
 
-from .labs import LABS, identify
+from . import labs
+from .labs import identify
 
 SKIP_DIRS = {"__pycache__", ".git", ".venv", "venv", "node_modules", "__MACOSX"}
 MAX_BYTES = 2_000_000  # a lab file is ~15 KB; anything past this is not one
@@ -38,7 +39,7 @@ class Entry:
 
 
 def known_labs():
-    return ", ".join(lab.title for lab in LABS)
+    return ", ".join(lab.title for lab in labs.LABS)
 
 
 def decode(raw):

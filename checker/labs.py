@@ -40,7 +40,7 @@ LABS = (
 
 def identify(path, source):
     """The Lab a file belongs to, or None."""
-    for lab in LABS:
+    for lab in LABS:  # read at each call, so a lab added to LABS later is known
         if lab.recognise(path, source):
             return lab
     return None

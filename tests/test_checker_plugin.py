@@ -1,0 +1,120 @@
+"""A lab is one module: a new lab is graded without touching child.py, grade.py, cli.py or report.py.
+
+The test writes a toy lab (a student file), its checks module and its probe module into a
+temporary folder, adds one row to checker.labs.LABS for this process only, and grades the
+toy file with the command line in-process: the probe runs in the child (which imports the
+lab's probe module by the name the lab gives), a scene runs under the lab runtime, and the
+checks receive what the checks they depend on returned.
+"""
+import importlib
+import json
+import sys
+import textwrap
+
+import pytest
+
+from checker import cli, labs
+
+STUDENT = '''
+"""Toy Lab: a made-up exercise for the plug-in test."""
+from lesson11 import runtime as lab
+
+
+def double(x):
+    return 2 * x
+
+
+def main():
+    frames = 0
+    while lab.frame_budget():
+        frames += 1
+        lab.record([])
+    print(f"ran {frames} frames")
+'''
+
+PROBES = '''
+"""The toy lab's probe, run in the checker's child process."""
+REQUIRED = ("double", "main")
+
+
+def probe_double(module, lab_path):
+    return [module.double(x) for x in (1, 2.5, -4)]
+
+
+PROBES = {"double": ("double", probe_double)}
+'''
+
+CHECKS = '''
+"""The toy lab's checks."""
+from checker.checks import Fail, Passed, Registry
+
+TITLE = "Toy Lab"
+PROBES = "toy_lab_probes"
+CHECKS = Registry()
+
+
+def recognise(path, source):
+    return "toy lab" in source.lower()
+
+
+def scenarios():
+    return {"short": {"frames": 5, "fps": 60}}
+
+
+@CHECKS.check()
+def loads(sub):
+    """The file imports."""
+    if sub.probe.status != "done":
+        raise Fail("the file did not import")
+    return sub.probe.result["probe"]["functions"]
+
+
+@CHECKS.check(depends=["loads"])
+def doubles(sub, functions):
+    """double() doubles."""
+    got = functions["double"]["data"]
+    if got != [2, 5.0, -8]:
+        raise Fail(f"double gave {got}")
+    return Passed("double doubles", value=sum(got))
+
+
+@CHECKS.check(depends=["doubles"], max_score=2, needs_scenarios=True)
+def runs(sub, total):
+    """main() runs the short scene."""
+    run = sub.scenarios["short"]
+    if run.status != "done" or "ran 5 frames" not in run.stdout:
+        raise Fail(f"the scene ended {run.status}: {run.stdout!r}")
+    return f"5 frames; the doubles summed to {total:g}"
+'''
+
+
+@pytest.fixture
+def toy_lab(tmp_path, monkeypatch):
+    """The toy lab registered for this process; returns the student file's path."""
+    # a real lab's modules live in checker/; here they sit beside the student's file, whose folder the
+    # child process has on its path too, so the child can import the probe module by its name
+    (tmp_path / "toy_lab_probes.py").write_text(textwrap.dedent(PROBES), encoding="utf-8")
+    (tmp_path / "toy_lab_checks.py").write_text(textwrap.dedent(CHECKS), encoding="utf-8")
+    student = tmp_path / "toy.py"
+    student.write_text(STUDENT, encoding="utf-8")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    module = importlib.import_module("toy_lab_checks")
+    monkeypatch.setattr(labs, "LABS", labs.LABS + (labs.Lab("toy_lab", module.TITLE, module),))
+    yield student
+    sys.modules.pop("toy_lab_checks", None)
+
+
+def test_a_new_lab_is_graded_with_one_module_and_one_row(toy_lab, capsys):
+    status = cli.main(["--json", "--quiet", str(toy_lab)])
+    document = json.loads(capsys.readouterr().out)
+    assert status == 0, document
+    (lab,) = document["labs"]
+    assert lab["lab"] == "toy_lab" and lab["title"] == "Toy Lab" and lab["score"] == lab["max_score"] == 4
+    messages = {c["id"]: c["message"] for c in lab["criteria"]}
+    assert messages["doubles"] == "double doubles"
+    assert messages["runs"] == "5 frames; the doubles summed to -1"  # the value `doubles` handed on
+
+
+def test_list_shows_the_new_lab(toy_lab, capsys):
+    assert cli.main(["--list"]) == 0
+    assert "Toy Lab (toy_lab): 3 checks, 4 points" in capsys.readouterr().out
