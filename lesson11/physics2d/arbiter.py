@@ -93,17 +93,17 @@ class Arbiter:
     def prepare(self, world, warm_starting=True):
         """Once per step: anchors ra = p - xA, rb = p - xB (px), mass_n = 1/k(n), mass_t = 1/k(t), approach speed.
 
-        The bodies' poses now are kept, so the solve can follow each point's
-        separation as the bodies move: s = -depth + n·(ΔB(rb) - ΔA(ra)).
+        The solve follows each point's separation as the bodies move:
+        s = -depth + n·(ΔB(rb) - ΔA(ra)), from the bodies' motion since now (separation()).
         """
         a, b, n = self.a, self.b, self.normal
         tangent = Vector2(n.y, -n.x)
         spin = "rotation" in world.effects
         self.mu = math.sqrt(a.friction * b.friction) if "friction" in world.effects else 0.0
         self.restitution = min(a.restitution, b.restitution) if "restitution" in world.effects else 0.0
-        self.start = (Vector2(a.pos), a.angle, Vector2(b.pos), b.angle)
         for c in self.points:
             c.ra, c.rb = (c.point - a.pos, c.point - b.pos) if spin else (Vector2(), Vector2())
+            c.anchors = (c.ra.x, c.ra.y, c.rb.x, c.rb.y)
             c.mass_normal = 1 / effective_mass_inverse(a, b, c.ra, c.rb, n)
             c.mass_tangent = 1 / effective_mass_inverse(a, b, c.ra, c.rb, tangent)
             c.approach = relative_velocity(a, b, c.ra, c.rb).dot(n)  # vn before this step (px/s)
@@ -113,13 +113,19 @@ class Arbiter:
             if self.mu == 0:
                 c.friction_impulse = 0.0
 
-    def separation(self, c):
-        """Current separation (px) of point c along the normal: -depth plus how far the two anchors moved apart."""
-        a, b = self.a, self.b
-        pos_a, angle_a, pos_b, angle_b = self.start
-        moved_a = a.pos - pos_a + c.ra.rotate_rad(a.angle - angle_a) - c.ra
-        moved_b = b.pos - pos_b + c.rb.rotate_rad(b.angle - angle_b) - c.rb
-        return -c.depth + (moved_b - moved_a).dot(self.normal)
+    def separation(self, c, motion):
+        """Current separation (px) of point c along the normal: -depth plus how far the two anchors moved apart.
+
+        motion[id(body)] = (dx, dy, cos Δθ, sin Δθ): how far each body moved and
+        turned since prepare() (World.body_motion, one cos/sin per body per sub-step).
+        The anchor r moved by d + R(Δθ) r - r.
+        """
+        dax, day, ca, sa = motion[id(self.a)]
+        dbx, dby, cb, sb = motion[id(self.b)]
+        rax, ray, rbx, rby = c.anchors
+        mx = (dbx + cb * rbx - sb * rby - rbx) - (dax + ca * rax - sa * ray - rax)
+        my = (dby + sb * rbx + cb * rby - rby) - (day + sa * rax + ca * ray - ray)
+        return mx * self.normal.x + my * self.normal.y - c.depth
 
     def warm_start(self):
         """Apply the accumulated impulses again: P = Pn n + Pt t at each point."""
@@ -128,37 +134,64 @@ class Arbiter:
         for c in self.points:
             apply_impulse(self.a, self.b, n * c.normal_impulse + tangent * c.friction_impulse, c.ra, c.rb)
 
-    def solve(self, h, soft, use_bias):
+    def solve(self, h, soft, use_bias, motion):
         """One pass over the points: normal impulses (soft push-out if use_bias), then Coulomb friction.
 
-        soft = (bias_rate, mass_scale, impulse_scale) from soft_constants. Only
-        the change of each clamped total is applied (through apply_impulse).
+        soft = (bias_rate, mass_scale, impulse_scale) from soft_constants;
+        motion as in separation(). Only the change of each clamped total is
+        applied, P = ΔPn n + ΔPt t at the point. Written with plain floats (the
+        same formulas as response.relative_velocity and apply_impulse): this
+        loop is where a tall stack spends its time.
         """
-        a, b, n = self.a, self.b, self.normal
+        a, b = self.a, self.b
+        nx, ny = self.normal.x, self.normal.y
+        tx, ty = ny, -nx
+        ima, iia, imb, iib = a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia
+        vax, vay, wa = a.vel.x, a.vel.y, a.omega
+        vbx, vby, wb = b.vel.x, b.vel.y, b.omega
         bias_rate, soft_mass, soft_impulse = soft
         for c in self.points:
-            s = self.separation(c)
+            rax, ray, rbx, rby = c.anchors
+            s = self.separation(c, motion)
             if s > 0:
                 bias, mass_scale, impulse_scale = s / h, 1.0, 0.0  # speculative: close the gap, no more
             elif use_bias:
                 bias, mass_scale, impulse_scale = max(bias_rate * s, -MAX_PUSH), soft_mass, soft_impulse
             else:
                 bias, mass_scale, impulse_scale = 0.0, 1.0, 0.0
-            vn = relative_velocity(a, b, c.ra, c.rb).dot(n)
+            # vn = ((vB + ωB × rb) - (vA + ωA × ra))·n, with ω × r = (-ω r.y, ω r.x)
+            vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
             old = c.normal_impulse
             change = -c.mass_normal * mass_scale * (vn + bias) - impulse_scale * old
             c.normal_impulse = max(old + change, 0.0)
             c.max_normal_impulse = max(c.max_normal_impulse, c.normal_impulse - old)
-            apply_impulse(a, b, n * (c.normal_impulse - old), c.ra, c.rb)
-        if self.mu == 0:
-            return
-        tangent = Vector2(n.y, -n.x)
-        for c in self.points:
-            vt = relative_velocity(a, b, c.ra, c.rb).dot(tangent)
-            old = c.friction_impulse
-            limit = self.mu * c.normal_impulse
-            c.friction_impulse = max(-limit, min(limit, old - c.mass_tangent * vt))
-            apply_impulse(a, b, tangent * (c.friction_impulse - old), c.ra, c.rb)
+            p = c.normal_impulse - old
+            px, py = nx * p, ny * p
+            vax -= px * ima
+            vay -= py * ima
+            wa -= (rax * py - ray * px) * iia
+            vbx += px * imb
+            vby += py * imb
+            wb += (rbx * py - rby * px) * iib
+        if self.mu != 0:
+            for c in self.points:
+                rax, ray, rbx, rby = c.anchors
+                vt = (vbx - wb * rby - vax + wa * ray) * tx + (vby + wb * rbx - vay - wa * rax) * ty
+                old = c.friction_impulse
+                limit = self.mu * c.normal_impulse
+                c.friction_impulse = max(-limit, min(limit, old - c.mass_tangent * vt))
+                p = c.friction_impulse - old
+                px, py = tx * p, ty * p
+                vax -= px * ima
+                vay -= py * ima
+                wa -= (rax * py - ray * px) * iia
+                vbx += px * imb
+                vby += py * imb
+                wb += (rbx * py - rby * px) * iib
+        a.vel.update(vax, vay)
+        a.omega = wa
+        b.vel.update(vbx, vby)
+        b.omega = wb
 
     def bounce(self, resting_speed):
         """Restitution, after the sub-steps: a point that approached at vn0 < -resting_speed and pushed

@@ -9,6 +9,7 @@ them inside its loop, so a student's functions run the whole simulation.
 
 World.step reads top to bottom, one comment per phase, for both solvers.
 """
+import math
 from collections import namedtuple
 
 from . import collision, response
@@ -258,6 +259,8 @@ class World:
                 arbiter.prepare(self, self.warm_starting)
             soft = soft_constants(min(CONTACT_HERTZ, 0.25 / h), DAMPING_RATIO, h)
             use_push = "correction" in self.effects
+            start = {id(body): (body.pos.x, body.pos.y, body.angle) for body in self.bodies}
+            motion = {key: (0.0, 0.0, 1.0, 0.0) for key in start}
             for _ in range(self.substeps):
                 # 3. velocities, then warm start with the accumulated impulses
                 self.integrate_velocities(h)
@@ -266,12 +269,13 @@ class World:
                 # 4. solve: `iterations` passes with the soft push-out
                 for _ in range(self.iterations):
                     for arbiter in arbiters.values():
-                        arbiter.solve(h, soft, use_bias=use_push)
-                # 5. positions
+                        arbiter.solve(h, soft, use_push, motion)
+                # 5. positions, and each body's motion since phase 2 (for the separations)
                 self.integrate_positions(h)
+                self.body_motion(start, motion)
                 # 6. relax: one pass without the push-out, which takes its speed away
                 for arbiter in arbiters.values():
-                    arbiter.solve(h, soft, use_bias=False)
+                    arbiter.solve(h, soft, False, motion)
             # 7. restitution, from the approach speeds found in phase 2
             for _ in range(RESTITUTION_PASSES):
                 for arbiter in arbiters.values():
@@ -292,6 +296,17 @@ class World:
         for body in self.bodies:
             if body.inv_mass != 0:
                 body.vel += self.gravity * dt
+
+    def body_motion(self, start, motion):
+        """Update motion[id(body)] = (dx px, dy px, cos Δθ, sin Δθ) since `start` = {id: (x, y, angle)}.
+
+        One cos and one sin per moving body per sub-step; static bodies keep (0, 0, 1, 0).
+        """
+        for body in self.bodies:
+            if body.inv_mass != 0:
+                x, y, angle = start[id(body)]
+                turned = body.angle - angle
+                motion[id(body)] = (body.pos.x - x, body.pos.y - y, math.cos(turned), math.sin(turned))
 
     def integrate_positions(self, dt):
         """Move every dynamic body: x += v dt, angle += ω dt (semi-implicit Euler, after the velocities)."""
