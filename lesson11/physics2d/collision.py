@@ -315,10 +315,14 @@ def corner_manifold(pa, pb, normal, margin=0.0):
     it (separation <= margin); so does a corner of B against A. Each corner's
     depth is how far it is behind the other body's face that looks most along
     the normal (B's face towards -n for a corner of A, A's face towards +n for a
-    corner of B); a corner short of that face has a negative depth (a speculative contact). The deepest corner is kept, then the deepest
-    one more than CORNER_MERGE px away from it (two boxes of equal width have
-    their corners on top of each other: those are one contact, not two). Equal
-    depths keep the earlier corner, so rounding cannot swap the answer.
+    corner of B); a corner short of that face has a negative depth (a
+    speculative contact). The deepest corner is kept, then the deepest one
+    more than CORNER_MERGE px away from it ACROSS the normal, |(p - q)·t| with
+    t the tangent: two boxes of equal width have their corners on top of each
+    other, one above the other by the overlap; those are one contact, not two
+    (measured along the whole distance, a 100:1 pair overlapping 0.5 px got
+    both its points on one side, rocked and sank 4.25 px). Equal depths keep
+    the earlier corner, so rounding cannot swap the answer.
     """
     found = []
     for corners, other, towards in ((pa, pb, -normal), (pb, pa, normal)):
@@ -331,8 +335,9 @@ def corner_manifold(pa, pb, normal, margin=0.0):
                 found.append((p, -(p - v1).dot(face)))
     found.sort(key=lambda pd: -pd[1])  # stable: ties keep their order
     kept = found[:1]
+    tangent = Vector2(normal.y, -normal.x)
     for p, depth in found[1:]:
-        if p.distance_to(kept[0][0]) > CORNER_MERGE:
+        if abs((p - kept[0][0]).dot(tangent)) > CORNER_MERGE:
             kept.append((p, depth))
             break
     return kept
