@@ -211,3 +211,41 @@ def test_resting_pile_energy_stays_bounded():
         liveliest = max(liveliest, max(b.kinetic_energy() for b in world.bodies))
     assert highest <= settled * 1.01  # measured +0.16 % over 7 s; bound 1 %
     assert liveliest < 10.0           # measured 1.87
+
+
+# ---------------------------------------------------------------- the reference solver against analytic answers
+# Scenes from lesson11/bench/solver_probe.py (which prints pymunk beside them), run with the
+# reference solver at the stacking tests' work: 3 sub-steps × 1 pass, clipped contact points.
+# Relative errors measured 2026-11-23; pymunk (6 iterations) in brackets.
+
+def test_heavy_box_on_light_box_holds_with_the_corners_rule():
+    """Hard case: 100:1 with the lesson's corners rule (speculative corners) at 3 sub-steps × 1 pass, 5 s.
+
+    The light box's top corners and the heavy box's bottom corners lie one
+    above the other; they are one contact per side, not two on one side.
+    """
+    from lesson11.bench.solver_probe import heavy_on_light
+    worst, on_top = heavy_on_light("reference corners", seconds=5)
+    # measured 0.48 px (before corner_manifold merged corners across the normal only: 4.25 px); bound 1 px
+    assert worst <= 1.0
+    assert on_top
+
+
+@pytest.mark.parametrize("scene, bound", [
+    ("free_fall", 0.005),   # measured +0.28 % (pymunk -0.83 %): ½ g t², 1 s
+    ("slide", 0.005),       # measured +0.28 % (pymunk -0.83 %): 30°, μ 0.2, 1 s
+    ("disc_roll", 0.005),   # measured +0.26 % (pymunk -0.83 %): 20°, I = ½ m r², 1 s
+    ("stopping", 0.01),     # measured -0.45 % (pymunk +1.37 %): 300 px/s, μ 0.5
+])
+def test_reference_solver_matches_the_analytic_motion(scene, bound):
+    """Free fall, a slide on 30° with μ 0.2, a disc rolling on 20°, a stopping distance: within 1 % of the formula."""
+    from lesson11.bench import solver_probe
+    error = getattr(solver_probe, scene)("reference clip")
+    assert abs(error) <= bound, f"{scene}: {100 * error:+.2f} % off the analytic answer"
+
+
+def test_pile_far_from_the_origin_moves_as_the_pile_at_the_origin():
+    """12 crates (60 × 40 px bricks) settling 2 s at (10⁶, 10⁶) px end where they end at the origin,
+    within 1e-6 of 10⁶ px (float64 keeps ~1e-10 px at that distance)."""
+    from lesson11.bench.solver_probe import far_pile
+    assert far_pile("reference clip") <= 1e-6  # measured 2.7e-15 (2.7e-9 px)
