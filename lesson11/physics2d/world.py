@@ -21,6 +21,8 @@ GRAVITY = Vector2(0, 980)  # px/s², the course's gravity (y down)
 STEP = 1 / 120             # s, the course's fixed physics step
 EFFECTS = ("gravity", "rotation", "friction", "restitution", "correction", "ccd")
 SOLVERS = ("lesson", "accumulated")
+ORDERS = ("move-first", "solve-first")
+LESSON_SUBSTEPS = 2        # the lesson solver's sub-steps in the solve-first order (see World.lesson_solve_first)
 CONTACT_RULES = ("corners", "clip")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
 
@@ -75,6 +77,12 @@ def _check_solver(value):
     return value
 
 
+def _check_order(value):
+    if value not in ORDERS:
+        raise ValueError(f"order must be one of {list(ORDERS)}, got {value!r}")
+    return value
+
+
 def _check_effects(value):
     if isinstance(value, str):
         raise ValueError(f"effects must be a set of names such as {{{value!r}}}, not the string {value!r}")
@@ -112,7 +120,8 @@ class World:
       gravity        GRAVITY = (0, 980) px/s²
       step_seconds   STEP = 1/120 s, the fixed physics step (step() is the action that runs one)
       iterations     6 solver passes over the contacts per (sub-)step, int >= 1
-      substeps       1; each fixed step is split into this many equal sub-steps, int >= 1
+      substeps       each fixed step is split into this many equal sub-steps, int >= 1;
+                     None (default): LESSON_SUBSTEPS = 2 for the lesson solver's solve-first order, else 1
       slop           0.5 px of overlap tolerated by the push-out
       percent        0.4, share of the remaining overlap pushed out per push-out pass
       resting_speed  30 px/s; slower impacts do not bounce
@@ -120,6 +129,8 @@ class World:
       contact_rule   "corners" (the lesson's corners-inside rule) or "clip" (edge clipping)
       effects        which effects run, a subset of EFFECTS; LESSON_EFFECTS by default
                      (the push-out is the "correction" effect)
+      order          the lesson solver's order: "solve-first" (default: contacts once, resolve
+                     passes, move, push-out) or "move-first" (the lesson text's step_world)
       solver         "lesson" (fresh impulses every pass by resolve, push-out by separate) or
                      "accumulated" (arbiter.py: impulses kept across passes and steps,
                      soft contacts, sub-steps; for tall stacks and large mass ratios)
@@ -137,7 +148,11 @@ class World:
                        doc="Gravity (px/s²), checked when set.")
     step_seconds = _setting("step_seconds", _positive_seconds("step_seconds"))
     iterations = _setting("iterations", _whole_number("iterations"))
-    substeps = _setting("substeps", _whole_number("substeps"))
+    substeps = property(lambda w: w._substeps or (LESSON_SUBSTEPS if w.solver == "lesson" and w.order == "solve-first"
+                                                  else 1),
+                        lambda w, v: setattr(w, "_substeps", None if v is None else _whole_number("substeps")(v)),
+                        doc="Sub-steps per fixed step, checked when set; None: 2 for the lesson solver's "
+                            "solve-first order, else 1.")
     slop = _setting("slop", _at_least_zero("slop", "px"))
     percent = _setting("percent", _check_percent)
     resting_speed = _setting("resting_speed", _at_least_zero("resting_speed", "px/s"))
@@ -145,12 +160,13 @@ class World:
     contact_rule = _setting("contact_rule", _check_contact_rule, forget_arbiters=True)
     solver = _setting("solver", _check_solver, forget_arbiters=True)
     effects = _setting("effects", _check_effects)
+    order = _setting("order", _check_order)
     warm_starting = _setting("warm_starting", _check_bool("warm_starting"))
 
-    def __init__(self, bodies=(), *, gravity=GRAVITY, step_seconds=STEP, iterations=6, substeps=1,
+    def __init__(self, bodies=(), *, gravity=GRAVITY, step_seconds=STEP, iterations=6, substeps=None,
                  slop=response.SLOP, percent=response.PERCENT, resting_speed=response.RESTING_SPEED,
                  max_frame=0.25, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
-                 warm_starting=True, sat=None, resolve=None, separate=None):
+                 warm_starting=True, order="solve-first", sat=None, resolve=None, separate=None):
         self.arbiters = {}
         self.gravity = gravity
         self.step_seconds = step_seconds
@@ -164,6 +180,7 @@ class World:
         self.effects = effects
         self.solver = solver
         self.warm_starting = warm_starting
+        self.order = order
         self.sat = sat or collision.sat
         self.resolve = resolve or self.lesson_resolve
         self.separate = separate or self.lesson_separate
@@ -217,7 +234,10 @@ class World:
     def step(self, dt=None):
         """Advance every body by one step of dt seconds (default: step_seconds), in `substeps` sub-steps h = dt/substeps.
 
-        The lesson solver, each sub-step, in the lesson's order (move, then solve):
+        The lesson solver, order="solve-first" (the default; Box2D-Lite's order),
+        each sub-step: contacts once, resolve() passes, then move, then the
+        push-out (lesson_solve_first has the phases). order="move-first", the
+        lesson text's order, each sub-step:
           1. v += g h
           2. x += v h, angle += ω h (a swept move for "ccd" bullets)
           3. `iterations` passes of: contacts (broad phase, sat, contact points),
@@ -230,7 +250,10 @@ class World:
         """
         dt = self.step_seconds if dt is None else _positive_seconds("step dt")(dt)
         h = dt / self.substeps
-        if self.solver == "lesson":
+        if self.solver == "lesson" and self.order == "solve-first":
+            for _ in range(self.substeps):
+                self.lesson_solve_first(h)
+        elif self.solver == "lesson":
             for _ in range(self.substeps):
                 # 1. velocities: gravity
                 self.integrate_velocities(h)
@@ -288,6 +311,55 @@ class World:
             if not body.is_finite():
                 raise ValueError(f"body {index} {body!r} became non-finite at t = {self.time:.4f} s; "
                                  "check its mass, the step and the hooks")
+
+    def lesson_solve_first(self, h):
+        """One sub-step h (s) of the lesson solver in Box2D-Lite's order, with the lab's resolve and separate.
+
+          1. contacts, found once (broad phase, the lab's sat, contact points)
+          2. v += g h/2, then the impact pass: resolve() once at every point,
+             then v += g h/2. The bounce sits in the middle of the step's
+             gravity kick: an e = 1 disc that arrives at vn leaves at exactly
+             -vn, and ½ v² + g·height + ½ g h v_down, the energy this integrator
+             keeps in free flight, is unchanged by the bounce. (Bouncing after
+             the whole kick reflects vn + g h: +g h v per bounce; before it,
+             -g h v, 2.6 % per bounce from 200 px.)
+          3. `iterations` passes of resolve() over every point (resolve_pass:
+             forwards, backwards, ...); the speeds left are below resting_speed,
+             so e = 0 here and resting crates do not bounce
+          4. x += v h, angle += ω h: friction has already stopped the slide, so a
+             crate on the 22° ramp no longer creeps g sin θ h² per step
+          5. contacts measured again (what the lab draws), and separate() on the
+             pairs step 1 found; a pair that met during this move is left to
+             the next sub-step's impulses (pushing it out now would lift a
+             falling body before it bounces: energy from nowhere)
+        Per fixed step with LESSON_SUBSTEPS = 2: 4 contact searches (move-first:
+        6) and 2 × (1 + iterations) resolve passes.
+        """
+        found = list(self.manifolds())
+        self.integrate_velocities(h / 2)
+        self.resolve_pass(found, 0)
+        self.integrate_velocities(h / 2)
+        for index in range(self.iterations):
+            self.resolve_pass(found, index)
+        self.integrate_positions(h)
+        solved = {(id(a), id(b)) for a, b, _ in found}
+        self.contacts = []
+        for a, b, m in self.manifolds():
+            self.contacts += [Contact(a, b, point, m.normal, m.depth) for point in m.points]
+            if "correction" in self.effects and (id(a), id(b)) in solved:
+                self.separate(a, b, m.normal, m.depth)
+
+    def resolve_pass(self, found, index):
+        """resolve() at every point of every (a, b, manifold); odd `index` goes backwards (pairs and points).
+
+        resolve() starts from nothing each call and can only push, so whatever it
+        meets first is over-pushed and the rest never pull back; alternating the
+        order (symmetric Gauss-Seidel) stops one corner of a resting crate, or
+        one end of the pile, from always being first.
+        """
+        for a, b, m in (found if index % 2 == 0 else found[::-1]):
+            for point in (m.points if index % 2 == 0 else m.points[::-1]):
+                self.resolve(a, b, m.normal, point)
 
     def integrate_velocities(self, dt):
         """Gravity for every dynamic body: v += g dt (only if the scene declares "gravity")."""
