@@ -2,10 +2,26 @@
 
 In the style of check50: a lab's checks are plain functions registered in
 order with @registry.check(...). A check's docstring is the description the
-student sees. A check passes by returning (optionally a short message), and
-fails by raising Fail(rationale, hint) or Error(rationale, hint) (the lab
-crashed, looped or broke a limit, so nothing could be measured). A check whose
-dependencies did not all pass is skipped, so a crash is reported once.
+student sees. A check receives the submission (what was run and recorded) and,
+after it, what each check it depends on returned, in the order of `depends`:
+
+    @CHECKS.check(depends=["loads"])
+    def sat_axes(sub, probe):        # probe: what `loads` returned
+        ...
+        return Passed("10.00 px along (1, 0)", value=cases)   # or just a value
+
+A check passes by returning: a str is shown as its message, `Passed(message,
+value)` shows the message and hands `value` to its dependents, anything else is
+handed on silently. It fails by raising Fail(rationale, hint), or Error(rationale,
+hint) when the lab crashed, looped or broke a limit so nothing could be measured.
+A check whose dependencies did not all pass is skipped, so a crash or a
+mistake is reported once. No state is shared between checks except through
+these return values.
+
+A check registered with `needs_scenarios=True` reads the scene runs; the
+grader runs the scenes only if such a check has every dependency passed
+(`Registry.wants_scenarios`), so a file that fails a function check costs one
+probe run, not five.
 """
 import inspect
 from dataclasses import dataclass, field
@@ -39,12 +55,20 @@ class Error(Fail):
 
 
 @dataclass
+class Passed:
+    """A passing check's message for the student and the value handed to the checks that depend on it."""
+    message: str = ""
+    value: object = None
+
+
+@dataclass
 class Check:
-    """A registered check: id, the function, what it depends on, and its weight."""
+    """A registered check: id, the function, what it depends on, its weight, and whether it reads the scenes."""
     id: str
     func: object
     depends: tuple
     max_score: float
+    needs_scenarios: bool = False
 
     @property
     def description(self):
@@ -75,45 +99,88 @@ class Registry:
     def __init__(self):
         self.checks = []
 
-    def check(self, depends=(), max_score=1.0):
+    def check(self, depends=(), max_score=1.0, needs_scenarios=False):
         """Decorator: register the function as the next check, depending on the ids in `depends`."""
         def register(func):
             known = {c.id for c in self.checks}
             missing = [d for d in depends if d not in known]
             if missing:
                 raise ValueError(f"check {func.__name__} depends on unknown or later checks {missing}")
-            self.checks.append(Check(func.__name__, func, tuple(depends), float(max_score)))
+            self.checks.append(Check(func.__name__, func, tuple(depends), float(max_score), needs_scenarios))
             return func
         return register
 
-    def run(self, context):
-        """Run every check in order against `context`; returns a list of Result in registration order."""
-        results = {}
-        ordered = []
+    @property
+    def max_score(self):
+        return sum(c.max_score for c in self.checks)
+
+    def run(self, submission, stop_at_scenarios=False, state=None):
+        """Run the checks in order; returns a RunState (results so far, values handed on).
+
+        With stop_at_scenarios=True, stop before the first check that reads the
+        scenes; call again with the returned `state` to finish.
+        """
+        state = state or RunState()
         for chk in self.checks:
-            blocked = [d for d in chk.depends if results[d].status != PASS]
+            if chk.id in state.results:
+                continue
+            if stop_at_scenarios and chk.needs_scenarios:
+                break
+            blocked = [d for d in chk.depends if state.results[d].status != PASS]
             if blocked:
-                result = Result(chk.id, chk.description, SKIP,
-                                message=f"skipped: needs '{blocked[0]}' to pass first", max_score=chk.max_score)
+                state.add(Result(chk.id, chk.description, SKIP, message=f"skipped: needs '{blocked[0]}' to pass first",
+                                 max_score=chk.max_score))
+                continue
+            try:
+                returned = chk.func(submission, *(state.values[d] for d in chk.depends))
+            except Error as exc:
+                state.add(state.failed(chk, ERROR, exc))
+                continue
+            except Fail as exc:
+                state.add(state.failed(chk, FAIL, exc))
+                continue
+            if isinstance(returned, Passed):
+                message, value = returned.message, returned.value
             else:
-                try:
-                    message = chk.func(context)
-                    result = Result(chk.id, chk.description, PASS, message=message or "",
-                                    score=chk.max_score, max_score=chk.max_score)
-                except Error as exc:
-                    result = _failed(chk, ERROR, exc)
-                except Fail as exc:
-                    result = _failed(chk, FAIL, exc)
-            results[chk.id] = result
-            ordered.append(result)
-        return ordered
+                message, value = (returned if isinstance(returned, str) else ""), returned
+            state.values[chk.id] = value
+            state.add(Result(chk.id, chk.description, PASS, message=message or "", score=chk.max_score,
+                             max_score=chk.max_score))
+        return state
+
+    def wants_scenarios(self, state):
+        """True when some check that reads the scenes has all of its dependencies passed."""
+        return any(chk.needs_scenarios and all(d in state.results and state.results[d].status == PASS
+                                               for d in chk.depends)
+                   for chk in self.checks)
 
 
-def _failed(chk, status, exc):
-    hint = exc.hint
-    return Result(chk.id, chk.description, status, message=exc.rationale,
-                  hint=hint.render() if hint else "", step=hint.step if hint else None,
-                  score=0.0, max_score=chk.max_score)
+class RunState:
+    """The results of one run of a registry, in order, and the values passing checks handed on."""
+
+    def __init__(self):
+        self.results = {}
+        self.values = {}
+        self.hints_shown = {}
+
+    def add(self, result):
+        self.results[result.id] = result
+
+    def failed(self, chk, status, exc):
+        """A Result for a failed check; a hint already shown under an earlier check is referred to, not repeated."""
+        hint = exc.hint
+        text = hint.render() if hint else ""
+        if hint is not None and hint in self.hints_shown:
+            text = f"[step {hint.step}: {hint.title}] see the hint under '{self.hints_shown[hint]}' above." \
+                if hint.step else f"[lesson: {hint.title}] see the hint under '{self.hints_shown[hint]}' above."
+        elif hint is not None:
+            self.hints_shown[hint] = chk.id
+        return Result(chk.id, chk.description, status, message=exc.rationale, hint=text,
+                      step=hint.step if hint else None, score=0.0, max_score=chk.max_score)
+
+    def ordered(self, registry):
+        """The results in the registry's order."""
+        return [self.results[c.id] for c in registry.checks if c.id in self.results]
 
 
 def skipped_all(registry, message):

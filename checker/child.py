@@ -11,22 +11,59 @@ the module name "lab_under_test", so its `if __name__ == "__main__":` guard does
 not run main(). No bytecode is written next to the submitted file.
 
 The parent sets the resource limits and the wall-clock timeout; this file only
-arms faulthandler so that a run killed for taking too long leaves a traceback
+arms faulthandler (on SIGXCPU, the CPU-time limit, and shortly before the
+wall-clock limit) so that a run killed for taking too long leaves a traceback
 (where the lab was looping) in "timeout_traceback.txt" in the working directory.
 """
 import faulthandler
+import importlib
 import io
 import json
 import math
 import os
 import sys
+import signal
 import traceback
 import types
 
 sys.dont_write_bytecode = True
 
 MODULE_NAME = "lab_under_test"
-REQUIRED = ("sat", "apply_impulse", "resolve", "main")
+PROBE_SECONDS = 3.0   # s a lab function may run during the probe before it is stopped as an endless loop
+
+
+class OutputFlood(Exception):
+    """Raised from print() inside the lab once it has written more than its output allowance."""
+
+
+class LimitedStream(io.TextIOBase):
+    """A text stream that passes writes on and raises OutputFlood past `limit` characters in all.
+
+    The exception comes out of the lab's own print() call, so its traceback names the line
+    that was printing. The parent's hard byte limit stays as the second line of defence.
+    """
+
+    def __init__(self, stream, counter, limit):
+        self.stream, self.counter, self.limit = stream, counter, limit
+
+    def write(self, text):
+        self.counter[0] += len(text)
+        if self.counter[0] > self.limit:
+            raise OutputFlood(f"printed more than {self.limit // 1024} KB")
+        return self.stream.write(text)
+
+    def flush(self):
+        self.stream.flush()
+
+    def fileno(self):
+        return self.stream.fileno()
+
+    @property
+    def encoding(self):
+        return self.stream.encoding
+
+    def writable(self):
+        return True
 
 
 class LabExit(BaseException):
@@ -61,6 +98,8 @@ def describe(exc, lab_path):
         kind, message = "exit", f"sys.exit({exc.code!r}) was called"
     elif isinstance(exc, MemoryError):
         kind, message = "memory", "MemoryError: the lab ran out of memory"
+    elif isinstance(exc, OutputFlood):
+        kind, message = "flood", str(exc)
     elif isinstance(exc, SyntaxError):
         kind, message = "syntax", f"SyntaxError: {exc.msg}"
     else:
@@ -84,130 +123,43 @@ def load_lab(lab_path, copy_path):
 
 # ---------------------------------------------------------------- probe: the student's own functions
 
-def _vec(value):
-    from pygame import Vector2
-    return Vector2(value)
+class FunctionTimeout(Exception):
+    """Raised inside a student's function that ran past its time budget (an endless loop, say)."""
 
 
-def _box(w, h, centre, angle_deg=0.0):
-    from pygame import Vector2
-    corners = [Vector2(-w / 2, -h / 2), Vector2(w / 2, -h / 2), Vector2(w / 2, h / 2), Vector2(-w / 2, h / 2)]
-    return [Vector2(centre) + c.rotate(angle_deg) for c in corners]
+def _alarm(signum, frame):
+    raise FunctionTimeout()
 
 
-def _result_of_sat(hit):
-    """The sat() answer as plain data: None, or {"normal": [x, y], "depth": d}; raises on a bad shape."""
-    if hit is None:
-        return None
-    normal, depth = hit
-    normal = _vec(normal)
-    depth = float(depth)
-    return {"normal": [normal.x, normal.y], "depth": depth}
+def call_limited(func, seconds, *args):
+    """func(*args), interrupted with FunctionTimeout after `seconds` of CPU time (SIGPROF)."""
+    previous = signal.signal(signal.SIGPROF, _alarm)
+    signal.setitimer(signal.ITIMER_PROF, seconds)
+    try:
+        return func(*args)
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, previous)
 
 
-def probe_sat(sat):
-    """The lesson's three pairs (A = 40 × 40 box at the origin), each also with A and B swapped."""
-    a = _box(40, 40, (0, 0))
-    pairs = {
-        "side by side, 10 px overlap": _box(40, 40, (30, 5)),
-        "diamond near a corner": _box(40, 40, (45, 45), 45),
-        "diamond pushed closer": _box(40, 40, (30, 30), 45),
-    }
-    out = []
-    for name, b in pairs.items():
-        out.append({"pair": name, "order": "A, B", "result": _result_of_sat(sat(list(a), list(b)))})
-        out.append({"pair": name, "order": "B, A", "result": _result_of_sat(sat(list(b), list(a)))})
-    return out
+def run_probe(module, lab_path, probes, seconds):
+    """Each of the lab's probes in turn; a failing one gets its own error.
 
-
-def _bodies():
-    from lesson11.physics2d import Body, box_points
-    a = Body(box_points(60, 40), (0, 0), 2.4)
-    b = Body(box_points(50, 50), (0, 0), 2.5)
-    return a, b
-
-
-def _state(body):
-    return {"vel": [body.vel.x, body.vel.y], "omega": body.omega}
-
-
-def probe_apply_impulse(apply_impulse):
-    """An off-centre hit: impulse (0, 300) at ra = (25, 18), rb = (-20, -22) on two dynamic crates."""
-    a, b = _bodies()
-    impulse, ra, rb = _vec((0, 300)), _vec((25, 18)), _vec((-20, -22))
-    before = {"a": _state(a), "b": _state(b)}
-    apply_impulse(a, b, impulse, ra, rb)
-    from lesson11.physics2d import cross
-    expected = {
-        "a": {"vel": [0.0, -300 * a.inv_mass], "omega": -cross(ra, impulse) * a.inv_inertia},
-        "b": {"vel": [0.0, 300 * b.inv_mass], "omega": cross(rb, impulse) * b.inv_inertia},
-    }
-    return {"before": before, "after": {"a": _state(a), "b": _state(b)}, "expected": expected}
-
-
-def _slip(a, b, normal, point):
-    """(normal speed, tangential slip vector) of B's contact point relative to A's."""
-    from lesson11.physics2d import relative_velocity
-    rel = relative_velocity(a, b, point - a.pos, point - b.pos)
-    vn = rel.dot(normal)
-    tangent = rel - normal * vn
-    return vn, tangent
-
-
-def probe_resolve(resolve):
-    """Three contacts between a static floor (A) and a 60 × 40 crate (B) resting on it.
-
-    glancing: the crate slides right at 400 px/s and touches the floor at 5 px/s.
-        The grader compares the crate's momentum change along x (the friction
-        impulse) with mu times its change along y (the normal impulse j).
-    sliding: the same at 80 px/s down into the floor, 200 px/s along it.
-    corner: the crate, turned 30°, lands on its lowest corner at 200 px/s with
-        friction 0 and restitution 0: the contact should stop closing (vn ≈ 0),
-        which needs the spin terms in k.
+    `probes.PROBES` maps a probe's name to (the lab function it needs, probe(module, lab_path)).
+    Returns {"missing": [...], "functions": {probe name: {"ok": True, "data": ...} or
+    {"ok": False, "error": ...}}}. A probe that runs longer than `seconds` of CPU is stopped
+    and reported with the line it was at.
     """
-    from lesson11.physics2d import Body, box_points, effective_mass_inverse
-    out = {}
-    for name, vel, angle, mu, e in (("glancing", (400, 5), 0.0, 0.6, 0.2),
-                                    ("sliding", (200, 80), 0.0, 0.6, 0.2),
-                                    ("corner", (0, 200), math.radians(30), 0.0, 0.0)):
-        floor = Body(box_points(400, 40), (0, 20), 0, friction=mu, restitution=e)
-        crate = Body(box_points(60, 40), (0, -20), 2.4, angle=angle, vel=vel, friction=mu, restitution=e)
-        normal = _vec((0, -1))  # from the floor (A, below) up to the crate (B)
-        if angle:
-            lowest = max(crate.world_points(), key=lambda p: p.y)
-            crate.pos.y -= lowest.y - 0.5  # corner 0.5 px into the floor
-            point = max(crate.world_points(), key=lambda p: p.y)
-        else:
-            point = _vec((-25, 0))  # a point of the crate's bottom edge, left of centre
-        vn0, t0 = _slip(floor, crate, normal, point)
-        omega0 = crate.omega
-        vel0 = _vec(crate.vel)
-        resolve(floor, crate, normal, point)
-        vn1, t1 = _slip(floor, crate, normal, point)
-        # the Coulomb bound on the slip change: |Δslip| <= mu * j * k_t, with j the normal impulse
-        ra, rb = point - floor.pos, point - crate.pos
-        k = effective_mass_inverse(floor, crate, ra, rb, normal)
-        out[name] = {
-            "vn_before": vn0, "vn_after": vn1,
-            "slip_before": [t0.x, t0.y], "slip_after": [t1.x, t1.y],
-            "omega_before": omega0, "omega_after": crate.omega,
-            "vel_before": [vel0.x, vel0.y], "vel_after": [crate.vel.x, crate.vel.y],
-            "k": k, "mu": mu, "restitution": e,
-            "kt": effective_mass_inverse(floor, crate, ra, rb, _vec((1, 0))),
-            "mass": crate.mass,
-        }
-    return out
-
-
-def run_probe(module, lab_path):
-    """Test each of the lab's functions on the lesson's cases; a failing function gets its own error."""
-    result = {"functions": {}, "missing": [m for m in REQUIRED if not callable(getattr(module, m, None))]}
-    for name, probe in (("sat", probe_sat), ("apply_impulse", probe_apply_impulse), ("resolve", probe_resolve)):
-        func = getattr(module, name, None)
-        if not callable(func):
+    result = {"functions": {}, "missing": [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]}
+    for name, (function, probe) in probes.PROBES.items():
+        if not callable(getattr(module, function, None)):
             continue
         try:
-            result["functions"][name] = {"ok": True, "data": probe(func)}
+            result["functions"][name] = {"ok": True, "data": call_limited(probe, seconds, module, lab_path)}
+        except FunctionTimeout as exc:
+            error = describe(exc, lab_path)
+            error.update(kind="timeout", message=f"{function}() was still running after {seconds:g} s of CPU time")
+            result["functions"][name] = {"ok": False, "error": error}
         except Exception as exc:  # the student's function raised: report it with file and line
             result["functions"][name] = {"ok": False, "error": describe(exc, lab_path)}
     return result
@@ -231,9 +183,17 @@ def main(argv):
     trace = open("timeout_traceback.txt", "w")
     if budget > 0:
         faulthandler.dump_traceback_later(budget, exit=True, file=trace)
+    faulthandler.register(signal.SIGXCPU, file=trace, all_threads=False)  # the CPU-time limit: where it looped
     os._exit = _blocked_os_exit
     with open(settings_path, encoding="utf-8") as handle:
         settings = json.load(handle)
+    # the checker's own settings; what is left goes to the lab runtime
+    probes = importlib.import_module(settings.pop("probes"))
+    output_limit = int(settings.pop("max_output", 0) or 0)
+    if output_limit:
+        counter = [0]
+        sys.stdout = LimitedStream(sys.stdout, counter, output_limit)
+        sys.stderr = LimitedStream(sys.stderr, counter, output_limit)
     copy_path = os.path.abspath(os.path.basename(lab_path))
     result = {"task": task, "phase": "import"}
 
@@ -248,9 +208,9 @@ def main(argv):
         result["phase"] = "run"
         save()
         if task == "probe":
-            result["probe"] = run_probe(module, lab_path)
+            result["probe"] = run_probe(module, lab_path, probes, PROBE_SECONDS)
         else:
-            missing = [m for m in REQUIRED if not callable(getattr(module, m, None))]
+            missing = [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]
             if missing:
                 raise AttributeError(f"the lab defines no {missing[0]}()")
             run_scenario(module, settings)
@@ -258,7 +218,8 @@ def main(argv):
     except BaseException as exc:  # anything the lab raises, SystemExit included, becomes a result
         result["error"] = describe(exc, lab_path)
     faulthandler.cancel_dump_traceback_later()
-    sys.stdout.flush()
+    sys.stdout = sys.__stdout__
+    sys.stderr = sys.__stderr__
     save()
     # leave without running the lab's atexit handlers twice or waiting on its threads
     sys.stdout.flush()

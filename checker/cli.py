@@ -1,4 +1,11 @@
-"""The command line: python -m checker PATH... [options]. See checker/README.md."""
+"""The command line: python -m checker PATH... [options]. See checker/README.md.
+
+Exit status: 0 every entry was graded and passes every check; 1 an entry
+fails a check or could not be graded (or an output could not be written);
+2 the command line is wrong (a bad option or value, a path that does not
+exist, a folder with nothing to grade, an output path that is refused):
+then nothing is graded and nothing is written.
+"""
 import argparse
 import json
 import os
@@ -6,75 +13,61 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
-from . import report
+from . import outputs, report
+from .entries import discover, graded_folders
 from .grade import Grader
-from .labs import LABS, identify
+from .labs import LABS
+from .report import NotGraded
 from .sandbox import Limits
 
-SKIP_DIRS = {"__pycache__", ".git", ".venv", "venv", "node_modules"}
+USAGE = 2
 
 
-class PathError(Exception):
-    """A path that does not exist or holds no lab."""
+class UsageError(Exception):
+    """The command line is wrong; the message is one line."""
 
 
-def _read(path):
-    try:
-        with open(path, "rb") as handle:
-            return handle.read(2_000_000).decode("utf-8", "replace")
-    except OSError as exc:
-        raise PathError(f"cannot read {path}: {exc.strerror}")
-
-
-def find_labs(path):
-    """[(file, Lab)] for a lab file, a folder of lab files, or a folder of submission folders."""
-    if not os.path.exists(path):
-        raise PathError(f"{path}: no such file or folder")
-    if os.path.isfile(path):
-        if not path.endswith(".py"):
-            raise PathError(f"{path}: not a lab (a lab is a .py file)")
-        lab = identify(path, _read(path))
-        if lab is None:
-            raise PathError(f"{path}: not a lab this checker knows ({', '.join(l.title for l in LABS)})")
-        return [(path, lab)]
-    found = []
-    for folder, dirs, files in os.walk(path):
-        dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith("."))
-        for name in sorted(files):
-            if name.endswith(".py"):
-                file = os.path.join(folder, name)
-                lab = identify(file, _read(file))
-                if lab is not None:
-                    found.append((file, lab))
-    if not found:
-        raise PathError(f"{path}: no lab files found in this folder")
-    return found
+class Parser(argparse.ArgumentParser):
+    def error(self, message):
+        raise UsageError(f"{message} (python -m checker --help lists the options)")
 
 
 def parse_args(argv):
-    parser = argparse.ArgumentParser(
-        prog="python -m checker",
-        description="Grade Lesson 11 lab files headless: each file runs in its own limited process.")
-    parser.add_argument("paths", nargs="+", metavar="PATH",
+    parser = Parser(
+        prog="python -m checker", allow_abbrev=False,
+        description="Grade Lesson 11 lab files headless: each file runs in its own limited process.",
+        epilog="Exit status: 0 every entry graded and passing; 1 an entry fails or could not be graded; 2 a wrong "
+               "command line (nothing graded, nothing written). No file is written unless --csv, --gradescope or "
+               "--gradescope-dir asks. See checker/README.md.")
+    parser.add_argument("paths", nargs="*", metavar="PATH",
                         help="lab files, folders of lab files, or folders of submission folders")
+    parser.add_argument("--list", action="store_true",
+                        help="list every lab the checker knows with its checks, their steps and points, and stop")
     parser.add_argument("--json", action="store_true", help="print the results as JSON (schema in checker/README.md)")
-    parser.add_argument("--gradescope", nargs="?", const="results.json", metavar="PATH",
-                        help="write Gradescope's results.json to PATH (default: results.json)")
-    parser.add_argument("--csv", metavar="PATH",
-                        help="write one CSV row per file (default when grading 2+ files: grades.csv; 'none' turns it off)")
+    parser.add_argument("--csv", metavar="FILE",
+                        help="write one CSV row per entry to FILE (only when asked; an existing FILE is replaced)")
+    parser.add_argument("--gradescope", metavar="FILE",
+                        help="write Gradescope's results.json for the one submission being graded to FILE")
+    parser.add_argument("--gradescope-dir", metavar="DIR",
+                        help="write one Gradescope results.json per submission: DIR/<submission>/results.json")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
                         help="child processes at once (default: all cores, %(default)s here)")
     parser.add_argument("--timeout", type=float, default=20.0,
-                        help="wall-clock seconds for each run of a lab (its import check and each scene; default 20)")
+                        help="CPU seconds for each run of a lab (its import check and each scene; default 20); "
+                             "its wall-clock limit is 3 x that + 5 s")
     parser.add_argument("--total-timeout", type=float, default=1800.0,
                         help="wall-clock seconds for the whole run; labs not started by then are errors (default 1800)")
     parser.add_argument("--memory", type=int, default=768, help="address-space limit per run in MB (default 768)")
     parser.add_argument("--max-output", type=int, default=256,
                         help="KB of stdout + stderr a run may print before it is stopped (default 256)")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
+    parser.add_argument("--allow-edits", action="store_true",
+                        help="code changed outside the steps is a warning, not a failure (the scenes still run)")
     args = parser.parse_args(argv)
+    if not args.paths and not args.list:
+        parser.error("give at least one PATH to grade (or --list)")
     for name in ("timeout", "total_timeout"):
-        if getattr(args, name) <= 0:
+        if not getattr(args, name) > 0:
             parser.error(f"--{name.replace('_', '-')} must be > 0 s, got {getattr(args, name):g}")
     if args.jobs < 1:
         parser.error(f"--jobs must be >= 1, got {args.jobs}")
@@ -82,50 +75,121 @@ def parse_args(argv):
         parser.error(f"--memory must be >= 64 MB, got {args.memory}")
     if args.max_output < 1:
         parser.error(f"--max-output must be >= 1 KB, got {args.max_output}")
+    if args.csv is not None and args.csv.lower() == "none":
+        args.csv = None  # `--csv none` from older scripts: no CSV (which is now the default)
+    for option in ("csv", "gradescope", "gradescope_dir"):
+        if getattr(args, option) == "":
+            parser.error(f"--{option.replace('_', '-')} needs a path, got an empty one")
     return args
 
 
-def main(argv=None):
-    """Grade the paths; exit status 0 only if every graded lab passes every check, 2 for bad paths."""
-    args = parse_args(sys.argv[1:] if argv is None else argv)
-    errors, labs = [], []
-    for path in args.paths:
-        try:
-            for item in find_labs(path):
-                if os.path.abspath(item[0]) not in {os.path.abspath(f) for f, _ in labs}:
-                    labs.append(item)
-        except PathError as exc:
-            errors.append((path, str(exc)))
-            print(f"checker: error: {exc}", file=sys.stderr)
-    grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024), args.jobs, args.total_timeout)
+def plan(args):
+    """(entries, the outputs to write) for the command line; raises UsageError naming every problem."""
+    entries, problems = discover(args.paths)
+    wanted = [(f"--{name.replace('_', '-')}", getattr(args, name), kind)
+              for name, kind in (("csv", "file"), ("gradescope", "file"), ("gradescope_dir", "folder"))
+              if getattr(args, name)]
+    problems += outputs.check(wanted, args.paths, entries, graded_folders(args.paths))
+    if not problems and args.gradescope and len(entries) > 1:
+        problems.append(f"--gradescope {args.gradescope}: {len(entries)} files to grade, but a results.json holds "
+                        f"one submission; use --gradescope-dir DIR for one results.json per submission")
+    if problems:
+        raise UsageError("\n".join(problems))
+    return entries
+
+
+def grade_all(entries, grader, jobs, progress):
+    """One row per entry, in order: a LabReport, or a NotGraded when the entry (or the grader on it) failed."""
+    rows = [NotGraded(e.path, e.lab, e.problem) if not e.gradable else None for e in entries]
+    todo = [i for i, row in enumerate(rows) if row is None]
     start = time.monotonic()
-    reports = [None] * len(labs)
-    progress = not args.quiet and len(labs) > 1
-    with ThreadPoolExecutor(max_workers=max(1, min(len(labs), args.jobs * 2))) as pool:
-        futures = {pool.submit(grader.grade, path, lab): index for index, (path, lab) in enumerate(labs)}
-        for done, future in enumerate(as_completed(futures), 1):
-            index = futures[future]
-            reports[index] = future.result()
-            if progress:
-                r = reports[index]
-                print(f"[{done}/{len(labs)}] {os.path.relpath(r.path)}: {r.score:g}/{r.max_score:g} {r.status} "
-                      f"({time.monotonic() - start:.1f} s)", file=sys.stderr, flush=True)
+    done = 0
+
+    def show(row):
+        if progress:
+            print(f"[{done}/{len(rows)}] {os.path.relpath(row.path)}: {row.score:g}/{row.max_score:g} {row.status} "
+                  f"({time.monotonic() - start:.1f} s)", file=sys.stderr, flush=True)
+
+    for row in rows:
+        if row is not None:
+            done += 1
+            print(f"checker: {row.path}: not graded: {row.message}", file=sys.stderr, flush=True)
+    if todo:
+        with ThreadPoolExecutor(max_workers=max(1, min(len(todo), jobs * 2))) as pool:
+            futures = {pool.submit(grader.grade, entries[i].path, entries[i].lab): i for i in todo}
+            for future in as_completed(futures):
+                index = futures[future]
+                entry = entries[index]
+                try:
+                    rows[index] = future.result()
+                except OSError as exc:  # the file went away or became unreadable after it was found
+                    rows[index] = NotGraded(entry.path, entry.lab, f"cannot read: {exc.strerror or exc}")
+                except Exception as exc:  # a bug of ours: this file gets an error row, the batch goes on
+                    rows[index] = NotGraded(entry.path, entry.lab,
+                                            f"the checker failed on this file ({type(exc).__name__}: {exc}); "
+                                            f"this is a bug in the checker, please report it")
+                    print(f"checker: {entry.path}: internal error {type(exc).__name__}: {exc}",
+                          file=sys.stderr, flush=True)
+                done += 1
+                show(rows[index])
+    return rows
+
+
+def write_outputs(args, rows):
+    """Write the outputs asked for; returns the one-line problems (an output that could not be written)."""
+    problems, written = [], []
+    jobs = []
+    if args.csv:
+        jobs.append(("--csv", args.csv, lambda: report.csv_text(rows), "CSV"))
+    if args.gradescope:
+        jobs.append(("--gradescope", args.gradescope, lambda: report.gradescope_text(rows), "Gradescope"))
+    for option, path, text, what in jobs:
+        try:
+            report.write_atomic(path, text())
+            written.append(f"{what} written to {path}")
+        except OSError as exc:
+            problems.append(f"{option} {path}: cannot write it: {exc.strerror or exc}")
+    if args.gradescope_dir:
+        names = outputs.submission_names([r.path for r in rows])
+        count = 0
+        for row in rows:
+            target = os.path.join(args.gradescope_dir, names[row.path], "results.json")
+            try:
+                os.makedirs(os.path.dirname(target), exist_ok=True)
+                report.write_atomic(target, report.gradescope_text([row]))
+                count += 1
+            except OSError as exc:
+                problems.append(f"--gradescope-dir: cannot write {target}: {exc.strerror or exc}")
+        written.append(f"Gradescope: {count} results.json written under {args.gradescope_dir}")
+    return problems, written
+
+
+def main(argv=None):
+    """Grade the paths; returns the exit status (see the module docstring)."""
+    try:
+        args = parse_args(sys.argv[1:] if argv is None else argv)
+        if args.list:
+            report.list_labs(LABS, sys.stdout)
+            return 0
+        entries = plan(args)
+    except UsageError as exc:
+        for line in str(exc).splitlines():
+            print(f"checker: error: {line}", file=sys.stderr)
+        return USAGE
+    grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024), args.jobs, args.total_timeout,
+                    options={"allow_edits": args.allow_edits})
+    rows = grade_all(entries, grader, args.jobs, progress=not args.quiet and len(entries) > 1)
+    problems, written = write_outputs(args, rows)
     if args.json:
-        json.dump(report.to_json(reports, errors), sys.stdout, indent=2)
+        json.dump(report.to_json(rows), sys.stdout, indent=2)
         sys.stdout.write("\n")
     else:
-        for r in reports:
-            report.text_report(r, sys.stdout)
-        if len(reports) > 1:
-            report.summary_table(reports, sys.stdout)
-    if args.gradescope:
-        with open(args.gradescope, "w", encoding="utf-8") as handle:
-            json.dump(report.gradescope(reports), handle, indent=2)
-    csv_path = args.csv if args.csv else ("grades.csv" if len(reports) > 1 else None)
-    if csv_path and csv_path.lower() != "none" and reports:
-        report.write_csv(reports, csv_path)
-        if not args.json:
-            print(f"CSV written to {csv_path}")
-    if errors:
-        return 2
-    return 0 if reports and all(r.passed for r in reports) else 1
+        for row in rows:
+            report.text_report(row, sys.stdout)
+        if len(rows) > 1:
+            report.summary_table(rows, sys.stdout)
+        for line in written:
+            print(line)
+    for line in problems:
+        print(f"checker: error: {line}", file=sys.stderr)
+    return 0 if rows and all(r.passed for r in rows) and not problems else 1

@@ -192,3 +192,25 @@ def measure_pile(record, settle_seconds=1.0):
 def fast_movers(frame):
     """How many dynamic bodies of a recorded frame move faster than FAST_MOVER px/s."""
     return sum(1 for body in dynamic(frame) if speed(body) > FAST_MOVER)
+
+
+def free_fall(record, frames=4):
+    """Gravity (px/s²) measured from the first recorded frames, while every crate still falls freely.
+
+    Per frame the vertical speed of each crate grows by g / FPS; returns the mean over the
+    first `frames` frame pairs before any contact, or None if contacts start at once.
+    """
+    recorded = record["records"]
+    rates = []
+    for before, after in zip(recorded, recorded[1:frames + 1]):
+        if after["contacts"] or before["contacts"] or after["frame"] != before["frame"] + 1:
+            break
+        for a, b in zip(dynamic(before), dynamic(after)):
+            rates.append((b["vel"][1] - a["vel"][1]) * FPS)
+    return sum(rates) / len(rates) if rates else None
+
+
+def drops_added(record):
+    """How many crates the scripted clicks added: the dynamic bodies at the end minus those at the start."""
+    frames = record["records"]
+    return len(dynamic(frames[-1])) - len(dynamic(frames[0]))

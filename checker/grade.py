@@ -2,7 +2,8 @@
 
 A lab file is graded in two stages, each in isolated child processes:
   1. the probe: import the file and test its own functions (one child);
-  2. if it imports and keeps its lab-runtime lines: one child per scenario.
+  2. if the checks that read the scenes can run (every check they depend on
+     passed): one child per scenario.
 All children of all files share one pool of `jobs` worker slots, so a class
 folder keeps every core busy. A file's source is read once (the checker never
 writes to it); if the file changes while it is graded the result is an error.
@@ -14,19 +15,24 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
-from .checks import ERROR, PASS, Error, skipped_all
+from .checks import ERROR, PASS, skipped_all
 from .sandbox import Limits, run_child
 
 
 @dataclass
-class Context:
-    """What the checks of one lab see."""
+class Submission:
+    """What a lab's checks see: the file, the runs made of it, and the grading options.
+
+    `probe` is the probe run (a sandbox.RunResult); `scenarios` maps a scene's
+    name to its run (filled only if some check that reads the scenes can run);
+    `options` holds instructor options such as allow_edits.
+    """
     path: str
     name: str
     source: str
     probe: object = None
     scenarios: dict = field(default_factory=dict)
-    diagnoses: set = field(default_factory=set)
+    options: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -59,8 +65,9 @@ class LabReport:
 class Grader:
     """Runs child processes for many labs with at most `jobs` at a time and an overall deadline."""
 
-    def __init__(self, limits=None, jobs=None, total_timeout=None):
+    def __init__(self, limits=None, jobs=None, total_timeout=None, options=None):
         self.limits = limits or Limits()
+        self.options = dict(options or {})
         self.jobs = max(1, jobs or os.cpu_count() or 1)
         self.slots = threading.Semaphore(self.jobs)
         self.deadline = None if not total_timeout else time.monotonic() + total_timeout
@@ -94,39 +101,26 @@ class Grader:
         with open(path, "rb") as handle:
             raw = handle.read()
         digest = hashlib.sha256(raw).hexdigest()
-        source = raw.decode("utf-8", "replace")
-        ctx = Context(path=path, name=os.path.basename(path), source=source)
-        ctx.probe = self.run(path, "probe", {})
-        if ctx.probe is None:
+        sub = Submission(path=path, name=os.path.basename(path), source=raw.decode("utf-8", "replace"),
+                         options=dict(self.options))
+        sub.probe = self.run(path, "probe", {"probes": lab.probes})
+        if sub.probe is None:
             return LabReport(path, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start)
-        if self._gate(lab, ctx):
+        state = lab.checks.run(sub, stop_at_scenarios=True)
+        if lab.checks.wants_scenarios(state):
             wanted = lab.scenarios()
             with ThreadPoolExecutor(max_workers=len(wanted)) as pool:
-                futures = {name: pool.submit(self.run, path, "scenario", settings)
+                futures = {name: pool.submit(self.run, path, "scenario", dict(settings, probes=lab.probes))
                            for name, settings in wanted.items()}
                 for name, future in futures.items():
                     run = future.result()
                     if run is not None:
-                        ctx.scenarios[name] = run
-        results = lab.checks.run(ctx)
+                        sub.scenarios[name] = run
+        results = lab.checks.run(sub, state=state).ordered(lab.checks)
         with open(path, "rb") as handle:
             if hashlib.sha256(handle.read()).hexdigest() != digest:
-                results = skipped_all(lab.checks, f"{ctx.name} changed while it was being graded; grade it again.")
+                results = skipped_all(lab.checks, f"{sub.name} changed while it was being graded; grade it again.")
         return LabReport(path, lab, results, time.monotonic() - start)
 
     def _late_message(self):
         return f"not graded: the time limit for the whole run ({self.total_timeout:g} s) ran out first."
-
-    @staticmethod
-    def _gate(lab, ctx):
-        """True when the checks the scenarios depend on pass (so running the scenarios is worth it)."""
-        gate_ids = {"loads", "runtime_lines"}
-        for chk in lab.checks.checks:
-            if chk.id in gate_ids:
-                try:
-                    chk.func(ctx)
-                except Error:
-                    return False
-                except Exception:
-                    return False
-        return True

@@ -1,7 +1,9 @@
 """The lab registry: which labs the checker knows, and how it tells which lab a file is.
 
 To add a lab, write a module like checker/tumbling_crates.py (CHECKS, TITLE,
-recognise(path, source), scenarios()) and add one row to LABS.
+PROBES (the module the child process imports to probe the lab's functions:
+REQUIRED names and PROBES {function name: probe}), recognise(path, source),
+scenarios()) and add one row to LABS.
 """
 from dataclasses import dataclass
 
@@ -24,6 +26,11 @@ class Lab:
 
     def scenarios(self):
         return self.module.scenarios()
+
+    @property
+    def probes(self):
+        """Import name of the module whose probes the child process runs on this lab's functions."""
+        return self.module.PROBES
 
 
 LABS = (

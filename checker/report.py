@@ -1,15 +1,21 @@
-"""Outputs: the readable report, --json, --gradescope results.json, the summary table and the CSV.
+"""Outputs: the readable report, --json, Gradescope's results.json, the summary table and the CSV.
+
+Every function takes a list of rows. A row is a LabReport (checker/grade.py:
+path, lab, results, seconds, score, max_score, passed, status) or a NotGraded
+(below): an entry that could not be graded, with the reason. Both have the
+same attributes, so every output has one row per entry.
 
 JSON schema (`--json`, version 1):
 {
   "schema": "lesson11-checker/1",
-  "passed": bool,                       # every graded lab passed every check
-  "score": float, "max_score": float,   # sums over all graded labs
-  "labs": [{
-      "path": str, "lab": str (lab id), "title": str,
+  "passed": bool,                       # every row passed every check
+  "score": float, "max_score": float,   # sums over all rows
+  "labs": [{                            # one per entry, in command-line order
+      "path": str, "lab": str | null (lab id), "title": str | null,
       "status": "pass" | "fail" | "error",
       "score": float, "max_score": float, "seconds": float,
-      "criteria": [{                     # in the lab's fixed order
+      "message": str,                   # why the entry could not be graded ("" when it was)
+      "criteria": [{                     # in the lab's fixed order ([] when not graded)
           "id": str,                     # stable check id, e.g. "corner_tips"
           "name": str,                   # the check's description (its docstring)
           "status": "pass" | "fail" | "skip" | "error",
@@ -17,19 +23,54 @@ JSON schema (`--json`, version 1):
           "hint": str,                   # what to revisit: "[step N: title] advice" ("" on pass/skip)
           "step": int | null,            # the lesson step (1-7) the hint names
           "score": float, "max_score": float}]}],
-  "errors": [{"path": str, "message": str}]   # paths that do not exist or are not labs
+  "errors": [{"path": str, "message": str}]   # the rows that could not be graded, again
 }
 """
 import csv
+import io
 import json
 import os
+import tempfile
+from dataclasses import dataclass
 
 SYMBOL = {"pass": ":)", "fail": ":(", "skip": ":|", "error": ":("}
 
 
+@dataclass
+class NotGraded:
+    """A row for an entry that could not be graded; reads like a LabReport with status "error" and no results.
+
+    lab is the Lab when it is known (by the file's name or text), else None;
+    max_score is then that lab's total, so a lost submission counts 0 of it.
+    """
+    path: str
+    lab: object
+    message: str
+    seconds: float = 0.0
+
+    results = ()
+    score = 0.0
+    passed = False
+    status = "error"
+
+    @property
+    def max_score(self):
+        checks = getattr(getattr(self.lab, "checks", None), "checks", None) or ()
+        return float(sum(getattr(c, "max_score", 0.0) for c in checks))
+
+
+def message_of(row):
+    return getattr(row, "message", "") or ""
+
+
 def text_report(report, stream, root=None):
-    """The readable report of one lab: a mark per check, the message, and the hint under each failure."""
+    """The readable report of one row: a mark per check, the message, and the hint under each failure."""
     name = _rel(report.path, root)
+    if isinstance(report, NotGraded):
+        title = f" - {report.lab.title}" if report.lab is not None else ""
+        stream.write(f"{name}{title}: 0/{report.max_score:g} (error, not graded)\n"
+                     f"  :( could not be graded: {report.message}\n\n")
+        return
     stream.write(f"{name} - {report.lab.title}: {report.score:g}/{report.max_score:g} "
                  f"({report.status}, {report.seconds:.1f} s)\n")
     for r in report.results:
@@ -41,25 +82,36 @@ def text_report(report, stream, root=None):
     stream.write("\n")
 
 
-def to_json(reports, errors, root=None):
-    """The whole run as the documented JSON document (a dict)."""
+def to_json(reports, errors=(), root=None):
+    """The whole run as the documented JSON document (a dict). `errors`: extra (path, message) pairs."""
+    not_graded = [(_rel(r.path, root), message_of(r)) for r in reports if isinstance(r, NotGraded)]
+    all_errors = not_graded + [(p, m) for p, m in errors]
     return {
         "schema": "lesson11-checker/1",
-        "passed": bool(reports) and all(r.passed for r in reports) and not errors,
+        "passed": bool(reports) and all(r.passed for r in reports) and not all_errors,
         "score": sum(r.score for r in reports),
         "max_score": sum(r.max_score for r in reports),
-        "labs": [{"path": _rel(r.path, root), "lab": r.lab.id, "title": r.lab.title, "status": r.status,
+        "labs": [{"path": _rel(r.path, root), "lab": r.lab.id if r.lab is not None else None,
+                  "title": r.lab.title if r.lab is not None else None, "status": r.status,
                   "score": r.score, "max_score": r.max_score, "seconds": round(r.seconds, 2),
-                  "criteria": [c.to_json() for c in r.results]} for r in reports],
-        "errors": [{"path": p, "message": m} for p, m in errors],
+                  "message": message_of(r), "criteria": [c.to_json() for c in r.results]} for r in reports],
+        "errors": [{"path": p, "message": m} for p, m in all_errors],
     }
 
 
 def gradescope(reports, root=None):
-    """Gradescope's results.json: top-level score, and one test per check (name, score, max_score, status, output)."""
+    """Gradescope's results.json: top-level score, and one test per check (name, score, max_score, status, output).
+
+    Meant for one submission (one row); a row that could not be graded is one failed test saying why.
+    """
     tests = []
     for report in reports:
         prefix = f"{_rel(report.path, root)}: " if len(reports) > 1 else ""
+        if isinstance(report, NotGraded):
+            tests.append({"name": prefix + "could not be graded", "score": 0.0, "max_score": report.max_score,
+                          "status": "failed", "output": f"{_rel(report.path, root)}: {report.message}",
+                          "visibility": "visible"})
+            continue
         for r in report.results:
             output = "\n".join(part for part in (r.message, ("Hint " + r.hint) if r.hint else "") if part)
             tests.append({"name": prefix + r.name, "score": r.score, "max_score": r.max_score,
@@ -71,34 +123,80 @@ def gradescope(reports, root=None):
 
 def _summary_line(reports):
     passed = sum(1 for r in reports if r.passed)
-    return f"{passed} of {len(reports)} lab file(s) pass every check."
+    line = f"{passed} of {len(reports)} lab file(s) pass every check."
+    lost = sum(1 for r in reports if isinstance(r, NotGraded))
+    if lost:
+        line += f" {lost} could not be graded."
+    return line
 
 
 def summary_table(reports, stream, root=None):
-    """One line per graded file: score, status and the first check that did not pass."""
+    """One line per row: score, status and the first check that did not pass (or why it was not graded)."""
     width = max([len(_rel(r.path, root)) for r in reports] + [4])
     stream.write(f"{'file':<{width}}  score   status  first problem\n")
     for r in reports:
-        first = next((c for c in r.results if c.status != "pass"), None)
-        problem = f"{first.id} ({first.status})" if first else ""
+        if isinstance(r, NotGraded):
+            problem = f"not graded: {r.message}"
+        else:
+            first = next((c for c in r.results if c.status != "pass"), None)
+            problem = f"{first.id} ({first.status})" if first else ""
         stream.write(f"{_rel(r.path, root):<{width}}  {r.score:>2g}/{r.max_score:<3g} {r.status:<7} {problem}\n")
     stream.write(_summary_line(reports) + "\n")
 
 
-def write_csv(reports, path, root=None):
-    """One row per file: path, lab, status, score, max_score, then each check's status in order."""
+def csv_text(reports, root=None):
+    """One row per entry: path, lab, status, score, max_score, each check's status in order, then message."""
     ids = []
     for r in reports:
         for c in r.results:
             if c.id not in ids:
                 ids.append(c.id)
-    with open(path, "w", newline="", encoding="utf-8") as handle:
-        writer = csv.writer(handle)
-        writer.writerow(["path", "lab", "status", "score", "max_score", *ids])
-        for r in reports:
-            by_id = {c.id: c.status for c in r.results}
-            writer.writerow([_rel(r.path, root), r.lab.id, r.status, f"{r.score:g}", f"{r.max_score:g}",
-                             *[by_id.get(i, "") for i in ids]])
+    out = io.StringIO(newline="")
+    writer = csv.writer(out)
+    writer.writerow(["path", "lab", "status", "score", "max_score", *ids, "message"])
+    for r in reports:
+        by_id = {c.id: c.status for c in r.results}
+        writer.writerow([_rel(r.path, root), r.lab.id if r.lab is not None else "", r.status, f"{r.score:g}",
+                         f"{r.max_score:g}", *[by_id.get(i, "") for i in ids], message_of(r)])
+    return out.getvalue()
+
+
+def write_csv(reports, path, root=None):
+    """Write csv_text(reports) to path, atomically."""
+    write_atomic(path, csv_text(reports, root))
+
+
+def gradescope_text(reports, root=None):
+    return json.dumps(gradescope(reports, root), indent=2) + "\n"
+
+
+def write_atomic(path, text):
+    """Write text (UTF-8) to path through a temporary file in the same folder and os.replace().
+
+    A crash leaves either the old file or the new one, never half of one. The
+    new file gets the old one's permissions, or the usual ones (umask) if new.
+    """
+    folder = os.path.dirname(os.path.abspath(path))
+    fd, temp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
+            handle.write(text)
+            handle.flush()
+            os.fsync(handle.fileno())
+        try:
+            mode = os.stat(path).st_mode & 0o7777
+        except OSError:
+            umask = os.umask(0)
+            os.umask(umask)
+            mode = 0o666 & ~umask
+        os.chmod(temp, mode)
+        os.replace(temp, path)
+    except BaseException:
+        try:
+            os.unlink(temp)
+        except OSError:
+            pass
+        raise
 
 
 def _rel(path, root):
@@ -106,3 +204,14 @@ def _rel(path, root):
         return os.path.relpath(path, root or os.getcwd())
     except ValueError:
         return path
+
+
+def list_labs(labs, stream):
+    """Every lab with its checks in order: id, points, and the description the student sees."""
+    for lab in labs:
+        checks = lab.checks.checks
+        stream.write(f"{lab.title} ({lab.id}): {len(checks)} checks, {lab.checks.max_score:g} points\n")
+        width = max(len(c.id) for c in checks)
+        for c in checks:
+            stream.write(f"  {c.id:<{width}}  {c.max_score:g} pt  {c.description}\n")
+        stream.write("\n")

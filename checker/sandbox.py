@@ -2,14 +2,18 @@
 
 The child (checker/child.py) runs in a fresh temporary directory with SDL's
 dummy video and audio drivers, in its own process group, with:
-  - a wall-clock limit (`timeout`, s): the whole group is killed when it runs out;
-    faulthandler dumps the lab's stack half a second earlier, so we can say where it looped;
+  - a CPU-time limit (`timeout`, s of CPU): at the soft limit the child's faulthandler dumps the
+    lab's stack (SIGXCPU), so we can say where it looped, and a second later the kernel kills it.
+    Counting CPU time, not wall time, keeps a busy shared machine from failing a correct lab;
+  - a wall-clock limit of WALL_FACTOR × timeout + WALL_EXTRA s for a lab that sleeps or blocks: the
+    whole group is killed when it runs out, its stack dumped half a second earlier;
   - RLIMIT_AS (`memory_mb`): a memory hog gets MemoryError or dies;
-  - RLIMIT_CPU: the timeout plus a margin, a second line of defence;
   - RLIMIT_FSIZE: no file the lab writes can grow past 64 MB;
-  - an output cap (`max_output` bytes over stdout + stderr): a flood is cut off and the child killed.
+  - an output cap (`max_output` bytes over stdout + stderr): the child raises at the print() that
+    crosses it (so the report names the line); past FLOOD_SLACK more the parent kills the group.
 """
 import json
+import math
 import os
 import selectors
 import signal
@@ -22,6 +26,8 @@ from dataclasses import dataclass, field
 PROJECT_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
 RECORD_LIMIT = 48 * 1024 * 1024  # bytes: largest record the parent will read
+WALL_FACTOR, WALL_EXTRA = 3.0, 5.0   # the wall-clock limit: WALL_FACTOR × timeout + WALL_EXTRA s
+FLOOD_SLACK = 64 * 1024          # bytes past max_output before the parent kills a run (the child stops first)
 
 
 @dataclass
@@ -45,14 +51,19 @@ class RunResult:
     timeout_trace: str = ""         # faulthandler's stack dump when the run timed out
 
 
+def wall_limit(limits):
+    """Wall-clock seconds a run may take before it is killed (its CPU time is limited to `timeout`)."""
+    return WALL_FACTOR * limits.timeout + WALL_EXTRA
+
+
 def _limit_child(limits):
     def apply():
         import resource
         os.setsid()
         memory = limits.memory_mb * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
-        cpu = int(limits.timeout) + 5
-        resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 2))
+        cpu = max(1, math.ceil(limits.timeout))
+        resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
         resource.setrlimit(resource.RLIMIT_FSIZE, (FILE_LIMIT, FILE_LIMIT))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
     return apply
@@ -79,7 +90,7 @@ def run_child(lab_path, task, settings, limits):
     """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour."""
     lab_path = os.path.abspath(lab_path)
     with tempfile.TemporaryDirectory(prefix="checker-") as work:
-        settings = dict(settings)
+        settings = dict(settings, max_output=limits.max_output)  # the child stops a flood at its print()
         if task == "scenario":
             settings["record"] = os.path.join(work, "record.json")
         settings_path = os.path.join(work, "settings.json")
@@ -92,7 +103,7 @@ def run_child(lab_path, task, settings, limits):
             "PYTHONDONTWRITEBYTECODE": "1", "PYTHONUNBUFFERED": "1", "PYTHONIOENCODING": "utf-8",
             "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
             "PYTHONPATH": os.pathsep.join([PROJECT_ROOT, os.path.dirname(lab_path)]),
-            "CHECKER_FAULT_SECONDS": str(max(limits.timeout - 0.6, 0.2)),
+            "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
         })
         command = [sys.executable, "-X", "faulthandler", "-m", "checker.child",
                    lab_path, task, settings_path, result_path]
@@ -107,7 +118,7 @@ def run_child(lab_path, task, settings, limits):
         selector.register(proc.stdout, selectors.EVENT_READ, "stdout")
         selector.register(proc.stderr, selectors.EVENT_READ, "stderr")
         open_streams = 2
-        deadline = start + limits.timeout
+        deadline = start + wall_limit(limits)
         while open_streams:
             remaining = deadline - time.monotonic()
             if remaining <= 0:
@@ -122,7 +133,7 @@ def run_child(lab_path, task, settings, limits):
                 room = limits.max_output - total
                 chunks[key.data].append(data[:max(room, 0)])
                 total += len(data)
-                if total > limits.max_output:
+                if total > limits.max_output + FLOOD_SLACK:
                     status = "flood"
                     break
             if status:

@@ -3,9 +3,11 @@
 A blue box (A) and an orange box (B). For the axis you pick, the explorer
 draws both shadows (the projections of the corners onto the axis), the part
 where they overlap or the gap between them, with its length, and a label
-that says whether the boxes as a whole OVERLAP or are APART. Only edge
-normals of the two boxes are offered as axes, because for convex polygons
-those are the only directions that need testing.
+that says whether the boxes as a whole OVERLAP or are APART. The edge whose
+normal is the axis is drawn thick, with a white arrow pointing along the
+normal exactly as the first text line prints it. Only edge normals of the two
+boxes are offered as axes, because for convex polygons those are the only
+directions that need testing.
 
 Try the lesson's experiment: move the orange box right until the label says
 APART, then press Next axis until you find the axis with the gap. Predict
@@ -30,7 +32,7 @@ import sys
 
 import pygame
 
-from lesson11.physics2d import (Body, TOUCH_TOLERANCE, Vector2, box_points, centre_of, edge_normals, inside,
+from lesson11.physics2d import (Body, TOUCH_TOLERANCE, Vector2, box_points, edge_normals, inside,
                                project, sat)
 
 WIDTH, HEIGHT = 900, 600
@@ -39,6 +41,7 @@ TURN_STEP = math.radians(5)  # rad per Q/E/A/D press or wheel notch
 AXIS_OFFSET = 200        # px from the boxes' midpoint to the drawn axis line
 SHADOW_GAP = 14          # px between the axis line and each shadow bar
 SHADOW_WIDTH = 9         # px, thickness of a shadow bar
+NORMAL_LENGTH = 30       # px, the arrow along the current axis's normal on its edge
 
 BACKGROUND = (24, 26, 34)
 BLUE = (70, 130, 235)
@@ -215,6 +218,18 @@ class Explorer:
         side = Vector2(-normal.y, normal.x)
         return anchor + normal * (value - anchor.dot(normal)) + side * sideways
 
+    def normal_arrow(self):
+        """(start, end) in px of the arrow drawn on the current axis's edge: from the edge's middle,
+        NORMAL_LENGTH px along the normal exactly as the first text line prints it.
+
+        edge_normals gives (-e.y, e.x) / |e|, which for the boxes' corner order points into the box;
+        the arrow shows that direction rather than an outward one, so picture and text agree.
+        """
+        owner, edge, normal = self.current_axis()
+        points = (self.blue if owner == "blue" else self.orange).world_points()
+        middle = (points[edge] + points[(edge + 1) % len(points)]) / 2
+        return middle, middle + normal * NORMAL_LENGTH
+
     def draw(self, surface):
         """Draw the whole picture onto `surface`."""
         surface.fill(BACKGROUND)
@@ -241,7 +256,7 @@ class Explorer:
                 corner = min(body.world_points(), key=lambda p: abs(p.dot(normal) - value))
                 dashed_line(surface, body.color, corner, self.on_axis(value, normal, anchor, sideways))
 
-        # the boxes, and the edge whose normal is the axis (thick, with a short line along the normal)
+        # the boxes, and the edge whose normal is the axis (thick, with an arrow along the printed normal)
         layer = pygame.Surface(surface.get_size(), pygame.SRCALPHA)  # see-through, so overlaps show
         for body in (self.blue, self.orange):
             pygame.draw.polygon(layer, body.color + (170,), body.world_points())
@@ -249,9 +264,7 @@ class Explorer:
         for body in (self.blue, self.orange):
             pygame.draw.polygon(surface, body.color, body.world_points(), 2)
         pygame.draw.line(surface, TEXT, edge_a, edge_b, 5)
-        middle = (edge_a + edge_b) / 2
-        outward = normal if (middle - centre_of(points)).dot(normal) > 0 else -normal
-        pygame.draw.line(surface, TEXT, middle, middle + outward * 28, 2)
+        draw_arrow(surface, TEXT, *self.normal_arrow(), 2)
 
         # the shadows: blue on the boxes' side of the line, orange on the other side
         for body, shadow, sideways in shadows:

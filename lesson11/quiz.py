@@ -3,7 +3,9 @@
 Five multiple-choice questions (A-D). After each answer the quiz says whether
 it was right and gives a one-line explanation; at the end it prints the score.
 An answer that is not A, B, C or D is asked again; end of input (Ctrl-D, or a
-closed pipe) stops the quiz cleanly with the score so far.
+closed pipe) stops the quiz cleanly with the score so far, and so does Ctrl-C
+(one line, no traceback; exit status 130). The score is always out of all the
+questions: "Score: 4 of 5 (1 not answered)."
 
 The questions live in lesson11/quiz_questions.json: a list of objects with
 "question", "choices" (A-D), "answer" (a letter) and "explanation".
@@ -67,25 +69,37 @@ def read_answer(ask):
         print(f"  Please answer with one letter, A, B, C or D (you typed {reply.strip()!r}).")
 
 
+def score_line(right, asked, total):
+    """The score out of all `total` questions, e.g. "4 of 5 (1 not answered)"."""
+    return f"{right} of {total}" + (f" ({total - asked} not answered)" if asked < total else "")
+
+
 def run_quiz(questions, ask=input):
-    """Ask every question, say what was right, and print the score. Returns (right, asked)."""
+    """Ask every question, say what was right, and print the score. Returns (right, asked).
+
+    Ctrl-C (KeyboardInterrupt) while a question is open prints the score so far on one
+    line and is raised again, so the caller can stop with the right exit status.
+    """
     right = asked = 0
-    for number, item in enumerate(questions, start=1):
-        print(f"\nQuestion {number} of {len(questions)}: {item['question']}")
-        for letter in LETTERS:
-            print(f"  {letter}) {item['choices'][letter]}")
-        letter = read_answer(ask)
-        if letter is None:
-            print("\n(end of input: stopping here)")
-            break
-        asked += 1
-        if letter == item["answer"]:
-            right += 1
-            print(f"  Right! {item['explanation']}")
-        else:
-            print(f"  Not quite: the answer is {item['answer']}. {item['explanation']}")
-    print(f"\nScore: {right} of {asked} answered right"
-          + (f" ({len(questions) - asked} not answered)" if asked < len(questions) else "") + ".")
+    try:
+        for number, item in enumerate(questions, start=1):
+            print(f"\nQuestion {number} of {len(questions)}: {item['question']}")
+            for letter in LETTERS:
+                print(f"  {letter}) {item['choices'][letter]}")
+            letter = read_answer(ask)
+            if letter is None:
+                print("\n(end of input: stopping here)")
+                break
+            asked += 1
+            if letter == item["answer"]:
+                right += 1
+                print(f"  Right! {item['explanation']}")
+            else:
+                print(f"  Not quite: the answer is {item['answer']}. {item['explanation']}")
+    except KeyboardInterrupt:
+        print(f"\nStopped (Ctrl-C). Score so far: {score_line(right, asked, len(questions))}.")
+        raise
+    print(f"\nScore: {score_line(right, asked, len(questions))}.")
     return right, asked
 
 
@@ -104,7 +118,10 @@ def main(argv=None):
             print(f"{number}. {item['answer']}: {item['explanation']}")
         return 0
     print("Lesson 11 quick quiz: SAT & Rotational Collisions")
-    run_quiz(questions)
+    try:
+        run_quiz(questions)
+    except KeyboardInterrupt:
+        return 130  # the usual status after Ctrl-C; run_quiz has printed the score so far
     return 0
 
 

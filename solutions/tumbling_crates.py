@@ -11,6 +11,8 @@ to 6 are the code between the lines `# --- step N: ... ---` and
 `# --- end of step N ---`: yours to write in the starter, done in the solution.
 
 Controls: left click drops a crate, R resets, D shows contact points and normals.
+The solver panel (lesson11/panel.py, lines marked `# solver panel`) lists its
+own keys on screen: solver, iterations, sub-steps, P pause, O one step.
 Lines marked `# lab runtime` let the checker run this file headless; they
 change nothing when you run it yourself.
 """
@@ -20,6 +22,7 @@ import random
 import pygame
 
 from lesson11 import runtime as lab  # lab runtime
+from lesson11.panel import LabPanel  # solver panel
 from lesson11.physics2d import Body, World, box_points, centre_of, cross, edge_normals, project, spin_velocity
 from lesson11.physics2d.draw import draw_body, draw_contacts, draw_text
 
@@ -130,10 +133,12 @@ def main():
     debug = True
     simulated = 0.0
     running = True
+    panel = LabPanel()  # solver panel
     # Step 7: click to drop more crates on the ramp and on the pile, and watch them settle.
     while running and lab.frame_budget():  # lab runtime: frame_budget()
         dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)
         for event in lab.events():  # lab runtime: pygame.event.get()
+            panel.handle(event)  # solver panel: its keys
             if event.type == pygame.QUIT:
                 running = False
             elif event.type == pygame.MOUSEBUTTONDOWN and event.button == 1:
@@ -143,7 +148,7 @@ def main():
                 world = make_world(rng)
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_d:
                 debug = not debug
-        simulated += world.advance(dt) * world.step_seconds  # fixed steps; long frames clamped
+        simulated += panel.advance(world, dt) * world.step_seconds  # solver panel: fixed steps, long frames clamped
         lab.record(world.bodies, world.contacts)  # lab runtime: record()
 
         screen.fill(BACKGROUND)
@@ -154,6 +159,7 @@ def main():
         crates = len(world.bodies) - STATIC_BODIES
         hud = f"crates {crates} | contacts {len(world.contacts)} | [click] drop crate  [R] reset  [D] debug"
         draw_text(screen, font, hud)
+        panel.draw(screen, world)  # solver panel: settings, ms, graph
         pygame.display.flip()
     pygame.quit()
     moving = sum(1 for body in world.bodies if body.inv_mass > 0 and body.vel.length() > FAST_MOVER)

@@ -10,7 +10,7 @@ Scene geometry of Tumbling Crates (px; y grows downward): the floor's top face
 is at y = 560 (a 900 × 40 box centred at (450, 580)); the ramp is a 420 × 24
 box centred at (230, 380) turned 22° clockwise, so its right end is lower.
 
-    python tests/lab_run.py      regenerates assets/tumbling_crates*.png
+    python tests/lab_run.py      regenerates assets/tumbling_crates*.png (the solver panel in all three)
 """
 import json
 import math
@@ -96,7 +96,9 @@ def pile_settings(settle_frames=240, every=20):
 
 
 def screenshots():
-    """Write assets/tumbling_crates.png (solution, settled pile, debug on) and the starter's."""
+    """Write assets/tumbling_crates.png (solution, settled pile, debug on), the starter's, and
+    assets/tumbling_crates_panel.png (the same pile; 1.5 s before the end the Up key is pressed 14 times,
+    so the solver panel shows 20 iterations and its graph the physics time rising)."""
     import tempfile
     with tempfile.TemporaryDirectory() as work:
         settings = pile_settings(settle_frames=300)
@@ -108,6 +110,12 @@ def screenshots():
                    "screenshot": os.path.join(ROOT, "assets", "tumbling_crates_starter.png")}
         run = run_lab(STARTER, starter, work)
         print(run.stdout.strip(), "->", starter["screenshot"])
+        settings = pile_settings(settle_frames=300)
+        settings["record_every"] = 60
+        settings["script"] += [{"frame": settings["frames"] - 90, "type": "key", "key": "up"}] * 14
+        settings["screenshot"] = os.path.join(ROOT, "assets", "tumbling_crates_panel.png")
+        run = run_lab(SOLUTION, settings, work)
+        print(run.stdout.strip(), "->", settings["screenshot"])
 
 
 if __name__ == "__main__":

@@ -22,9 +22,9 @@ TITLE = '"""Tumbling Crates: the Lesson 11 practice exercise.'
 # name -> (what is wrong, [(old, new), ...]); each old is whole lines of the solution, indentation and
 # newlines included
 MUTANTS = {
-    "mutant_sat_never_overlaps": ("step 2 removed, sat always returns None", [
-        ("    best_axis, best_depth = None, math.inf\n",
-         "    return None\n    best_axis, best_depth = None, math.inf\n"),
+    "mutant_sat_never_overlaps": ("step 2 starts with return None, so sat always returns None", [
+        ("    # --- step 2: the SAT loop ---\n",
+         "    # --- step 2: the SAT loop ---\n    return None\n"),
     ]),
     "mutant_normal_not_flipped": ("step 3 removed, the normal is not turned to point from A to B", [
         ("    if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:\n        best_axis = -best_axis\n", ""),
@@ -35,8 +35,8 @@ MUTANTS = {
     "mutant_friction_unclamped": ("step 5 removed, the friction impulse is not clamped", [
         ("        jt = max(-mu * j, min(mu * j, jt))\n", ""),
     ]),
-    "mutant_friction_flipped": ("a flipped sign in the friction impulse", [
-        ("        apply_impulse(a, b, t * jt, ra, rb)\n", "        apply_impulse(a, b, t * -jt, ra, rb)\n"),
+    "mutant_friction_flipped": ("a flipped sign in the clamped friction impulse", [
+        ("        jt = max(-mu * j, min(mu * j, jt))\n", "        jt = -max(-mu * j, min(mu * j, jt))\n"),
     ]),
     "mutant_spin_missing": ("step 6 removed, apply_impulse has no spin updates", [
         ("    a.omega -= cross(ra, impulse) * a.inv_inertia\n    b.omega += cross(rb, impulse) * b.inv_inertia\n", ""),
@@ -45,6 +45,11 @@ MUTANTS = {
         ("    a.omega -= cross(ra, impulse) * a.inv_inertia\n    b.omega += cross(rb, impulse) * b.inv_inertia\n",
          "    a.omega += cross(ra, impulse) * a.inv_inertia\n    b.omega -= cross(rb, impulse) * b.inv_inertia\n"),
     ]),
+}
+
+# edits outside the steps: handout_unchanged fails them; graded with --allow-edits their behaviour shows
+EDITED = {
+    # an edit outside the steps: handout_unchanged fails; graded with --allow-edits the pile sinks
     "mutant_no_push_out": ("no positional correction: World gets a separate() that does nothing", [
         ("    return World(lab.scene(make_scene(rng)), sat=sat, resolve=resolve)  # lab runtime: scene()\n",
          "    return World(lab.scene(make_scene(rng)), sat=sat, resolve=resolve, separate=lambda *args: None)"
@@ -58,7 +63,7 @@ HOSTILE_COPIES = {
         ("    while running and lab.frame_budget():  # lab runtime: frame_budget()\n",
          "    while running:  # lab runtime: frame_budget()\n"),
     ]),
-    # the endless loop sits on lines 136-137 of the solution as it is; test_checker.py looks for that line
+    # test_checker.py works out the endless loop's two line numbers from this variant's text and looks for them
     "hostile_loop_inside_frame": ("an endless loop inside the main loop, every runtime line kept", [
         ("        dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)\n",
          "        dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)\n"
@@ -71,7 +76,7 @@ HOSTILE_COPIES = {
     ]),
 }
 
-VARIANTS = {**MUTANTS, **HOSTILE_COPIES}
+VARIANTS = {**MUTANTS, **EDITED, **HOSTILE_COPIES}
 
 
 def apply_edits(source, edits, name="file"):

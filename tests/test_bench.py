@@ -98,15 +98,35 @@ def test_pymunk_pile_holds_up_like_the_lesson_world(results):
     assert theirs.accuracy["drift"] < mine.accuracy["drift"]
 
 
-def test_quick_run_writes_table_and_plot(tmp_path, monkeypatch):
+def test_quick_run_writes_its_own_files_and_never_the_studys(tmp_path, monkeypatch):
+    """--quick --out-dir writes bench_accuracy_cost_quick.md/.png, labelled a smoke run; the full study's
+    bench_accuracy_cost.md/.png in the same folder stay as they were."""
     pytest.importorskip("matplotlib")
     smaller = ac.Settings(**{**TINY.__dict__, "shots": 3, "pile_seconds": 0.2, "effects_seconds": 0.2})
     monkeypatch.setattr(ac, "QUICK", smaller)
+    study = {"bench_accuracy_cost.md": b"the full study's table", "bench_accuracy_cost.png": b"the full study's plot"}
+    for name, content in study.items():
+        (tmp_path / name).write_bytes(content)
     assert ac.main(["--quick", "--out-dir", str(tmp_path)]) == 0
-    table = (tmp_path / "bench_accuracy_cost.md").read_text(encoding="utf-8")
+    for name, content in study.items():
+        assert (tmp_path / name).read_bytes() == content, f"--quick overwrote {name}"
+    table = (tmp_path / "bench_accuracy_cost_quick.md").read_text(encoding="utf-8")
     assert "| study | scene | variant |" in table and "Machine:" in table
-    png = (tmp_path / "bench_accuracy_cost.png").read_bytes()
+    assert "Smoke run (`--quick`)" in table.splitlines()[2] and "not measurements" in table
+    timed = [line for line in table.splitlines() if "ms/step |" in line or "ms per simulated s |" in line]
+    assert timed and all("| n/a (1 repeat) |" in line for line in timed)  # no "spread 0 %" from one repeat
+    png = (tmp_path / "bench_accuracy_cost_quick.png").read_bytes()
     assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 20_000
+
+
+def test_quick_run_without_out_dir_writes_nothing_and_says_it_is_a_smoke_run(results, tmp_path, monkeypatch,
+                                                                           capsys):
+    monkeypatch.setattr(ac, "run", lambda settings, progress=None: results)  # the figures are not the point here
+    monkeypatch.setattr(ac, "default_out_dir", lambda: tmp_path)
+    assert ac.main(["--quick"]) == 0
+    assert list(tmp_path.iterdir()) == []
+    out = capsys.readouterr().out
+    assert "Smoke run (`--quick`)" in out and out.rstrip().splitlines()[-1].startswith("Smoke run:")
 
 
 def test_bad_repeats_is_a_one_line_error(capsys):

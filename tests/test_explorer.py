@@ -1,6 +1,7 @@
 """The SAT explorer, driven headless with synthetic pygame events."""
 import math
 import os
+import re
 
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
@@ -206,3 +207,37 @@ def test_screenshots_into_a_missing_folder_is_a_one_line_error(tmp_path, capsys)
     assert ex.main(["--screenshots", str(tmp_path / "missing")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "missing" in err
+
+
+def printed_normal(explorer):
+    """The (x, y) the first text line prints for the current axis."""
+    printed = re.search(r"\((-?\d+\.\d\d), (-?\d+\.\d\d)\)$", explorer.lines()[0])
+    assert printed, explorer.lines()[0]
+    return Vector2(float(printed[1]), float(printed[2]))
+
+
+def test_the_normal_arrow_points_the_way_the_printed_vector_says(explorer):
+    """On every axis the arrow on the edge runs along the (x, y) printed in the first line, not against it."""
+    for _ in range(len(explorer.axes())):
+        start, end = explorer.normal_arrow()
+        assert (end - start).length() == pytest.approx(ex.NORMAL_LENGTH)
+        assert (end - start).normalize().distance_to(printed_normal(explorer)) < 0.01, explorer.lines()[0]
+        explorer.next_axis()
+
+
+def test_the_normal_arrow_on_screen_is_white_ahead_and_absent_behind(explorer):
+    """Rendered headless (boxes apart, so no MTV is drawn over it): white pixels along the printed
+    direction from the edge's middle, none the opposite way."""
+    while explorer.status() == "OVERLAP":
+        explorer.handle_key(pygame.K_RIGHT)
+    surface = pygame.Surface((ex.WIDTH, ex.HEIGHT))
+    for _ in range(len(explorer.axes())):
+        explorer.draw(surface)
+        start, _ = explorer.normal_arrow()
+        said = printed_normal(explorer)
+        for sign, expected in ((1, True), (-1, False)):
+            p = start + said * sign * ex.NORMAL_LENGTH * 0.6
+            near = [surface.get_at((round(p.x) + dx, round(p.y) + dy))[:3] == ex.TEXT
+                    for dx in range(-2, 3) for dy in range(-2, 3)]
+            assert any(near) == expected, (explorer.lines()[0], sign)
+        explorer.next_axis()

@@ -1,8 +1,11 @@
 """The terminal quiz: its five questions, and `python -m lesson11.quiz` driven through stdin."""
 import json
 import os
+import select
+import signal
 import subprocess
 import sys
+import time
 
 import pytest
 
@@ -45,7 +48,7 @@ def test_all_right_scores_five():
     result = run_quiz("\n".join(KEY) + "\n")
     assert result.returncode == 0 and result.stderr == ""
     assert result.stdout.count("Right!") == 5
-    assert "Score: 5 of 5 answered right." in result.stdout
+    assert "Score: 5 of 5." in result.stdout
 
 
 def test_wrong_answers_are_corrected_with_the_explanation():
@@ -55,7 +58,7 @@ def test_wrong_answers_are_corrected_with_the_explanation():
     for item in QUESTIONS:
         assert f"Not quite: the answer is {item['answer']}. {item['explanation']}" in result.stdout
     assert "Right!" not in result.stdout
-    assert "Score: 0 of 5 answered right." in result.stdout
+    assert "Score: 0 of 5." in result.stdout
 
 
 def test_bad_input_is_asked_again_and_end_of_input_stops_cleanly():
@@ -66,13 +69,13 @@ def test_bad_input_is_asked_again_and_end_of_input_stops_cleanly():
     assert "'E'" in result.stdout and "'42'" in result.stdout
     assert "Question 3 of 5" in result.stdout and "Question 4 of 5" not in result.stdout
     assert "end of input" in result.stdout
-    assert "Score: 1 of 2 answered right (3 not answered)." in result.stdout
+    assert "Score: 1 of 5 (3 not answered)." in result.stdout
 
 
 def test_empty_input_ends_with_a_zero_score():
     result = run_quiz("")
     assert result.returncode == 0 and "Traceback" not in result.stderr
-    assert "Score: 0 of 0 answered right (5 not answered)." in result.stdout
+    assert "Score: 0 of 5 (5 not answered)." in result.stdout
 
 
 def test_answer_key():
@@ -114,4 +117,61 @@ def test_run_quiz_in_process_counts_right_and_asked(capsys):
 
     assert quiz.run_quiz(QUESTIONS, ask) == (1, 2)
     out = capsys.readouterr().out
-    assert "Please answer" in out and "Score: 1 of 2" in out
+    assert "Please answer" in out and "Score: 1 of 5 (3 not answered)." in out
+
+
+def test_score_is_out_of_all_questions_even_when_some_are_unanswered():
+    assert quiz.score_line(4, 4, 5) == "4 of 5 (1 not answered)"
+    assert quiz.score_line(3, 5, 5) == "3 of 5"
+
+
+def test_ctrl_c_in_process_prints_the_score_so_far_and_main_exits_130(capsys, monkeypatch):
+    replies = iter([KEY[0], KEY[1]])
+
+    def ask(prompt):
+        try:
+            return next(replies)
+        except StopIteration:
+            raise KeyboardInterrupt from None
+
+    with pytest.raises(KeyboardInterrupt):
+        quiz.run_quiz(QUESTIONS, ask)
+    out = capsys.readouterr().out
+    assert out.rstrip().splitlines()[-1] == "Stopped (Ctrl-C). Score so far: 2 of 5 (3 not answered)."
+
+    def interrupted(questions):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(quiz, "run_quiz", interrupted)
+    assert quiz.main([]) == 130
+
+
+def read_until(stream, text, count=1, seconds=30):
+    """Read the child's unbuffered stdout until `text` has appeared `count` times in all; returns all read."""
+    seen, deadline = b"", time.monotonic() + seconds
+    while seen.count(text.encode()) < count:
+        assert time.monotonic() < deadline, f"{text!r} not seen {count} times within {seconds} s; read {seen!r}"
+        if select.select([stream], [], [], 0.5)[0]:
+            chunk = os.read(stream.fileno(), 4096)
+            assert chunk, f"the quiz ended before {text!r}; read {seen!r}"
+            seen += chunk
+    return seen.decode()
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="SIGINT stands for Ctrl-C on POSIX only")
+def test_ctrl_c_at_the_prompt_is_a_clean_one_line_exit_with_the_score():
+    env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""), PYTHONUNBUFFERED="1")
+    proc = subprocess.Popen([sys.executable, "-m", "lesson11.quiz"], cwd=ROOT, env=env, stdin=subprocess.PIPE,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        proc.stdin.write((KEY[0] + "\n").encode())  # answer question 1 right, then wait at question 2
+        proc.stdin.flush()
+        before = read_until(proc.stdout, "Your answer (A-D): ", count=2)
+        assert "Question 2 of 5" in before and "Right!" in before
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=30)
+    finally:
+        proc.kill()
+    assert proc.returncode == 130
+    assert err == b"", err.decode()
+    assert out.decode().strip().splitlines() == ["Stopped (Ctrl-C). Score so far: 1 of 5 (4 not answered)."]

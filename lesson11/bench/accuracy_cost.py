@@ -1,7 +1,8 @@
 """What accuracy costs in time: five studies measured side by side in one run.
 
     python -m lesson11.bench.accuracy_cost            # full run, a few minutes; writes the table and plot
-    python -m lesson11.bench.accuracy_cost --quick    # small sizes, seconds; prints only (add --out-dir to write)
+    python -m lesson11.bench.accuracy_cost --quick    # smoke run: tiny sizes, seconds; prints only
+                                                      # (--out-dir writes bench_accuracy_cost_quick.md/.png)
 
 1. tunnelling     a 3 px bullet against a 4 px wall: discrete steps, sub-steps ×2..×16, CCD
 2. iterations     a 10-crate pyramid with 1..20 solver passes (and the accumulated solver, if physics2d has it)
@@ -16,6 +17,11 @@ case alike, and the median is kept. Only the calls that step the simulation
 are timed (time.perf_counter); measuring accuracy between steps is not.
 Accuracy figures are deterministic: the repeats must agree, and the run says
 so if they do not.
+
+--quick is a smoke run, to see that everything runs: one repeat of tiny
+cases, so its spread is unknown and its ratios are noise. It says so at the
+top of its report, and it never writes the full study's files: with
+--out-dir it writes bench_accuracy_cost_quick.md and _quick.png (QUICK_NOTE).
 """
 import argparse
 import math
@@ -56,6 +62,10 @@ FULL = Settings(shots=60, speeds=(500, 1000, 2000, 3000, 4000, 6000, 8000, 12000
 QUICK = Settings(shots=6, speeds=(500, 2000, 6000, 12000), substeps=(2, 4, 16),
                  iterations=(1, 6, 20), pile_seconds=0.5, rule_scenes=("pyramid4",),
                  compare_scenes=("pyramid4",), effects_seconds=0.5, repeats=1)
+
+QUICK_NOTE = ("**Smoke run (`--quick`): tiny cases, {repeats} repeat(s). It shows that every study runs; its times, "
+              "ratios and spreads are not measurements and may contradict the published figures, which come from "
+              "the full run (`python -m lesson11.bench.accuracy_cost`).**")
 
 NEEDED_EFFECTS = frozenset({"gravity", "restitution", "correction"})  # all the settling-balls scene uses
 
@@ -364,8 +374,9 @@ def table(rows):
              "|---|---|---|---|---|---|---|"]
     for row in rows:
         ratio = "1 (baseline)" if row.baseline else f"{row.ratio:.3g}"
+        spread = f"{100 * row.spread:.0f} %" if len(row.times) > 1 else "n/a (1 repeat)"
         lines.append(f"| {row.study} | {row.scene} | {row.variant} | {accuracy_text(row)} | "
-                     f"{row.ms:.3g} {row.unit} | {100 * row.spread:.0f} % | {ratio} |")
+                     f"{row.ms:.3g} {row.unit} | {spread} | {ratio} |")
     return "\n".join(lines)
 
 
@@ -459,6 +470,7 @@ def report(rows, notes, settings, elapsed, mode):
     parts = [
         "# What accuracy costs: measured side by side",
         "",
+    ] + ([QUICK_NOTE.format(repeats=settings.repeats), ""] if mode == "quick" else []) + [
         f"Run: `python -m lesson11.bench.accuracy_cost{' --quick' if mode == 'quick' else ''}` · {mode} run, "
         f"{settings.repeats} repeat(s) per case, median kept · whole run {elapsed:.0f} s · "
         f"{time.strftime('%Y-%m-%d')}",
@@ -508,7 +520,8 @@ def main(argv=None):
                                      description="What accuracy costs in time: tunnelling, iterations, contact "
                                                  "rule, declared effects, pymunk, measured side by side.")
     parser.add_argument("--quick", action="store_true",
-                        help="tiny sizes, one repeat; prints only unless --out-dir is given")
+                        help="smoke run: tiny sizes, one repeat, figures not trustworthy; prints only, or with "
+                             "--out-dir writes bench_accuracy_cost_quick.md/.png (never the full run's files)")
     parser.add_argument("--out-dir", type=Path, default=None,
                         help="where bench_accuracy_cost.md/.png go (default: the repository's assets/)")
     parser.add_argument("--repeats", type=positive_int, default=None, help="timing repeats per case (median kept)")
@@ -529,11 +542,14 @@ def main(argv=None):
     elapsed = time.perf_counter() - started
     text = report(rows, notes, settings, elapsed, mode)
     print(text)
+    if args.quick:
+        print("Smoke run: these figures only show that the studies run; see the full run for measurements.")
     if out_dir is None:
         return 0
     out_dir.mkdir(parents=True, exist_ok=True)
-    (out_dir / "bench_accuracy_cost.md").write_text(text, encoding="utf-8")
-    print(f"wrote {out_dir / 'bench_accuracy_cost.md'}")
+    stem = "bench_accuracy_cost_quick" if args.quick else "bench_accuracy_cost"  # quick never replaces the study
+    (out_dir / f"{stem}.md").write_text(text, encoding="utf-8")
+    print(f"wrote {out_dir / f'{stem}.md'}")
     if args.no_plot:
         return 0
     try:
@@ -541,7 +557,8 @@ def main(argv=None):
     except ImportError:
         print("matplotlib is not installed: no plot (pip install -e \".[compare]\")")
         return 0
-    path = plot(rows, out_dir / "bench_accuracy_cost.png", f"{mode} run · {machine_note()}")
+    subtitle = ("SMOKE RUN (--quick): times and ratios are not measurements · " if args.quick else "full run · ")
+    path = plot(rows, out_dir / f"{stem}.png", subtitle + machine_note())
     print(f"wrote {path}")
     return 0
 

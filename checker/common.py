@@ -1,0 +1,77 @@
+"""What the checks of every lab share: accounts of failed runs, and numbers shown beside their bounds."""
+import re
+
+
+def describe_run_failure(run, lab_name, what):
+    """A one-paragraph account of a run that did not finish: crash, exit, timeout, flood or memory."""
+    error = run.result.get("error") or {}
+    at = f"{lab_name}, line {error['line']}" if error.get("line") else lab_name
+    text = f": {error['text']}" if error.get("text") else ""
+    if run.status == "timeout" and getattr(run, "cut_short", False):
+        return (f"{what} was still running when the time limit for the whole run ({run.total_timeout:g} s) ran "
+                "out; grade this file again with a longer --total-timeout.")
+    if run.status == "timeout":
+        line = _timeout_line(run.timeout_trace, run.lab_path)
+        where = f" (it was at {lab_name}, line {line[0]}{': ' + line[1] if line[1] else ''})" if line else ""
+        phase = run.result.get("phase")
+        if phase == "import":
+            return (f"{what} did not finish importing within {run.timeout:.3g} s of CPU time{where}: is there an endless loop "
+                    "outside main()?")
+        return (f"{what} was stopped after {run.timeout:.3g} s of CPU time{where}: the loop never ended. Is "
+                "`and lab.frame_budget()` still in the while condition?")
+    if error.get("kind") == "flood":
+        return (f"{what} printed more than {run.max_output // 1024} KB of output and was stopped; it was "
+                f"printing at {at}{text}.")
+    if run.status == "flood":
+        return f"{what} printed more than {run.max_output // 1024} KB of output and was stopped."
+    if error.get("kind") == "exit":
+        return f"{what} ended the program: {error['message']} at {at}{text}."
+    if error.get("kind") == "memory" or (run.returncode or 0) in (-9,) and not error:
+        return f"{what} ran out of memory (limit {run.memory_mb} MB) at {at}{text}."
+    if error:
+        return f"{what} raised {error['message']} at {at}{text}."
+    return (f"{what} ended the process unexpectedly (exit code {run.returncode}) before the checker could "
+            f"record a result. Last output: {(run.stderr or run.stdout).strip()[-300:] or 'none'}")
+
+
+def _timeout_line(trace, lab_path):
+    """(line, text) of the innermost frame in the lab file from a faulthandler dump, or None."""
+    if not trace or not lab_path:
+        return None
+    found = None
+    for match in re.finditer(r'File "([^"]+)", line (\d+)', trace):
+        if match.group(1) == lab_path:
+            found = int(match.group(2))
+            break  # faulthandler lists the most recent call first
+    if found is None:
+        return None
+    try:
+        with open(lab_path, encoding="utf-8", errors="replace") as handle:
+            lines = handle.read().splitlines()
+        return found, lines[found - 1].strip() if 0 < found <= len(lines) else ""
+    except OSError:
+        return found, ""
+
+
+
+
+def describe_function_error(name, error, lab_name):
+    """One line for a lab function that raised (or looped) while the checker probed it."""
+    at = f"{lab_name}, line {error['line']}" if error.get("line") else lab_name
+    text = f": {error['text']}" if error.get("text") else ""
+    if error.get("kind") == "timeout":
+        return f"{error['message']} (it was at {at}{text}): is there an endless loop?"
+    if error.get("kind") == "flood":
+        return f"{name}() {error['message']} of output (printing at {at}{text}); remove the print."
+    if error.get("kind") == "exit":
+        return f"{name}() ended the program: {error['message']} at {at}{text}."
+    return f"{name}() raised {error['message']} at {at}{text}."
+
+
+def shown(value, bound, unit=""):
+    """`value` with just enough digits that it never reads equal to `bound` (e.g. 5.004 beside a bound of 5)."""
+    for digits in range(1, 7):
+        text, limit = f"{value:.{digits}f}", f"{bound:.{digits}f}"
+        if text != limit or value == bound:
+            return text.rstrip("0").rstrip(".") if "." in text and digits > 1 and text != limit else text
+    return repr(value)

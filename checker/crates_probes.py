@@ -1,0 +1,397 @@
+"""Probes of a Tumbling Crates file's own functions, run inside the checker's child process.
+
+Each probe calls one of the student's functions on a set of configurations
+chosen so that together they exercise every term of the lesson's formulas,
+and returns plain data: what the student's function gave and what the
+lesson's formula gives on the same inputs (the reference is exact arithmetic
+on the same numbers, so the checks compare with a tight tolerance). The checks
+in checker/tumbling_crates.py read this data in the grading process and name
+the first configuration that differs.
+
+    sat            (step 2, step 3) lesson pairs, turned boxes, a pentagon, a hexagon, a deep hit,
+                   exact touching, far apart; every pair also with A and B swapped
+    apply_impulse  (step 6) both bodies moving, A static, B static; masses and inertias far from 1,
+                   off-centre points, spinning bodies
+    resolve        (steps 4, 5) the same kinds of pairs, sliding both ways, the Coulomb clamp active
+                   and not, impacts above and below the 30 px/s resting cutoff. resolve() runs with
+                   the library's apply_impulse in place of the student's, recording each impulse,
+                   so steps 4 and 5 are graded before step 6 is written.
+
+Units: px, s, rad, mass in the lab's units (area / 1000).
+"""
+import ast
+import math
+import os
+
+from pygame import Vector2
+
+from lesson11.physics2d import (Body, box_points, centre_of, cross, edge_normals, project, regular_polygon,
+                                relative_velocity)
+from lesson11.physics2d import apply_impulse as reference_apply_impulse
+
+REQUIRED = ("sat", "apply_impulse", "resolve", "main")
+RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
+SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "solutions",
+                        "tumbling_crates.py")
+
+
+def with_reference_steps(module, lab_path, function, steps):
+    """The lab's `function` rebuilt with the inside of each step in `steps` taken from the solution.
+
+    Grading step 2 with the solution's step 3 (and so on) tells a mistake in one step from a
+    mistake in the next: e.g. a step 3 that negates the depth instead of the axis. The rest of
+    the function is the student's, compiled under the lab's file name at its own line numbers
+    and run in a copy of the lab's globals. Returns None if the steps' markers cannot be found.
+    """
+    from .handout import MarkerError, step_regions
+    try:
+        with open(lab_path, encoding="utf-8") as handle:
+            mine = handle.read().splitlines()
+        with open(SOLUTION, encoding="utf-8") as handle:
+            theirs = handle.read().splitlines()
+        my_regions, their_regions = step_regions(mine), step_regions(theirs)
+        tree = ast.parse("\n".join(mine))
+    except (OSError, MarkerError, SyntaxError, ValueError):
+        return None
+    node = next((n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == function), None)
+    if node is None or any(step not in my_regions or step not in their_regions for step in steps):
+        return None
+    first, last = node.lineno - 1, node.end_lineno
+    lines = list(mine)
+    for step in sorted(steps, reverse=True):
+        start, end, indent = my_regions[step]
+        their_start, their_end, their_indent = their_regions[step]
+        if not first < start < end < last + 1:
+            return None
+        body = [indent + line[len(their_indent):] if line.startswith(their_indent) else line
+                for line in theirs[their_start + 1:their_end]]
+        last += len(body) - (end - start - 1)
+        lines[start + 1:end] = body
+    namespace = dict(module.__dict__)
+    exec(compile("\n" * first + "\n".join(lines[first:last]) + "\n", lab_path, "exec"), namespace)
+    return namespace[function]
+
+
+def _placed(points, centre, angle_deg=0.0):
+    """Local points turned by angle_deg (clockwise on screen) and moved to centre: world points (px)."""
+    return [Vector2(centre) + Vector2(p).rotate(angle_deg) for p in points]
+
+
+def box(w, h, centre, angle_deg=0.0):
+    """A w × h box's world points (px)."""
+    return _placed(box_points(w, h), centre, angle_deg)
+
+
+def ngon(sides, radius, centre, angle_deg=0.0):
+    """A regular polygon's world points (px)."""
+    return _placed(regular_polygon(sides, radius), centre, angle_deg)
+
+
+# ---------------------------------------------------------------- sat (steps 2 and 3)
+
+def sat_pairs():
+    """(name, A's points, B's points): each pair is also probed with A and B swapped."""
+    square = box(40, 40, (0, 0))
+    return [
+        ("side by side, 10 px overlap", square, box(40, 40, (30, 5))),
+        ("a diamond near a corner (bounding boxes overlap, shapes apart)", square, box(40, 40, (45, 45), 45)),
+        ("a diamond pushed closer", square, box(40, 40, (30, 30), 45)),
+        ("two turned crates", box(60, 40, (100, 100), 30), box(50, 34, (146, 122), -20)),
+        ("a turned crate and a pentagon", box(70, 30, (0, 0), 15), ngon(5, 30, (44, 28), 10)),
+        ("a triangle and a hexagon, apart", ngon(3, 40, (0, 0), 12), ngon(6, 24, (48, -30), 5)),
+        ("a small crate deep inside a big one", box(200, 120, (0, 0), 10), box(30, 20, (24, 12), 35)),
+        ("a hexagon resting into a wide crate", box(160, 30, (0, 0), 0), ngon(6, 25, (22, -36), 17)),
+        ("a small crate inside a big one, near its top-left corner", box(200, 120, (0, 0), 10),
+         box(30, 20, (-60, -30), -25)),
+        ("two triangles", ngon(3, 37, (0, 0), 345), ngon(3, 34, (46, -32), 224)),
+        ("a pentagon and a small hexagon", ngon(5, 40.7, (0, 0), 265), ngon(6, 16.3, (-33, -29), 179)),
+        ("a pentagon and a triangle, apart", ngon(5, 29, (0, 0), 76), ngon(3, 34.6, (47, 23), 179)),
+        ("two crates exactly touching edge to edge", box(40, 40, (0, 0)), box(40, 40, (40, 7))),
+        ("two crates far apart", box(40, 40, (0, 0)), box(30, 60, (300, -50), 25)),
+    ]
+
+
+def axis_overlaps(pa, pb):
+    """Per edge normal of A then B: (axis, the lesson's overlap, the shorter way out) in px.
+
+    lesson: min(max_a, max_b) - max(min_a, min_b)
+    shorter way out: min(max_a - min_b, max_b - min_a); the two differ only when one
+    shadow contains the other (a deep hit).
+    """
+    out = []
+    for axis in edge_normals(pa) + edge_normals(pb):
+        min_a, max_a = project(pa, axis)
+        min_b, max_b = project(pb, axis)
+        out.append((axis, min(max_a, max_b) - max(min_a, min_b), min(max_a - min_b, max_b - min_a)))
+    return out
+
+
+def reference_sat(pa, pb, rule="lesson"):
+    """The lesson's sat (or, with rule="short", the shorter-way-out depth): None or (normal A→B, depth)."""
+    best_axis, best_depth = None, math.inf
+    for axis, lesson, short in axis_overlaps(pa, pb):
+        if lesson <= 0:
+            return None
+        depth = lesson if rule == "lesson" else short
+        if depth < best_depth:
+            best_axis, best_depth = axis, depth
+    if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:
+        best_axis = -best_axis
+    return best_axis, best_depth
+
+
+def _plain(hit):
+    return None if hit is None else {"normal": [hit[0].x, hit[0].y], "depth": hit[1]}
+
+
+def sat_answer(hit):
+    """The student's sat() answer as plain data.
+
+    None, {"normal": [x, y], "depth": d}, or {"bad": what is wrong with its shape}
+    (e.g. "(depth, normal)" when the two are returned the other way round).
+    """
+    if hit is None:
+        return None
+    try:
+        first, second = hit
+    except (TypeError, ValueError):
+        return {"bad": f"a {type(hit).__name__} ({_short_repr(hit)})"}
+    if isinstance(first, (int, float)) and not isinstance(second, (int, float)):
+        return {"bad": "(depth, normal)"}
+    try:
+        normal, depth = Vector2(first), float(second)
+    except (TypeError, ValueError):
+        return {"bad": f"({_short_repr(first)}, {_short_repr(second)})"}
+    if not (math.isfinite(normal.x) and math.isfinite(normal.y) and math.isfinite(depth)):
+        return {"bad": f"a normal or depth that is not a finite number: ({_short_repr(first)}, {depth!r})"}
+    return {"normal": [normal.x, normal.y], "depth": depth}
+
+
+def _short_repr(value):
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def probe_sat(module, lab_path):
+    """The student's sat() on every pair, both orders, beside the lesson's answer and the shorter-way-out one."""
+    return _sat_cases(module.sat)
+
+
+def probe_sat_step2(module, lab_path):
+    """As probe_sat, with the solution's step 3 spliced into the student's sat(): step 2 graded on its own.
+
+    None when the step markers cannot be found (the checks then use probe_sat's cases).
+    """
+    spliced = with_reference_steps(module, lab_path, "sat", (3,))
+    return _sat_cases(spliced) if spliced else None
+
+
+def _sat_cases(sat):
+    cases = []
+    for name, pa, pb in sat_pairs():
+        for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
+            got = sat([Vector2(p) for p in first], [Vector2(p) for p in second])
+            cases.append({
+                "pair": name, "order": order,
+                "a": [[p.x, p.y] for p in first], "b": [[p.x, p.y] for p in second],
+                "centre_a": list(centre_of(first)), "centre_b": list(centre_of(second)),
+                "got": sat_answer(got),
+                "lesson": _plain(reference_sat(first, second, "lesson")),
+                "short": _plain(reference_sat(first, second, "short")),
+            })
+    return cases
+
+
+# ---------------------------------------------------------------- bodies for apply_impulse and resolve
+
+def crate(w, h, pos, mass, angle=0.0, vel=(0, 0), omega=0.0, friction=0.6, restitution=0.2):
+    """A box body; mass 0 makes it static."""
+    return Body(box_points(w, h), pos, mass, angle=angle, vel=vel, omega=omega, friction=friction,
+                restitution=restitution)
+
+
+def _state(body):
+    return {"vel": [body.vel.x, body.vel.y], "omega": body.omega}
+
+
+# ---------------------------------------------------------------- apply_impulse (step 6)
+
+def impulse_cases():
+    """(name, body A, body B, impulse P, ra, rb): the lab's apply_impulse(a, b, P, ra, rb)."""
+    return [
+        ("both crates moving, a heavy A and a light B",
+         crate(80, 50, (0, 0), 6.0, vel=(30, -10), omega=0.7),
+         crate(30, 20, (10, -34), 0.35, vel=(-20, 60), omega=-1.2),
+         Vector2(120, -340), Vector2(18, -25), Vector2(8, 9)),
+        ("a static floor (A) under a spinning crate (B)",
+         crate(400, 40, (0, 20), 0),
+         crate(60, 40, (10, -20), 2.0, vel=(50, 80), omega=0.9),
+         Vector2(40, -260), Vector2(-35, 0), Vector2(-45, 20)),
+        ("a spinning crate (A) under a static beam (B)",
+         crate(50, 30, (0, 0), 0.5, vel=(10, -90), omega=-0.6),
+         crate(300, 30, (20, -30), 0),
+         Vector2(-25, -180), Vector2(-20, -15), Vector2(-40, 15)),
+        ("both crates moving, a sideways friction impulse",
+         crate(44, 64, (0, 0), 0.9, vel=(-15, 25), omega=2.0),
+         crate(90, 36, (70, 10), 3.2, vel=(5, -5), omega=-0.4),
+         Vector2(-90, 15), Vector2(22, 12), Vector2(-48, 2)),
+    ]
+
+
+def probe_apply_impulse(module, lab_path):
+    """The student's apply_impulse() on each case: each body's velocity and spin before, after and expected.
+
+    Expected (the lesson): vA -= P/mA, ωA -= (ra × P)/IA, vB += P/mB, ωB += (rb × P)/IB.
+    """
+    cases = []
+    for name, a, b, impulse, ra, rb in impulse_cases():
+        before = {"a": _state(a), "b": _state(b)}
+        inv = {"a": [a.inv_mass, a.inv_inertia], "b": [b.inv_mass, b.inv_inertia]}
+        ref_a, ref_b = crate(1, 1, a.pos, 0), crate(1, 1, b.pos, 0)
+        for ref, body in ((ref_a, a), (ref_b, b)):
+            ref.vel, ref.omega = Vector2(body.vel), body.omega
+            ref.inv_mass, ref.inv_inertia = body.inv_mass, body.inv_inertia
+        reference_apply_impulse(ref_a, ref_b, Vector2(impulse), Vector2(ra), Vector2(rb))
+        module.apply_impulse(a, b, Vector2(impulse), Vector2(ra), Vector2(rb))
+        cases.append({
+            "case": name, "impulse": list(impulse), "ra": list(ra), "rb": list(rb), "inv": inv,
+            "cross": {"a": cross(ra, impulse), "b": cross(rb, impulse)},
+            "before": before, "after": {"a": _state(a), "b": _state(b)},
+            "expected": {"a": _state(ref_a), "b": _state(ref_b)},
+        })
+    return cases
+
+
+# ---------------------------------------------------------------- resolve (steps 4 and 5)
+
+def resolve_cases():
+    """(name, body A, body B, unit normal A→B, contact point): each a contact resolve() is called on."""
+    up = Vector2(0, -1)
+    return [
+        ("both crates moving, B sliding right over A, fast impact",
+         crate(80, 50, (0, 0), 6.0, vel=(-40, 10), omega=0.5, friction=0.5, restitution=0.3),
+         crate(30, 20, (10, -34), 0.35, vel=(260, 190), omega=-1.5, friction=0.8, restitution=0.5),
+         up, Vector2(18, -25)),
+        ("both crates moving, B sliding left over A, fast impact",
+         crate(80, 50, (0, 0), 6.0, vel=(40, 10), omega=-0.5, friction=0.5, restitution=0.3),
+         crate(30, 20, (-10, -34), 0.35, vel=(-260, 190), omega=1.5, friction=0.8, restitution=0.5),
+         up, Vector2(-18, -25)),
+        ("a crate landing slowly on a static floor, barely sliding",
+         crate(400, 40, (0, 20), 0, friction=0.6, restitution=0.2),
+         crate(60, 40, (12, -20), 5.0, vel=(3, 12), omega=0.05, friction=0.6, restitution=0.2),
+         up, Vector2(-16, 0)),
+        ("a light crate thrown up into a static beam",
+         crate(50, 30, (0, 0), 0.3, vel=(70, -140), omega=0.8, friction=0.7, restitution=0.4),
+         crate(300, 30, (30, -30), 0, friction=0.7, restitution=0.4),
+         up, Vector2(-21, -15)),
+        ("a turned crate landing on its corner on a moving plank",
+         crate(160, 20, (0, 10), 4.0, vel=(20, -5), omega=0.1, friction=0.6, restitution=0.1),
+         crate(60, 40, (5, -36), 1.2, angle=math.radians(30), vel=(-30, 210), omega=0.6, friction=0.6,
+               restitution=0.1),
+         up, Vector2(-17.5, 0)),
+        ("both crates moving, a hard landing with little sliding",
+         crate(70, 40, (0, 0), 2.6, vel=(-6, -40), omega=0.2, friction=0.9, restitution=0.0),
+         crate(40, 40, (12, -40), 0.45, vel=(9, 150), omega=-0.3, friction=0.9, restitution=0.0),
+         up, Vector2(25, -20)),
+        ("a crate grazing a static wall on its right, sliding down it",
+         crate(50, 50, (0, 0), 0.8, vel=(45, 320), omega=1.1, friction=0.4, restitution=0.25),
+         crate(30, 400, (40, 0), 0, friction=0.4, restitution=0.25),
+         Vector2(1, 0), Vector2(25, 14)),
+    ]
+
+
+def _k_forms(a, b, ra, rb, n):
+    """The effective mass k of the lesson, and the k's of plausible mistakes (to name what is missing)."""
+    ima, imb, ia, ib = a.inv_mass, b.inv_mass, a.inv_inertia, b.inv_inertia
+    ran, rbn = cross(ra, n), cross(rb, n)
+    dan, dbn = ra.dot(n), rb.dot(n)
+    return {
+        "right": ima + imb + ran * ran * ia + rbn * rbn * ib,
+        "no_spin": ima + imb,
+        "no_a_spin": ima + imb + rbn * rbn * ib,
+        "no_b_spin": ima + imb + ran * ran * ia,
+        "not_squared": ima + imb + ran * ia + rbn * ib,
+        "inv_mass_in_spin": ima + imb + ran * ran * ima + rbn * rbn * imb,
+        "spin_only": ran * ran * ia + rbn * rbn * ib,
+        "inertias_swapped": ima + imb + ran * ran * ib + rbn * rbn * ia,
+        "subtracted": ima + imb - ran * ran * ia - rbn * rbn * ib,
+        "a_subtracted": ima + imb - ran * ran * ia + rbn * rbn * ib,
+        "b_subtracted": ima + imb + ran * ran * ia - rbn * rbn * ib,
+        "dot_not_cross": ima + imb + dan * dan * ia + dbn * dbn * ib,
+    }
+
+
+def probe_resolve(module, lab_path):
+    """The student's resolve() on each contact, with every impulse it applies recorded.
+
+    Per case: the closing speed vn (px/s, < 0), e, the lesson's k and the mistakes' k's,
+    the normal impulse j the student applied, and for friction: the state after the
+    student's normal impulse, the impulse jt that would stop the slip, mu, and the
+    friction impulse the student applied. The library's apply_impulse applies each
+    impulse, so the student's own apply_impulse (step 6) does not matter here.
+    """
+    cases = []
+    resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
+    own = module.apply_impulse
+    try:
+        for name, a, b, normal, point in resolve_cases():
+            calls = []
+
+            def recorder(a_, b_, impulse, ra_, rb_, calls=calls):
+                ra_, rb_ = Vector2(ra_), Vector2(rb_)
+                rel = relative_velocity(a_, b_, ra_, rb_)
+                calls.append({"impulse": Vector2(impulse), "ra": ra_, "rb": rb_, "rel_before": rel})
+                reference_apply_impulse(a_, b_, Vector2(impulse), ra_, rb_)
+
+            module.apply_impulse = recorder
+            ra, rb = point - a.pos, point - b.pos
+            vn = relative_velocity(a, b, ra, rb).dot(normal)
+            e = min(a.restitution, b.restitution) if vn < -resting else 0.0
+            module.resolve(a, b, Vector2(normal), Vector2(point))
+            cases.append(_resolve_case(name, a, b, normal, ra, rb, vn, e, calls))
+    finally:
+        module.apply_impulse = own
+    return cases
+
+
+def _resolve_case(name, a, b, normal, ra, rb, vn, e, calls):
+    """Plain data for one resolve() case (see probe_resolve)."""
+    forms = _k_forms(a, b, ra, rb, normal)
+    case = {"case": name, "vn": vn, "e": e, "k": forms, "calls": len(calls),
+            "mu": math.sqrt(a.friction * b.friction), "masses": [a.mass, b.mass],
+            "j": None, "j_off_normal": 0.0, "friction": None}
+    if not calls:
+        return case
+    first = calls[0]["impulse"]
+    case["j"] = first.dot(normal)
+    case["j_off_normal"] = (first - normal * case["j"]).length()
+    if len(calls) >= 2:
+        second = calls[1]
+        rel = second["rel_before"]
+        tangent = rel - normal * rel.dot(normal)
+        if tangent.length_squared() > 1e-12:
+            t = tangent.normalize()
+            rat, rbt = cross(second["ra"], t), cross(second["rb"], t)
+            kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+            case["friction"] = {
+                "slip": rel.dot(t),                         # px/s along t before friction
+                "stop": -rel.dot(t) / kt,                   # the impulse that would stop the slip
+                "jt": second["impulse"].dot(t),             # what the student applied along t
+                "off_tangent": (second["impulse"] - t * second["impulse"].dot(t)).length(),
+                "rel_length": rel.length(), "vn_now": rel.dot(normal),
+            }
+    else:
+        # no friction impulse was applied: record what it should have been
+        rel = relative_velocity(a, b, ra, rb)
+        tangent = rel - normal * rel.dot(normal)
+        if tangent.length_squared() > 1e-12:
+            t = tangent.normalize()
+            kt = a.inv_mass + b.inv_mass + cross(ra, t) ** 2 * a.inv_inertia + cross(rb, t) ** 2 * b.inv_inertia
+            case["friction"] = {"slip": rel.dot(t), "stop": -rel.dot(t) / kt, "jt": 0.0, "off_tangent": 0.0,
+                                "rel_length": rel.length(), "vn_now": rel.dot(normal), "missing": True}
+    return case
+
+
+# probe name -> (the lab function it needs, the probe)
+PROBES = {"sat_step2": ("sat", probe_sat_step2), "sat": ("sat", probe_sat),
+          "apply_impulse": ("apply_impulse", probe_apply_impulse), "resolve": ("resolve", probe_resolve)}

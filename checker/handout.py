@@ -1,0 +1,241 @@
+"""The handed-out parts stay handed out: compare a submission with its starter outside the step regions.
+
+A lab's starter marks what the student writes with lines
+
+    # --- step N: what to do ---
+    ...the student's code...
+    # --- end of step N ---
+
+`compare(submission, starter)` replaces the inside of every step region with a
+placeholder statement, parses both files and compares their syntax trees, so
+formatting, comments, blank lines and docstrings do not matter but any change
+to the code the student was handed does (gravity, a constant, the scene, the
+World's settings, the lab-runtime lines, the final print). Top-level imports
+the student added that bind new names are allowed (they change nothing the
+handout runs) and listed.
+
+It returns a Comparison: `same` (bool), `problems` (one line each, naming the
+submission's line and, where there is one, the handout's) and `added_imports`.
+"""
+import ast
+import difflib
+import re
+from dataclasses import dataclass, field
+
+START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+)\b.*---\s*$")
+END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---\s*$")
+MAX_PROBLEMS = 4
+
+
+class MarkerError(ValueError):
+    """The step markers are missing, repeated or out of order."""
+
+
+@dataclass
+class Comparison:
+    """The outcome of comparing a submission with its handout outside the steps."""
+    same: bool
+    problems: list = field(default_factory=list)
+    added_imports: list = field(default_factory=list)
+
+
+def step_regions(lines):
+    """{step: (start line index, end line index, indent)} of the marked regions (0-based marker lines)."""
+    regions, open_step = {}, None
+    for index, line in enumerate(lines):
+        start, end = START.match(line), END.match(line)
+        if start:
+            step = int(start.group("step"))
+            if open_step is not None:
+                raise MarkerError(f"step {open_step}'s region has no `# --- end of step {open_step} ---` line "
+                                  f"before step {step} starts (line {index + 1})")
+            if step in regions:
+                raise MarkerError(f"the `# --- step {step}` marker appears twice (line {index + 1})")
+            open_step = step
+            regions[step] = [index, None, start.group("indent")]
+        elif end:
+            step = int(end.group("step"))
+            if open_step != step:
+                raise MarkerError(f"line {index + 1} ends step {step}, but step {step} was not started "
+                                  "just before it")
+            regions[step][1] = index
+            open_step = None
+    if open_step is not None:
+        raise MarkerError(f"step {open_step}'s region has no `# --- end of step {open_step} ---` line")
+    return {step: tuple(region) for step, region in regions.items()}
+
+
+def blank_steps(source):
+    """The source with each step region's inside replaced by one placeholder line `__step_N__`.
+
+    Line numbers outside the regions shift; returns (text, line map) where the
+    map takes a line of the new text (1-based) to the line of `source`.
+    """
+    lines = source.splitlines()
+    regions = step_regions(lines)
+    out, origin = [], []
+    skip_until = -1
+    starts = {start: (step, end, indent) for step, (start, end, indent) in regions.items()}
+    for index, line in enumerate(lines):
+        if index <= skip_until:
+            continue
+        out.append(line)
+        origin.append(index + 1)
+        if index in starts:
+            step, end, indent = starts[index]
+            out.append(f"{indent}__step_{step}__")
+            origin.append(index + 2)
+            out.append(lines[end])
+            origin.append(end + 1)
+            skip_until = end
+    return "\n".join(out) + "\n", origin, sorted(regions)
+
+
+def _is_string_statement(node):
+    return isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant) and isinstance(node.value.value, str)
+
+
+def _strip_docstrings(tree):
+    """Drop docstrings and other bare string statements: like comments, they change nothing that runs."""
+    for node in ast.walk(tree):
+        for name in BODIES:
+            body = getattr(node, name, None)
+            if isinstance(body, list) and any(_is_string_statement(n) for n in body):
+                setattr(node, name, [n for n in body if not _is_string_statement(n)] or [ast.Pass()])
+    return tree
+
+
+def _bound_names(node):
+    return [(alias.asname or alias.name).split(".")[0] for alias in node.names]
+
+
+def _top_level_names(tree):
+    names = set()
+    for node in tree.body:
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            names.update(_bound_names(node))
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            names.add(node.name)
+        elif isinstance(node, (ast.Assign, ast.AnnAssign, ast.AugAssign)):
+            for target in getattr(node, "targets", [getattr(node, "target", None)]):
+                for name in ast.walk(target):
+                    if isinstance(name, ast.Name):
+                        names.add(name.id)
+    return names
+
+
+def _parse(source, what):
+    try:
+        text, origin, steps = blank_steps(source)
+    except MarkerError as exc:
+        raise MarkerError(f"{what}: {exc}") from None
+    try:
+        tree = ast.parse(text)
+    except SyntaxError as exc:
+        line = origin[exc.lineno - 1] if exc.lineno and 0 < exc.lineno <= len(origin) else exc.lineno
+        raise MarkerError(f"{what}: cannot be read as Python outside the steps (line {line}: {exc.msg})") from None
+    return _strip_docstrings(tree), origin, steps
+
+
+def _dump(node):
+    return ast.dump(node, annotate_fields=True, include_attributes=False)
+
+
+def _text(lines, lineno, width=70):
+    if lineno and 0 < lineno <= len(lines):
+        text = lines[lineno - 1].strip()
+        return text if width is None or len(text) <= width else text[:width - 3] + "..."
+    return ""
+
+
+def _around_difference(mine, theirs, width=70):
+    """Both lines cut to `width` characters around where they first differ."""
+    if len(mine) <= width and len(theirs) <= width:
+        return mine, theirs
+    same = 0
+    while same < min(len(mine), len(theirs)) and mine[same] == theirs[same]:
+        same += 1
+    start = max(0, same - 25)
+
+    def cut(text):
+        piece = text[start:start + width]
+        return ("..." if start else "") + piece + ("..." if start + width < len(text) else "")
+    return cut(mine), cut(theirs)
+
+
+BODIES = ("body", "orelse", "finalbody", "handlers")
+
+
+def _diff(mine, theirs, out):
+    """Append (submission node or None, handout node or None) for each differing statement, recursing
+    into compound statements that match in kind."""
+    a = [_dump(n) for n in mine]
+    b = [_dump(n) for n in theirs]
+    for tag, i1, i2, j1, j2 in difflib.SequenceMatcher(None, a, b, autojunk=False).get_opcodes():
+        if tag == "equal":
+            continue
+        if tag == "replace" and i2 - i1 == j2 - j1:
+            for x, y in zip(mine[i1:i2], theirs[j1:j2]):
+                if type(x) is type(y) and any(getattr(x, f, None) for f in BODIES) \
+                        and _dump(_header(x)) == _dump(_header(y)):
+                    for f in BODIES:
+                        _diff(getattr(x, f, []) or [], getattr(y, f, []) or [], out)
+                else:
+                    out.append((x, y))
+            continue
+        for x in mine[i1:i2]:
+            out.append((x, None))
+        for y in theirs[j1:j2]:
+            out.append((None, y))
+
+
+def _header(node):
+    """The statement without its bodies (to tell an edited `if` line from an edit inside it)."""
+    return type(node)(**{f: getattr(node, f) for f in node._fields if f not in BODIES})
+
+
+def compare(submission, starter, submission_name="the file", starter_name="the handout"):
+    """Compare `submission` (source text) with `starter` outside the step regions; returns a Comparison.
+
+    Raises MarkerError (one line) when the submission's step markers are missing or broken or it
+    cannot be parsed.
+    """
+    theirs, their_origin, their_steps = _parse(starter, starter_name)
+    mine, my_origin, my_steps = _parse(submission, submission_name)
+    if my_steps != their_steps:
+        missing = [s for s in their_steps if s not in my_steps]
+        if missing:
+            raise MarkerError(f"{submission_name}: the marker lines of step {missing[0]} are missing: keep "
+                              f"`# --- step {missing[0]}: ... ---` and `# --- end of step {missing[0]} ---` "
+                              "from the handout and write your code between them")
+        extra = [s for s in my_steps if s not in their_steps]
+        raise MarkerError(f"{submission_name}: it marks a step {extra[0]} that the handout does not have")
+    known = _top_level_names(theirs)
+    added = []
+    kept = []
+    for node in mine.body:
+        if isinstance(node, (ast.Import, ast.ImportFrom)) and not set(_bound_names(node)) & known \
+                and _dump(node) not in {_dump(n) for n in theirs.body}:
+            added.append(f"line {my_origin[node.lineno - 1]}: {ast.unparse(node)}")
+        else:
+            kept.append(node)
+    mine.body = kept
+    if _dump(mine) == _dump(theirs):
+        return Comparison(True, [], added)
+    sub_lines, start_lines = submission.splitlines(), starter.splitlines()
+    differences = []
+    _diff(mine.body, theirs.body, differences)
+    problems = []
+    for x, y in differences:
+        line = my_origin[x.lineno - 1] if x is not None else None
+        hand = their_origin[y.lineno - 1] if y is not None else None
+        if x is not None and y is not None:
+            mine_text, their_text = _around_difference(_text(sub_lines, line, None), _text(start_lines, hand, None))
+            problems.append(f"line {line} `{mine_text}` (the handout has `{their_text}`)")
+        elif x is not None:
+            problems.append(f"line {line} `{_text(sub_lines, line)}` was added")
+        else:
+            problems.append(f"the handout's line `{_text(start_lines, hand)}` was removed")
+    if not problems:
+        problems.append("the code outside the steps differs from the handout")
+    return Comparison(False, problems, added)

@@ -1,0 +1,83 @@
+"""Output files: where they may go (checked before anything is graded) and where each submission's goes.
+
+An output is only written when its option asks for it, and never over an
+input: a path that is one of the files being graded, a `.py` file, or lies
+inside a folder being graded is refused, as is a folder where a file is
+expected (and the reverse), a folder that does not exist, or the same path
+for two outputs. An existing output file named by the user is replaced
+(atomically: see report.write_atomic).
+"""
+import os
+
+
+def _inside(path, folder):
+    try:
+        return os.path.commonpath([path, folder]) == folder
+    except ValueError:  # different drives
+        return False
+
+
+def check(outputs, paths, entries, graded_folders):
+    """One-line problems with the outputs, [] when all can be written.
+
+    outputs: [(option, path, kind)] with kind "file" or "folder"; paths: the
+    command line's paths; entries: what will be graded; graded_folders:
+    resolved folders being graded.
+    """
+    problems = []
+    inputs = {os.path.realpath(p) for p in paths} | {e.real or os.path.realpath(e.path) for e in entries}
+    inputs |= {os.path.abspath(e.path) for e in entries}
+    used = {}
+    for option, path, kind in outputs:
+        where = f"{option} {path}"
+        real = os.path.realpath(path)
+        if path.lower().rstrip("/\\").endswith(".py"):
+            problems.append(f"{where}: refusing to write to a .py file (it may be a submission); choose another name")
+        elif real in inputs or os.path.abspath(path) in inputs:
+            problems.append(f"{where}: that is one of the paths being graded; choose another place for the output")
+        elif any(_inside(real, folder) for folder in graded_folders):
+            folder = next(f for f in graded_folders if _inside(real, f))
+            problems.append(f"{where}: inside {os.path.relpath(folder)}, a folder being graded; "
+                            f"write it outside that folder")
+        elif kind == "folder" and any(_inside(i, real) for i in inputs):
+            problems.append(f"{where}: this folder holds files being graded; choose a folder outside them")
+        elif real in used:
+            problems.append(f"{where}: the same path as {used[real]}; give each output its own path")
+        elif kind == "file" and os.path.isdir(path):
+            problems.append(f"{where}: is a folder; give a file name")
+        elif kind == "file" and os.path.lexists(path) and not os.path.isfile(path):
+            problems.append(f"{where}: exists and is not a regular file")
+        elif kind == "folder" and os.path.lexists(path) and not os.path.isdir(path):
+            problems.append(f"{where}: exists and is not a folder")
+        else:
+            parent = os.path.dirname(os.path.abspath(path))
+            if not os.path.isdir(parent):
+                problems.append(f"{where}: the folder {os.path.dirname(path) or '.'} does not exist")
+            elif not os.access(parent, os.W_OK):
+                problems.append(f"{where}: cannot write in the folder {os.path.dirname(path) or '.'}")
+        used.setdefault(real, option)
+    return problems
+
+
+def submission_names(paths):
+    """{path: relative folder name} for one results.json per submission: each path relative to their common
+    folder, without ".py" (with it where two would otherwise share a name)."""
+    absolute = {p: os.path.abspath(p) for p in paths}
+    if not absolute:
+        return {}
+    base = os.path.commonpath([os.path.dirname(a) for a in absolute.values()])
+    full = {p: os.path.relpath(a, base) for p, a in absolute.items()}
+    full = {p: (name if name != "." else os.path.basename(absolute[p])) for p, name in full.items()}
+    short = {p: name[:-3] if name.lower().endswith(".py") else name for p, name in full.items()}
+    counts = {}
+    for name in short.values():
+        counts[name] = counts.get(name, 0) + 1
+    names, taken = {}, set()
+    for p in paths:
+        name = short[p] if counts[short[p]] == 1 else full[p]
+        candidate, k = name, 2
+        while candidate in taken:
+            candidate, k = f"{name}-{k}", k + 1
+        taken.add(candidate)
+        names[p] = candidate
+    return names

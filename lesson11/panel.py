@@ -1,0 +1,388 @@
+"""The solver panel: change the physics while a lab runs, and see what accuracy costs.
+
+Every lab window gets the same panel through four calls (solutions/tumbling_crates.py
+shows them, each on a line marked `# solver panel`):
+
+    panel = LabPanel()                     # once, before the main loop
+    panel.handle(event)                    # first thing for every event
+    steps = panel.advance(world, dt)       # instead of world.advance(dt); dt in s
+    panel.draw(screen, world)              # after the scene, before display.flip()
+
+Keys (none of them is used by a lab: D = debug view, R = reset, left click = drop):
+  S            solver: "lesson" (the lab's own sat() and resolve()) or "accumulated"
+               (the reference solver, physics2d/arbiter.py; the lab's functions are not used)
+  Up / Down    solver iterations +1 / -1 (1 .. MAX_ITERATIONS)
+  Right / Left sub-steps +1 / -1 (1 .. MAX_SUBSTEPS)
+  W            warm starting on / off (the accumulated solver's; the lesson solver has none)
+  C            positional correction on / off (the "correction" effect: the push-out)
+  K            contact rule "corners" (the lesson's) / "clip" (edge clipping)
+  0            back to the settings the World was built with
+  P            pause / run;  O  one physics step (pauses first if running)
+  H            hide / show the panel
+
+The HUD shows the settings, the physics time per frame (ms, measured around
+the world's advance() with time.perf_counter), the contacts, the deepest
+penetration (px) and the kinetic energy (mass·px²/s²), and a graph of the
+physics ms per frame over the last GRAPH_SECONDS s with the 60 fps frame
+budget (16.7 ms) as a dashed line.
+
+Nothing is set on a world until a key changes a setting. The panel keeps the
+changed settings only (as overrides) and applies them to every World it is
+handed, so after R builds a new world the new one gets them before its first
+step. With no panel key pressed, which is how the checker runs a lab unless
+its script presses one, advance(world, dt) is exactly world.advance(dt), and
+the lab runtime's record is the same as without the panel.
+
+The World attributes used are: solver, iterations, substeps, warm_starting,
+contact_rule, effects, contacts, bodies, step_seconds and advance(dt). A World
+that has no `substeps` or `warm_starting` yet still gets the attribute set;
+the HUD then says the setting has no effect in this World.
+"""
+import time
+from collections import deque
+
+import pygame
+
+MAX_ITERATIONS = 50     # the Up key stops here: 50 passes of the lesson solver take ~30 ms per step
+MAX_SUBSTEPS = 16       # the Right key stops here
+GRAPH_SECONDS = 3       # s of history in the graph
+GRAPH_FRAMES = 60 * GRAPH_SECONDS   # frames of history (the labs run at 60 fps)
+FRAME_BUDGET_MS = 1000 / 60         # ms: a frame's whole time at 60 fps, the graph's dashed line
+REFRESH_FRAMES = 12     # the numbers are redrawn every 12 frames (0.2 s at 60 fps) so they can be read
+SCALES_MS = (5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)  # the graph's possible top values (ms)
+
+PANEL_WIDTH, LINE_HEIGHT, GRAPH_HEIGHT, PADDING = 400, 19, 58, 10   # px
+BACKGROUND = (12, 14, 20, 215)  # RGBA: see-through, so crates behind it stay visible
+TEXT = (230, 230, 230)
+DIM = (150, 155, 170)
+KEY = (250, 220, 80)
+CHANGED = (120, 200, 255)       # a setting that differs from the World's own
+WARNING = (255, 140, 90)
+GRAPH_LINE = (90, 210, 120)
+GRAPH_BACKGROUND = (40, 44, 56)
+BUDGET_LINE = (235, 80, 80)
+
+SOLVERS = ("lesson", "accumulated")
+CONTACT_RULES = ("corners", "clip")
+SETTING_NAMES = ("solver", "iterations", "substeps", "warm_starting", "correction", "contact_rule")
+NEW_ATTRIBUTES = {"substeps": 1, "warm_starting": True}  # their defaults, for a World that lacks them
+
+
+def read_setting(world, name):
+    """The current value of one panel setting in `world` ("correction" is read from world.effects)."""
+    if name == "correction":
+        return "correction" in world.effects
+    if name in NEW_ATTRIBUTES:
+        return getattr(world, name, NEW_ATTRIBUTES[name])
+    return getattr(world, name)
+
+
+def write_setting(world, name, value):
+    """Set one panel setting on `world` ("correction" adds it to or removes it from world.effects).
+
+    Raises ValueError (one line naming the value) for a value the panel never offers.
+    """
+    valid = {"solver": lambda v: v in SOLVERS,
+             "iterations": lambda v: isinstance(v, int) and not isinstance(v, bool) and v >= 1,
+             "substeps": lambda v: isinstance(v, int) and not isinstance(v, bool) and v >= 1,
+             "warm_starting": lambda v: isinstance(v, bool),
+             "correction": lambda v: isinstance(v, bool),
+             "contact_rule": lambda v: v in CONTACT_RULES}
+    if name not in valid:
+        raise ValueError(f"unknown panel setting {name!r}; known: {', '.join(SETTING_NAMES)}")
+    if not valid[name](value):
+        raise ValueError(f"panel setting {name!r} cannot be {value!r}")
+    if name == "correction":
+        world.effects = frozenset(world.effects | {"correction"}) if value \
+            else frozenset(world.effects - {"correction"})
+    else:
+        setattr(world, name, value)
+
+
+class LabPanel:
+    """Solver settings on keys, pause and single step, and a HUD with the measured cost. See the module docstring.
+
+    overrides   {setting: value} changed by keys; applied to every world handed to advance()
+    paused      True while P holds the physics
+    history     physics ms per frame, the last GRAPH_FRAMES frames
+    visible     False after H
+    """
+
+    def __init__(self):
+        self.overrides = {}
+        self.paused = False
+        self.pending_steps = 0
+        self.visible = True
+        self.history = deque(maxlen=GRAPH_FRAMES)
+        self.world = None
+        self.base = {}          # the current world's own settings, before any override
+        self.supported = {}     # setting -> does this World have the attribute of its own
+        self.last_steps = 0
+        self.frames = 0
+        self.shown = None       # the measured numbers on screen, refreshed every REFRESH_FRAMES
+        self.font = None
+        self.cache = {}
+        self.box = None         # after draw(): the panel's rectangle in the window (px)
+        self.placed = []        # after draw(): (rectangle, text) of every line of text on the panel
+        self.image = None       # the panel's picture, redrawn by render()
+        self.rendered = []      # (rectangle, text) of the lines in self.image
+        self.contacts_at = (0, 0)
+        self.dirty = True       # redraw the picture at the next draw()
+
+    # ---- settings -----------------------------------------------------------------------
+
+    def adopt(self, world):
+        """Take `world` as the current world: remember its own settings, then apply the overrides to it."""
+        if world is self.world:
+            return
+        self.world = world
+        self.dirty = True
+        self.supported = {name: name not in NEW_ATTRIBUTES or hasattr(world, name) for name in SETTING_NAMES}
+        self.base = {name: read_setting(world, name) for name in SETTING_NAMES}
+        for name, value in self.overrides.items():
+            write_setting(world, name, value)
+
+    def settings(self):
+        """{setting: value} in effect for the current world (its own values with the overrides on top)."""
+        return {**self.base, **self.overrides}
+
+    def change(self, name, value):
+        """Set one setting: remember it as an override and write it to the current world (if any)."""
+        if self.world is not None:
+            write_setting(self.world, name, value)
+        if value == self.base.get(name, object()):
+            self.overrides.pop(name, None)
+        else:
+            self.overrides[name] = value
+
+    def restore(self):
+        """Back to the current world's own settings (key 0)."""
+        if self.world is not None:
+            for name in self.overrides:
+                write_setting(self.world, name, self.base[name])
+        self.overrides.clear()
+
+    # ---- input --------------------------------------------------------------------------
+
+    def handle(self, event):
+        """React to one pygame event; returns True if it was one of the panel's keys, else False.
+
+        The panel's keys are not used by the labs, so a lab may ignore the return value.
+        Setting keys need a world: before the first advance() they are ignored.
+        """
+        if event.type != pygame.KEYDOWN:
+            return False
+        self.dirty = True
+        key = event.key
+        if key == pygame.K_p:
+            self.paused = not self.paused
+            self.pending_steps = 0
+            return True
+        if key == pygame.K_o:
+            self.paused = True
+            self.pending_steps += 1
+            return True
+        if key == pygame.K_h:
+            self.visible = not self.visible
+            return True
+        if self.world is None:
+            return key in (pygame.K_s, pygame.K_w, pygame.K_c, pygame.K_k, pygame.K_0,
+                           pygame.K_UP, pygame.K_DOWN, pygame.K_LEFT, pygame.K_RIGHT)
+        now = self.settings()
+        if key == pygame.K_s:
+            self.change("solver", SOLVERS[(SOLVERS.index(now["solver"]) + 1) % len(SOLVERS)]
+                        if now["solver"] in SOLVERS else SOLVERS[0])
+        elif key in (pygame.K_UP, pygame.K_DOWN):
+            step = 1 if key == pygame.K_UP else -1
+            self.change("iterations", max(1, min(MAX_ITERATIONS, now["iterations"] + step)))
+        elif key in (pygame.K_RIGHT, pygame.K_LEFT):
+            step = 1 if key == pygame.K_RIGHT else -1
+            self.change("substeps", max(1, min(MAX_SUBSTEPS, now["substeps"] + step)))
+        elif key == pygame.K_w:
+            self.change("warm_starting", not now["warm_starting"])
+        elif key == pygame.K_c:
+            self.change("correction", not now["correction"])
+        elif key == pygame.K_k:
+            self.change("contact_rule", "clip" if now["contact_rule"] == "corners" else "corners")
+        elif key == pygame.K_0:
+            self.restore()
+        else:
+            return False
+        return True
+
+    # ---- stepping -----------------------------------------------------------------------
+
+    def advance(self, world, dt):
+        """Step `world` for a frame of dt s, as world.advance(dt) does, unless paused; returns the steps run.
+
+        A world not seen before gets the overrides first (after R, the lab's new world).
+        Paused: only the steps asked for with O run, each as world.advance(world.step_seconds),
+        which is exactly one fixed step. The time spent is added to the graph (ms).
+        """
+        self.adopt(world)
+        start = time.perf_counter()
+        if not self.paused:
+            steps = world.advance(dt)
+        else:
+            steps = 0
+            for _ in range(self.pending_steps):
+                steps += world.advance(world.step_seconds)
+            self.pending_steps = 0
+        self.history.append((time.perf_counter() - start) * 1000)
+        self.last_steps = steps
+        return steps
+
+    # ---- the HUD ------------------------------------------------------------------------
+
+    def measure(self, world):
+        """What the HUD shows: {"ms": mean physics ms per frame over the last refresh, "steps",
+        "contacts", "deepest" (px, 0 without contacts), "energy" (mass·px²/s²)}."""
+        recent = list(self.history)[-REFRESH_FRAMES:]
+        return {"ms": sum(recent) / len(recent) if recent else 0.0,
+                "steps": self.last_steps,
+                "contacts": len(world.contacts),
+                "deepest": max([0.0] + [contact.depth for contact in world.contacts]),
+                "energy": sum(body.kinetic_energy() for body in world.bodies)}
+
+    def lines(self, world):
+        """The HUD's setting rows as [(key label, setting, value, colour)], top to bottom.
+
+        The row after the solver has no key: it says whose sat() and resolve() run.
+        """
+        now = self.settings()
+
+        def colour(name):
+            return CHANGED if name in self.overrides else TEXT
+
+        def missing(name):
+            return "" if self.supported.get(name, True) else "  (not in this World yet)"
+
+        reference = now["solver"] == "accumulated"
+        hooked = getattr(world, "resolve", None) != getattr(world, "lesson_resolve", None)
+        if reference:
+            note = ("your sat() and resolve() are NOT used" if hooked else "the lesson's resolve() is not used",
+                    WARNING)
+        else:
+            note = ("runs your sat() and resolve()" if hooked else "runs physics2d's sat() and resolve()", DIM)
+        warm = ("on" if now["warm_starting"] else "off") + (missing("warm_starting") or
+                                                             ("" if reference else "  (reference solver only)"))
+        return [("S", "solver", "accumulated (reference)" if reference else "lesson",
+                 WARNING if reference else colour("solver")),
+                ("", "", note[0], note[1]),
+                ("Up/Down", "iterations", str(now["iterations"]), colour("iterations")),
+                ("Left/Right", "sub-steps", f"{now['substeps']}{missing('substeps')}", colour("substeps")),
+                ("W", "warm start", warm,
+                 colour("warm_starting") if reference else DIM),
+                ("C", "correction", "on" if now["correction"] else "off", colour("correction")),
+                ("K", "contact rule", now["contact_rule"], colour("contact_rule"))]
+
+    def text(self, words, colour=TEXT):
+        """A rendered line of text (cached: most rows are the same from frame to frame)."""
+        if self.font is None:
+            self.font = pygame.font.Font(None, 20)
+        key = (words, colour)
+        if key not in self.cache:
+            if len(self.cache) > 300:
+                self.cache.clear()
+            self.cache[key] = self.font.render(words, True, colour)
+        return self.cache[key]
+
+    def put(self, target, words, colour, pos):
+        """Blit one line of text onto `target` at pos (px, top-left); remember where it lands in the window."""
+        image = self.text(words, colour)
+        target.blit(image, pos)
+        self.rendered.append((image.get_rect(topleft=pos).move(self.box.topleft), words))
+
+    def draw(self, surface, world):
+        """Draw the panel in the window's top-right corner (below a lab's own HUD line).
+
+        The panel's picture is redrawn every REFRESH_FRAMES frames or after a key, and blitted
+        in between (so it costs a lab about one blit a frame); the contact count is drawn
+        every frame, like a lab's own HUD line. Afterwards self.box is the panel's rectangle
+        in the window and self.placed lists (rectangle, text) of every line of text on it.
+        """
+        self.adopt(world)
+        refresh = self.shown is None or self.frames % REFRESH_FRAMES == 0
+        if refresh:
+            self.shown = self.measure(world)
+        self.frames += 1
+        right = surface.get_width() - 10
+        if not self.visible:
+            label = "[H] show the solver panel"
+            image = self.text(label, DIM)
+            self.box = image.get_rect(topright=(right, 36))
+            surface.blit(image, self.box)
+            self.placed = [(self.box, label)]
+            return
+        if refresh or self.dirty or self.image is None or self.box.right != right:
+            self.render(world, right)
+        surface.blit(self.image, self.box.topleft)
+        contacts = f"contacts {len(world.contacts)}"
+        image = self.text(contacts, TEXT)
+        surface.blit(image, self.contacts_at)
+        self.placed = self.rendered + [(image.get_rect(topleft=self.contacts_at), contacts)]
+
+    def render(self, world, right):
+        """Draw the panel's picture (all but the contact count) into self.image, its right edge at `right` px."""
+        self.dirty = False
+        self.rendered = []
+        rows = self.lines(world)
+        m = self.shown
+        state = "PAUSED" if self.paused else f"{m['steps']} step{'' if m['steps'] == 1 else 's'} this frame"
+        measured = [(f"physics {m['ms']:.1f} ms/frame", state),
+                    (None, f"deepest {m['deepest']:.2f} px"),   # None: the contact count, drawn every frame
+                    (f"kinetic energy {m['energy']:.3g}", "mass·px²/s²")]
+        height = PADDING * 2 + LINE_HEIGHT * (len(rows) + len(measured) + 3) + GRAPH_HEIGHT + 8
+        self.box = pygame.Rect(right - PANEL_WIDTH, 36, PANEL_WIDTH, height)
+        image = self.image = pygame.Surface(self.box.size, pygame.SRCALPHA)
+        image.fill(BACKGROUND)
+        x, y = PADDING, PADDING
+        self.put(image, "SOLVER PANEL", KEY, (x, y))
+        self.put(image, "[H] hide", DIM, (PANEL_WIDTH - PADDING - self.text("[H] hide", DIM).get_width(), y))
+        y += LINE_HEIGHT
+        for key, name, value, colour in rows:
+            if key:
+                self.put(image, f"[{key}]", KEY, (x, y))
+                self.put(image, name, DIM, (x + 95, y))
+            self.put(image, value, colour, (x + (190 if key else 95), y))
+            y += LINE_HEIGHT
+        self.put(image, "[P] pause    [O] one step    [0] the World's own settings", KEY, (x, y))
+        y += LINE_HEIGHT + 4
+        for left, right_text in measured:
+            if left is None:
+                self.contacts_at = (self.box.x + x, self.box.y + y)
+            else:
+                self.put(image, left, TEXT, (x, y))
+            self.put(image, right_text, WARNING if right_text == "PAUSED" else DIM, (x + 215, y))
+            y += LINE_HEIGHT
+        top = self.draw_graph(image, pygame.Rect(x, y + 4, PANEL_WIDTH - 2 * PADDING, GRAPH_HEIGHT))
+        y += GRAPH_HEIGHT + 8
+        label_at = (x + 4, y - GRAPH_HEIGHT - 4 + 2)  # the graph's top value, on its own patch of background
+        image.fill(GRAPH_BACKGROUND, self.text(f"{top} ms", DIM).get_rect(topleft=label_at).inflate(4, 0))
+        self.put(image, f"{top} ms", DIM, label_at)
+        self.put(image, f"physics ms per frame, last {GRAPH_SECONDS} s; red: 60 fps budget", DIM, (x, y))
+
+    def draw_graph(self, surface, rect):
+        """Physics ms per frame over the last GRAPH_FRAMES frames, newest on the right, in `rect` (px).
+
+        Returns the value (ms) at the top of the graph: the smallest of SCALES_MS above the budget and
+        95 % of the values, so one slow frame (a busy machine, a window drag) does not flatten the rest;
+        the few frames above the top are drawn at the top.
+        """
+        pygame.draw.rect(surface, GRAPH_BACKGROUND, rect)
+        values = list(self.history)
+        typical = sorted(values)[int(0.95 * (len(values) - 1))] if values else 0.0
+        top = next((s for s in SCALES_MS if s >= max(typical, FRAME_BUDGET_MS * 1.1)), SCALES_MS[-1])
+
+        def y_of(ms):
+            return rect.bottom - 1 - (rect.height - 2) * min(ms, top) / top
+
+        budget = y_of(FRAME_BUDGET_MS)
+        for x in range(rect.left, rect.right, 8):  # dashed budget line
+            pygame.draw.line(surface, BUDGET_LINE, (x, budget), (min(x + 4, rect.right - 1), budget))
+        if len(values) > 1:
+            dx = (rect.width - 1) / (GRAPH_FRAMES - 1)
+            start = rect.right - 1 - dx * (len(values) - 1)
+            pygame.draw.lines(surface, GRAPH_LINE, False,
+                              [(start + dx * i, y_of(v)) for i, v in enumerate(values)], 2)
+        return top

@@ -1,0 +1,161 @@
+"""Unit tests of the checker's pieces that need no child process: the handout comparison, the check
+registry (dependencies hand on values, a hint is shown once), and how numbers are shown beside bounds."""
+import os
+
+import pytest
+
+from checker import handout
+from checker.checks import FAIL, PASS, SKIP, Fail, Hint, Passed, Registry
+from checker.common import shown
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = open(os.path.join(ROOT, "starters", "tumbling_crates_starter.py"), encoding="utf-8").read()
+SOLUTION = open(os.path.join(ROOT, "solutions", "tumbling_crates.py"), encoding="utf-8").read()
+
+
+def edited(source, old, new):
+    assert source.count(old) == 1, old
+    return source.replace(old, new)
+
+
+# ---------------------------------------------------------------- the handout comparison
+
+def test_the_solution_and_the_starter_share_their_handout():
+    assert handout.compare(SOLUTION, STARTER).same
+    assert handout.compare(STARTER, STARTER).same
+
+
+def test_formatting_comments_and_docstrings_do_not_count():
+    source = edited(SOLUTION, "WIDTH, HEIGHT = 900, 600", "WIDTH, HEIGHT = (900,\n                 600)  # px\n\n")
+    source = edited(source, '    """Equal and opposite impulse at the contact: changes velocity AND spin."""',
+                    "    '''My notes: equal and opposite.'''")
+    source = source.replace("# Step 1: run this file and watch the crates fall.", "# (I ran it.)")
+    assert handout.compare(source, STARTER).same
+
+
+def test_an_added_import_is_allowed_and_listed():
+    result = handout.compare("import numpy as np\n" + SOLUTION, STARTER)
+    assert result.same and result.added_imports == ["line 1: import numpy as np"]
+
+
+def test_an_import_that_rebinds_a_handout_name_is_an_edit():
+    result = handout.compare(edited(SOLUTION, "import random\n", "import random\nfrom math import cos as cross\n"),
+                             STARTER)
+    assert not result.same
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("MAX_CRATES = 14", "MAX_CRATES = 3", "`MAX_CRATES = 3` (the handout has `MAX_CRATES = 14`)"),
+    ("RESTING_SPEED = 30 ", "RESTING_SPEED = 5 ", "`RESTING_SPEED = 5"),
+    ("    return World(lab.scene(make_scene(rng)), sat=sat, resolve=resolve)",
+     "    return World(lab.scene(make_scene(rng)), sat=sat, resolve=resolve, gravity=(0, 500))", "gravity=(0, 500)"),
+    ("    if vn >= 0:\n        return  # the contact points are already separating\n", "",
+     "the handout's line `if vn >= 0:` was removed"),
+    ("        dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)",
+     "        dt = clock.tick(60) / 1000", "`dt = clock.tick(60) / 1000`"),
+])
+def test_an_edit_outside_the_steps_is_named_with_its_line(old, new, words):
+    source = edited(SOLUTION, old, new)
+    result = handout.compare(source, STARTER)
+    assert not result.same
+    assert any(words in problem for problem in result.problems), result.problems
+    line = next(i for i, text in enumerate(source.splitlines(), 1) if new and new.strip().splitlines()[0] in text) \
+        if new else None
+    if line:
+        assert any(problem.startswith(f"line {line} ") for problem in result.problems), result.problems
+
+
+def test_code_inside_the_steps_is_not_compared():
+    source = edited(SOLUTION, "    k += ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia\n",
+                    "    import math\n    k = k + a.inv_inertia * ran ** 2\n    k = k + b.inv_inertia * rbn ** 2\n")
+    assert handout.compare(source, STARTER).same
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("    # --- end of step 4 ---\n", "", "step 4's region has no `# --- end of step 4 ---` line"),
+    ("    # --- step 6: the two spin updates ---\n", "", "ends step 6, but step 6 was not started"),
+])
+def test_broken_markers_are_a_one_line_error(old, new, words):
+    with pytest.raises(handout.MarkerError, match="^the file: ") as caught:
+        handout.compare(edited(SOLUTION, old, new), STARTER)
+    assert words in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_missing_step_markers_are_named():
+    source = edited(SOLUTION, "    # --- step 6: the two spin updates ---\n", "")
+    source = edited(source, "    # --- end of step 6 ---\n", "")
+    with pytest.raises(handout.MarkerError, match="the marker lines of step 6 are missing"):
+        handout.compare(source, STARTER)
+
+
+# ---------------------------------------------------------------- the registry
+
+def make_registry(calls):
+    registry = Registry()
+    advice = Hint(7, "watch them settle", "Press D.")
+
+    @registry.check()
+    def first(sub):
+        """First."""
+        calls.append(("first", sub))
+        return Passed("first passed", value=41)
+
+    @registry.check(depends=["first"])
+    def second(sub, value):
+        """Second."""
+        calls.append(("second", value))
+        raise Fail("second failed", advice)
+
+    @registry.check(depends=["first"])
+    def third(sub, value):
+        """Third."""
+        raise Fail("third failed", advice)
+
+    @registry.check(depends=["second"], needs_scenarios=True)
+    def fourth(sub, value):
+        """Fourth."""
+        calls.append(("fourth", value))
+
+    return registry
+
+
+def test_a_check_receives_what_its_dependency_returned_and_a_hint_is_shown_once():
+    calls = []
+    registry = make_registry(calls)
+    state = registry.run("the submission", stop_at_scenarios=True)
+    assert calls == [("first", "the submission"), ("second", 41)]
+    assert not registry.wants_scenarios(state)  # fourth depends on second, which failed
+    results = registry.run("the submission", state=state).ordered(registry)
+    assert [r.status for r in results] == [PASS, FAIL, FAIL, SKIP]
+    assert results[0].message == "first passed"
+    assert results[1].hint == "[step 7: watch them settle] Press D."
+    assert results[2].hint == "[step 7: watch them settle] see the hint under 'second' above."
+    assert results[3].message == "skipped: needs 'second' to pass first"
+
+
+def test_a_check_cannot_depend_on_a_later_one():
+    registry = Registry()
+    with pytest.raises(ValueError, match="unknown or later"):
+        @registry.check(depends=["later"])
+        def early(sub, value):
+            """Early."""
+
+
+# ---------------------------------------------------------------- numbers beside their bounds
+
+@pytest.mark.parametrize("value, bound, text", [
+    (5.004, 5, "5.004"), (4.99999, 5, "4.99999"), (16.4, 30, "16.4"), (5.04, 5.0, "5.04"), (12.0, 5, "12.0")])
+def test_a_failing_value_never_reads_equal_to_its_bound(value, bound, text):
+    assert shown(value, bound) == text
+    assert shown(value, bound) != f"{bound:g}"
+
+
+def test_list_prints_every_check_of_every_lab_with_its_points(capsys):
+    from checker.cli import main
+    from checker.labs import LABS
+    assert main(["--list"]) == 0
+    out = capsys.readouterr().out
+    for lab in LABS:
+        assert f"{lab.title} ({lab.id}): {len(lab.checks.checks)} checks, {lab.checks.max_score:g} points" in out
+        for check in lab.checks.checks:
+            assert f"{check.id}" in out and check.description in out

@@ -1,0 +1,317 @@
+"""The solver panel (lesson11/panel.py): keys change the World, P and O hold and step it, the HUD reads well,
+and a lab run that presses none of its keys is the very same run as without the panel.
+
+In-process tests drive a LabPanel with synthetic key events on a small World;
+the last tests run solutions/tumbling_crates.py under the lab runtime in a
+child process, as the checker does (tests/lab_run.py).
+"""
+import os
+
+os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
+
+import pygame
+import pytest
+
+from lab_run import SOLUTION, clicks, run_lab
+from lesson11 import panel as lp
+from lesson11.physics2d import Body, World, box_points
+from mutants import apply_edits
+
+
+@pytest.fixture(autouse=True)
+def pygame_fonts():
+    pygame.display.init()
+    pygame.font.init()
+    yield
+    pygame.quit()
+
+
+def key(name):
+    """A KEYDOWN event for a key named as pygame.key.key_code names it ("s", "up", "0")."""
+    return pygame.event.Event(pygame.KEYDOWN, key=pygame.key.key_code(name), mod=0)
+
+
+def small_world(**settings):
+    """A static floor and two crates falling onto it (px, y down)."""
+    floor = Body(box_points(900, 40), (450, 580), 0)
+    crates = [Body(box_points(60, 40), (300, 500), 2.4, angle=0.3), Body(box_points(50, 50), (500, 300), 2.5)]
+    return World([floor] + crates, **settings)
+
+
+def state(world):
+    return [(tuple(b.pos), tuple(b.vel), b.angle, b.omega) for b in world.bodies]
+
+
+# ---------------------------------------------------------------- settings on keys
+
+def test_without_keys_the_panel_sets_nothing_and_steps_as_world_advance():
+    plain, panelled = small_world(), small_world()
+    before = {name: getattr(panelled, name, None) for name in vars(panelled)}
+    panel = lp.LabPanel()
+    for dt in (1 / 60, 1 / 60, 0.004, 1.0):
+        assert panel.advance(panelled, dt) == plain.advance(dt)
+        assert state(panelled) == state(plain)
+    assert panel.overrides == {}
+    assert not hasattr(panelled, "substeps") or panelled.substeps == getattr(plain, "substeps", None)
+    for name in ("solver", "iterations", "contact_rule", "effects"):
+        assert getattr(panelled, name) == before[name] == getattr(plain, name)
+
+
+def test_each_key_changes_its_world_setting_and_0_restores_the_worlds_own():
+    world = small_world()
+    panel = lp.LabPanel()
+    panel.advance(world, 0)
+    for name in ("s", "up", "up", "right", "w", "c", "k"):
+        assert panel.handle(key(name)) is True
+    assert world.solver == "accumulated"
+    assert world.iterations == 8
+    assert world.substeps == 2
+    assert world.warm_starting is False
+    assert "correction" not in world.effects and "friction" in world.effects
+    assert world.contact_rule == "clip"
+    assert set(panel.overrides) == set(lp.SETTING_NAMES)
+    panel.handle(key("0"))
+    assert (world.solver, world.iterations, world.substeps, world.warm_starting, world.contact_rule) == \
+        ("lesson", 6, 1, True, "corners")
+    assert "correction" in world.effects
+    assert panel.overrides == {}
+
+
+def test_counts_stay_between_one_and_their_maximum():
+    world = small_world(iterations=2)
+    panel = lp.LabPanel()
+    panel.advance(world, 0)
+    for _ in range(5):
+        panel.handle(key("down"))
+        panel.handle(key("left"))
+    assert world.iterations == 1 and world.substeps == 1
+    for _ in range(lp.MAX_ITERATIONS + 5):
+        panel.handle(key("up"))
+        panel.handle(key("right"))
+    assert world.iterations == lp.MAX_ITERATIONS and world.substeps == lp.MAX_SUBSTEPS
+
+
+def test_changing_a_setting_back_by_hand_drops_the_override():
+    world = small_world()
+    panel = lp.LabPanel()
+    panel.advance(world, 0)
+    panel.handle(key("k"))
+    assert panel.overrides == {"contact_rule": "clip"}
+    panel.handle(key("k"))
+    assert panel.overrides == {} and world.contact_rule == "corners"
+
+
+def test_a_new_world_after_reset_gets_the_settings_before_its_first_step():
+    panel = lp.LabPanel()
+    old = small_world()
+    panel.advance(old, 0)
+    panel.handle(key("s"))
+    panel.handle(key("up"))
+    new = small_world()  # what R does in a lab: a fresh World with the lab's own settings
+    assert new.solver == "lesson" and new.iterations == 6
+    panel.advance(new, 1 / 60)
+    assert new.solver == "accumulated" and new.iterations == 7
+    panel.handle(key("0"))
+    assert new.solver == "lesson" and new.iterations == 6
+
+
+def test_keys_other_than_the_panels_are_left_to_the_lab():
+    panel = lp.LabPanel()
+    panel.advance(small_world(), 0)
+    for name in ("d", "r", "a"):
+        assert panel.handle(key(name)) is False
+    assert panel.handle(pygame.event.Event(pygame.MOUSEBUTTONDOWN, pos=(10, 10), button=1)) is False
+    assert panel.overrides == {}
+
+
+@pytest.mark.parametrize("name, value", [("iterations", 0), ("iterations", True), ("substeps", 1.5),
+                                         ("solver", "fast"), ("contact_rule", "edges"), ("warm_starting", 1)])
+def test_a_value_the_panel_never_offers_is_a_one_line_error(name, value):
+    with pytest.raises(ValueError) as error:
+        lp.write_setting(small_world(), name, value)
+    assert repr(value) in str(error.value) and name in str(error.value) and "\n" not in str(error.value)
+
+
+def test_unknown_setting_is_named():
+    with pytest.raises(ValueError, match="'gravity'"):
+        lp.write_setting(small_world(), "gravity", 0)
+
+
+# ---------------------------------------------------------------- pause and one step
+
+def test_p_holds_the_world_and_o_runs_exactly_one_step():
+    world = small_world()
+    panel = lp.LabPanel()
+    panel.advance(world, 1 / 60)
+    panel.handle(key("p"))
+    held = state(world)
+    assert panel.advance(world, 1 / 60) == 0 and panel.advance(world, 0.25) == 0
+    assert state(world) == held
+    reference = small_world()
+    reference.advance(1 / 60)
+    reference.step()
+    panel.handle(key("o"))
+    assert panel.advance(world, 1 / 60) == 1
+    assert state(world) == state(reference)
+    assert panel.advance(world, 1 / 60) == 0  # still paused: one O, one step
+    panel.handle(key("p"))
+    assert panel.advance(world, 1 / 60) == 2  # running again, 2 steps of 1/120 s per 1/60 s frame
+
+
+def test_o_while_running_pauses_and_steps():
+    world = small_world()
+    panel = lp.LabPanel()
+    panel.advance(world, 1 / 60)
+    panel.handle(key("o"))
+    panel.handle(key("o"))
+    assert panel.paused
+    assert panel.advance(world, 1 / 60) == 2
+
+
+# ---------------------------------------------------------------- the HUD
+
+def hud(panel, world, frames=30):
+    surface = pygame.Surface((900, 600))
+    for _ in range(frames):
+        panel.advance(world, 1 / 60)
+        surface.fill((24, 26, 34))
+        panel.draw(surface, world)
+    return surface
+
+
+def text_of(panel):
+    return " | ".join(words for _, words in panel.placed)
+
+
+def test_hud_text_stays_inside_the_panel_and_no_two_lines_overlap():
+    panel = lp.LabPanel()
+    world = small_world()
+    for keys in ((), ("s", "w", "right", "right"), ("s", "up", "k", "c", "p")):
+        for name in keys:
+            panel.handle(key(name))
+        surface = hud(panel, world)
+        panel.history.extend([1234.5] * 10)  # a slow machine: the graph's top label gets long
+        panel.dirty = True
+        panel.draw(surface, world)
+        assert surface.get_rect().contains(panel.box)
+        assert panel.box.top >= 30, "the lab's own HUD line (y 10-26) stays clear"
+        rects = [rect for rect, _ in panel.placed]
+        for rect, words in panel.placed:
+            assert panel.box.contains(rect), f"{words!r} runs out of the panel"
+        for i, a in enumerate(rects):
+            for b in rects[i + 1:]:
+                assert not a.colliderect(b), f"{panel.placed[i][1]!r} overlaps another line"
+
+
+def test_hud_shows_the_settings_measurements_and_who_solves():
+    panel = lp.LabPanel()
+    world = small_world()
+    hud(panel, world)
+    text = text_of(panel)
+    for words in ("[S]", "[Up/Down]", "[Left/Right]", "[W]", "[C]", "[K]", "[P] pause", "[O] one step", "[H] hide",
+                  "solver | lesson", "iterations | 6", "contact rule | corners", "ms/frame", "contacts",
+                  "deepest", "kinetic energy", "60 fps budget"):
+        assert words in text, words
+    assert "physics2d's sat() and resolve()" in text  # this World has no hooks of a lab
+    panel.handle(key("s"))
+    hud(panel, world, 1)
+    assert "accumulated (reference)" in text_of(panel) and "NOT used" not in text_of(panel)
+    lab_world = small_world(resolve=lambda a, b, normal, point: None)
+    panel = lp.LabPanel()
+    hud(panel, lab_world, 1)
+    assert "runs your sat() and resolve()" in text_of(panel)
+    panel.handle(key("s"))
+    hud(panel, lab_world, 1)
+    assert "your sat() and resolve() are NOT used" in text_of(panel)
+
+
+def test_hud_says_when_this_world_has_no_substeps_yet():
+    world = small_world()
+    lacks = not hasattr(world, "substeps")
+    panel = lp.LabPanel()
+    hud(panel, world, 1)
+    assert ("not in this World yet" in text_of(panel)) == lacks
+
+
+def test_measurements_are_the_worlds():
+    panel = lp.LabPanel()
+    world = small_world()
+    for _ in range(40):
+        panel.advance(world, 1 / 60)
+    m = panel.measure(world)
+    assert m["contacts"] == len(world.contacts) > 0
+    assert m["deepest"] == max(c.depth for c in world.contacts)
+    assert m["energy"] == pytest.approx(sum(b.kinetic_energy() for b in world.bodies))
+    assert m["ms"] > 0 and m["steps"] == 2
+
+
+def test_graph_shows_the_history_and_the_budget_line():
+    panel = lp.LabPanel()
+    surface = hud(panel, small_world(), 90)
+    graph = [(x, y) for x in range(panel.box.left, panel.box.right) for y in range(panel.box.top, panel.box.bottom)
+             if surface.get_at((x, y))[:3] == lp.GRAPH_LINE]
+    assert len(graph) > 100
+    assert sum(1 for x in range(panel.box.left, panel.box.right) for y in range(panel.box.top, panel.box.bottom)
+               if surface.get_at((x, y))[:3] == lp.BUDGET_LINE) > 100
+
+
+def test_h_hides_the_panel_but_leaves_a_hint():
+    panel = lp.LabPanel()
+    world = small_world()
+    panel.handle(key("h"))
+    hud(panel, world, 1)
+    assert [words for _, words in panel.placed] == ["[H] show the solver panel"]
+
+
+# ---------------------------------------------------------------- the lab under the runtime
+
+NO_PANEL = [  # the solution as it was before the panel: every `# solver panel` line undone
+    ("from lesson11.panel import LabPanel  # solver panel\n", ""),
+    ("    panel = LabPanel()  # solver panel\n", ""),
+    ("            panel.handle(event)  # solver panel: its keys\n", ""),
+    ("        simulated += panel.advance(world, dt) * world.step_seconds  # solver panel: fixed steps, long frames "
+     "clamped\n", "        simulated += world.advance(dt) * world.step_seconds  # fixed steps; long frames clamped\n"),
+    ("        panel.draw(screen, world)  # solver panel: settings, ms, graph\n", ""),
+]
+
+
+def test_solution_marks_every_panel_line():
+    with open(SOLUTION, encoding="utf-8") as handle:
+        source = handle.read()
+    body = source.split('"""', 2)[2]  # after the module docstring
+    code = [line for line in body.splitlines() if "panel" in line.split("#")[0]]
+    assert len(code) == len(NO_PANEL) and all("# solver panel" in line for line in code), code
+    assert "panel" not in apply_edits(source, NO_PANEL, "no-panel copy").split('"""', 2)[2]
+
+
+def test_checker_run_records_the_same_with_and_without_the_panel(tmp_path):
+    """Same scene, script (clicks, D, R) and seed: the runtime's record is identical, frame for frame."""
+    with open(SOLUTION, encoding="utf-8") as handle:
+        plain = tmp_path / "tumbling_crates_no_panel.py"
+        plain.write_text(apply_edits(handle.read(), NO_PANEL, "no-panel copy"), encoding="utf-8")
+    script = clicks([(600, 100), (300, 100), (700, 150)], 10, 15) + [
+        {"frame": 50, "type": "key", "key": "d"}, {"frame": 80, "type": "key", "key": "r"},
+        {"frame": 95, "type": "click", "pos": [450, 200]}]
+    settings = {"frames": 120, "fps": 60, "seed": 11, "script": script}
+    runs = []
+    for name, path in (("panel", SOLUTION), ("plain", str(plain))):
+        work = tmp_path / name
+        work.mkdir()
+        runs.append(run_lab(path, settings, work))
+    with_panel, without = runs
+    assert with_panel.record == without.record
+    assert with_panel.line == without.line and with_panel.line is not None
+    assert len(with_panel.frames) == 120 and any(f["contacts"] for f in with_panel.frames)
+
+
+def test_scripted_p_and_o_reach_the_panel_through_the_runtime(tmp_path):
+    """P at frame 20 holds every body from then on; O at frame 30 moves them by exactly one step."""
+    script = [{"frame": 20, "type": "key", "key": "p"}, {"frame": 30, "type": "key", "key": "o"}]
+    run = run_lab(SOLUTION, {"frames": 40, "fps": 60, "seed": 11, "script": script}, tmp_path)
+    bodies = [frame["bodies"] for frame in run.frames]  # bodies[k] is frame k + 1
+    assert bodies[17] != bodies[18]                      # frame 19: still falling
+    assert all(b == bodies[18] for b in bodies[19:29])  # P in frame 20: frames 20-29 stand still
+    assert bodies[29] != bodies[28]                      # O in frame 30: one step
+    assert all(b == bodies[29] for b in bodies[30:])
+    assert run.line[0] == 0.3  # 19 frames of 2 steps and 1 step: 39 steps of 1/120 s = 0.325 s
