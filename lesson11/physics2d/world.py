@@ -66,22 +66,18 @@ def _check_percent(value):
     return value
 
 
-def _check_contact_rule(value):
-    if value not in CONTACT_RULES:
-        raise ValueError(f"contact_rule must be 'corners' or 'clip', got {value!r}")
-    return value
+def _one_of(choices, sentence):
+    """A validator accepting only the values in `choices`; `sentence` words the error."""
+    def check(value):
+        if value not in choices:
+            raise ValueError(sentence.format(value=value))
+        return value
+    return check
 
 
-def _check_solver(value):
-    if value not in SOLVERS:
-        raise ValueError(f"solver must be one of {list(SOLVERS)}, got {value!r}")
-    return value
-
-
-def _check_order(value):
-    if value not in ORDERS:
-        raise ValueError(f"order must be one of {list(ORDERS)}, got {value!r}")
-    return value
+_check_contact_rule = _one_of(CONTACT_RULES, "contact_rule must be 'corners' or 'clip', got {value!r}")
+_check_solver = _one_of(SOLVERS, f"solver must be one of {list(SOLVERS)}, got {{value!r}}")
+_check_order = _one_of(ORDERS, f"order must be one of {list(ORDERS)}, got {{value!r}}")
 
 
 def _check_effects(value):
