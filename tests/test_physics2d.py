@@ -322,3 +322,25 @@ def test_accumulated_solver_rests_without_creep_and_respects_effects():
     assert all(c.friction_impulse == 0 for arb in frictionless.arbiters.values() for c in arb.points)
     with pytest.raises(ValueError, match="solver must be"):
         World(solver="magic")
+
+
+def test_world_settings_are_checked_when_set_later_and_switching_is_safe():
+    """Settings set after World(...) go through the same validators; switching solver or rule drops kept contacts."""
+    world = World()
+    for name, bad in (("iterations", 0), ("substeps", 0), ("step_seconds", 0), ("slop", -1), ("percent", 2),
+                      ("resting_speed", -1), ("max_frame", 0), ("contact_rule", "magic"), ("solver", "magic"),
+                      ("effects", "gravity"), ("warm_starting", 1), ("gravity", (math.nan, 0))):
+        with pytest.raises(ValueError):
+            setattr(world, name, bad)
+    floor = Body(box_points(400, 20), (0, 10), 0)
+    crate = Body(box_points(20, 20), (0, -10), 1)
+    world = World([floor, crate], solver="accumulated", substeps=2)
+    world.step()
+    assert world.arbiters
+    world.contact_rule = "clip"
+    assert not world.arbiters
+    world.step()
+    world.solver = "lesson"
+    assert not world.arbiters
+    world.step()
+    assert world.step_seconds == pytest.approx(1 / 120)

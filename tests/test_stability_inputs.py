@@ -106,8 +106,8 @@ def test_shape_helpers_refuse_nan_infinity_and_non_positive_sizes(make, words):
 @pytest.mark.parametrize("settings, words", [
     ({"gravity": (NAN, 0)}, ("gravity", "finite")),
     ({"gravity": (0, INF)}, ("gravity", "finite")),
-    ({"step": NAN}, ("step", "finite")),
-    ({"step": 0}, ("step", "> 0")),
+    ({"step_seconds": NAN}, ("step_seconds", "finite")),
+    ({"step_seconds": 0}, ("step_seconds", "> 0")),
     ({"iterations": 0}, ("iterations",)),
     ({"slop": NAN}, ("slop", "finite")),
     ({"slop": -0.5}, ("slop", ">= 0")),

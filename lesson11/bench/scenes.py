@@ -89,7 +89,7 @@ def bullet_world(start_x, speed, ccd, step):
     wall = Body(box_points(WALL_WIDTH, WALL_HEIGHT), (WALL_X, 300), 0)
     bullet = Body(Circle(BULLET_RADIUS), (start_x, 300), BULLET_MASS, vel=(speed, 0), bullet=ccd)
     effects = LESSON_EFFECTS | {"ccd"} if ccd else LESSON_EFFECTS
-    return World([wall, bullet], step=step, effects=effects), bullet
+    return World([wall, bullet], step_seconds=step, effects=effects), bullet
 
 
 def tunnelled(bullet):

@@ -1,29 +1,60 @@
-"""Accumulated impulses with warm starting: the solver production engines use.
+"""The reference solver: accumulated impulses, warm starting, soft contacts and sub-steps.
 
-The lesson's solver (world.solve_contacts + response.resolve) starts every
-pass from scratch: each pass computes a fresh impulse, clamps friction by that
-pass's normal impulse, and forgets it all at the end of the step. That is easy
-to read, and good enough for a few crates, but a tall stack or a heavy box on a
-light one sinks: the support has to be rebuilt from nothing every step.
+Method: sequential impulses with accumulated, clamped impulses and warm
+starting, as Box2D-Lite's Arbiter (Erin Catto, GDC 2006), run as the "soft
+step" of Box2D v3 (Catto, Solver2D, 2024): the step is split into sub-steps,
+each contact is a stiff damped spring (a soft constraint) while it pushes
+overlap out, and a relax pass then removes the push-out speed again, so
+correcting the overlap adds no energy. Our own code after the published ideas.
 
-This module keeps each contact's total impulse across passes and across steps,
-as Box2D-Lite's Arbiter does (Erin Catto, GDC 2006):
-  * the total normal impulse Pn is clamped, Pn >= 0 (a contact only pushes);
-  * the total friction impulse Pt is clamped, |Pt| <= μ Pn (Coulomb on the total);
-  * a contact found again next step starts from last step's Pn, Pt (warm start);
-  * overlap is removed by a velocity bias, bias = β/dt · max(depth - slop, 0),
-    instead of moving positions directly;
-  * pairs less than SPECULATIVE_MARGIN apart are contacts too (speculative
-    contacts): a gap g lets the points close at up to g/dt, bias = -g/dt, so a
-    box resting on another is held from the first step instead of falling in.
-The World uses it when a scene declares solver="accumulated".
+The lesson's solver (world.py with response.resolve) starts every pass from
+scratch: easy to read, good enough for a few crates, but a tall stack or a
+heavy box on a light one sinks: the support is rebuilt from nothing each step.
+
+Phases of one fixed step dt, with h = dt / substeps (world.py calls them in order):
+  1. collide   once per step: manifolds with speculative contacts (pairs less
+               than a margin apart count, with a negative depth = the gap);
+               points matched with last step's keep their impulses (update)
+  2. prepare   anchors ra, rb, effective masses, the approach speed for restitution
+  then, for each sub-step:
+  3. v += g h, then warm start: apply the kept impulses P = Pn n + Pt t again
+  4. solve     `iterations` passes with the soft push-out (use_bias=True):
+                 s  = current separation (px), followed as the bodies move
+                 s > 0 (a gap): bias = s / h, the contact may close the gap, no more
+                 s <= 0:        bias = max(β s, -MAX_PUSH), soft: mass and impulse scaled
+                 Pn <- max(Pn - mass_n·m_scale·(vn + bias) - i_scale·Pn, 0)
+                 Pt <- clamp(Pt - mass_t·vt, -μ Pn, μ Pn)        (Coulomb on the total)
+  5. x += v h, angle += ω h
+  6. relax     one pass without the push-out (use_bias=False), taking its speed away again
+  after the sub-steps:
+  7. restitution: contacts that approached faster than resting_speed and
+     pushed get vn = -e·vn(approach), with the total still clamped Pn >= 0
 """
+import math
+
 from .response import apply_impulse, effective_mass_inverse, relative_velocity
 from .vectors import Vector2
 
-BIAS_FACTOR = 0.2     # β: share of the overlap turned into separating speed per step
-MATCH_DISTANCE = 2.0  # px: a contact within this distance of last step's (on body A) is the same contact
-SPECULATIVE_MARGIN = 1.0  # px: pairs closer than this are contacts already (negative depth = gap)
+MATCH_DISTANCE = 2.0      # px: a contact within this distance of last step's (on body A) is the same contact
+SPECULATIVE_MARGIN = 1.0  # px: pairs closer than this (plus how far they can move in a step) are contacts
+CONTACT_HERTZ = 120.0     # Hz: stiffness of the soft contact, capped at a quarter of the sub-step rate
+DAMPING_RATIO = 10.0      # ζ of the soft contact (heavily over-damped: no bounce from the push-out)
+MAX_PUSH = 300.0          # px/s: the push-out never separates faster than this
+RESTITUTION_PASSES = 4    # passes of the restitution phase (two bouncing corners need a few to agree)
+
+
+def soft_constants(hertz, damping_ratio, h):
+    """A soft contact for a sub-step h (s): (bias_rate 1/s, mass_scale, impulse_scale).
+
+        ω = 2π·hertz,  a1 = 2ζ + h ω,  a2 = h ω a1,  a3 = 1 / (1 + a2)
+        bias_rate = ω / a1,  mass_scale = a2 a3,  impulse_scale = a3
+    (a spring-damper solved implicitly: stable for any stiffness and step).
+    """
+    omega = 2 * math.pi * hertz
+    a1 = 2 * damping_ratio + h * omega
+    a2 = h * omega * a1
+    a3 = 1 / (1 + a2)
+    return omega / a1, a2 * a3, a3
 
 
 class ContactPoint:
@@ -31,7 +62,7 @@ class ContactPoint:
 
     def __init__(self, point, depth, local_a):
         self.point = point        # world point (px)
-        self.depth = depth        # how far this point is inside the other body (px)
+        self.depth = depth        # how far this point is inside the other body (px; negative: a gap)
         self.local_a = local_a    # the point in A's frame, to recognise it next step
         self.normal_impulse = 0.0
         self.friction_impulse = 0.0
@@ -45,11 +76,11 @@ class Arbiter:
         self.points = []
         self.normal = Vector2(0, 1)
 
-    def update(self, normal, points, depths):
-        """Take this step's contact points (and each one's depth, px), carrying over the impulses of points that persist."""
+    def update(self, manifold):
+        """Take this step's manifold, carrying over the impulses of points that persist (within MATCH_DISTANCE px)."""
         old = self.points
         self.points = []
-        for point, depth in zip(points, depths):
+        for point, depth in zip(manifold.points, manifold.depths):
             local_a = (point - self.a.pos).rotate_rad(-self.a.angle)
             contact = ContactPoint(point, depth, local_a)
             match = min(old, key=lambda c: c.local_a.distance_squared_to(local_a), default=None)
@@ -57,57 +88,121 @@ class Arbiter:
                 contact.normal_impulse = match.normal_impulse
                 contact.friction_impulse = match.friction_impulse
             self.points.append(contact)
-        self.normal = normal
+        self.normal = manifold.normal
 
-    def prepare(self, world, dt):
-        """Per step, before any warm start: offsets, effective masses and the bias speed.
+    def prepare(self, world, warm_starting=True):
+        """Once per step: anchors ra = p - xA, rb = p - xB (px), mass_n = 1/k(n), mass_t = 1/k(t), approach speed.
 
-        mass_n = 1 / k(n), mass_t = 1 / k(t) with k from effective_mass_inverse;
-        bias = β/dt · max(depth - slop, 0), or the bounce speed -e·vn when the
-        contact closes faster than resting_speed and that is larger.
+        The solve follows each point's separation as the bodies move:
+        s = -depth + n·(ΔB(rb) - ΔA(ra)), from the bodies' motion since now (separation()).
         """
         a, b, n = self.a, self.b, self.normal
         tangent = Vector2(n.y, -n.x)
         spin = "rotation" in world.effects
+        self.mu = math.sqrt(a.friction * b.friction) if "friction" in world.effects else 0.0
+        self.restitution = min(a.restitution, b.restitution) if "restitution" in world.effects else 0.0
         for c in self.points:
             c.ra, c.rb = (c.point - a.pos, c.point - b.pos) if spin else (Vector2(), Vector2())
+            c.anchors = (c.ra.x, c.ra.y, c.rb.x, c.rb.y)
             c.mass_normal = 1 / effective_mass_inverse(a, b, c.ra, c.rb, n)
             c.mass_tangent = 1 / effective_mass_inverse(a, b, c.ra, c.rb, tangent)
-            c.bias = 0.0
-            if c.depth < 0:
-                c.bias = c.depth / dt  # speculative: may close the gap this step, no further
-            elif "correction" in world.effects:
-                c.bias = BIAS_FACTOR / dt * max(c.depth - world.slop, 0.0)
-            vn = relative_velocity(a, b, c.ra, c.rb).dot(n)
-            if "restitution" in world.effects and vn < -world.resting_speed:
-                c.bias = max(c.bias, -min(a.restitution, b.restitution) * vn)
-            if "friction" not in world.effects:
+            c.approach = relative_velocity(a, b, c.ra, c.rb).dot(n)  # vn before this step (px/s)
+            c.max_normal_impulse = 0.0
+            if not warm_starting:
+                c.normal_impulse = c.friction_impulse = 0.0
+            if self.mu == 0:
                 c.friction_impulse = 0.0
 
+    def separation(self, c, motion):
+        """Current separation (px) of point c along the normal: -depth plus how far the two anchors moved apart.
+
+        motion[id(body)] = (dx, dy, cos Δθ, sin Δθ): how far each body moved and
+        turned since prepare() (World.body_motion, one cos/sin per body per sub-step).
+        The anchor r moved by d + R(Δθ) r - r.
+        """
+        dax, day, ca, sa = motion[id(self.a)]
+        dbx, dby, cb, sb = motion[id(self.b)]
+        rax, ray, rbx, rby = c.anchors
+        mx = (dbx + cb * rbx - sb * rby - rbx) - (dax + ca * rax - sa * ray - rax)
+        my = (dby + sb * rbx + cb * rby - rby) - (day + sa * rax + ca * ray - ray)
+        return mx * self.normal.x + my * self.normal.y - c.depth
+
     def warm_start(self):
-        """Apply last step's accumulated impulses again: P = Pn n + Pt t at each point."""
+        """Apply the accumulated impulses again: P = Pn n + Pt t at each point."""
         n = self.normal
         tangent = Vector2(n.y, -n.x)
         for c in self.points:
             apply_impulse(self.a, self.b, n * c.normal_impulse + tangent * c.friction_impulse, c.ra, c.rb)
 
-    def apply(self, world):
-        """One pass: change each point's total impulses by what its velocities still need, then clamp.
+    def solve(self, h, soft, use_bias, motion):
+        """One pass over the points: normal impulses (soft push-out if use_bias), then Coulomb friction.
 
-        Pn ← max(Pn + mass_n (-vn + bias), 0);  Pt ← clamp(Pt + mass_t (-vt), -μ Pn, μ Pn).
-        Only the change of each total is applied (through apply_impulse).
+        soft = (bias_rate, mass_scale, impulse_scale) from soft_constants;
+        motion as in separation(). Only the change of each clamped total is
+        applied, P = ΔPn n + ΔPt t at the point. Written with plain floats (the
+        same formulas as response.relative_velocity and apply_impulse): this
+        loop is where a tall stack spends its time.
         """
-        a, b, n = self.a, self.b, self.normal
-        tangent = Vector2(n.y, -n.x)
-        mu = (a.friction * b.friction) ** 0.5
+        a, b = self.a, self.b
+        nx, ny = self.normal.x, self.normal.y
+        tx, ty = ny, -nx
+        ima, iia, imb, iib = a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia
+        vax, vay, wa = a.vel.x, a.vel.y, a.omega
+        vbx, vby, wb = b.vel.x, b.vel.y, b.omega
+        bias_rate, soft_mass, soft_impulse = soft
         for c in self.points:
+            rax, ray, rbx, rby = c.anchors
+            s = self.separation(c, motion)
+            if s > 0:
+                bias, mass_scale, impulse_scale = s / h, 1.0, 0.0  # speculative: close the gap, no more
+            elif use_bias:
+                bias, mass_scale, impulse_scale = max(bias_rate * s, -MAX_PUSH), soft_mass, soft_impulse
+            else:
+                bias, mass_scale, impulse_scale = 0.0, 1.0, 0.0
+            # vn = ((vB + ωB × rb) - (vA + ωA × ra))·n, with ω × r = (-ω r.y, ω r.x)
+            vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
+            old = c.normal_impulse
+            change = -c.mass_normal * mass_scale * (vn + bias) - impulse_scale * old
+            c.normal_impulse = max(old + change, 0.0)
+            c.max_normal_impulse = max(c.max_normal_impulse, c.normal_impulse - old)
+            p = c.normal_impulse - old
+            px, py = nx * p, ny * p
+            vax -= px * ima
+            vay -= py * ima
+            wa -= (rax * py - ray * px) * iia
+            vbx += px * imb
+            vby += py * imb
+            wb += (rbx * py - rby * px) * iib
+        if self.mu != 0:
+            for c in self.points:
+                rax, ray, rbx, rby = c.anchors
+                vt = (vbx - wb * rby - vax + wa * ray) * tx + (vby + wb * rbx - vay - wa * rax) * ty
+                old = c.friction_impulse
+                limit = self.mu * c.normal_impulse
+                c.friction_impulse = max(-limit, min(limit, old - c.mass_tangent * vt))
+                p = c.friction_impulse - old
+                px, py = tx * p, ty * p
+                vax -= px * ima
+                vay -= py * ima
+                wa -= (rax * py - ray * px) * iia
+                vbx += px * imb
+                vby += py * imb
+                wb += (rbx * py - rby * px) * iib
+        a.vel.update(vax, vay)
+        a.omega = wa
+        b.vel.update(vbx, vby)
+        b.omega = wb
+
+    def bounce(self, resting_speed):
+        """Restitution, after the sub-steps: a point that approached at vn0 < -resting_speed and pushed
+        gets vn = -e·vn0, by Pn <- max(Pn - mass_n (vn + e·vn0), 0)."""
+        if self.restitution == 0:
+            return
+        a, b, n = self.a, self.b, self.normal
+        for c in self.points:
+            if c.approach >= -resting_speed or c.max_normal_impulse == 0:
+                continue
             vn = relative_velocity(a, b, c.ra, c.rb).dot(n)
             old = c.normal_impulse
-            c.normal_impulse = max(old + c.mass_normal * (-vn + c.bias), 0.0)
+            c.normal_impulse = max(old - c.mass_normal * (vn + self.restitution * c.approach), 0.0)
             apply_impulse(a, b, n * (c.normal_impulse - old), c.ra, c.rb)
-            if "friction" in world.effects:
-                vt = relative_velocity(a, b, c.ra, c.rb).dot(tangent)
-                old = c.friction_impulse
-                limit = mu * c.normal_impulse
-                c.friction_impulse = max(-limit, min(limit, old + c.mass_tangent * -vt))
-                apply_impulse(a, b, tangent * (c.friction_impulse - old), c.ra, c.rb)

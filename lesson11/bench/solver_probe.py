@@ -1,0 +1,261 @@
+"""Solver probe: the same scenes in the lesson solver, the reference solver and pymunk, side by side.
+
+    python -m lesson11.bench.solver_probe          # prints a Markdown table (pymunk rows skipped if missing)
+
+Every engine runs 1/120 s steps with the work of 6 passes per step: the lesson
+solver in the lesson text's order (order="move-first") 6 iterations, the reference
+("accumulated") solver 3 sub-steps of 1 pass plus 1 relax pass, pymunk 6 iterations.
+The lesson solver in its default order (order="solve-first") does more: 4 sub-steps
+of 1 + 6 resolve passes and 1 push-out pass (contacts found twice per sub-step, not per pass). Units px, s; y down, gravity 980 px/s².
+  flat e     a 40 px box dropped flat from 100 px: rebound speed / impact speed, and its spin (rad/s)
+  stack      10 boxes (40 px) for 20 s: largest drift of any box (px)
+  100:1      a 100× heavier box on a light one for 5 s: deepest overlap (px), and whether the heavy one stays on top
+  ramp       a 40 px crate at rest on a 22° slope, μ 0.6, for 3 s: distance moved (px)
+and, against the analytic answer (relative error, %), from rest unless said:
+  fall       a box falling freely for 1 s: y = ½ g t²
+  slide      a box sliding down a 30° slope, μ 0.2, for 1 s: s = ½ g (sin θ - μ cos θ) t²
+  roll       a disc (r 20 px, I = ½ m r²) rolling down a 20° slope, μ 0.6, for 1 s: s = ½ (2/3) g sin θ t²
+  stop       a box sliding at 300 px/s on the floor, μ 0.5, until it stops: d = v0² / (2 μ g)
+  far pile   12 crates (60 × 40 px, rows of 4, 3, 3, 2) settling 2 s at (10⁶, 10⁶) px and at the
+             origin: largest difference of any crate's position relative to the start, / 10⁶ px
+"""
+import math
+
+from lesson11.physics2d import Body, Circle, Vector2, World, box_points
+
+try:
+    import pymunk
+except ImportError:  # the probe still runs our rows
+    pymunk = None
+
+FLOOR = 600.0
+G = 980.0  # px/s²
+FAR = 1e6  # px: the far pile's offset along x and y
+ENGINES = {"lesson move-first": dict(solver="lesson", order="move-first", iterations=6),
+           "lesson solve-first": dict(solver="lesson", order="solve-first", iterations=6),
+           "reference corners": dict(solver="accumulated", contact_rule="corners", substeps=3, iterations=1),
+           "reference clip": dict(solver="accumulated", contact_rule="clip", substeps=3, iterations=1)}
+
+
+class Ours:
+    """A physics2d World with one static floor (or ramp) and boxes; bodies addressed by index.
+
+    The floor is a 2000 × 40 px box whose top face is at y = FLOOR (+ offset), turned
+    by `angle` about its centre; μ between two bodies is √(μA μB), so the floor gets
+    the same friction as the bodies to make the pair's μ that value.
+    """
+
+    def __init__(self, settings, angle=0.0, offset=(0, 0), friction=0.6):
+        self.offset = Vector2(offset)
+        floor = Body(box_points(2000, 40), Vector2(400, FLOOR + 20) + self.offset, 0, angle=angle,
+                     friction=friction)
+        self.world = World([floor], **settings)
+
+    def box(self, size, pos, mass=1.0, e=0.2, angle=0.0, friction=0.6, vel=(0, 0), height=None):
+        shape = box_points(size, size if height is None else height)
+        body = Body(shape, Vector2(pos) + self.offset, mass, angle=angle, restitution=e, friction=friction,
+                    vel=vel)
+        self.world.add(body)
+        return lambda: (Vector2(body.pos) - self.offset, Vector2(body.vel), body.omega)
+
+    def disc(self, radius, pos, mass=1.0, friction=0.6):
+        body = Body(Circle(radius), Vector2(pos) + self.offset, mass, friction=friction)
+        self.world.add(body)
+        return lambda: (Vector2(body.pos) - self.offset, Vector2(body.vel), body.omega)
+
+    def step(self):
+        self.world.step()
+
+
+class Pymunk:
+    """The same scene in pymunk (same units), 6 iterations; pymunk multiplies the two μ, so the floor has μ 1."""
+
+    def __init__(self, angle=0.0, offset=(0, 0)):
+        self.offset = Vector2(offset)
+        self.space = pymunk.Space()
+        self.space.gravity = (0, G)
+        self.space.iterations = 6
+        floor = pymunk.Body(body_type=pymunk.Body.STATIC)
+        floor.position = tuple(Vector2(400, FLOOR + 20) + self.offset)
+        floor.angle = angle
+        shape = pymunk.Poly.create_box(floor, (2000, 40))
+        shape.friction, shape.elasticity = 1.0, 1.0  # pymunk multiplies: μ = μ_box × 1.0, e = e_box × 1.0
+        self.space.add(floor, shape)
+
+    def _add(self, body, shape, pos, e, friction):
+        body.position = tuple(Vector2(pos) + self.offset)
+        shape.friction, shape.elasticity = friction, e
+        self.space.add(body, shape)
+        return lambda: (Vector2(tuple(body.position)) - self.offset, Vector2(tuple(body.velocity)),
+                        body.angular_velocity)
+
+    def box(self, size, pos, mass=1.0, e=0.2, angle=0.0, friction=0.6, vel=(0, 0), height=None):
+        dims = (size, size if height is None else height)
+        body = pymunk.Body(mass, pymunk.moment_for_box(mass, dims))
+        body.angle, body.velocity = angle, tuple(vel)
+        return self._add(body, pymunk.Poly.create_box(body, dims), pos, e, friction)
+
+    def disc(self, radius, pos, mass=1.0, friction=0.6):
+        body = pymunk.Body(mass, pymunk.moment_for_circle(mass, 0, radius))
+        return self._add(body, pymunk.Circle(body, radius), pos, 0.2, friction)
+
+    def step(self):
+        self.space.step(1 / 120)
+
+
+def make(engine, angle=0.0, offset=(0, 0), friction=0.6):
+    """The scene for one engine; `friction` is the floor's μ in ours (pymunk's floor has μ 1, see Pymunk)."""
+    if engine == "pymunk":
+        return Pymunk(angle, offset)
+    return Ours(ENGINES[engine], angle, offset, friction)
+
+
+def flat_bounce(engine, e):
+    """Rebound speed / impact speed of a flat 40 px box dropped from 100 px, and the spin as it leaves (rad/s)."""
+    scene = make(engine)
+    if engine != "pymunk":
+        scene.world.bodies[0].restitution = 1.0
+    state = scene.box(40, (400, FLOOR - 120), e=e)
+    impact = None
+    for _ in range(240):
+        before = state()[1].y
+        scene.step()
+        pos, vel, omega = state()
+        if before > 0 and vel.y <= 0:
+            impact = before
+            return -vel.y / impact, abs(omega)
+    return float("nan"), float("nan")
+
+
+def stack(engine, seconds=20):
+    scene = make(engine)
+    states = [scene.box(40, (400, FLOOR - 20 - 40 * k)) for k in range(10)]
+    start = [s()[0] for s in states]
+    worst = 0.0
+    for _ in range(int(seconds * 120)):
+        scene.step()
+        worst = max(worst, max((s()[0] - p).length() for s, p in zip(states, start)))
+    return worst
+
+
+def heavy_on_light(engine, seconds=5):
+    scene = make(engine)
+    light = scene.box(40, (400, FLOOR - 20), 1.0)
+    heavy = scene.box(40, (400, FLOOR - 60), 100.0)
+    worst = 0.0
+    for _ in range(int(seconds * 120)):
+        scene.step()
+        worst = max(worst, 40 - (light()[0].y - heavy()[0].y))
+    on_top = abs(heavy()[0].x - light()[0].x) < 20 and heavy()[0].y < light()[0].y
+    return worst, on_top
+
+
+def ramp_rest(engine, seconds=3):
+    angle = math.radians(22)
+    scene = make(engine, angle)
+    up = Vector2(0, -1).rotate_rad(angle)
+    centre = Vector2(400, FLOOR + 20) + up * 40.0
+    state = scene.box(40, centre, angle=angle)
+    start = state()[0]
+    for _ in range(int(seconds * 120)):
+        scene.step()
+    return (state()[0] - start).length()
+
+
+def on_slope(degrees, lift):
+    """(angle rad, the point `lift` px above the slope's top face over the floor's centre, unit vector down the slope)."""
+    angle = math.radians(degrees)
+    up = Vector2(0, -1).rotate_rad(angle)
+    return angle, Vector2(400, FLOOR + 20) + up * (20 + lift), Vector2(1, 0).rotate_rad(angle)
+
+
+def free_fall(engine, seconds=1.0):
+    """Relative error of the distance fallen from rest in `seconds` against ½ g t² (far above the floor)."""
+    scene = make(engine)
+    state = scene.box(40, (400, FLOOR - 2000))
+    start = state()[0].y
+    for _ in range(round(seconds * 120)):
+        scene.step()
+    exact = 0.5 * G * seconds ** 2
+    return (state()[0].y - start - exact) / exact
+
+
+def slide(engine, degrees=30.0, mu=0.2, seconds=1.0):
+    """Relative error of a box's slide from rest down a slope against ½ g (sin θ - μ cos θ) t²."""
+    angle, centre, down = on_slope(degrees, 20)
+    scene = make(engine, angle, friction=mu)
+    state = scene.box(40, centre, angle=angle, friction=mu)
+    start = state()[0]
+    for _ in range(round(seconds * 120)):
+        scene.step()
+    exact = 0.5 * G * (math.sin(angle) - mu * math.cos(angle)) * seconds ** 2
+    return ((state()[0] - start).dot(down) - exact) / exact
+
+
+def disc_roll(engine, degrees=20.0, seconds=1.0, radius=20.0):
+    """Relative error of a disc rolling from rest down a slope (μ 0.6) against ½ (2/3) g sin θ t²."""
+    angle, centre, down = on_slope(degrees, radius)
+    scene = make(engine, angle)
+    state = scene.disc(radius, centre)
+    start = state()[0]
+    for _ in range(round(seconds * 120)):
+        scene.step()
+    exact = 0.5 * (2 / 3) * G * math.sin(angle) * seconds ** 2
+    return ((state()[0] - start).dot(down) - exact) / exact
+
+
+def stopping(engine, speed=300.0, mu=0.5):
+    """Relative error of a box's stopping distance on the floor against v0² / (2 μ g)."""
+    scene = make(engine, friction=mu)
+    state = scene.box(40, (0, FLOOR - 20), friction=mu, vel=(speed, 0))
+    start = state()[0].x
+    for _ in range(round(2 * speed / (mu * G) * 120)):  # twice the time it needs to stop
+        scene.step()
+    exact = speed ** 2 / (2 * mu * G)
+    return (state()[0].x - start - exact) / exact
+
+
+def brick_pile(scene):
+    """12 crates of 60 × 40 px laid like bricks (rows of 4, 3, 3, 2, 2 px gaps) on the floor; their states."""
+    states = []
+    y = FLOOR - 22
+    for count, shift in ((4, 0.0), (3, 31.0), (3, 31.0), (2, 62.0)):
+        states += [scene.box(60, (300 + shift + 62 * k, y), mass=2.4, height=40) for k in range(count)]
+        y -= 42
+    return states
+
+
+def far_pile(engine, seconds=2.0):
+    """The brick pile settled at the origin and at (FAR, FAR) px: largest position difference / FAR."""
+    ends = []
+    for offset in ((0, 0), (FAR, FAR)):
+        scene = make(engine, offset=offset)
+        states = brick_pile(scene)
+        for _ in range(round(seconds * 120)):
+            scene.step()
+        ends.append([state()[0] for state in states])
+    return max((p - q).length() for p, q in zip(*ends)) / FAR
+
+
+def main():
+    engines = list(ENGINES) + (["pymunk"] if pymunk else [])
+    print("| engine | flat e=0.5 rebound (spin) | flat e=0.9 rebound (spin) | 10-stack drift 20 s | 100:1 overlap 5 s (on top) | ramp rest 3 s |")
+    print("|---|---|---|---|---|---|")
+    for engine in engines:
+        b5, b9 = flat_bounce(engine, 0.5), flat_bounce(engine, 0.9)
+        worst, on_top = heavy_on_light(engine)
+        print(f"| {engine} | {b5[0]:.3f} ({b5[1]:.2f}) | {b9[0]:.3f} ({b9[1]:.2f}) | {stack(engine):.2f} px | "
+              f"{worst:.2f} px ({'yes' if on_top else 'no'}) | {ramp_rest(engine):.2f} px |", flush=True)
+    print()
+    print("| engine | fall 1 s | slide 30° μ 0.2 | disc roll 20° | stop 300 px/s μ 0.5 | far pile |")
+    print("|---|---|---|---|---|---|")
+    for engine in engines:
+        print(f"| {engine} | {100 * free_fall(engine):+.2f} % | {100 * slide(engine):+.2f} % | "
+              f"{100 * disc_roll(engine):+.2f} % | {100 * stopping(engine):+.2f} % | {far_pile(engine):.1e} |",
+              flush=True)
+    if not pymunk:
+        print("(pymunk is not installed: its rows are skipped)")
+
+
+if __name__ == "__main__":
+    main()
