@@ -19,7 +19,6 @@ import faulthandler
 import importlib
 import io
 import json
-import math
 import os
 import sys
 import signal
