@@ -60,20 +60,21 @@ def test_without_keys_the_panel_sets_nothing_and_steps_as_world_advance():
 
 def test_each_key_changes_its_world_setting_and_0_restores_the_worlds_own():
     world = small_world()
+    own_substeps = world.substeps  # the lesson solver's default order, solve-first: LESSON_SUBSTEPS = 4
     panel = lp.LabPanel()
     panel.advance(world, 0)
     for name in ("s", "up", "up", "right", "w", "c", "k"):
         assert panel.handle(key(name)) is True
     assert world.solver == "accumulated"
     assert world.iterations == 8
-    assert world.substeps == 2
+    assert world.substeps == own_substeps + 1  # the panel steps from the world's own value
     assert world.warm_starting is False
     assert "correction" not in world.effects and "friction" in world.effects
     assert world.contact_rule == "clip"
     assert set(panel.overrides) == set(lp.SETTING_NAMES)
     panel.handle(key("0"))
     assert (world.solver, world.iterations, world.substeps, world.warm_starting, world.contact_rule) == \
-        ("lesson", 6, 1, True, "corners")
+        ("lesson", 6, own_substeps, True, "corners")
     assert "correction" in world.effects
     assert panel.overrides == {}
 

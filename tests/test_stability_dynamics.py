@@ -254,8 +254,8 @@ def test_pile_far_from_the_origin_moves_as_the_pile_at_the_origin():
 
 # ---------------------------------------------------------------- the lesson solver in Box2D-Lite's order
 # World(order="solve-first"): contacts once per sub-step, the impact pass in the middle of the
-# gravity kick, resolve passes, move, push-out (World.lesson_solve_first). Not yet the default
-# (the lab's 12-crate pile keeps a crate at 5.4 px/s against a 5 px/s target; see lesson11/README.md).
+# gravity kick, resolve passes, move, push-out (World.lesson_solve_first), 4 sub-steps of 1 push-out
+# pass. The default order since issue 10 (lesson11/bench/section1_probe.py prints every row of §1).
 
 def bounce_figures(restitution, order, height=200.0):
     """A 10 px disc dropped `height` px on the floor: (energy at each apex / at the start, rebound speed ratios)."""
@@ -279,13 +279,13 @@ def bounce_figures(restitution, order, height=200.0):
 def test_solve_first_e1_disc_keeps_its_energy_at_every_bounce():
     apexes, _ = bounce_figures(1.0, "solve-first")
     assert len(apexes) >= 3
-    # measured 1.0000 at all four apexes (move-first: 0.992, 0.967, 0.942, 0.916: -2.5 % a bounce); bound 1 %
+    # measured 1.0000 at all four apexes, 2 and 4 sub-steps (move-first: 0.992, 0.967, 0.942, 0.916: -2.5 % a bounce); bound 1 %
     assert all(abs(ratio - 1) <= 0.01 for ratio in apexes), apexes
 
 
 def test_solve_first_e05_disc_rebounds_at_half_its_impact_speed():
     _, rebounds = bounce_figures(0.5, "solve-first")
-    # measured 0.502 from 200 px (then 0.503, 0.507 at 313 and 157 px/s; move-first 0.507); bound ±0.02
+    # measured 0.504 from 200 px at 4 sub-steps (0.502 at 2; move-first 0.507); bound ±0.02
     assert abs(rebounds[0] - 0.5) <= 0.02, rebounds
 
 
@@ -304,5 +304,5 @@ def test_solve_first_crates_rest_on_the_lab_ramp():
         world.step()
     slope = Vector2(math.cos(RAMP_ANGLE), math.sin(RAMP_ANGLE))
     slid = [(c.pos - p).dot(slope) for c, p in zip(crates, start)]
-    # measured 0.37, 0.60, 0.16 px, the same with the solution's resolve (move-first: 10.05, 10.41, 9.26 px); bound 1 px
+    # measured 0.22, 0.34, 0.12 px at 4 sub-steps (2 sub-steps: 0.37, 0.60, 0.16; move-first: 10.05, 10.41, 9.26 px); bound 1 px
     assert max(abs(s) for s in slid) <= 1.0, slid

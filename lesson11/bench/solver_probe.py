@@ -3,10 +3,10 @@
     python -m lesson11.bench.solver_probe          # prints a Markdown table (pymunk rows skipped if missing)
 
 Every engine runs 1/120 s steps with the work of 6 passes per step: the lesson
-solver 6 iterations, the reference ("accumulated") solver 3 sub-steps of
-1 pass plus 1 relax pass, pymunk 6 iterations. The lesson solver in the
-solve-first order (World(order="solve-first")) does more: 2 sub-steps of
-1 + 6 resolve passes (its contacts are found once per sub-step, not per pass). Units px, s; y down, gravity 980 px/s².
+solver in the lesson text's order (order="move-first") 6 iterations, the reference
+("accumulated") solver 3 sub-steps of 1 pass plus 1 relax pass, pymunk 6 iterations.
+The lesson solver in its default order (order="solve-first") does more: 4 sub-steps
+of 1 + 6 resolve passes and 1 push-out pass (contacts found twice per sub-step, not per pass). Units px, s; y down, gravity 980 px/s².
   flat e     a 40 px box dropped flat from 100 px: rebound speed / impact speed, and its spin (rad/s)
   stack      10 boxes (40 px) for 20 s: largest drift of any box (px)
   100:1      a 100× heavier box on a light one for 5 s: deepest overlap (px), and whether the heavy one stays on top
@@ -31,7 +31,7 @@ except ImportError:  # the probe still runs our rows
 FLOOR = 600.0
 G = 980.0  # px/s²
 FAR = 1e6  # px: the far pile's offset along x and y
-ENGINES = {"lesson": dict(solver="lesson", iterations=6),
+ENGINES = {"lesson move-first": dict(solver="lesson", order="move-first", iterations=6),
            "lesson solve-first": dict(solver="lesson", order="solve-first", iterations=6),
            "reference corners": dict(solver="accumulated", contact_rule="corners", substeps=3, iterations=1),
            "reference clip": dict(solver="accumulated", contact_rule="clip", substeps=3, iterations=1)}

@@ -22,8 +22,8 @@ STEP = 1 / 120             # s, the course's fixed physics step
 EFFECTS = ("gravity", "rotation", "friction", "restitution", "correction", "ccd")
 SOLVERS = ("lesson", "accumulated")
 ORDERS = ("move-first", "solve-first")
-LESSON_SUBSTEPS = 2        # the lesson solver's sub-steps in the solve-first order (see World.lesson_solve_first)
-LESSON_PUSH_PASSES = 3     # push-out passes per sub-step in the solve-first order, contacts measured each time
+LESSON_SUBSTEPS = 4        # the lesson solver's sub-steps in the solve-first order (see World.lesson_solve_first)
+LESSON_PUSH_PASSES = 1     # push-out passes per sub-step in the solve-first order (4 per fixed step)
 CONTACT_RULES = ("corners", "clip")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
 
@@ -118,7 +118,7 @@ class World:
       step_seconds   STEP = 1/120 s, the fixed physics step (step() is the action that runs one)
       iterations     6 solver passes over the contacts per (sub-)step, int >= 1
       substeps       each fixed step is split into this many equal sub-steps, int >= 1;
-                     None (default): LESSON_SUBSTEPS = 2 for the lesson solver's solve-first order, else 1
+                     None (default): LESSON_SUBSTEPS = 4 for the lesson solver's solve-first order, else 1
       slop           0.5 px of overlap tolerated by the push-out
       percent        0.4, share of the remaining overlap pushed out per push-out pass
       resting_speed  30 px/s; slower impacts do not bounce
@@ -126,10 +126,10 @@ class World:
       contact_rule   "corners" (the lesson's corners-inside rule) or "clip" (edge clipping)
       effects        which effects run, a subset of EFFECTS; LESSON_EFFECTS by default
                      (the push-out is the "correction" effect)
-      order          the lesson solver's order: "move-first" (default: the lesson text's
-                     step_world) or "solve-first" (Box2D-Lite's: contacts once, resolve passes,
-                     move, push-out; better on every probe row, but the lab's pile keeps a
-                     crate at 5.4 px/s against the 5 px/s target, so not yet the default)
+      order          the lesson solver's order: "solve-first" (default; Box2D-Lite's: contacts
+                     once per sub-step, resolve passes, move, one push-out pass) or "move-first"
+                     (the lesson text's step_world: gravity, move, then `iterations` passes of
+                     contacts, resolve and push-out; a crate on the 22° ramp creeps ~3 px/s)
       solver         "lesson" (fresh impulses every pass by resolve, push-out by separate) or
                      "accumulated" (arbiter.py: impulses kept across passes and steps,
                      soft contacts, sub-steps; for tall stacks and large mass ratios)
@@ -150,7 +150,7 @@ class World:
     substeps = property(lambda w: w._substeps or (LESSON_SUBSTEPS if w.solver == "lesson" and w.order == "solve-first"
                                                   else 1),
                         lambda w, v: setattr(w, "_substeps", None if v is None else _whole_number("substeps")(v)),
-                        doc="Sub-steps per fixed step, checked when set; None: 2 for the lesson solver's "
+                        doc="Sub-steps per fixed step, checked when set; None: 4 for the lesson solver's "
                             "solve-first order, else 1.")
     slop = _setting("slop", _at_least_zero("slop", "px"))
     percent = _setting("percent", _check_percent)
@@ -165,7 +165,7 @@ class World:
     def __init__(self, bodies=(), *, gravity=GRAVITY, step_seconds=STEP, iterations=6, substeps=None,
                  slop=response.SLOP, percent=response.PERCENT, resting_speed=response.RESTING_SPEED,
                  max_frame=0.25, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
-                 warm_starting=True, order="move-first", sat=None, resolve=None, separate=None):
+                 warm_starting=True, order="solve-first", sat=None, resolve=None, separate=None):
         self.arbiters = {}
         self.gravity = gravity
         self.step_seconds = step_seconds
@@ -233,10 +233,10 @@ class World:
     def step(self, dt=None):
         """Advance every body by one step of dt seconds (default: step_seconds), in `substeps` sub-steps h = dt/substeps.
 
-        The lesson solver, order="solve-first" (Box2D-Lite's order), each
-        sub-step: contacts once, resolve() passes, then move, then the push-out
-        (lesson_solve_first has the phases). order="move-first" (the default,
-        the lesson text's order), each sub-step:
+        The lesson solver, order="solve-first" (the default, Box2D-Lite's order),
+        each sub-step: contacts once, resolve() passes, then move, then the
+        push-out (lesson_solve_first has the phases). order="move-first" (the
+        lesson text's order), each sub-step:
           1. v += g h
           2. x += v h, angle += ω h (a swept move for "ccd" bullets)
           3. `iterations` passes of: contacts (broad phase, sat, contact points),
@@ -330,13 +330,21 @@ class World:
              so e = 0 here and resting crates do not bounce
           4. x += v h, angle += ω h: friction has already stopped the slide, so a
              crate on the 22° ramp no longer creeps g sin θ h² per step
-          5. LESSON_PUSH_PASSES push-out passes, contacts measured again each
-             time, separate() on the pairs step 1 found; a pair that met during
-             this move waits for the next sub-step's impulses (pushing it out
-             now would lift a falling body before it bounces: energy from nowhere)
+          5. LESSON_PUSH_PASSES (1) push-out pass, contacts measured again,
+             separate() on the pairs step 1 found; a pair that met during this
+             move waits for the next sub-step's impulses (pushing it out now
+             would lift a falling body before it bounces: energy from nowhere)
         step() then measures the contacts once more for the lab to draw.
-        Per fixed step with LESSON_SUBSTEPS = 2: 9 contact searches (move-first:
-        6) and 2 × (1 + iterations) = 14 resolve passes (move-first: 6).
+        Why 4 sub-steps of 1 push-out pass (measured in the lab's 12-crate pile,
+        lesson11/bench/section1_probe.py): every push-out pass moves crates along
+        their SAT normals and shakes a leaning pile (2 sub-steps × 3 passes: top
+        speed 5.41 px/s, × 1 pass: 4.55 px/s but a landing crate 2.22 px deep);
+        more, shorter sub-steps let a landing crate in at most v h/4 per move and
+        still push it out 4 times a step (4 × 1: 3.58 px/s, deepest corner 0.61 px,
+        same CPU time as 2 × 3).
+        Per fixed step with LESSON_SUBSTEPS = 4: 4 × (1 + LESSON_PUSH_PASSES) = 8
+        contact searches + 1 for the lab (move-first: 6) and 4 × (1 + iterations)
+        = 28 resolve passes (move-first: 6).
         """
         found = list(self.manifolds())
         self.integrate_velocities(h / 2)
