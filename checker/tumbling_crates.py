@@ -43,19 +43,19 @@ ABS = 1e-7      # absolute floor of the same (px, px/s, rad/s, impulse units)
 TOUCHING = 1e-6  # px: a depth this small for shapes exactly touching counts as "apart"
 
 # ---------------------------------------------------------------- bounds (measured on the solution)
-TIPPED_FLAT = math.radians(6)   # rad from flat at the end; solution: 0.4°-0.5°
-MIN_TURN = 0.3                  # rad turned while tipping; solution: 0.51-0.56 (the drop angles are 0.5, 0.55)
-REST_SPEED = 5.0                # px/s over the last 0.5 s; solution: 0.01
-REST_OMEGA = 0.2                # rad/s over the last 0.5 s; solution: 0.0002
-PENETRATION = 3.0               # px below the floor's top face; solution: corner 0.50, pile 0.79
-PAIR_OVERLAP = 3.0              # px between two crates in the pile; solution: 0.88
-# The ramp: physics2d's World moves bodies (x += v dt) before it solves the contacts, so a crate
-# resting on a slope creeps g·sin(22°)·dt = 3.06 px/s downhill whatever its friction. The solution
-# measures 9.2-10.3 px in 3 s (velocities after the solve stay below 0.5 px/s). Bound: 15 px.
-RAMP_SLIDE = 15.0               # px along the slope in 3 s; solution: 9.2-10.3 (integrator creep)
-RAMP_SPEED = 5.0                # px/s in the last second; solution: 2.45
-PILE_SPEED = 30.0               # px/s in the last second (the lab's fast-mover speed); solution: 16.4
-PILE_DRIFT = 10.0               # px a crate's centre may move during the last second; solution: 3.2
+TIPPED_FLAT = math.radians(6)   # rad from flat at the end; solution: 0.02°-0.11°
+MIN_TURN = 0.3                  # rad turned while tipping; solution: 0.50-0.55 (the drop angles are 0.5, 0.55)
+REST_SPEED = 5.0                # px/s over the last 0.5 s; solution: 0.002
+REST_OMEGA = 0.2                # rad/s over the last 0.5 s; solution: 0.0000
+PENETRATION = 1.0               # px below the floor's top face; solution: corner 0.33, pile 0.56 (no push-out: 2.1)
+PAIR_OVERLAP = 2.0              # px between two crates in the pile; solution: 0.60
+# The ramp: physics2d's World solves the contacts before it moves the bodies (order="solve-first"),
+# so friction cancels each step's pull down the slope before the move and a crate at rest stays
+# put (the lesson text's order, move-first, let it creep g·sin(22°)·dt = 3.06 px/s: 9.2-10.3 px).
+RAMP_SLIDE = 1.0                # px along the slope in 3 s; solution: 0.29
+RAMP_SPEED = 2.0                # px/s in the last second; solution: 0.65
+PILE_SPEED = 10.0               # px/s in the last second; solution: 4.68 (a pile is chaotic: margin 2x)
+PILE_DRIFT = 3.0                # px a crate's centre may move during the last second; solution: 0.30
 EXPLODED = 1500.0               # px/s: faster than any fall in these scenes (free fall from the top: ~1100)
 GRAVITY = 980.0                 # px/s², the course's gravity
 GRAVITY_TOLERANCE = 0.01        # relative; the solution measures the free fall within 1e-9
