@@ -10,8 +10,8 @@ Rows (units px, s; targets from issue 10 §1):
            the last 2 s and over the whole run (px), targets <= 1 and < 2 (test_lab_criteria)
   bricks   the checker's brick pile (pile_scenario, 3.5 s): top speed, drift over the last second, deepest corner
   own      the lab's own scene with the checker's four clicks: top speed over the last second
-  e=1      a disc (r 10 px) dropped from 200 px on the floor, e = 1 (tests/test_stability_dynamics.py's
-           bounce_figures): energy at each apex / at the start, worst of the first five (target within 1 %)
+  e=1      a disc (r 10 px) dropped from 200 px on the floor, e = 1 (solver_probe.disc_bounce, as
+           tests/test_stability_dynamics.py's bounce_figures): energy at each apex / at the start, worst of the first five (target within 1 %)
   e=0.5    the same disc with e = 0.5: first rebound speed / impact speed (target 0.5 ± 0.02)
   flat     solver_probe.flat_bounce: a 40 px box dropped flat, e = 0.5, rebound / impact (no target:
            the lesson solver's two corners share the bounce one after the other)
@@ -32,7 +32,7 @@ os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 from checker import crates_scenarios as scenes  # noqa: E402
 from lesson11 import runtime  # noqa: E402
 from lesson11.bench import solver_probe as probe  # noqa: E402
-from lesson11.physics2d import Body, Circle, World, box_points  # noqa: E402
+from lesson11.physics2d import World  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
@@ -81,27 +81,11 @@ def lab_rows():
 
 
 def bounce_figures(restitution, order, height=200.0):
-    """A 10 px disc dropped `height` px on the floor for 6 s: (energy at each apex / at the start, rebound ratios).
+    """A 10 px disc dropped `height` px on the floor for 6 s, World in `order`: (apex energies / start, rebound ratios).
 
-    Energy = ½ v² + g·(height above the rest position) per unit mass; a rebound ratio is the
-    upward speed after the step / the downward speed before it, for impacts faster than 30 px/s.
+    solver_probe.disc_bounce measures it (the same scene for every engine).
     """
-    ball = Body(Circle(10), (400, probe.FLOOR - 10 - height), 1.0, restitution=restitution)
-    floor = Body(box_points(2000, 40), (400, probe.FLOOR + 20), 0, restitution=1.0)
-    world = World([floor, ball], order=order)
-    energy = lambda: 0.5 * ball.vel.length_squared() + probe.G * (probe.FLOOR - 10 - ball.pos.y)
-    start, apexes, rebounds, rising = energy(), [], [], False
-    for _ in range(6 * 120):
-        before = ball.vel.y
-        world.step()
-        if before > 30 and ball.vel.y < 0:
-            rebounds.append(-ball.vel.y / before)
-        if ball.vel.y < 0:
-            rising = True
-        elif rising:
-            apexes.append(energy() / start)
-            rising = False
-    return apexes, rebounds
+    return probe.disc_bounce("lesson " + order, restitution, height)
 
 
 def main():

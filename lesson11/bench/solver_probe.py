@@ -18,8 +18,14 @@ and, against the analytic answer (relative error, %), from rest unless said:
   stop       a box sliding at 300 px/s on the floor, μ 0.5, until it stops: d = v0² / (2 μ g)
   far pile   12 crates (60 × 40 px, rows of 4, 3, 3, 2) settling 2 s at (10⁶, 10⁶) px and at the
              origin: largest difference of any crate's position relative to the start, / 10⁶ px
+
+The scene measurements (flat_bounce, disc_bounce, stack, heavy_on_light, ramp_rest) also come
+as generators (flat_bounce_run, ...) that yield the scene after each step and return the same
+figures: accuracy_cost's "solvers" study advances them in lockstep, and every scene counts the
+steps it took and the seconds spent inside them (scene.steps, scene.seconds).
 """
 import math
+import time
 
 from lesson11.physics2d import Body, Circle, Vector2, World, box_points
 
@@ -50,6 +56,7 @@ class Ours:
         floor = Body(box_points(2000, 40), Vector2(400, FLOOR + 20) + self.offset, 0, angle=angle,
                      friction=friction)
         self.world = World([floor], **settings)
+        self.steps, self.seconds = 0, 0.0
 
     def box(self, size, pos, mass=1.0, e=0.2, angle=0.0, friction=0.6, vel=(0, 0), height=None):
         shape = box_points(size, size if height is None else height)
@@ -58,13 +65,17 @@ class Ours:
         self.world.add(body)
         return lambda: (Vector2(body.pos) - self.offset, Vector2(body.vel), body.omega)
 
-    def disc(self, radius, pos, mass=1.0, friction=0.6):
-        body = Body(Circle(radius), Vector2(pos) + self.offset, mass, friction=friction)
+    def disc(self, radius, pos, mass=1.0, friction=0.6, e=0.2):
+        body = Body(Circle(radius), Vector2(pos) + self.offset, mass, friction=friction, restitution=e)
         self.world.add(body)
         return lambda: (Vector2(body.pos) - self.offset, Vector2(body.vel), body.omega)
 
     def step(self):
+        """One 1/120 s step; counts it and the seconds spent in it."""
+        start = time.perf_counter()
         self.world.step()
+        self.seconds += time.perf_counter() - start
+        self.steps += 1
 
 
 class Pymunk:
@@ -81,6 +92,7 @@ class Pymunk:
         shape = pymunk.Poly.create_box(floor, (2000, 40))
         shape.friction, shape.elasticity = 1.0, 1.0  # pymunk multiplies: μ = μ_box × 1.0, e = e_box × 1.0
         self.space.add(floor, shape)
+        self.steps, self.seconds = 0, 0.0
 
     def _add(self, body, shape, pos, e, friction):
         body.position = tuple(Vector2(pos) + self.offset)
@@ -95,12 +107,16 @@ class Pymunk:
         body.angle, body.velocity = angle, tuple(vel)
         return self._add(body, pymunk.Poly.create_box(body, dims), pos, e, friction)
 
-    def disc(self, radius, pos, mass=1.0, friction=0.6):
+    def disc(self, radius, pos, mass=1.0, friction=0.6, e=0.2):
         body = pymunk.Body(mass, pymunk.moment_for_circle(mass, 0, radius))
-        return self._add(body, pymunk.Circle(body, radius), pos, 0.2, friction)
+        return self._add(body, pymunk.Circle(body, radius), pos, e, friction)
 
     def step(self):
+        """One 1/120 s step; counts it and the seconds spent in it."""
+        start = time.perf_counter()
         self.space.step(1 / 120)
+        self.seconds += time.perf_counter() - start
+        self.steps += 1
 
 
 def make(engine, angle=0.0, offset=(0, 0), friction=0.6):
@@ -110,47 +126,107 @@ def make(engine, angle=0.0, offset=(0, 0), friction=0.6):
     return Ours(ENGINES[engine], angle, offset, friction)
 
 
-def flat_bounce(engine, e):
-    """Rebound speed / impact speed of a flat 40 px box dropped from 100 px, and the spin as it leaves (rad/s)."""
+def to_end(run):
+    """Run a measurement generator (flat_bounce_run, ...) to its end; the figures it returns."""
+    while True:
+        try:
+            next(run)
+        except StopIteration as done:
+            return done.value
+
+
+def flat_bounce_run(engine, e):
+    """Generator form of flat_bounce: yields the scene after each step."""
     scene = make(engine)
     if engine != "pymunk":
         scene.world.bodies[0].restitution = 1.0
     state = scene.box(40, (400, FLOOR - 120), e=e)
-    impact = None
     for _ in range(240):
         before = state()[1].y
         scene.step()
+        yield scene
         pos, vel, omega = state()
         if before > 0 and vel.y <= 0:
-            impact = before
-            return -vel.y / impact, abs(omega)
+            return -vel.y / before, abs(omega)
     return float("nan"), float("nan")
 
 
-def stack(engine, seconds=20):
+def flat_bounce(engine, e):
+    """Rebound speed / impact speed of a flat 40 px box dropped from 100 px, and the spin as it leaves (rad/s)."""
+    return to_end(flat_bounce_run(engine, e))
+
+
+def disc_bounce_run(engine, e, height=200.0, seconds=6.0):
+    """Generator form of disc_bounce: yields the scene after each step."""
+    scene = make(engine)
+    if engine != "pymunk":
+        scene.world.bodies[0].restitution = 1.0  # e of a pair is min(eA, eB) here; pymunk's floor has e 1 already
+    state = scene.disc(10, (400, FLOOR - 10 - height), e=e)
+    energy = lambda: 0.5 * state()[1].length_squared() + G * (FLOOR - 10 - state()[0].y)
+    start, apexes, rebounds, rising = energy(), [], [], False
+    for _ in range(round(seconds * 120)):
+        before = state()[1].y
+        scene.step()
+        yield scene
+        vy = state()[1].y
+        if before > 30 and vy < 0:
+            rebounds.append(-vy / before)
+        if vy < 0:
+            rising = True
+        elif rising:
+            apexes.append(energy() / start)
+            rising = False
+    return apexes, rebounds
+
+
+def disc_bounce(engine, e, height=200.0, seconds=6.0):
+    """A 10 px disc dropped `height` px on the floor: (energy at each apex / at the start, rebound ratios).
+
+    Energy = ½ v² + g·(height above the rest position) per unit mass; a rebound ratio is the
+    upward speed after the step / the downward speed before it, for impacts faster than 30 px/s.
+    """
+    return to_end(disc_bounce_run(engine, e, height, seconds))
+
+
+def stack_run(engine, seconds=20):
+    """Generator form of stack: yields the scene after each step."""
     scene = make(engine)
     states = [scene.box(40, (400, FLOOR - 20 - 40 * k)) for k in range(10)]
     start = [s()[0] for s in states]
     worst = 0.0
     for _ in range(int(seconds * 120)):
         scene.step()
+        yield scene
         worst = max(worst, max((s()[0] - p).length() for s, p in zip(states, start)))
     return worst
 
 
-def heavy_on_light(engine, seconds=5):
+def stack(engine, seconds=20):
+    """10 boxes (40 px) stacked on the floor for `seconds`: the largest drift of any box (px)."""
+    return to_end(stack_run(engine, seconds))
+
+
+def heavy_on_light_run(engine, seconds=5):
+    """Generator form of heavy_on_light: yields the scene after each step."""
     scene = make(engine)
     light = scene.box(40, (400, FLOOR - 20), 1.0)
     heavy = scene.box(40, (400, FLOOR - 60), 100.0)
     worst = 0.0
     for _ in range(int(seconds * 120)):
         scene.step()
+        yield scene
         worst = max(worst, 40 - (light()[0].y - heavy()[0].y))
     on_top = abs(heavy()[0].x - light()[0].x) < 20 and heavy()[0].y < light()[0].y
     return worst, on_top
 
 
-def ramp_rest(engine, seconds=3):
+def heavy_on_light(engine, seconds=5):
+    """A 100× heavier box on a light one: (deepest overlap (px), whether the heavy one stays on top)."""
+    return to_end(heavy_on_light_run(engine, seconds))
+
+
+def ramp_rest_run(engine, seconds=3):
+    """Generator form of ramp_rest: yields the scene after each step."""
     angle = math.radians(22)
     scene = make(engine, angle)
     up = Vector2(0, -1).rotate_rad(angle)
@@ -159,7 +235,13 @@ def ramp_rest(engine, seconds=3):
     start = state()[0]
     for _ in range(int(seconds * 120)):
         scene.step()
+        yield scene
     return (state()[0] - start).length()
+
+
+def ramp_rest(engine, seconds=3):
+    """A 40 px crate set at rest on a 22° slope (μ 0.6) for `seconds`: how far it moved (px)."""
+    return to_end(ramp_rest_run(engine, seconds))
 
 
 def on_slope(degrees, lift):
