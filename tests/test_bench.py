@@ -11,7 +11,8 @@ from lesson11.physics2d.world import LESSON_SUBSTEPS
 
 TINY = ac.Settings(shots=8, speeds=(500, 3000, 12000), substeps=(2, 4, 16), iterations=(1, 6, 20),
                    pile_seconds=0.5, rule_scenes=("pyramid4",), compare_scenes=("pyramid4",),
-                   effects_seconds=1.0, repeats=1)
+                   effects_seconds=1.0, repeats=1, stack_seconds=0.1, heavy_seconds=0.1, ramp_seconds=0.1,
+                   disc_seconds=1.5)
 
 
 @pytest.fixture(scope="module")
@@ -102,6 +103,26 @@ def test_pymunk_pile_holds_up_like_the_lesson_world(results):
     assert theirs.accuracy["drift"] < mine.accuracy["drift"]
 
 
+def test_solvers_study_has_a_row_per_solver_and_shows_the_flat_bounce_turned_into_spin(results):
+    """Study 6: a row per solver (pymunk when installed), the lesson default the baseline; the lesson
+    solver's per-corner impulses send a flat e = 0.5 box up slow and spinning, the reference solver does not."""
+    rows = results[0]["solvers"]
+    engines = [row.variant for row in rows]
+    assert engines[:4] == ["lesson solve-first", "lesson move-first", "reference corners", "reference clip"]
+    assert engines[4:] == (["pymunk"] if ac.solver_probe.pymunk else [])
+    assert [row.baseline for row in rows] == [True] + [False] * (len(rows) - 1)
+    assert all(len(row.parts) == 7 and row.consistent for row in rows)
+    for row in rows[:2]:                       # lesson solver, both orders: measured 0.071 and 0.076, spin 1.6 rad/s
+        assert row.accuracy["flat 0.5"]["rebound"] < 0.2 and row.accuracy["flat 0.5"]["spin"] > 1
+    for row in rows[2:4]:                      # reference solver: measured 0.500, spin 0.0001 rad/s
+        assert row.accuracy["flat 0.5"]["rebound"] == pytest.approx(0.5, abs=0.01)
+        assert row.accuracy["flat 0.5"]["spin"] < 0.01
+    assert all(row.accuracy["disc 0.5"]["rebound"] == pytest.approx(0.5, abs=0.02) for row in rows)
+    assert all(row.accuracy["disc 1"]["apexes"] == 1 for row in rows)  # 1.5 s: one apex, at 1.28 s
+    table = ac.solvers_table(rows).splitlines()
+    assert len(table) == 2 + len(rows) and "1 (baseline" in table[2] and "lesson, solve-first" in table[2]
+
+
 def test_quick_run_writes_its_own_files_and_never_the_studys(tmp_path, monkeypatch):
     """--quick --out-dir writes bench_accuracy_cost_quick.md/.png, labelled a smoke run; the full study's
     bench_accuracy_cost.md/.png in the same folder stay as they were."""
@@ -117,6 +138,7 @@ def test_quick_run_writes_its_own_files_and_never_the_studys(tmp_path, monkeypat
     table = (tmp_path / "bench_accuracy_cost_quick.md").read_text(encoding="utf-8")
     assert "| study | scene | variant |" in table and "Machine:" in table
     assert "Smoke run (`--quick`)" in table.splitlines()[2] and "not measurements" in table
+    assert "## Solvers: accuracy and time" in table and '| reference, "clip" |' in table
     timed = [line for line in table.splitlines() if "ms/step |" in line or "ms per simulated s |" in line]
     assert timed and all("| n/a (1 repeat) |" in line for line in timed)  # no "spread 0 %" from one repeat
     png = (tmp_path / "bench_accuracy_cost_quick.png").read_bytes()

@@ -1,4 +1,4 @@
-"""What accuracy costs in time: five studies measured side by side in one run.
+"""What accuracy costs in time: six studies measured side by side in one run.
 
     python -m lesson11.bench.accuracy_cost            # full run, a few minutes; writes the table and plot
     python -m lesson11.bench.accuracy_cost --quick    # smoke run: tiny sizes, seconds; prints only
@@ -9,6 +9,9 @@
 3. contact rule   "corners" (the lesson's) against "clip" (edge clipping) on the same piles
 4. effects        the same scene with only the effects it needs, with everything, with "ccd" but no bullet
 5. pymunk         the same piles in pymunk (skipped with a message if pymunk is missing)
+6. solvers        solver_probe's scenes (flat box and disc restitution, ramp rest, a 10-box stack, 100:1)
+                  in the lesson solver solve-first (World's default) and move-first, the reference
+                  solver with each contact rule, and pymunk
 
 Each study has a baseline, and its times are reported as ratios to that
 baseline, measured in the same run. Every case is repeated (--repeats, 3 by
@@ -38,6 +41,7 @@ from lesson11.physics2d import LESSON_EFFECTS, World
 from lesson11.physics2d import world as world_module
 
 from . import scenes
+from . import solver_probe
 
 FRAME = 1 / 120  # s: the course's fixed step; sub-stepping splits it into n steps
 
@@ -54,14 +58,20 @@ class Settings:
     compare_scenes: tuple         # piles for the pymunk study
     effects_seconds: float        # simulated s per effects run
     repeats: int                  # timing repeats (median kept)
+    stack_seconds: float          # solvers study: simulated s of the 10-box stack
+    heavy_seconds: float          # solvers study: simulated s of the 100:1 pair
+    ramp_seconds: float           # solvers study: simulated s of the crate on the ramp
+    disc_seconds: float           # solvers study: simulated s of each disc drop (the first rebound is at 0.64 s)
 
 
 FULL = Settings(shots=60, speeds=(500, 1000, 2000, 3000, 4000, 6000, 8000, 12000), substeps=(2, 4, 8, 16),
                 iterations=(1, 2, 4, 6, 10, 20), pile_seconds=4.0, rule_scenes=("pyramid4", "stack4"),
-                compare_scenes=("pyramid4", "stack8"), effects_seconds=3.0, repeats=3)
+                compare_scenes=("pyramid4", "stack8"), effects_seconds=3.0, repeats=3,
+                stack_seconds=3.0, heavy_seconds=5.0, ramp_seconds=3.0, disc_seconds=6.0)
 QUICK = Settings(shots=6, speeds=(500, 2000, 6000, 12000), substeps=(2, 4, 16),
                  iterations=(1, 6, 20), pile_seconds=0.5, rule_scenes=("pyramid4",),
-                 compare_scenes=("pyramid4",), effects_seconds=0.5, repeats=1)
+                 compare_scenes=("pyramid4",), effects_seconds=0.5, repeats=1,
+                 stack_seconds=0.1, heavy_seconds=0.1, ramp_seconds=0.1, disc_seconds=1.5)
 
 QUICK_NOTE = ("**Smoke run (`--quick`): tiny cases, {repeats} repeat(s). It shows that every study runs; its times, "
               "ratios and spreads are not measurements and may contradict the published figures, which come from "
@@ -94,6 +104,7 @@ class Row:
     ratio: float = math.nan
     consistent: bool = True
     final_state: list = None      # the effects study compares final states between rows
+    parts: list = None            # the solvers study: this solver's row per scene (its own time and ratio)
 
     @property
     def ms(self):
@@ -343,6 +354,156 @@ def finish_effects(rows):
         row.accuracy = {"difference": scenes.largest_difference(row.final_state, base.final_state)}
 
 
+# ---------------------------------------------------------------- 6. solvers
+
+SOLVERS_STUDY = "6 solvers"
+BASELINE_ENGINE = "lesson solve-first"   # World's default for the lesson solver
+ENGINE_NAMES = {"lesson solve-first": "lesson, solve-first (default)", "lesson move-first": "lesson, move-first",
+                "reference corners": 'reference, "corners"', "reference clip": 'reference, "clip"'}
+
+
+def solver_engines():
+    """solver_probe's engines, the lesson's default first; pymunk last when installed."""
+    engines = [BASELINE_ENGINE] + [e for e in solver_probe.ENGINES if e != BASELINE_ENGINE]
+    return engines + (["pymunk"] if solver_probe.pymunk else [])
+
+
+def engine_name(engine):
+    """How a solver_probe engine is named in the table."""
+    return ENGINE_NAMES.get(engine, f"pymunk {pymunk_version()}" if engine == "pymunk" else engine)
+
+
+def first(values):
+    """The first of a list of figures, or None if the run produced none (too short)."""
+    return values[0] if values else None
+
+
+def worst_apex(apexes):
+    """The apex energy ratio furthest from 1 among the first five, or None if there was no apex."""
+    return max(apexes[:5], key=lambda ratio: abs(ratio - 1)) if apexes else None
+
+
+def figure(value, spec, unit=""):
+    """A figure for the table, or "none (run too short)" when the run produced none (None or nan)."""
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "none (run too short)"
+    return f"{value:{spec}}{unit}"
+
+
+def solver_scenes(settings):
+    """The solvers study's scenes: (key, title, measurement generator for an engine, figures -> accuracy dict).
+
+    The measurements are solver_probe's; only the durations come from `settings`.
+    """
+    p = solver_probe
+    return [
+        ("flat 0.5", "flat box e = 0.5", lambda engine: p.flat_bounce_run(engine, 0.5),
+         lambda f: {"rebound": f[0], "spin": f[1]}),
+        ("flat 0.9", "flat box e = 0.9", lambda engine: p.flat_bounce_run(engine, 0.9),
+         lambda f: {"rebound": f[0], "spin": f[1]}),
+        ("disc 0.5", "disc e = 0.5", lambda engine: p.disc_bounce_run(engine, 0.5, seconds=settings.disc_seconds),
+         lambda f: {"rebound": first(f[1])}),
+        ("disc 1", "disc e = 1", lambda engine: p.disc_bounce_run(engine, 1.0, seconds=settings.disc_seconds),
+         lambda f: {"apex energy": worst_apex(f[0]), "apexes": len(f[0][:5])}),
+        ("ramp", "crate on a 22° ramp", lambda engine: p.ramp_rest_run(engine, settings.ramp_seconds),
+         lambda f: {"moved": f}),
+        ("stack", "10-box stack", lambda engine: p.stack_run(engine, settings.stack_seconds),
+         lambda f: {"drift": f}),
+        ("100:1", "100:1 heavy on light", lambda engine: p.heavy_on_light_run(engine, settings.heavy_seconds),
+         lambda f: {"overlap": f[0], "on top": f[1]}),
+    ]
+
+
+def probe_run(measurement, summarise):
+    """Run a solver_probe measurement generator, yielding after each step; its figures and in-step time.
+
+    The probe's scenes time their own step() calls (scene.seconds), so measuring between steps is not timed.
+    """
+    run, scene = measurement(), None
+    while True:
+        try:
+            scene = next(run)
+        except StopIteration as done:
+            figures = done.value
+            break
+        yield
+    accuracy = {key: round(value, 6) if isinstance(value, float) else value
+                for key, value in summarise(figures).items()}
+    return Measurement(accuracy, scene.seconds, scene.steps, {"steps": scene.steps})
+
+
+def solver_cases(settings):
+    """Every scene of the solvers study in every engine; the lesson solver's default order is each scene's baseline."""
+    cases = []
+    for key, _, measurement, summarise in solver_scenes(settings):
+        for engine in solver_engines():
+            cases.append(Case(SOLVERS_STUDY, key, engine, "ms/step",
+                              lambda measurement=measurement, summarise=summarise, engine=engine:
+                              probe_run(lambda: measurement(engine), summarise),
+                              baseline=(engine == BASELINE_ENGINE)))
+    return cases
+
+
+def solver_summary(scene_rows):
+    """One Row per engine from its per-scene rows: accuracy by scene, and the time per step over all
+    the scenes' steps (in each repeat: seconds in step, summed over scenes / steps, summed)."""
+    summary = []
+    for engine in dict.fromkeys(row.variant for row in scene_rows):
+        parts = [row for row in scene_rows if row.variant == engine]
+        steps = [row.counters["steps"] for row in parts]
+        times = [sum(row.times[i] * n for row, n in zip(parts, steps)) / sum(steps)
+                 for i in range(len(parts[0].times))]
+        summary.append(Row(SOLVERS_STUDY, "all seven scenes", engine,
+                           {row.scene: row.accuracy for row in parts}, times, "ms/step",
+                           {"steps": sum(steps)}, baseline=(engine == BASELINE_ENGINE),
+                           consistent=all(row.consistent for row in parts), parts=parts))
+    base = next(row for row in summary if row.baseline)
+    for row in summary:
+        row.ratio = row.ms / base.ms
+    return summary
+
+
+def solver_cells(row):
+    """The accuracy figures of a solvers-study row, one cell per measurement (see SOLVER_COLUMNS)."""
+    a = row.accuracy
+    flat = lambda key: f"{figure(a[key]['rebound'], '.3f')} (spin {figure(a[key]['spin'], '.2f')})"
+    heavy = a["100:1"]
+    return [flat("flat 0.5"), flat("flat 0.9"), figure(a["disc 0.5"]["rebound"], ".3f"),
+            f"{figure(a['disc 1']['apex energy'], '.4f')} ({a['disc 1']['apexes']} apexes)",
+            figure(a["ramp"]["moved"], ".2f", " px"), figure(a["stack"]["drift"], ".2f", " px"),
+            f"{figure(heavy['overlap'], '.2f', ' px')} ({'yes' if heavy['on top'] else 'no'})"]
+
+
+SOLVER_COLUMNS = ["flat box e = 0.5: rebound / impact (spin, rad/s)", "flat box e = 0.9: rebound / impact (spin)",
+                  "disc e = 0.5: rebound / impact", "disc e = 1: apex energy / start (worst of the first 5)",
+                  "ramp: moved", "10-box stack: largest drift", "100:1: deepest overlap (heavy on top)"]
+
+
+def solvers_table(rows):
+    """Study 6 as one row per solver: each measurement, then time per step relative to the lesson default."""
+    lines = ["| solver | " + " | ".join(SOLVER_COLUMNS) + " | time per step × lesson default (per scene) |",
+             "|---|" + "---|" * (len(SOLVER_COLUMNS) + 1)]
+    for row in rows:
+        if row.baseline:
+            ratio = f"1 (baseline: {row.ms:.3g} ms/step)"
+        else:
+            ratios = [part.ratio for part in row.parts]
+            ratio = f"{row.ratio:.2g} ({min(ratios):.2g}–{max(ratios):.2g})"
+        lines.append(f"| {engine_name(row.variant)} | " + " | ".join(solver_cells(row)) + f" | {ratio} |"
+                     + ("" if row.consistent else " (repeats disagreed!)"))
+    return "\n".join(lines)
+
+
+def solver_times_table(rows):
+    """Study 6's time per step by scene: ms (× the lesson default on the same scene)."""
+    scenes_ = [part.scene for part in rows[0].parts]
+    lines = ["| solver | " + " | ".join(scenes_) + " |", "|---|" + "---|" * len(scenes_)]
+    for row in rows:
+        cells = [f"{part.ms:.3g} ms" + ("" if part.baseline else f" (×{part.ratio:.2g})") for part in row.parts]
+        lines.append(f"| {engine_name(row.variant)} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 # ---------------------------------------------------------------- the table
 
 def accuracy_text(row):
@@ -358,6 +519,10 @@ def accuracy_text(row):
             text = f"shots tunnel already at {min(a)} px/s; {share:.0f} % of all shots"
         else:
             text = f"no tunnelling up to {safe} px/s; {share:.0f} % of all shots tunnel"
+    elif row.study == SOLVERS_STUDY:
+        cells = dict(zip(["flat e=0.5", "flat e=0.9", "disc e=0.5", "disc e=1 apex energy", "ramp", "stack",
+                          "100:1"], solver_cells(row)))
+        text = " · ".join(f"{name} {cell}" for name, cell in cells.items())
     elif row.study.startswith("4"):
         c = row.counters
         text = (f"positions at the end differ from the baseline's by {a['difference']:.2g} px; per step: "
@@ -375,7 +540,8 @@ def table(rows):
     for row in rows:
         ratio = "1 (baseline)" if row.baseline else f"{row.ratio:.3g}"
         spread = f"{100 * row.spread:.0f} %" if len(row.times) > 1 else "n/a (1 repeat)"
-        lines.append(f"| {row.study} | {row.scene} | {row.variant} | {accuracy_text(row)} | "
+        variant = engine_name(row.variant) if row.study == SOLVERS_STUDY else row.variant
+        lines.append(f"| {row.study} | {row.scene} | {variant} | {accuracy_text(row)} | "
                      f"{row.ms:.3g} {row.unit} | {spread} | {ratio} |")
     return "\n".join(lines)
 
@@ -426,7 +592,9 @@ def machine_note():
 METHOD_NOTES = [
     "Sub-stepping ×n runs n steps of 1/(120 n) s per frame; CCD declares \"ccd\" and marks the circle "
     "`bullet=True`, so World.swept_move finds its time of impact against the wall (held still) with "
-    "circle_polygon_toi. A shot tunnels when the bullet's centre ends past the middle of the wall.",
+    "circle_polygon_toi. A shot tunnels when the bullet's centre ends past the middle of the wall. "
+    "The tunnelling worlds pin `substeps=1`: World's default (the lesson solver, solve-first) already splits "
+    "each 1/120 s step into 4, so a default World catches bullets like the ×4 row.",
     "Pile scenes start with every crate exactly touching its neighbours and at rest; an ideal engine "
     "would show 0 drift and 0 kinetic energy. The lesson's solver detects contacts again in every pass, "
     "so its time grows with the passes; the accumulated solver (if present) detects once per step.",
@@ -441,6 +609,14 @@ METHOD_NOTES = [
     "positions by 40 % of (depth - 0.5 px) per pass; so the same iteration count does not mean the same "
     "work. pymunk is C (Chipmunk2D) and physics2d is plain Python: compare the accuracy columns, and read "
     "the time column as the price of readable Python.",
+    "Study 6 runs lesson11/bench/solver_probe.py's scenes and measurements (y down, 1/120 s steps, "
+    "40 px boxes) in each solver as that probe sets it up: the lesson solver 6 iterations in either order "
+    "(solve-first: 4 sub-steps of 1 + 6 resolve passes and a push-out pass; move-first: the lesson text's "
+    "order), the reference solver (`solver=\"accumulated\"`) 3 sub-steps of 1 pass with either contact "
+    "rule, pymunk 6 iterations. A rebound is the upward speed after the bouncing step / the downward speed "
+    "before it; a flat box should leave with e and no spin. Its time is the seconds inside step() over all "
+    "seven scenes' steps, relative to the lesson solver's default; the range is over the scenes, each "
+    "against the default on the same scene.",
 ]
 
 
@@ -451,7 +627,7 @@ def run(settings, progress=None):
     notes = []
     groups = {"tunnelling": tunnelling_cases(settings), "iterations": iteration_cases(settings),
               "rule": rule_cases(settings), "effects": effects_cases(settings),
-              "pymunk": pymunk_cases(settings)}
+              "pymunk": pymunk_cases(settings), "solvers": solver_cases(settings)}
     if not groups["pymunk"]:
         notes.append("Study 5 skipped: pymunk is not installed (pip install -e \".[compare]\").")
     if "accumulated" not in solvers():
@@ -461,6 +637,9 @@ def run(settings, progress=None):
         if cases:
             rows[name] = measure(cases, settings.repeats, progress)
     finish_effects(rows["effects"])
+    rows["solvers"] = solver_summary(rows["solvers"])
+    if not solver_probe.pymunk:
+        notes.append("Study 6 has no pymunk row: pymunk is not installed.")
     return rows, notes
 
 
@@ -494,6 +673,21 @@ def report(rows, notes, settings, elapsed, mode):
         "step's travel.",
         "",
         tunnelling_table(rows["tunnelling"]),
+        "",
+        "## Solvers: accuracy and time",
+        "",
+        f"solver_probe's scenes, each solver as the probe sets it up. Durations: the flat boxes run to their "
+        f"first rebound, each disc {settings.disc_seconds:g} s, the ramp {settings.ramp_seconds:g} s, the "
+        f"10-box stack {settings.stack_seconds:g} s (solver_probe's own table runs 20 s) and 100:1 "
+        f"{settings.heavy_seconds:g} s, to keep the whole run to a few minutes. Ideal: a flat box leaves with "
+        f"rebound e and spin 0, the disc e = 1 keeps its energy (1), nothing moves on the ramp or in the "
+        f"stack, overlap 0 with the heavy box on top.",
+        "",
+        solvers_table(rows["solvers"]),
+        "",
+        "Time per step by scene, ms (× the lesson default on the same scene):",
+        "",
+        solver_times_table(rows["solvers"]),
     ]
     parts += ["", "## How to read it", ""] + [f"- {line}" for line in METHOD_NOTES + notes]
     return "\n".join(parts) + "\n"
@@ -518,7 +712,7 @@ def positive_int(text):
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python -m lesson11.bench.accuracy_cost",
                                      description="What accuracy costs in time: tunnelling, iterations, contact "
-                                                 "rule, declared effects, pymunk, measured side by side.")
+                                                 "rule, declared effects, pymunk, solvers, measured side by side.")
     parser.add_argument("--quick", action="store_true",
                         help="smoke run: tiny sizes, one repeat, figures not trustworthy; prints only, or with "
                              "--out-dir writes bench_accuracy_cost_quick.md/.png (never the full run's files)")

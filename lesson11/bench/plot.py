@@ -153,9 +153,65 @@ def _pymunk(ax, rows):
     ax.grid(alpha=0.3, which="both")
 
 
+SOLVER_COLORS = ["tab:red", "tab:orange", "tab:green", "tab:olive", "tab:purple"]
+
+
+def _solver_label(row):
+    from .accuracy_cost import engine_name  # the table's names; imported here to keep plot importable alone
+    return engine_name(row.variant)
+
+
+def _solver_points(ax, rows, measures, title, ylabel, floor):
+    """Study 6: one marker per measurement, one colour per solver, at (time × lesson default on that scene, error)."""
+    markers = "osD^v<>"
+    for color, row in zip(SOLVER_COLORS, rows):
+        parts = {part.scene: part for part in row.parts}
+        for marker, (name, scene, error) in zip(markers, measures):
+            value = error(row.accuracy[scene])
+            if value is None or value != value:  # the run was too short to measure it (None or nan)
+                continue
+            ratio = 1.0 if row.baseline else parts[scene].ratio
+            ax.scatter([ratio], [max(value, floor)], marker=marker, s=60, color=color, zorder=3,
+                       edgecolors="black", linewidths=0.5)
+    for color, row in zip(SOLVER_COLORS, rows):
+        ax.scatter([], [], marker="s", s=60, color=color, label=_solver_label(row))
+    for marker, (name, _, _) in zip(markers, measures):
+        ax.scatter([], [], marker=marker, s=60, facecolors="none", edgecolors="black", label=name)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("time per step on that scene, × lesson solver's default (log scale)")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.axvline(1.0, color="gray", lw=0.8, ls=":")
+    ax.legend(fontsize=7.5, loc="upper left", bbox_to_anchor=(1.0, 1.0))
+    ax.grid(alpha=0.3, which="both")
+
+
+def _solvers_bounce(ax, rows):
+    measures = [("flat box e=0.5: |rebound/0.5 - 1|", "flat 0.5", lambda a: a["rebound"] and abs(a["rebound"] / 0.5 - 1)),
+                ("flat box e=0.9: |rebound/0.9 - 1|", "flat 0.9", lambda a: a["rebound"] and abs(a["rebound"] / 0.9 - 1)),
+                ("disc e=0.5: |rebound/0.5 - 1|", "disc 0.5", lambda a: a["rebound"] and abs(a["rebound"] / 0.5 - 1)),
+                ("disc e=1: |apex energy - 1|", "disc 1", lambda a: a["apex energy"] and abs(a["apex energy"] - 1))]
+    _solver_points(ax, rows, measures, "6a  Solvers: restitution error (0 drawn at 10⁻⁴)",
+                   "relative error (log scale; lower is better)", 1e-4)
+
+
+def _solvers_rest(ax, rows):
+    measures = [("ramp 22°: moved", "ramp", lambda a: a["moved"]),
+                ("10-box stack: largest drift", "stack", lambda a: a["drift"]),
+                ("100:1: deepest overlap", "100:1", lambda a: a["overlap"])]
+    _solver_points(ax, rows, measures, f"6b  Solvers: things at rest (0 drawn at {FLOOR:g} px)",
+                   "error (px, log scale; lower is better)", FLOOR)
+
+
 def plot(rows, path, subtitle):
     """Draw every study present in `rows` (a dict of study name -> list of Row) and save a PNG at `path`."""
-    fig, axes = plt.subplots(2, 3, figsize=(18, 10.5))
+    fig = plt.figure(figsize=(18, 15.5))
+    grid = fig.add_gridspec(3, 6)
+    axes = [[fig.add_subplot(grid[r, 2 * c:2 * c + 2]) for c in range(3)] for r in range(2)]
+    if "solvers" in rows:
+        _solvers_bounce(fig.add_subplot(grid[2, 0:3]), rows["solvers"])
+        _solvers_rest(fig.add_subplot(grid[2, 3:6]), rows["solvers"])
     _tunnelling_by_speed(axes[0][0], rows["tunnelling"])
     _tunnelling_cost(axes[0][1], rows["tunnelling"])
     _iterations(axes[0][2], rows["iterations"])
@@ -167,8 +223,8 @@ def plot(rows, path, subtitle):
         axes[1][2].text(0.5, 0.5, "pymunk not installed:\nstudy 5 skipped", ha="center", va="center")
         axes[1][2].set_axis_off()
     fig.suptitle("What accuracy costs in time (lesson11 physics2d)", fontsize=15)
-    fig.text(0.5, 0.945, subtitle, ha="center", fontsize=8, color="dimgray")
-    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    fig.text(0.5, 0.957, subtitle, ha="center", fontsize=8, color="dimgray")
+    fig.tight_layout(rect=(0, 0, 1, 0.955))
     fig.savefig(path, dpi=100)
     plt.close(fig)
     return path
