@@ -23,7 +23,6 @@ EFFECTS = ("gravity", "rotation", "friction", "restitution", "correction", "ccd"
 SOLVERS = ("lesson", "accumulated")
 ORDERS = ("move-first", "solve-first")
 LESSON_SUBSTEPS = 4        # the lesson solver's sub-steps in the solve-first order (see World.lesson_solve_first)
-LESSON_PUSH_PASSES = 1     # push-out passes per sub-step in the solve-first order (4 per fixed step)
 CONTACT_RULES = ("corners", "clip")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
 
@@ -250,11 +249,13 @@ class World:
         dt = self.step_seconds if dt is None else _positive_seconds("step dt")(dt)
         h = dt / self.substeps
         if self.solver == "lesson" and self.order == "solve-first":
+            touching = set()  # pairs that touched before the last move (none yet: the last step pushed them out)
             for _ in range(self.substeps):
-                self.lesson_solve_first(h)
-            # where the bodies touch now, after the last push-out (what the lab draws and records)
-            self.contacts = [Contact(a, b, point, m.normal, m.depth)
-                             for a, b, m in self.manifolds() for point in m.points]
+                touching = self.lesson_solve_first(h, touching)
+            # where the bodies touch after the last move (what the lab draws), then its push-out
+            found = list(self.manifolds())
+            self.push_out(found, touching)
+            self.contacts = [Contact(a, b, point, m.normal, m.depth) for a, b, m in found for point in m.points]
         elif self.solver == "lesson":
             for _ in range(self.substeps):
                 # 1. velocities: gravity
@@ -314,51 +315,59 @@ class World:
                 raise ValueError(f"body {index} {body!r} became non-finite at t = {self.time:.4f} s; "
                                  "check its mass, the step and the hooks")
 
-    def lesson_solve_first(self, h):
+    def lesson_solve_first(self, h, touching):
         """One sub-step h (s) of the lesson solver in Box2D-Lite's order, with the lab's resolve and separate.
 
+        `touching` holds the pairs (id(a), id(b)) that touched before the last
+        move; returns the pairs touching now, for the next sub-step.
           1. contacts, found once (broad phase, the lab's sat, contact points)
-          2. v += g h/2, then the impact pass: resolve() once at every point,
+          2. the push-out of the last move: separate() on the pairs found in
+             step 1 that were in `touching` too. A pair that met during the
+             last move waits for this sub-step's impulses (pushing it out first
+             would lift a falling body before it bounces: energy from nowhere)
+          3. v += g h/2, then the impact pass: resolve() once at every point,
              then v += g h/2. The bounce sits in the middle of the step's
              gravity kick: an e = 1 disc that arrives at vn leaves at exactly
              -vn, and ½ v² + g·height + ½ g h v_down, the energy this integrator
              keeps in free flight, is unchanged by the bounce. (Bouncing after
              the whole kick reflects vn + g h: +g h v per bounce; before it,
              -g h v, 2.6 % per bounce from 200 px.)
-          3. `iterations` passes of resolve() over every point (resolve_pass:
+          4. `iterations` passes of resolve() over every point (resolve_pass:
              forwards, backwards, ...); the speeds left are below resting_speed,
              so e = 0 here and resting crates do not bounce
-          4. x += v h, angle += ω h: friction has already stopped the slide, so a
+          5. x += v h, angle += ω h: friction has already stopped the slide, so a
              crate on the 22° ramp no longer creeps g sin θ h² per step
-          5. LESSON_PUSH_PASSES (1) push-out pass, contacts measured again,
-             separate() on the pairs step 1 found; a pair that met during this
-             move waits for the next sub-step's impulses (pushing it out now
-             would lift a falling body before it bounces: energy from nowhere)
-        step() then measures the contacts once more for the lab to draw.
-        Why 4 sub-steps of 1 push-out pass (measured in the lab's 12-crate pile,
-        lesson11/bench/section1_probe.py): every push-out pass moves crates along
-        their SAT normals and shakes a leaning pile (2 sub-steps × 3 passes: top
-        speed 5.41 px/s, × 1 pass: 4.55 px/s but a landing crate 2.22 px deep);
-        more, shorter sub-steps let a landing crate in at most v h/4 per move and
-        still push it out 4 times a step (4 × 1: 3.58 px/s, deepest corner 0.61 px,
-        same CPU time as 2 × 3).
-        Per fixed step with LESSON_SUBSTEPS = 4: 4 × (1 + LESSON_PUSH_PASSES) = 8
-        contact searches + 1 for the lab (move-first: 6) and 4 × (1 + iterations)
-        = 28 resolve passes (move-first: 6).
+        step() ends with one more contact search (what the lab draws) and the
+        last move's push-out.
+        The contacts of step 1 serve the push-out and the impulses: the push-out
+        moves a body by at most percent × (depth - slop) along the normal, so the
+        points the impulses use are off by that much (a fraction of a px).
+        Why 4 sub-steps (measured in the lab's 12-crate pile,
+        lesson11/bench/section1_probe.py): every push-out moves crates along
+        their SAT normals and shakes a leaning pile (2 sub-steps with 3 push-out
+        passes each: top speed 5.41 px/s); 4 shorter sub-steps let a landing
+        crate in at most v h/4 per move and still push it out 4 times a step.
+        Per fixed step with LESSON_SUBSTEPS = 4: 4 + 1 contact searches
+        (move-first: 6) and 4 × (1 + iterations) = 28 resolve passes
+        (move-first: 6).
         """
         found = list(self.manifolds())
+        self.push_out(found, touching)
         self.integrate_velocities(h / 2)
         self.resolve_pass(found, 0)
         self.integrate_velocities(h / 2)
         for index in range(self.iterations):
             self.resolve_pass(found, index)
         self.integrate_positions(h)
-        if "correction" in self.effects:
-            solved = {(id(a), id(b)) for a, b, _ in found}
-            for _ in range(LESSON_PUSH_PASSES):
-                for a, b, m in self.manifolds():
-                    if (id(a), id(b)) in solved:
-                        self.separate(a, b, m.normal, m.depth)
+        return {(id(a), id(b)) for a, b, _ in found}
+
+    def push_out(self, found, touching):
+        """separate() on each (a, b, manifold) in `found` whose pair (id(a), id(b)) is in `touching` ("correction" only)."""
+        if "correction" not in self.effects:
+            return
+        for a, b, m in found:
+            if (id(a), id(b)) in touching:
+                self.separate(a, b, m.normal, m.depth)
 
     def resolve_pass(self, found, index):
         """resolve() at every point of every (a, b, manifold); odd `index` goes backwards (pairs and points).
