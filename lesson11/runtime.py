@@ -18,8 +18,10 @@ Settings (all optional):
   seed          replaces the lab's seed
   script        list of {"frame": n, "type": "click", "pos": [x, y]} /
                 {"frame": n, "type": "key", "key": "r"} / {"frame": n, "type": "quit"}
-  scenario      list of crates {"w", "h", "pos": [x, y], "angle" (rad), "vel", "omega"}
-                that replace the lab's dynamic bodies (static ones are kept)
+  scenario      list of bodies {"pos": [x, y], "angle" (rad), "vel", "omega", ...} that
+                replace the lab's dynamic bodies (static ones are kept); each is made
+                by the lab's `build` function given to scene(), by default a crate
+                {"w", "h", ...} of mass w·h/1000
   record        path of the JSON record to write at exit
   record_every  record one frame in this many (default 1); the last frame is always recorded
   screenshot    path of a PNG of the window as it looked after the last frame
@@ -65,9 +67,9 @@ def check_settings(settings, source="lab settings"):
                 or item.get("type") not in ("click", "key", "quit"):
             raise ValueError(f"{source}: bad script item {item!r}; "
                              'expected {"frame": n, "type": "click"|"key"|"quit", ...}')
-    for crate in settings.get("scenario", []):
-        if not isinstance(crate, dict) or not {"w", "h", "pos"} <= set(crate):
-            raise ValueError(f"{source}: bad scenario crate {crate!r}; expected {{\"w\", \"h\", \"pos\", ...}}")
+    for item in settings.get("scenario", []):
+        if not isinstance(item, dict) or "pos" not in item:
+            raise ValueError(f"{source}: bad scenario body {item!r}; expected {{\"pos\": [x, y], ...}}")
 
 
 def configure(settings, source="lab settings"):
@@ -165,15 +167,25 @@ def events():
     return pending
 
 
-def scene(bodies):
-    """The bodies to simulate: the lab's own, or its static bodies plus the checker's scenario crates."""
+def crate(item):
+    """The default scenario body: a w × h px crate of mass w·h/1000 at item["pos"] (angle, vel, omega optional)."""
+    if "w" not in item or "h" not in item:
+        raise ValueError(f"scenario body {item!r}: a crate needs \"w\" and \"h\" (px)")
+    w, h = item["w"], item["h"]
+    return Body(box_points(w, h), item["pos"], mass=w * h / 1000, angle=item.get("angle", 0.0),
+                vel=item.get("vel", (0, 0)), omega=item.get("omega", 0.0))
+
+
+def scene(bodies, build=crate):
+    """The bodies to simulate: the lab's own, or its static bodies plus the checker's scenario bodies.
+
+    `build(item)` makes one Body from one scenario item (a dict with "pos"); a
+    lab whose bodies are not crates passes its own.
+    """
     if _settings is None or "scenario" not in _settings:
         return bodies
     kept = [body for body in bodies if body.inv_mass == 0]
-    for crate in _settings["scenario"]:
-        w, h = crate["w"], crate["h"]
-        kept.append(Body(box_points(w, h), crate["pos"], mass=w * h / 1000, angle=crate.get("angle", 0.0),
-                         vel=crate.get("vel", (0, 0)), omega=crate.get("omega", 0.0)))
+    kept.extend(build(item) for item in _settings["scenario"])
     return kept
 
 

@@ -14,7 +14,7 @@ import pytest
 
 from lab_run import ROOT, SOLUTION, run_lab
 from lesson11 import runtime
-from lesson11.physics2d import Body, World, box_points
+from lesson11.physics2d import Body, Circle, World, box_points
 
 
 @pytest.fixture(autouse=True)
@@ -114,6 +114,25 @@ def test_checker_scenario_keeps_statics_and_replaces_crates():
     assert (crate.pos.x, crate.pos.y, crate.angle, crate.vel.x) == (400, 200, 0.5, 10)
 
 
+def test_checker_scenario_uses_the_labs_own_builder():
+    runtime.configure({"scenario": [{"pos": [300, 100], "r": 12}]})
+    made = []
+
+    def ball(item):
+        made.append(item)
+        return Body(Circle(item["r"]), item["pos"], mass=1.0)
+    bodies = runtime.scene(statics_and_crate(), build=ball)
+    assert len(bodies) == 2 and made == [{"pos": [300, 100], "r": 12}]
+    assert bodies[1].shape.kind == "circle" and bodies[1].pos.x == 300
+
+
+def test_scenario_crate_without_its_size_is_one_line():
+    runtime.configure({"scenario": [{"w": 10, "pos": [0, 0]}]})
+    with pytest.raises(ValueError) as info:
+        runtime.scene(statics_and_crate())
+    assert "a crate needs" in str(info.value) and "\n" not in str(info.value)
+
+
 def test_checker_record_file_has_the_expected_keys(tmp_path):
     path = tmp_path / "record.json"
     runtime.configure({"frames": 7, "record": str(path), "record_every": 3})
@@ -142,7 +161,7 @@ def test_checker_record_file_has_the_expected_keys(tmp_path):
     ({"frames": "10"}, "setting 'frames' has the wrong type"),
     ({"fps": 0}, "'fps' must be > 0"),
     ({"script": [{"frame": 1, "type": "jump"}]}, "bad script item"),
-    ({"scenario": [{"w": 10, "pos": [0, 0]}]}, "bad scenario crate"),
+    ({"scenario": [{"w": 10, "h": 10}]}, "bad scenario body"),
     ([1, 2], "expected a JSON object"),
 ])
 def test_bad_settings_are_named_in_one_line(settings, words):
