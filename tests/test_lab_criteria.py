@@ -142,11 +142,17 @@ def test_pile_does_not_jitter_apart(pile_run):
 
 @pytest.fixture(scope="module")
 def own_scene_run(tmp_path_factory):
-    """The lab's own scene (4 crates) plus 10 clicks on the ramp and the pile; closed 3 s after the last."""
+    """The lab's own scene (4 crates) plus 10 clicks on the ramp and the pile; closed 4 s after the last.
+
+    4 s, as the checker's own-scene run: the last crates land on a tall pile, and
+    one of them may still be tipping over 3 s after the click (measured with the
+    solve-first World: a crate standing on end on another rocked at 27.7 px/s at
+    3 s and was down to 1.1 px/s at 3.5 s; slower than 30 px/s, so not a fast mover).
+    """
     drops = [(120, 150), (250, 200), (620, 100), (700, 150), (180, 120),
              (780, 100), (650, 60), (330, 180), (720, 40), (600, 200)]
     script = clicks(drops, 30, 20)
-    quit_frame = script[-1]["frame"] + 3 * FPS
+    quit_frame = script[-1]["frame"] + 4 * FPS
     script.append({"frame": quit_frame, "type": "quit"})
     run = _scenario(tmp_path_factory, {"frames": quit_frame + 120, "script": script})
     run.quit_frame = quit_frame
@@ -169,5 +175,5 @@ def test_printed_line_agrees_with_the_recorded_final_state(own_scene_run):
     bodies = run.crates(last)
     assert len(bodies) == run.line[1]
     assert sum(1 for b in bodies if speed(b) > FAST_MOVER) == run.line[2]
-    assert max(speed(b) for b in bodies) < 20            # measured 4.1 px/s
+    assert max(speed(b) for b in bodies) < 20            # measured 1.2 px/s (solve-first; move-first, 3 s: 4.1)
     assert all(-100 < b["pos"][0] < 1000 and b["pos"][1] < 560 for b in bodies)  # all still in the scene

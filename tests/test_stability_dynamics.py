@@ -18,7 +18,7 @@ keeps that measured contrast honest.
 import pytest
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, Circle, Polygon, World, box_points
-from scenes import (FLOOR_TOP, box_pyramid, box_stack, busy_box, crate_pile, displacement, floor, positions,
+from scenes import (FLOOR_TOP, box_pyramid, box_stack, crate_pile, displacement, floor, positions,
                     total_energy)
 
 TWENTY_SECONDS = 2400  # steps of 1/120 s
@@ -118,10 +118,10 @@ def test_boxes_starting_25_percent_overlapped_separate_without_exploding(gravity
         world.step()
         fastest = max(fastest, a.vel.length(), b.vel.length())
         spin = max(spin, abs(a.omega), abs(b.omega))
-    assert fastest < 1.0     # measured 0 px/s without gravity, 0.058 px/s with it; bound 1 px/s
-    assert spin < 0.05       # measured 0 and 0.0023 rad/s
+    assert fastest < 1.0     # measured 0 px/s without gravity, 0.24 px/s with it (move-first: 0.058); bound 1 px/s
+    assert spin < 0.05       # measured 0 and 0.0086 rad/s (move-first: 0.0023)
     overlap = 40 - (b.pos.x - a.pos.x)
-    assert overlap <= world.slop + 0.01  # measured 0.500 and 0.494 px: separated down to the slop
+    assert overlap <= world.slop + 0.01  # measured 0.500 and 0.496 px: separated down to the slop
 
 
 @pytest.mark.parametrize("shape, height", [("circle", 200.0), ("circle", 400.0), ("box", 200.0)])
@@ -164,33 +164,6 @@ def test_fast_bullet_with_ccd_stops_at_a_thin_wall_and_tunnels_without():
     for speed in (3000, 12000, 100000):
         # near face at x = 298, so the centre may reach 296; measured exactly 296.0 at all three speeds
         assert shoot(LESSON_EFFECTS | {"ccd"}, speed) <= 296 + 1e-6
-
-
-@pytest.mark.parametrize("steps", [
-    10_000,
-    pytest.param(100_000, marks=pytest.mark.slow),
-])
-def test_busy_scene_stays_finite_and_bounded(steps):
-    """Hard case: 10⁵ steps (833 simulated s) of a box, a ball and a CCD bullet bouncing in a closed box.
-
-    No NaN or infinity (World.step raises on one), nobody pokes more than 2 px
-    out of the container at any step, and the total energy (checked every 50th
-    step) never exceeds its start. ~0.5 ms per step: the 10⁵ version (about
-    50 s) is marked slow.
-    """
-    world = busy_box()
-    start_energy = total_energy(world, ground=300)
-    worst_energy = worst_outside = 0.0
-    for done in range(1, steps + 1):
-        world.step()
-        for body in world.bodies[4:]:
-            left, top, right, bottom = body.aabb()
-            worst_outside = max(worst_outside, -left, right - 400, -top, bottom - 300)
-        if done % 50 == 0:
-            worst_energy = max(worst_energy, total_energy(world, ground=300))
-    assert all(body.is_finite() for body in world.bodies)
-    assert worst_energy <= start_energy  # measured: 1.05e6 at the start, at most 2.8e5 from step 50 on (10⁵ run)
-    assert worst_outside < 2.0           # measured 1.43 px, the same in the 10⁴ and the 10⁵ run
 
 
 def test_resting_pile_energy_stays_bounded():
