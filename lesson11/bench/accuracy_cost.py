@@ -597,7 +597,8 @@ METHOD_NOTES = [
     "each 1/120 s step into 4, so a default World catches bullets like the ×4 row.",
     "Pile scenes start with every crate exactly touching its neighbours and at rest; an ideal engine "
     "would show 0 drift and 0 kinetic energy. The lesson's solver in World's default solve-first order "
-    "finds contacts twice per sub-step (4 sub-steps a step) and runs the passes on them, so its time grows "
+    "finds contacts once per sub-step (4 sub-steps a step, plus once at the end of the step) and runs the "
+    "passes on them, so its time grows "
     "with the passes but less than in proportion; the accumulated solver (if present) detects once per step.",
     "The effects study compares final positions with the baseline run of the same scene: 0 px means "
     "bit-for-bit the same simulation, and a round-off difference (below 10⁻⁶ px) the same motion, so any "
@@ -612,7 +613,7 @@ METHOD_NOTES = [
     "the time column as the price of readable Python.",
     "Study 6 runs lesson11/bench/solver_probe.py's scenes and measurements (y down, 1/120 s steps, "
     "40 px boxes) in each solver as that probe sets it up: the lesson solver 6 iterations in either order "
-    "(solve-first: 4 sub-steps of 1 + 6 resolve passes and a push-out pass; move-first: the lesson text's "
+    "(solve-first: 4 sub-steps of 1 + 6 resolve passes and a push-out; move-first: the lesson text's "
     "order), the reference solver (`solver=\"accumulated\"`) 3 sub-steps of 1 pass with either contact "
     "rule, pymunk 6 iterations. A rebound is the upward speed after the bouncing step / the downward speed "
     "before it; a flat box should leave with e and no spin. Its time is the seconds inside step() over all "

@@ -6,7 +6,8 @@ Every engine runs 1/120 s steps with the work of 6 passes per step: the lesson
 solver in the lesson text's order (order="move-first") 6 iterations, the reference
 ("accumulated") solver 3 sub-steps of 1 pass plus 1 relax pass, pymunk 6 iterations.
 The lesson solver in its default order (order="solve-first") does more: 4 sub-steps
-of 1 + 6 resolve passes and 1 push-out pass (contacts found twice per sub-step, not per pass). Units px, s; y down, gravity 980 px/s².
+of 1 + 6 resolve passes and 1 push-out (contacts found once per sub-step, not per pass, plus
+once at the end of the step). Units px, s; y down, gravity 980 px/s².
   flat e     a 40 px box dropped flat from 100 px: rebound speed / impact speed, and its spin (rad/s)
   stack      10 boxes (40 px) for 20 s: largest drift of any box (px)
   100:1      a 100× heavier box on a light one for 5 s: deepest overlap (px), and whether the heavy one stays on top
