@@ -1,7 +1,7 @@
 """More Shapes: a Lesson 11 "Going Further" exercise.
 
-Triangles, pentagons, hexagons and little houses join the crates of Tumbling
-Crates, on the same floor, 22° ramp and wall. The physics is the lesson's:
+Triangles, pentagons, hexagons and little houses join the crates of the
+lesson's project, on the same floor, 22° ramp and wall. The physics is the lesson's:
 polygon_inertia works for any convex polygon as long as its points are
 centred on the centroid, and SAT works for any convex polygon if it tests
 every edge direction of both shapes. This file makes both true for the new
