@@ -220,8 +220,10 @@ def centroid(sub, functions):
                 if _close(got[0], want[0] * factor, scale) and _close(got[1], want[1] * factor, scale):
                     named = f" That is {factor:g} × the centroid: the sum is divided by {words}."
                     break
+        differs = not (_close(average[0], want[0], scale) and _close(average[1], want[1], scale))
+        aside = f" (the corners' average is {_vec(average)})" if differs else ""
         raise Fail(f"for {case['case']}, polygon_centroid gives {_vec(got)}; the area-weighted centroid is "
-                   f"{_vec(want)} (the corners' average is {_vec(average)})." + named, HINTS["centroid"])
+                   f"{_vec(want)}{aside}." + named, HINTS["centroid"])
     return f"the centroid of all {len(cases)} outlines (both windings) is the area-weighted one"
 
 
