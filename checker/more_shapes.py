@@ -194,6 +194,23 @@ def polygon_corners(sub, functions):
 
 # ---------------------------------------------------------------- step 3: polygon_centroid
 
+def _close_point(got, want, scale):
+    return want is not None and _close(got[0], want[0], scale) and _close(got[1], want[1], scale)
+
+
+def _without_closing_edge(case):
+    """The centroid sum with the last edge (last point back to the first) left out, or None."""
+    points, area = case["points"], case["area"]
+    if not area:
+        return None
+    x = y = 0.0
+    for (ax, ay), (bx, by) in zip(points, points[1:]):
+        w = ax * by - ay * bx
+        x += (ax + bx) * w
+        y += (ay + by) * w
+    return [x / (6 * area), y / (6 * area)]
+
+
 @CHECKS.check(depends=["loads"])
 def centroid(sub, functions):
     """Step 3: polygon_centroid() is the area-weighted centroid Σ (a + b)(a × b) / (6 A), either winding."""
@@ -214,6 +231,9 @@ def centroid(sub, functions):
         elif _close(got[0], -want[0], scale) and _close(got[1], -want[1], scale):
             named = (" That is the centroid with its sign flipped: divide by the signed area A (polygon_area), not "
                      "by -A or |A|, so that either winding works.")
+        elif _close_point(got, _without_closing_edge(case), scale):
+            named = (" The edge from the last point back to the first is missing: the loop must run over every "
+                     "edge, (i + 1) % len(points) wrapping round.")
         else:
             for factor, words in ((3, "2A instead of 6A"), (6, "A instead of 6A"), (2, "3A instead of 6A"),
                                   (1 / 2, "12A instead of 6A")):
@@ -238,6 +258,8 @@ INERTIA_MISTAKES = {
     "unweighted": "the triangles are not weighted by |a × b| (their area)",
     "corner_radii": "that is m × the mean squared corner distance, not the triangle-fan sum",
     "no_abs": "the weights are the signed a × b; use abs(cross(a, b)) so that either winding works",
+    "precedence": "mass * num / 6 * den multiplies by the weights' sum: divide by (6 * den), brackets included",
+    "minus_cross_term": "the a·b term is subtracted; each triangle adds a·a + a·b + b·b",
 }
 
 

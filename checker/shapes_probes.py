@@ -133,6 +133,9 @@ def _inertia_forms(points, mass):
         "unweighted": mass * sum(terms) / (6 * len(terms)),
         "corner_radii": mass * sum(p.length_squared() for p in pts) / len(pts),
         "times_mass_squared": mass * mass * sum(w * t for w, t in zip(weights, terms)) / (6 * total),
+        "precedence": mass * sum(w * t for w, t in zip(weights, terms)) / 6 * total,
+        "minus_cross_term": mass * sum(w * (a.dot(a) - a.dot(b) + b.dot(b)) for w, (a, b) in zip(weights, pairs))
+        / (6 * total),
     }
     if abs(sum(signed)) > 0:
         forms["no_abs"] = mass * sum(s * t for s, t in zip(signed, terms)) / (6 * sum(signed))
