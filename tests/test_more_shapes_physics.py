@@ -50,3 +50,15 @@ def test_body_rejects_a_bad_inertia_in_one_line(inertia, message):
 def test_a_static_body_takes_no_inertia():
     with pytest.raises(ValueError, match="static body"):
         Body(box_points(30, 20), (0, 0), 0, inertia=10.0)
+
+
+def test_the_solver_panel_says_a_lab_that_hooks_only_sat_runs_its_sat():
+    """More Shapes hands the World its sat() but not resolve(): the panel says whose functions run."""
+    from lesson11.panel import LabPanel
+    from lesson11.physics2d import World, sat
+
+    world = World([Body(box_points(60, 40), (0, 0), 1.0)], sat=lambda pa, pb: sat(pa, pb))
+    panel = LabPanel()
+    panel.adopt(world)
+    assert "runs your sat() and physics2d's resolve()" in repr(panel.lines(world))
+    assert "runs physics2d's sat() and resolve()" in repr(panel.lines(World([])))
