@@ -68,6 +68,7 @@ def regular_polygon(sides, radius):
 
 def polygon_area(points):
     """Signed area (px²) by the shoelace formula: A = ½ Σ p_i × p_i+1 (positive for clockwise on screen)."""
+    points = [Vector2(p) for p in points]
     return 0.5 * sum(cross(a, points[(i + 1) % len(points)]) for i, a in enumerate(points))
 
 
@@ -77,6 +78,7 @@ def polygon_centroid(points):
     C = Σ (p_i + p_i+1) (p_i × p_i+1) / (6 A), with A the signed shoelace area.
     This is the centre of mass of the solid shape, not the average of its corners.
     """
+    points = [Vector2(p) for p in points]
     if len(points) < 3:
         raise ValueError(f"a polygon needs at least 3 points, got {len(points)}")
     area = polygon_area(points)
@@ -105,6 +107,7 @@ def polygon_inertia(points, mass):
     For a w × h box this is m (w² + h²) / 12; for a regular n-gon of
     circumradius r it is m r² (2 + cos(2π/n)) / 6.
     """
+    points = [Vector2(p) for p in points]
     if len(points) < 3:
         raise ValueError(f"a polygon needs at least 3 points, got {len(points)}")
     if not isinstance(mass, (int, float)) or not 0 < mass < math.inf:
@@ -162,14 +165,17 @@ def outline(item):
     """The corners (px) of one shape, not yet centred: a box {"w", "h"}, a regular polygon
     {"size": circumradius}, or a house {"w", "h"} (a box with a gable roof, its corner at (0, 0))."""
     kind = item.get("kind", "box")
-    if kind == "box":
-        return box_points(item["w"], item["h"])
+    if kind not in KINDS:
+        raise ValueError(f"unknown shape kind {kind!r}; known: {', '.join(KINDS)}")
+    needs = ("size",) if kind in SIDES else ("w", "h")
+    if any(not isinstance(item.get(key), (int, float)) or not item[key] > 0 for key in needs):
+        raise ValueError(f"a {kind} needs {' and '.join(repr(key) for key in needs)} in px (> 0), got {item!r}")
     if kind in SIDES:
         return regular_polygon(SIDES[kind], item["size"])
-    if kind == "house":
-        w, h = item["w"], item["h"]
-        return [Vector2(0, 0), Vector2(0, -0.6 * h), Vector2(w / 2, -h), Vector2(w, -0.6 * h), Vector2(w, 0)]
-    raise ValueError(f"unknown shape kind {kind!r}; known: {', '.join(KINDS)}")
+    w, h = item["w"], item["h"]
+    if kind == "box":
+        return box_points(w, h)
+    return [Vector2(0, 0), Vector2(0, -0.6 * h), Vector2(w / 2, -h), Vector2(w, -0.6 * h), Vector2(w, 0)]
 
 
 def build(item):
