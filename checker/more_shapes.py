@@ -343,7 +343,7 @@ def parallel_axes(sub, functions):
         if got is None:
             raise Fail(f"with your axes sat() says {label} is apart, but the shapes overlap by {want['depth']:.2f} px.",
                        HINTS["axes"])
-        along = got["normal"][0] * want["normal"][0] + got["normal"][1] * want["normal"][1]
+        along = max(got["normal"][0] * t[0] + got["normal"][1] * t[1] for t in case["ties"] or [want["normal"]])
         if not _close(got["depth"], want["depth"]) or abs(along - 1) > 1e-6:
             raise Fail(f"with your axes sat() gives {got['depth']:.4g} px along {_vec(got['normal'])} for {label}; "
                        f"the smallest overlap is {want['depth']:.4g} px along {_vec(want['normal'])}.", HINTS["axes"])

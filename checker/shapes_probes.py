@@ -222,8 +222,23 @@ def probe_sat(module, lab_path):
             got = module.sat([Vector2(p) for p in first], [Vector2(p) for p in second])
             want = crates_probes.reference_sat(first, second, "lesson")
             cases.append({"pair": name, "order": order, "got": crates_probes.sat_answer(got),
-                          "want": None if want is None else {"normal": list(want[0]), "depth": want[1]}})
+                          "want": None if want is None else {"normal": list(want[0]), "depth": want[1]},
+                          "ties": [] if want is None else _tied_normals(first, second, want[1])})
     return cases
+
+
+def _tied_normals(pa, pb, depth):
+    """Every edge normal (turned to point from A to B) whose overlap equals the smallest, `depth`.
+
+    When two directions tie, the axis sat() keeps depends on the order of the axes, and either
+    is a right answer; the check accepts any of them.
+    """
+    towards_b = crates_probes.centre_of(pb) - crates_probes.centre_of(pa)
+    tied = []
+    for axis, overlap, _ in crates_probes.axis_overlaps(pa, pb):
+        if abs(overlap - depth) <= 1e-9 * max(1.0, depth):
+            tied.append(list(axis if towards_b.dot(axis) >= 0 else -axis))
+    return tied
 
 
 # ---------------------------------------------------------------- the lab's bodies

@@ -301,6 +301,14 @@ CORRECT = [
                 if all(abs(cross(normals[i], kept)) > PARALLEL for kept in axes):
                     axes.append(normals[i])
         """}, why="Vector2 * Vector2 is the dot product; by index is the same loop"),
+    correct("correct_b_first_one_way", "B's normals first, each axis turned to point right (or down)", {5: """
+        for axis in edge_normals(pb) + edge_normals(pa):
+            if axis.x < -PARALLEL or (abs(axis.x) <= PARALLEL and axis.y < 0):
+                axis = -axis  # one way per direction
+            if all(abs(cross(axis, kept)) > PARALLEL for kept in axes):
+                axes.append(axis)
+    """}, why="the same directions in another order and sense: sat() turns its normal from A to B anyway, "
+              "and no two directions tie for the smallest overlap"),
 ]
 
 ENTRIES = CORRECT + WRONG
