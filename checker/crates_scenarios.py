@@ -214,3 +214,32 @@ def drops_added(record):
     """How many crates the scripted clicks added: the dynamic bodies at the end minus those at the start."""
     frames = record["records"]
     return len(dynamic(frames[-1])) - len(dynamic(frames[0]))
+
+
+# --- shared metrics added for More Shapes ---
+
+def dynamic_arrays(record):
+    """The dynamic bodies' states over a record as numpy arrays (frames × bodies).
+
+    Keys: "pos" and "vel" (frames × bodies × 2, px and px/s), "angle" (rad), "omega" (rad/s),
+    "speed" (px/s). Every frame must hold the same dynamic bodies (true for a scene without clicks).
+    """
+    import numpy as np
+    frames = [dynamic(frame) for frame in record["records"]]
+    pos = np.array([[body["pos"] for body in bodies] for bodies in frames], dtype=float)
+    vel = np.array([[body["vel"] for body in bodies] for bodies in frames], dtype=float)
+    return {"pos": pos, "vel": vel, "speed": np.hypot(vel[..., 0], vel[..., 1]),
+            "angle": np.array([[body["angle"] for body in bodies] for bodies in frames], dtype=float),
+            "omega": np.array([[body["omega"] for body in bodies] for bodies in frames], dtype=float)}
+
+
+def resting_side_error(body):
+    """How far (rad) a body's lowest edge is from horizontal: 0 when it lies flat on a side on the floor.
+
+    The lowest edge is the one whose midpoint is lowest on screen (largest y); works for any
+    convex polygon, whatever its number of sides or the angle convention of its corners.
+    """
+    points = body["points"]
+    edges = [(points[i], points[(i + 1) % len(points)]) for i in range(len(points))]
+    a, b = max(edges, key=lambda edge: edge[0][1] + edge[1][1])
+    return math.atan2(abs(b[1] - a[1]), abs(b[0] - a[0]))

@@ -25,9 +25,9 @@ import re
 
 from . import crates_probes as probes
 from . import crates_scenarios as scenes
-from . import handout
+from . import lab_checks
 from .checks import Error, Fail, Hint, Passed, Registry
-from .common import describe_function_error, describe_run_failure, shown
+from .common import describe_run_failure, shown
 
 TITLE = "Tumbling Crates"
 PROBES = "checker.crates_probes"
@@ -35,7 +35,7 @@ REQUIRED = probes.REQUIRED
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
-RUNTIME_HOOKS = ("seed", "scene", "frame_budget", "tick", "events", "record")
+RUNTIME_HOOKS = lab_checks.RUNTIME_HOOKS
 
 # ---------------------------------------------------------------- tolerances of the function checks
 REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
@@ -114,10 +114,7 @@ HINTS = {
                    "Crates keep moving where they should rest. Press D and watch the contact points and normals "
                    "while they settle; the function checks above all pass, so compare your file with the handout "
                    "around the steps."),
-    "runtime": Hint(None, "the lines marked # lab runtime",
-                    "Keep the lines marked `# lab runtime` from the handout (lab.seed, lab.scene, lab.frame_budget, "
-                    "lab.tick, lab.events, lab.record): they do nothing when you run the file yourself, and the "
-                    "checker needs them to run it headless."),
+    "runtime": lab_checks.RUNTIME_HINT,
     "print": Hint(7, "the final line",
                   "After the loop, print the line the handout prints: count the dynamic crates whose speed is "
                   "above 30 px/s in the world you simulated, e.g. "
@@ -152,14 +149,7 @@ def _vec(v):
 
 def _function(sub, functions, probe, function, step):
     """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped."""
-    entry = functions.get(probe)
-    if entry is None:
-        raise Error(f"{sub.name} defines no {function}().", HINTS["crash"])
-    if not entry["ok"]:
-        hint = Hint(step, f"the error in {function}()", f"Your code in {function}() stopped with the error above; "
-                    "fix it at the line shown, then run the checker again.")
-        raise Error(describe_function_error(function, entry["error"], sub.name), hint)
-    return entry["data"]
+    return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
 
 
 # ---------------------------------------------------------------- loading and the handout
@@ -167,61 +157,20 @@ def _function(sub, functions, probe, function, step):
 @CHECKS.check()
 def loads(sub):
     """The file imports without errors and defines sat, apply_impulse, resolve and main."""
-    run = sub.probe
-    if run.status != "done":
-        raise Error(describe_run_failure(run, sub.name, "The file"), HINTS["crash"])
-    missing = run.result["probe"]["missing"]
-    if missing:
-        raise Error(f"{sub.name} defines no function {missing[0]}() (missing: {', '.join(missing)}).",
-                    Hint(None, "the handout's functions", "Keep the handout's function names: sat, apply_impulse, "
-                         "resolve and main; the checker calls them."))
-    return run.result["probe"]["functions"]
+    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
+                             "function names: sat, apply_impulse, resolve and main; the checker calls them."))
 
 
 @CHECKS.check(depends=["loads"])
 def handout_unchanged(sub, functions):
     """The code outside the steps is the handout's (formatting and comments aside)."""
-    try:
-        with open(STARTER, encoding="utf-8") as handle:
-            starter = handle.read()
-    except OSError as exc:
-        raise Error(f"the checker cannot read the handout {STARTER} ({exc.strerror}) to compare with; "
-                    "reinstall the lab bundle.")
-    try:
-        comparison = handout.compare(sub.source, starter, sub.name, "the handout")
-    except handout.MarkerError as exc:
-        raise Fail(f"{exc}.", HINTS["handout"])
-    added = f" (added imports: {'; '.join(comparison.added_imports)})" if comparison.added_imports else ""
-    if comparison.same:
-        return "the code outside the steps is the handout's" + added
-    listed = "; ".join(comparison.problems[:handout.MAX_PROBLEMS])
-    more = len(comparison.problems) - handout.MAX_PROBLEMS
-    text = f"code outside the steps differs from the handout: {listed}" + (f"; and {more} more" if more > 0 else "")
-    if sub.options.get("allow_edits"):
-        return f"warning (allowed by --allow-edits): {text}."
-    raise Fail(text + ".", HINTS["handout"])
+    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
 
 
 @CHECKS.check(depends=["loads"])
 def runtime_lines(sub, functions):
     """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
-    try:
-        tree = ast.parse(sub.source)
-    except (SyntaxError, ValueError, RecursionError, MemoryError):
-        raise Error(f"{sub.name} could not be read as Python source.", HINTS["crash"])
-    called = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Call):
-            func = node.func
-            if isinstance(func, ast.Attribute):
-                called.add(func.attr)
-            elif isinstance(func, ast.Name):
-                called.add(func.id)
-    missing = [hook for hook in RUNTIME_HOOKS if hook not in called]
-    if missing:
-        raise Fail("the lab-runtime call" + ("s " if len(missing) > 1 else " ")
-                   + ", ".join(f"lab.{m}()" for m in missing) + " " + ("are" if len(missing) > 1 else "is")
-                   + " missing, so the checker cannot run the file headless.", HINTS["runtime"])
+    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
 
 
 # ---------------------------------------------------------------- step 2 and step 3: sat()

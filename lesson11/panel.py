@@ -43,6 +43,8 @@ from collections import deque
 
 import pygame
 
+from .physics2d.collision import sat as sat_of_physics2d
+
 MAX_ITERATIONS = 50     # the Up key stops here: 50 passes of the lesson solver take ~30 ms per step
 MAX_SUBSTEPS = 16       # the Right key stops here
 GRAPH_SECONDS = 3       # s of history in the graph
@@ -259,11 +261,13 @@ class LabPanel:
 
         reference = now["solver"] == "accumulated"
         hooked = getattr(world, "resolve", None) != getattr(world, "lesson_resolve", None)
+        sat_only = not hooked and getattr(world, "sat", sat_of_physics2d) is not sat_of_physics2d  # e.g. More Shapes
         if reference:
-            note = ("your sat() and resolve() are NOT used" if hooked else "the lesson's resolve() is not used",
-                    WARNING)
+            note = ("your sat() and resolve() are NOT used" if hooked else "your sat() is NOT used" if sat_only
+                    else "the lesson's resolve() is not used", WARNING)
         else:
-            note = ("runs your sat() and resolve()" if hooked else "runs physics2d's sat() and resolve()", DIM)
+            note = ("runs your sat() and resolve()" if hooked else "runs your sat() and physics2d's resolve()"
+                    if sat_only else "runs physics2d's sat() and resolve()", DIM)
         warm = ("on" if now["warm_starting"] else "off") + (missing("warm_starting") or
                                                              ("" if reference else "  (reference solver only)"))
         return [("S", "solver", "accumulated (reference)" if reference else "lesson",

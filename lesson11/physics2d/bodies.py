@@ -25,10 +25,15 @@ class Body:
 
     `shape` may also be a list of points (a convex polygon) for the lesson's
     Body(points, pos, mass) form.
+
+    `inertia` (mass·px²), when given, is used in place of shape.inertia(mass):
+    a lab that computes the moment of inertia with its own polygon_inertia
+    passes it here. It must be a finite number > 0, and only a dynamic body
+    (mass > 0) takes one.
     """
 
     def __init__(self, shape, pos=(0, 0), mass=1.0, angle=0.0, vel=(0, 0), omega=0.0,
-                 restitution=0.2, friction=0.6, color=(200, 150, 90), bullet=False):
+                 restitution=0.2, friction=0.6, color=(200, 150, 90), bullet=False, inertia=None):
         if not isinstance(shape, (Polygon, Circle)):
             shape = Polygon(shape)
         self.shape = shape
@@ -48,11 +53,17 @@ class Body:
         self.color = color
         self.bullet = bool(bullet)
         self.mass = mass
+        if inertia is not None:
+            inertia = finite_number(inertia, "body inertia")
+            if mass == 0:
+                raise ValueError(f"a static body (mass 0) takes no inertia, got inertia={inertia}")
+            if inertia <= 0:
+                raise ValueError(f"body inertia must be > 0 (mass·px²), got {inertia}")
         if mass == 0:  # static: infinite mass and inertia
             self.inv_mass = self.inv_inertia = 0.0
             self.inertia = 0.0
         else:
-            self.inertia = shape.inertia(mass)
+            self.inertia = shape.inertia(mass) if inertia is None else inertia
             if not (0 < self.inertia < math.inf and 1 / mass < math.inf and 1 / self.inertia < math.inf):
                 raise ValueError(f"body mass {mass:g} with this shape gives a moment of inertia of {self.inertia:g}, "
                                  "too small or too large to invert; use a mass and size nearer 1")

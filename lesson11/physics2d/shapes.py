@@ -73,9 +73,11 @@ def polygon_inertia(points, mass):
     return mass * num / (6 * den)
 
 
-def convex_polygon(points):
+def convex_polygon(points, recentre=True):
     """Validate a convex polygon and return its corners re-centred on the centroid.
 
+    With recentre=False the corners are validated but kept where they are (a
+    lab that centres them with its own centroid function passes them this way).
     Accepts either winding. Duplicate consecutive points are dropped. Raises
     ValueError when `points` is not a list of points, there are fewer than 3
     distinct points, a point is not finite, the area is zero, the outline turns
@@ -109,17 +111,27 @@ def convex_polygon(points):
                   for i, e in enumerate(edges))
     if abs(abs(winding) - 2 * math.pi) > 1e-6:  # a star turns one way but goes round more than once
         raise ValueError("a polygon must be convex (no dents); this outline goes round more than once and crosses itself")
+    if not recentre:
+        return distinct
     centre = polygon_centroid(distinct)
     return [p - centre for p in distinct]
 
 
 class Polygon:
-    """A convex polygon shape: `points` (list of Vector2, px) centred on its centroid."""
+    """A convex polygon shape: `points` (list of Vector2, px) centred on its centroid.
+
+    Polygon(points, recentre=False) keeps the points as given (validated, not
+    moved): the body's pos is then their (0, 0), which is its centre of mass
+    only if the caller centred them on their centroid (the More Shapes lab
+    does this with the student's polygon_centroid).
+    """
 
     kind = "polygon"
 
-    def __init__(self, points):
-        self.points = convex_polygon(points)
+    def __init__(self, points, recentre=True):
+        if not isinstance(recentre, bool):
+            raise ValueError(f"Polygon recentre must be True or False, got {recentre!r}")
+        self.points = convex_polygon(points, recentre)
         self.radius = max(p.length() for p in self.points)  # bounding circle (px)
 
     def area(self):

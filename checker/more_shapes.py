@@ -1,0 +1,475 @@
+"""More Shapes (Lesson 11 "Going Further"): the checks, their bounds and the hints.
+
+Order of checks (stable), one per lesson step where a step is the student's:
+  loads, handout_unchanged, runtime_lines,
+  polygon_corners (step 2), centroid (step 3), inertia_sum (step 4), parallel_axes (step 5),
+  bodies_inertia (the inertia criterion, on the lab's own bodies),
+  runs, then the scenes' criteria: triangle_tips, hexagon_tips, pile_stable, ramp_holds.
+Checks are worth 1 point, the five criteria 2 points each.
+
+The function checks compare the student's regular_polygon, polygon_centroid,
+polygon_inertia and separating_axes (and the handout's sat() running on the
+student's axes) with the lesson's formulas on checker/shapes_probes.py's
+configurations and name the first that differs, and the mistake when it is
+a usual one. The scenes (checker/shapes_scenarios.py) run only when every
+function check passes. The lab's build() makes every scene body with the
+student's functions, so the scenes exercise them.
+
+Every bound of the criteria was set from what solutions/more_shapes.py
+measures in the same scene, with the measured value noted next to it.
+"""
+import math
+import os
+
+from . import crates_scenarios as crates
+from . import lab_checks
+from . import shapes_scenarios as scenes
+from .checks import Fail, Hint, Passed, Registry
+from .common import shown
+
+TITLE = "More Shapes"
+PROBES = "checker.shapes_probes"
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "more_shapes_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "more_shapes.py")
+
+# ---------------------------------------------------------------- tolerances of the function checks
+REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
+ABS = 1e-7      # absolute floor (px, px², mass·px²)
+TOUCHING = 1e-6  # px: a depth this small for shapes exactly touching counts as "apart"
+
+# ---------------------------------------------------------------- bounds (measured on the solution)
+INERTIA_REL = 1e-3              # the lab's bodies against the analytic inertia; solution: 2e-16 (float rounding)
+CENTRED = 1e-6                  # px: the lab's corners' centroid from (0, 0); solution: 6e-15
+TIPPED_FLAT = math.radians(6)   # rad, the lowest side from flat at the end; solution: triangle 0.33°, hexagon 0.002°
+TRIANGLE_TURN = math.radians(25)  # rad turned falling off its corner; solution: 53.5° (it lands 0.12 rad off)
+HEXAGON_TURN = math.radians(50)   # rad: over at least one corner (60°); solution: 180.0° (three corners)
+REST_SPEED = 5.0                # px/s over the last 0.5 s; solution: triangle 0.013, hexagon 0.48
+REST_OMEGA = 0.2                # rad/s over the last 0.5 s; solution: triangle 0.00006, hexagon 0.017
+PENETRATION = 1.0               # px below the floor's top face; solution: triangle 0.50, pile 0.50
+PAIR_OVERLAP = 2.0              # px between two shapes in the pile; solution: 0.50
+PILE_SPEED = 5.0                # px/s in the pile's last 0.5 s; solution: 1.62 (a pile is chaotic: margin 3x)
+PILE_DRIFT = 3.0                # px a shape's centre moves in the pile's last 0.5 s; solution: 0.39
+RAMP_SLIDE = 1.0                # px along the slope in 3 s (as Tumbling Crates); solution: pentagon 0.18, hexagon 0.06
+RAMP_SPEED = 2.0                # px/s in the last second; solution: 0.29
+GRAVITY = 980.0                 # px/s², the course's gravity
+GRAVITY_TOLERANCE = 0.01        # relative; the solution measures 980.0 in the pile's free fall
+
+# ---------------------------------------------------------------- the hints, in the lesson's terms
+HINTS = {
+    "corners": Hint(2, "a regular polygon's corners",
+                    "Put corner k on the circle at angle θk = 2πk / sides: (radius cos θk, radius sin θk) for k = 0 "
+                    "to sides - 1, so corner 0 is (radius, 0) and there are exactly `sides` corners. Angles in "
+                    "radians (math.cos takes radians)."),
+    "centroid": Hint(3, "the area-weighted centroid",
+                     "polygon_inertia only works when the points are centred on the centroid, the centre of mass "
+                     "of the solid shape. That is not the average of the corners: weight each edge's term by its "
+                     "area, C = Σ (a + b) (a × b) / (6 A) over the edges a→b, with A the signed shoelace area "
+                     "polygon_area(points) (its sign makes either winding work)."),
+    "inertia": Hint(4, "the triangle-fan sum",
+                    "Cut the polygon into triangles (0, a, b), one per edge a→b. Each weighs |a × b| (twice its "
+                    "area) and contributes a·a + a·b + b·b; I = mass × Σ |a × b| (a·a + a·b + b·b) / (6 Σ |a × b|). "
+                    "Check: a 30 × 20 box of mass 2 gives 216.67, as m (w² + h²) / 12 does."),
+    "axes": Hint(5, "skip parallel axes, keep every direction",
+                 "SAT must test every edge direction of both shapes, but parallel normals (the same line, pointing "
+                 "either way) cast the same shadows: keep an edge normal only if |axis × kept| > PARALLEL for "
+                 "every axis kept so far. A box has 2 directions, a hexagon 3; skipping a direction that is not "
+                 "parallel makes SAT miss gaps."),
+    "handout": Hint(None, "keep the handed-out code",
+                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
+                    "else (the shapes, build(), sat(), the scene, the World, the `# lab runtime` lines, the final "
+                    "print) stays as handed out, so the checker measures the lab the exercise describes. Start "
+                    "again from the starter if you are unsure what changed."),
+    "runtime": lab_checks.RUNTIME_HINT,
+    "sinking": Hint(6, "the push-out after the impulses",
+                    "Shapes sink: the overlap is not being removed. The World's push-out (separate) must stay on, "
+                    "and each body's corners must be centred on its centroid (step 3)."),
+    "settle": Hint(6, "watch them settle",
+                   "Shapes keep moving where they should rest. Press D and watch the contact points, the normals "
+                   "and the centre-of-mass dots while they settle; the function checks above all pass, so compare "
+                   "your file with the handout around the steps."),
+    "crash": Hint(1, "run the file",
+                  "Run the file yourself (python more_shapes.py) and fix the error at the line shown."),
+}
+
+CHECKS = Registry()
+
+
+def recognise(path, source):
+    """True if the file is a More Shapes lab: its name or its text says so."""
+    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
+    return "more_shapes" in name or "more shapes" in source.lower()
+
+
+def scenarios():
+    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
+    return {name: build() for name, build in scenes.SCENARIOS.items()}
+
+
+# ---------------------------------------------------------------- helpers
+
+def _close(got, want, scale=1.0):
+    return abs(got - want) <= ABS * max(scale, 1.0) + REL * abs(want)
+
+
+def _vec(v):
+    return f"({v[0]:.2f}, {v[1]:.2f})"
+
+
+def _function(sub, functions, probe, function, step):
+    return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
+
+
+def _bad(value, what, hint):
+    """Fail if a probe recorded a value the student's function returned that is not the right type."""
+    if isinstance(value, str):
+        raise Fail(f"{what} must be {'a list of points' if 'list' in what else 'a number'}; it returned {value}.",
+                   hint)
+
+
+# ---------------------------------------------------------------- loading and the handout
+
+@CHECKS.check()
+def loads(sub):
+    """The file imports without errors and defines regular_polygon, polygon_centroid, polygon_inertia,
+    separating_axes, sat, build and main."""
+    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
+                             "function names: regular_polygon, polygon_centroid, polygon_inertia, separating_axes, "
+                             "sat, build and main; the checker calls them."))
+
+
+@CHECKS.check(depends=["loads"])
+def handout_unchanged(sub, functions):
+    """The code outside the steps is the handout's (formatting and comments aside)."""
+    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+
+
+@CHECKS.check(depends=["loads"])
+def runtime_lines(sub, functions):
+    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
+    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+
+
+# ---------------------------------------------------------------- step 2: regular_polygon
+
+def _corner_mistake(case, got):
+    """A sentence naming a usual step-2 mistake, or ''."""
+    sides, radius = case["sides"], case["radius"]
+    want = case["want"]
+    if len(got) != sides:
+        return (f" It has {len(got)} corners; a {sides}-gon has {sides}: k runs over range(sides), corner k at "
+                f"θk = 2πk / sides.")
+    distances = [math.hypot(*p) for p in got]
+    if not all(_close(d, radius, radius) for d in distances):
+        ratio = sum(distances) / len(distances) / radius
+        if all(_close(d / radius, ratio) for d in distances):
+            return (f" Every corner is {ratio:.4g} × radius from the centre; they belong on the circle of `radius` "
+                    "px.")
+        return " The corners are not all `radius` px from the centre (0, 0)."
+    same_set = all(any(_close(g[0], w[0], radius) and _close(g[1], w[1], radius) for w in want) for g in got)
+    if same_set:
+        return " These are the right corners in another order: corner k belongs at θk = 2πk / sides, k = 0, 1, ..."
+    return (" The corners lie on the circle but at other angles: corner 0 at (radius, 0), and each next one "
+            "2π / sides further (radians, increasing, so clockwise on screen).")
+
+
+@CHECKS.check(depends=["loads"])
+def polygon_corners(sub, functions):
+    """Step 2: regular_polygon(sides, radius) puts corner k at radius (cos θk, sin θk), θk = 2πk / sides."""
+    cases = _function(sub, functions, "regular_polygon", "regular_polygon", 2)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        label = f"regular_polygon({case['sides']}, {case['radius']:g})"
+        _bad(got, f"{label} (a list of points)", HINTS["corners"])
+        if len(got) == len(want) and all(_close(g[0], w[0], case["radius"]) and _close(g[1], w[1], case["radius"])
+                                         for g, w in zip(got, want)):
+            continue
+        first = next((k for k, (g, w) in enumerate(zip(got, want)) if not (_close(g[0], w[0], case["radius"])
+                      and _close(g[1], w[1], case["radius"]))), min(len(got), len(want)))
+        shown_corner = f"corner {first} is {_vec(got[first])}, expected {_vec(want[first])}" \
+            if first < min(len(got), len(want)) else f"{len(got)} corners, expected {len(want)}"
+        raise Fail(f"{label}: {shown_corner}." + _corner_mistake(case, got), HINTS["corners"])
+    return f"the corners of all {len(cases)} polygons (3 to 12 sides) are the lesson's"
+
+
+# ---------------------------------------------------------------- step 3: polygon_centroid
+
+def _close_point(got, want, scale):
+    return want is not None and _close(got[0], want[0], scale) and _close(got[1], want[1], scale)
+
+
+def _without_closing_edge(case):
+    """The centroid sum with the last edge (last point back to the first) left out, or None."""
+    points, area = case["points"], case["area"]
+    if not area:
+        return None
+    x = y = 0.0
+    for (ax, ay), (bx, by) in zip(points, points[1:]):
+        w = ax * by - ay * bx
+        x += (ax + bx) * w
+        y += (ay + by) * w
+    return [x / (6 * area), y / (6 * area)]
+
+
+@CHECKS.check(depends=["loads"])
+def centroid(sub, functions):
+    """Step 3: polygon_centroid() is the area-weighted centroid Σ (a + b)(a × b) / (6 A), either winding."""
+    cases = _function(sub, functions, "polygon_centroid", "polygon_centroid", 3)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if isinstance(got, str):
+            raise Fail(f"polygon_centroid must return a point (a Vector2); for {case['case']} it returned {got}.",
+                       HINTS["centroid"])
+        scale = max(max(abs(x), abs(y)) for x, y in case["points"])
+        if _close(got[0], want[0], scale) and _close(got[1], want[1], scale):
+            continue
+        average = case["average"]
+        named = ""
+        if _close(got[0], average[0], scale) and _close(got[1], average[1], scale):
+            named = (" That is the average of the corners, which is the centre of mass only for triangles and "
+                     "symmetric shapes: weight by area.")
+        elif _close(got[0], -want[0], scale) and _close(got[1], -want[1], scale):
+            named = (" That is the centroid with its sign flipped: divide by the signed area A (polygon_area), not "
+                     "by -A or |A|, so that either winding works.")
+        elif _close_point(got, _without_closing_edge(case), scale):
+            named = (" The edge from the last point back to the first is missing: the loop must run over every "
+                     "edge, (i + 1) % len(points) wrapping round.")
+        else:
+            for factor, words in ((3, "2A instead of 6A"), (6, "A instead of 6A"), (2, "3A instead of 6A"),
+                                  (1 / 2, "12A instead of 6A")):
+                if _close(got[0], want[0] * factor, scale) and _close(got[1], want[1] * factor, scale):
+                    named = f" That is {factor:g} × the centroid: the sum is divided by {words}."
+                    break
+        differs = not (_close(average[0], want[0], scale) and _close(average[1], want[1], scale))
+        aside = f" (the corners' average is {_vec(average)})" if differs else ""
+        raise Fail(f"for {case['case']}, polygon_centroid gives {_vec(got)}; the area-weighted centroid is "
+                   f"{_vec(want)}{aside}." + named, HINTS["centroid"])
+    return f"the centroid of all {len(cases)} outlines (both windings) is the area-weighted one"
+
+
+# ---------------------------------------------------------------- step 4: polygon_inertia
+
+INERTIA_MISTAKES = {
+    "no_six": "the sum is not divided by 6",
+    "twelve": "the sum is divided by 12 where the formula has 6",
+    "no_mass": "the mass factor is missing",
+    "times_mass_squared": "the mass is multiplied in twice",
+    "no_cross_term": "each triangle's term lacks a·b: it is a·a + a·b + b·b",
+    "unweighted": "the triangles are not weighted by |a × b| (their area)",
+    "corner_radii": "that is m × the mean squared corner distance, not the triangle-fan sum",
+    "no_abs": "the weights are the signed a × b; use abs(cross(a, b)) so that either winding works",
+    "precedence": "mass * num / 6 * den multiplies by the weights' sum: divide by (6 * den), brackets included",
+    "minus_cross_term": "the a·b term is subtracted; each triangle adds a·a + a·b + b·b",
+}
+
+
+@CHECKS.check(depends=["loads"])
+def inertia_sum(sub, functions):
+    """Step 4: polygon_inertia() is the triangle-fan sum m Σ |a × b|(a·a + a·b + b·b) / (6 Σ |a × b|)."""
+    cases = _function(sub, functions, "polygon_inertia", "polygon_inertia", 4)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if isinstance(got, str):
+            raise Fail(f"polygon_inertia must return a number; for {case['case']} it returned {got}.",
+                       HINTS["inertia"])
+        if _close(got, want):
+            continue
+        named = next((text for key, text in INERTIA_MISTAKES.items()
+                      if key in case["forms"] and _close(got, case["forms"][key]) and not _close(want, case["forms"][key])),
+                     None)
+        analytic = f" (the analytic value is {case['analytic']:.6g})" if case["analytic"] is not None else ""
+        raise Fail(f"for {case['case']}, polygon_inertia gives {got:.6g}; the triangle-fan sum gives {want:.6g}"
+                   f"{analytic}" + (f": {named}." if named else "."), HINTS["inertia"])
+    regular = sum(1 for c in cases if c["analytic"] is not None)
+    return f"all {len(cases)} inertias match the lesson ({regular} of them the analytic value of a box or regular polygon)"
+
+
+# ---------------------------------------------------------------- step 5: separating_axes (and sat on them)
+
+def _parallel(u, v):
+    return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-6
+
+
+def _label(case):
+    return f"'{case['pair']}'" + (" with A and B swapped" if case["order"] == "B, A" else "")
+
+
+@CHECKS.check(depends=["loads"])
+def parallel_axes(sub, functions):
+    """Step 5: separating_axes() gives every edge direction of both shapes once (a box 2, a hexagon 3), and sat() on
+    them still finds the smallest overlap."""
+    cases = _function(sub, functions, "separating_axes", "separating_axes", 5)
+    for case in cases:
+        got = case["got"]
+        label = _label(case)
+        if isinstance(got, str):
+            raise Fail(f"separating_axes must return a list of unit Vector2 axes; for {label} it returned {got}.",
+                       HINTS["axes"])
+        for axis in got:
+            if abs(math.hypot(*axis) - 1) > 1e-6:
+                raise Fail(f"for {label}, separating_axes gives the axis {_vec(axis)} of length "
+                           f"{math.hypot(*axis):.4g}; axes are unit edge normals (edge_normals gives them).",
+                           HINTS["axes"])
+        normals = case["normals_a"] + case["normals_b"]
+        stray = next((a for a in got if not any(_parallel(a, n) for n in normals)), None)
+        if stray is not None:
+            raise Fail(f"for {label}, separating_axes gives {_vec(stray)}, which is not the normal of any edge of "
+                       "A or B.", HINTS["axes"])
+        missing = next((n for n in normals if not any(_parallel(a, n) for a in got)), None)
+        if missing is not None:
+            whose = "A's" if missing in case["normals_a"] else "B's"
+            raise Fail(f"for {label}, separating_axes has no axis along {whose} edge normal {_vec(missing)}: "
+                       f"{len(got)} axes for {len(case['want'])} distinct directions. Skip an axis only when it is "
+                       "parallel to one already kept, or SAT misses the gap along it.", HINTS["axes"])
+        twins = next(((a, b) for i, a in enumerate(got) for b in got[i + 1:] if _parallel(a, b)), None)
+        if twins is not None:
+            same = "the same way" if twins[0][0] * twins[1][0] + twins[0][1] * twins[1][1] > 0 else "opposite ways"
+            raise Fail(f"for {label}, separating_axes gives {len(got)} axes where {len(case['want'])} directions are "
+                       f"distinct: {_vec(twins[0])} and {_vec(twins[1])} are parallel (pointing {same}). Skip an "
+                       "axis parallel to any kept one, whichever way it points (|axis × kept| <= PARALLEL).",
+                       HINTS["axes"])
+    sats = _function(sub, functions, "sat", "sat", 5)
+    for case in sats:
+        got, want = case["got"], case["want"]
+        label = _label(case)
+        if got is not None and "bad" in got:
+            raise Fail(f"sat() must return (normal, depth) or None; for {label} it returned {got['bad']}.",
+                       HINTS["axes"])
+        if want is None:
+            if got is not None and not ("touching" in case["pair"] and abs(got["depth"]) <= TOUCHING):
+                raise Fail(f"with your axes sat() says {label} overlaps by {got['depth']:.2f} px, but the shapes are "
+                           "apart along one of their edge normals.", HINTS["axes"])
+            continue
+        if got is None:
+            raise Fail(f"with your axes sat() says {label} is apart, but the shapes overlap by {want['depth']:.2f} px.",
+                       HINTS["axes"])
+        along = max(got["normal"][0] * t[0] + got["normal"][1] * t[1] for t in case["ties"] or [want["normal"]])
+        if not _close(got["depth"], want["depth"]) or abs(along - 1) > 1e-6:
+            raise Fail(f"with your axes sat() gives {got['depth']:.4g} px along {_vec(got['normal'])} for {label}; "
+                       f"the smallest overlap is {want['depth']:.4g} px along {_vec(want['normal'])}.", HINTS["axes"])
+    hexagons = max((len(c["want"]) for c in cases if c["pair"] == "two aligned hexagons"), default=0)
+    return Passed(f"every direction once in all {len(cases)} pairs (two aligned hexagons: {hexagons} axes), and sat() "
+                  f"right in all {len(sats)}", value=cases)
+
+
+# ---------------------------------------------------------------- the inertia criterion, on the lab's own bodies
+
+@CHECKS.check(depends=["loads", "polygon_corners", "centroid", "inertia_sum"], max_score=2)
+def bodies_inertia(sub, functions, corners, centre, inertia):
+    """Each shape the lab builds is centred on its centroid and has the analytic inertia of a regular polygon,
+    m r² (2 + cos(2π/n)) / 6, or of a box, m (w² + h²) / 12, within 0.1 %."""
+    cases = _function(sub, functions, "bodies", "build", None)
+    worst = 0.0
+    for case in cases:
+        offset = math.hypot(*case["centroid"])
+        if offset > CENTRED:
+            raise Fail(f"build() makes a {case['kind']} whose corners' centroid is {offset:.3g} px from its "
+                       "position: the body would turn about the wrong point.", HINTS["centroid"])
+        want = case["analytic"] if case["analytic"] is not None else case["reference"]
+        error = abs(case["inertia"] - want) / want
+        worst = max(worst, error)
+        if error > INERTIA_REL:
+            what = "the analytic value" if case["analytic"] is not None else "the triangle-fan sum about its centroid"
+            raise Fail(f"build() makes a {case['kind']} of mass {case['mass']:.4g} with inertia {case['inertia']:.6g}; "
+                       f"{what} is {want:.6g} ({100 * error:.3g} % off, bound {100 * INERTIA_REL:g} %).",
+                       HINTS["inertia"])
+    return f"{len(cases)} kinds of shape, worst inertia error {100 * worst:.2g} %"
+
+
+# ---------------------------------------------------------------- the scenes
+
+@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines", "parallel_axes", "bodies_inertia"],
+              needs_scenarios=True)
+def runs(sub, functions, handout_note, runtime, axes, inertia):
+    """main() runs each of the checker's two scenes to the end, with the course's gravity."""
+    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
+    for name, run in records.items():
+        if not crates.finite(run.record["records"]):
+            raise Fail(f"in the '{name}' scene a shape's position or speed became infinite or NaN.", HINTS["settle"])
+    gravity = crates.free_fall(records["pile"].record)
+    if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
+        raise Fail(f"shapes fall with {gravity:.1f} px/s² in the pile scene; the course's gravity is "
+                   f"{GRAVITY:g} px/s².", HINTS["handout"])
+    return records
+
+
+def _escaped(summary, what):
+    """Fail if shapes fell through the floor or left the screen."""
+    if summary["fell_through"]:
+        raise Fail(f"{what}: {summary['fell_through']} of {summary['crates']} shapes fell through the floor "
+                   f"(top speed {summary['peak_speed']:.0f} px/s).", HINTS["settle"])
+    if summary["off_screen"] or summary["highest_y"] < -50:
+        raise Fail(f"{what}: shapes were flung off the screen (top speed {summary['peak_speed']:.0f} px/s).",
+                   HINTS["settle"])
+
+
+def _comes_to_rest(shape, what, turn, turn_words):
+    if -shape["floor_gap"] > PENETRATION:
+        raise Fail(f"{what} sank {shown(-shape['floor_gap'], PENETRATION)} px into the floor (bound "
+                   f"{PENETRATION:g} px).", HINTS["sinking"])
+    if shape["turned"] < turn or shape["side_error"] > TIPPED_FLAT:
+        raise Fail(f"{what} did not {turn_words}: it turned {math.degrees(shape['turned']):.1f}° (at least "
+                   f"{math.degrees(turn):.0f}° expected) and its lowest side ended "
+                   f"{shown(math.degrees(shape['side_error']), 6)}° from flat (bound {math.degrees(TIPPED_FLAT):.0f}°).",
+                   HINTS["settle"])
+    if shape["rest_speed"] > REST_SPEED or shape["rest_omega"] > REST_OMEGA:
+        raise Fail(f"{what} is still moving at the end ({shown(shape['rest_speed'], REST_SPEED)} px/s, "
+                   f"{shown(shape['rest_omega'], REST_OMEGA)} rad/s over the last 0.5 s; bounds {REST_SPEED:g} px/s, "
+                   f"{REST_OMEGA:g} rad/s).", HINTS["settle"])
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def triangle_tips(sub, records):
+    """A triangle dropped on a corner falls onto a side and comes to rest."""
+    record = records["solo"].record
+    _escaped(crates.summary(record), "a triangle dropped on its corner did not land")
+    shape = scenes.measure_tipping(record, scenes.TRIANGLE)
+    _comes_to_rest(shape, "the triangle dropped on its corner", TRIANGLE_TURN, "fall onto a side")
+    return f"it turned {math.degrees(shape['turned']):.0f}° and rests {math.degrees(shape['side_error']):.1f}° from flat"
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def hexagon_tips(sub, records):
+    """A hexagon pushed along the floor tips over its corners and stops, on a side."""
+    record = records["solo"].record
+    _escaped(crates.summary(record), "a hexagon pushed along the floor did not stay on it")
+    shape = scenes.measure_tipping(record, scenes.PUSHED)
+    _comes_to_rest(shape, f"the hexagon pushed at {scenes.PUSH_SPEED:g} px/s", HEXAGON_TURN,
+                   "tip over a corner onto the next side")
+    return (f"it tipped over {round(shape['turned'] / (math.pi / 3))} corner(s), {shape['travelled']:.0f} px, and "
+            "stopped on a side")
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def pile_stable(sub, records):
+    """Shapes of every kind piled together neither sink into the floor or each other nor jitter."""
+    record = records["pile"].record
+    _escaped(crates.summary(record, scenes.PILE_TAIL), "the pile of seven shapes fell apart")
+    pile = crates.measure_pile(record, scenes.PILE_TAIL)
+    if pile["floor_penetration"] > PENETRATION or pile["pair_overlap"] > PAIR_OVERLAP:
+        raise Fail(f"the pile sinks: shapes end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
+                   f"floor (bound {PENETRATION:g} px) and up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into "
+                   f"each other (bound {PAIR_OVERLAP:g} px).", HINTS["sinking"])
+    if pile["tail_speed"] > PILE_SPEED or pile["drift"] > PILE_DRIFT:
+        raise Fail(f"the pile jitters: in its last {scenes.PILE_TAIL:g} s a shape moves at "
+                   f"{shown(pile['tail_speed'], PILE_SPEED)} px/s (bound {PILE_SPEED:g}) and drifts "
+                   f"{shown(pile['drift'], PILE_DRIFT)} px (bound {PILE_DRIFT:g}).", HINTS["settle"])
+    return (f"deepest overlap {max(pile['floor_penetration'], pile['pair_overlap'], 0):.2f} px, top speed "
+            f"{pile['tail_speed']:.1f} px/s at the end")
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def ramp_holds(sub, records):
+    """A pentagon and a hexagon set on the 22° ramp stay put."""
+    record = records["solo"].record
+    arrays = crates.dynamic_arrays(record)
+    ramp = [crates.measure_ramp(record)[i] for i in scenes.ON_RAMP]
+    tail_speed = float(arrays["speed"][-crates.FPS:, list(scenes.ON_RAMP)].max())
+    worst = max(ramp, key=lambda shape: abs(shape["slid"]))
+    if abs(worst["slid"]) > RAMP_SLIDE or tail_speed > RAMP_SPEED:
+        raise Fail(f"a pentagon and a hexagon set at rest on the 22° ramp did not stay put: one moved "
+                   f"{shown(worst['slid'], RAMP_SLIDE)} px along the slope in 3 s (bound {RAMP_SLIDE:g} px) and the "
+                   f"faster moves {shown(tail_speed, RAMP_SPEED)} px/s at the end (bound {RAMP_SPEED:g}). Friction "
+                   "0.6 holds a 22° slope, and a side of a pentagon or hexagon is too wide to tip over on it.",
+                   HINTS["settle"])
+    return f"they moved at most {abs(worst['slid']):.2f} px along the slope in 3 s"

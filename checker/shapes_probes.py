@@ -1,0 +1,283 @@
+"""Probes of a More Shapes file's own functions, run inside the checker's child process.
+
+Each probe calls one of the student's functions on configurations chosen to
+show the mistakes a student makes, and returns plain data: what the student's
+function gave, what the lesson's formula gives on the same inputs, and (where
+it helps name a mistake) what the usual wrong formulas give. The checks in
+checker/more_shapes.py compare them in the grading process.
+
+    regular_polygon    (step 2) 3 to 12 sides, radii from 5 to 40 px
+    polygon_centroid   (step 3) right triangles, a house, a trapezoid, irregular hexagons far from
+                       (0, 0), both windings; the average of the corners is recorded to name that mistake
+    polygon_inertia    (step 4) regular polygons (3-8 sides) and boxes against their analytic inertias,
+                       irregular centred polygons, both windings
+    separating_axes    (step 5) pairs of boxes, triangles, pentagons and hexagons, aligned (parallel
+                       edges to skip) and turned (none to skip), a nearly-parallel pair that must be kept
+    sat                (step 5) the same pairs and Tumbling Crates' pairs through the lab's sat()
+    bodies             build() for every kind: the lab's bodies' mass and inertia (the inertia criterion)
+
+Units: px, s, rad; mass = area / 1000.
+"""
+import math
+
+from pygame import Vector2
+
+from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, polygon_area
+from lesson11.physics2d import polygon_centroid as reference_centroid
+from lesson11.physics2d import polygon_inertia as reference_inertia
+from lesson11.physics2d import regular_polygon as reference_regular_polygon
+
+from . import crates_probes
+
+REQUIRED = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes", "sat", "build", "main")
+PARALLEL = 1e-6   # |sin| below which two axes are parallel (the handout's PARALLEL)
+
+
+def _plain(points):
+    return [[float(p[0]), float(p[1])] for p in points]
+
+
+def _points(value):
+    """The student's list of points as plain [[x, y], ...], or a string saying what is wrong with it."""
+    try:
+        return [[float(Vector2(p).x), float(Vector2(p).y)] for p in value]
+    except (TypeError, ValueError):
+        text = repr(value)
+        return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _number(value):
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        text = repr(value)
+        return text if len(text) <= 60 else text[:57] + "..."
+    return number
+
+
+def _vector(value):
+    try:
+        v = Vector2(value)
+    except (TypeError, ValueError):
+        text = repr(value)
+        return text if len(text) <= 60 else text[:57] + "..."
+    return [v.x, v.y]
+
+
+# ---------------------------------------------------------------- step 2: regular_polygon
+
+POLYGONS = ((3, 34.0), (4, 20.0), (5, 30.5), (6, 28.0), (7, 12.0), (8, 40.0), (12, 5.0))
+
+
+def probe_regular_polygon(module, lab_path):
+    """The student's regular_polygon(sides, radius) beside the lesson's corners radius (cos θk, sin θk), θk = 2πk/n."""
+    return [{"sides": sides, "radius": radius, "got": _points(module.regular_polygon(sides, radius)),
+             "want": _plain(reference_regular_polygon(sides, radius))} for sides, radius in POLYGONS]
+
+
+# ---------------------------------------------------------------- step 3: polygon_centroid
+
+def _shift(points, by):
+    return [Vector2(p) + Vector2(by) for p in points]
+
+
+def centroid_cases():
+    """(name, corners): convex outlines NOT centred on (0, 0); a mirror copy runs the other way round."""
+    house = [(0, 0), (0, -30), (30, -50), (60, -30), (60, 0)]
+    return [
+        ("a right triangle with its corner at (0, 0)", [(0, 0), (60, 0), (0, 40)]),
+        ("a house (a box with a gable roof)", house),
+        ("a trapezoid far from (0, 0)", _shift([(0, 0), (80, 0), (60, 30), (20, 30)], (300, 200))),
+        ("an irregular hexagon", _shift([(0, 0), (40, -10), (70, 10), (75, 45), (30, 60), (-5, 30)], (-40, 25))),
+        ("a kite with one long tail", [(0, 0), (20, -15), (90, 0), (20, 15)]),
+        ("a box far from (0, 0)", _shift(box_points(50, 30), (120, -80))),
+    ]
+
+
+def probe_polygon_centroid(module, lab_path):
+    """The student's polygon_centroid on each outline, both windings, beside the area-weighted centroid."""
+    cases = []
+    for name, corners in centroid_cases():
+        for order, points in (("", corners), (" (the other way round)", list(reversed(corners)))):
+            pts = [Vector2(p) for p in points]
+            average = sum(pts, Vector2()) / len(pts)
+            cases.append({"case": name + order, "points": _plain(pts),
+                          "got": _vector(module.polygon_centroid([Vector2(p) for p in pts])),
+                          "want": list(reference_centroid(pts)), "average": [average.x, average.y],
+                          "area": polygon_area(pts)})
+    return cases
+
+
+# ---------------------------------------------------------------- step 4: polygon_inertia
+
+def analytic_inertia(kind, mass, radius=None, w=None, h=None, sides=None):
+    """The textbook inertia (mass·px²): a box m (w² + h²) / 12, a regular n-gon m r² (2 + cos(2π/n)) / 6."""
+    if kind == "box":
+        return mass * (w * w + h * h) / 12
+    return mass * radius * radius * (2 + math.cos(2 * math.pi / sides)) / 6
+
+
+def _inertia_forms(points, mass):
+    """What the usual mistakes give for these centred points, by name (to name the student's)."""
+    pts = [Vector2(p) for p in points]
+    pairs = [(a, pts[(i + 1) % len(pts)]) for i, a in enumerate(pts)]
+    signed = [cross(a, b) for a, b in pairs]
+    weights = [abs(s) for s in signed]
+    terms = [a.dot(a) + a.dot(b) + b.dot(b) for a, b in pairs]
+    total = sum(weights)
+    forms = {
+        "no_six": mass * sum(w * t for w, t in zip(weights, terms)) / total,
+        "twelve": mass * sum(w * t for w, t in zip(weights, terms)) / (12 * total),
+        "no_mass": sum(w * t for w, t in zip(weights, terms)) / (6 * total),
+        "no_cross_term": mass * sum(w * (a.dot(a) + b.dot(b)) for w, (a, b) in zip(weights, pairs)) / (6 * total),
+        "unweighted": mass * sum(terms) / (6 * len(terms)),
+        "corner_radii": mass * sum(p.length_squared() for p in pts) / len(pts),
+        "times_mass_squared": mass * mass * sum(w * t for w, t in zip(weights, terms)) / (6 * total),
+        "precedence": mass * sum(w * t for w, t in zip(weights, terms)) / 6 * total,
+        "minus_cross_term": mass * sum(w * (a.dot(a) - a.dot(b) + b.dot(b)) for w, (a, b) in zip(weights, pairs))
+        / (6 * total),
+    }
+    if abs(sum(signed)) > 0:
+        forms["no_abs"] = mass * sum(s * t for s, t in zip(signed, terms)) / (6 * sum(signed))
+    return forms
+
+
+def inertia_cases():
+    """(name, centred points, mass, analytic inertia or None)."""
+    cases = []
+    for sides, radius, mass in ((3, 34, 1.5), (4, 20, 0.8), (5, 30, 2.1), (6, 28, 2.0), (7, 15, 0.4), (8, 40, 4.2)):
+        cases.append((f"a regular {sides}-gon of radius {radius} px, mass {mass:g}",
+                      reference_regular_polygon(sides, radius), mass,
+                      analytic_inertia("polygon", mass, radius=radius, sides=sides)))
+    for w, h, mass in ((30, 20, 2.0), (80, 45, 3.6), (12, 70, 0.84)):
+        cases.append((f"a {w} × {h} box, mass {mass:g}", box_points(w, h), mass,
+                      analytic_inertia("box", mass, w=w, h=h)))
+    for name, corners in centroid_cases()[:4]:
+        centred = convex_polygon(corners)
+        cases.append((f"{name}, centred on its centroid, mass 1.7", centred, 1.7, None))
+        cases.append((f"{name}, centred, the other way round, mass 1.7", list(reversed(centred)), 1.7, None))
+    return cases
+
+
+def probe_polygon_inertia(module, lab_path):
+    """The student's polygon_inertia beside the lesson's triangle-fan sum, the analytic value and the mistakes' values."""
+    cases = []
+    for name, points, mass, analytic in inertia_cases():
+        got = module.polygon_inertia([Vector2(p) for p in points], mass)
+        cases.append({"case": name, "points": _plain(points), "mass": mass, "got": _number(got),
+                      "want": reference_inertia([Vector2(p) for p in points], mass), "analytic": analytic,
+                      "forms": _inertia_forms(points, mass)})
+    return cases
+
+
+# ---------------------------------------------------------------- step 5: separating_axes and sat
+
+def axis_pairs():
+    """(name, A's world points, B's world points): aligned shapes share edge directions, turned ones do not."""
+    box, ngon = crates_probes.box, crates_probes.ngon
+    return [
+        ("two aligned boxes", box(60, 40, (0, 0)), box(50, 30, (45, 20))),
+        ("a box and a turned box", box(60, 40, (0, 0)), box(50, 30, (45, 20), 30)),
+        ("two aligned hexagons", ngon(6, 30, (0, 0)), ngon(6, 24, (50, 10))),
+        ("a hexagon on a box (the top and bottom edges are parallel)", box(200, 40, (0, 0)), ngon(6, 30, (20, -44))),
+        ("a turned hexagon on a box", box(200, 40, (0, 0)), ngon(6, 30, (20, -48), 17)),
+        ("a triangle and the same triangle upside down", ngon(3, 34, (0, 0)), ngon(3, 34, (30, 8), 180)),
+        ("two triangles turned apart", ngon(3, 34, (0, 0), 10), ngon(3, 30, (40, 20), 75)),
+        ("a pentagon and a pentagon turned half a corner", ngon(5, 30, (0, 0)), ngon(5, 30, (50, 8), 36)),
+        ("a hexagon and a box turned 0.01 rad (nearly parallel: keep both)", ngon(6, 30, (0, 0)),
+         box(60, 40, (40, 35), math.degrees(0.01))),
+        ("two aligned boxes, far apart", box(40, 40, (0, 0)), box(40, 40, (300, 0))),
+        ("a pentagon far from a triangle", ngon(5, 30, (0, 0), 10), ngon(3, 30, (200, 50))),
+    ]
+
+
+def distinct_directions(axes):
+    """The lesson's answer: the axes in order, each kept unless parallel (|a × b| <= PARALLEL) to one kept."""
+    kept = []
+    for axis in axes:
+        if all(abs(cross(axis, other)) > PARALLEL for other in kept):
+            kept.append(axis)
+    return kept
+
+
+def probe_separating_axes(module, lab_path):
+    """The student's separating_axes(pa, pb) beside all edge normals of both and the distinct directions."""
+    cases = []
+    for name, pa, pb in axis_pairs():
+        for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
+            got = module.separating_axes([Vector2(p) for p in first], [Vector2(p) for p in second])
+            normals_a, normals_b = edge_normals(first), edge_normals(second)
+            cases.append({"pair": name, "order": order, "got": _points(got),
+                          "normals_a": _plain(normals_a), "normals_b": _plain(normals_b),
+                          "want": _plain(distinct_directions(normals_a + normals_b))})
+    return cases
+
+
+def probe_sat(module, lab_path):
+    """The lab's sat() (the handout's loop over the student's axes) on the axis pairs and Tumbling Crates' pairs."""
+    cases = []
+    pairs = axis_pairs() + crates_probes.sat_pairs()
+    for name, pa, pb in pairs:
+        for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
+            got = module.sat([Vector2(p) for p in first], [Vector2(p) for p in second])
+            want = crates_probes.reference_sat(first, second, "lesson")
+            cases.append({"pair": name, "order": order, "got": crates_probes.sat_answer(got),
+                          "want": None if want is None else {"normal": list(want[0]), "depth": want[1]},
+                          "ties": [] if want is None else _tied_normals(first, second, want[1])})
+    return cases
+
+
+def _tied_normals(pa, pb, depth):
+    """Every edge normal (turned to point from A to B) whose overlap equals the smallest, `depth`.
+
+    When two directions tie, the axis sat() keeps depends on the order of the axes, and either
+    is a right answer; the check accepts any of them.
+    """
+    towards_b = crates_probes.centre_of(pb) - crates_probes.centre_of(pa)
+    tied = []
+    for axis, overlap, _ in crates_probes.axis_overlaps(pa, pb):
+        if abs(overlap - depth) <= 1e-9 * max(1.0, depth):
+            tied.append(list(axis if towards_b.dot(axis) >= 0 else -axis))
+    return tied
+
+
+# ---------------------------------------------------------------- the lab's bodies
+
+BODY_ITEMS = (
+    {"kind": "triangle", "size": 34, "pos": [100, 100]},
+    {"kind": "pentagon", "size": 30, "pos": [100, 100]},
+    {"kind": "hexagon", "size": 28, "pos": [100, 100]},
+    {"kind": "box", "w": 60, "h": 40, "pos": [100, 100]},
+    {"kind": "house", "w": 56, "h": 44, "pos": [100, 100]},
+)
+SIDES = {"triangle": 3, "pentagon": 5, "hexagon": 6}
+
+
+def probe_bodies(module, lab_path):
+    """build() for each kind: the body's mass, inertia, corners' centroid and the analytic inertia (None for a house)."""
+    cases = []
+    for item in BODY_ITEMS:
+        body = module.build(dict(item))
+        local = [Vector2(p) for p in body.local]
+        kind = item["kind"]
+        if kind in SIDES:
+            analytic = analytic_inertia(kind, body.mass, radius=item["size"], sides=SIDES[kind])
+        elif kind == "box":
+            analytic = analytic_inertia("box", body.mass, w=item["w"], h=item["h"])
+        else:
+            analytic = None
+        true_points = convex_polygon(local)
+        cases.append({"kind": kind, "item": item, "mass": body.mass, "inertia": body.inertia,
+                      "area": abs(polygon_area(local)), "corners": len(local),
+                      "centroid": list(reference_centroid(local)), "analytic": analytic,
+                      "reference": reference_inertia(true_points, body.mass)})
+    return cases
+
+
+# probe name -> (the lab function it needs, the probe)
+PROBES = {"regular_polygon": ("regular_polygon", probe_regular_polygon),
+          "polygon_centroid": ("polygon_centroid", probe_polygon_centroid),
+          "polygon_inertia": ("polygon_inertia", probe_polygon_inertia),
+          "separating_axes": ("separating_axes", probe_separating_axes),
+          "sat": ("sat", probe_sat),
+          "bodies": ("build", probe_bodies)}

@@ -1,0 +1,385 @@
+"""The More Shapes mistake corpus: plausible student files and the verdict the checker owes each one.
+
+Every entry is a whole student file built from the CURRENT starter
+(starters/more_shapes_starter.py): the lines strictly between a step's start
+marker and its end marker are replaced by the student's code for that step; a
+step the entry does not give gets the solution's code, read from the same
+regions of solutions/more_shapes.py, so the corpus follows the lab when the
+lab changes. An entry that changes code OUTSIDE the steps lists exact
+(old, new) edits, applied after the steps are filled; each old must occur
+exactly once (tests/mutants.py), else building raises AssertionError naming
+the entry.
+
+Verdicts:
+  CORRECT entries: every check passes.
+  WRONG entries: `check` fails (or errors, for a crash) naming `step`; every
+  other function check passes; bodies_inertia (it needs steps 2-4) may be
+  skipped; a mistake outside the steps fails handout_unchanged and whatever
+  its `also` lists.
+
+    build(name) -> source text
+    write_corpus(directory, names=None) -> {name: path}
+"""
+import os
+import re
+import sys
+import textwrap
+from typing import NamedTuple
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "more_shapes_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "more_shapes.py")
+
+STEPS = (2, 3, 4, 5)
+START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+): .*---[ \t]*$")
+END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---[ \t]*$")
+
+CHECK_STEP = {
+    "loads": None, "handout_unchanged": None, "runtime_lines": None,
+    "polygon_corners": 2, "centroid": 3, "inertia_sum": 4, "parallel_axes": 5,
+    "bodies_inertia": None, "runs": None, "triangle_tips": None, "hexagon_tips": None, "pile_stable": None,
+    "ramp_holds": None,
+}
+FUNCTION_CHECKS = ("polygon_corners", "centroid", "inertia_sum", "parallel_axes")
+NEEDS_STEPS_2_TO_4 = ("bodies_inertia",)
+
+
+class Entry(NamedTuple):
+    name: str
+    what: str            # what the student did, one line
+    steps: dict          # {step: code} (dedented)
+    edits: tuple         # ((old, new), ...) outside the steps, applied after the steps are filled
+    check: str           # "pass" for a correct completion, else the id of the check that must fail
+    step: object         # the lesson step the failing check's hint names (None for a correct entry)
+    status: tuple        # accepted statuses of that check
+    also: tuple          # other checks this mistake may fail too
+    why: str             # the input that shows the mistake, or why a correct variant is correct
+
+
+def _code(text):
+    return textwrap.dedent(text).strip("\n")
+
+
+def wrong(name, what, check, steps=None, edits=(), status=("fail",), also=(), why=""):
+    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
+                 CHECK_STEP[check], tuple(status), tuple(also), why)
+
+
+def correct(name, what, steps=None, edits=(), why=""):
+    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), "pass", None,
+                 ("pass",), (), why)
+
+
+WRONG = [
+    # ---------------------------------------------------------------- step 2: regular_polygon
+    wrong("corners_in_degrees", "uses 360 * k / sides in math.cos and math.sin (degrees into radians)",
+          "polygon_corners", {2: """
+        return [Vector2(radius * math.cos(360 * k / sides), radius * math.sin(360 * k / sides)) for k in range(sides)]
+    """}, why="corner 1 of the triangle lands at 120 rad, not 2π/3"),
+    wrong("corners_one_too_many", "off by one: range(sides + 1) repeats corner 0 at the end", "polygon_corners", {2: """
+        step = 2 * math.pi / sides
+        return [Vector2(radius * math.cos(k * step), radius * math.sin(k * step)) for k in range(sides + 1)]
+    """}, why="a triangle gets 4 corners"),
+    wrong("corners_sin_cos_swapped", "x from sin and y from cos: corner 0 at (0, radius)", "polygon_corners", {2: """
+        return [Vector2(radius * math.sin(2 * math.pi * k / sides), radius * math.cos(2 * math.pi * k / sides))
+                for k in range(sides)]
+    """}, why="right circle, wrong angles: corner 0 is (0, 34) for the triangle"),
+    wrong("corners_diameter", "treats radius as the diameter: radius / 2 from the centre", "polygon_corners", {2: """
+        r = radius / 2
+        return [Vector2(r * math.cos(2 * math.pi * k / sides), r * math.sin(2 * math.pi * k / sides))
+                for k in range(sides)]
+    """}, why="every corner is half as far out"),
+    # ---------------------------------------------------------------- step 3: polygon_centroid
+    wrong("centroid_average_of_corners", "returns the average of the corners", "centroid", {3: """
+        total = Vector2()
+        for p in points:
+            total += p
+        return total / len(points)
+    """}, why="right for a triangle, wrong for the house (its roof pulls the average up)"),
+    wrong("centroid_abs_area", "divides by 6 |A|: the sign flips for counter-clockwise points", "centroid", {3: """
+        total = Vector2()
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            total += (a + b) * cross(a, b)
+        return total / (6 * abs(area))
+    """}, why="the reversed outlines give -C"),
+    wrong("centroid_missing_factor", "divides by 2A (the factor 3 of the 6A is missing)", "centroid", {3: """
+        total = Vector2()
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            total += (a + b) * cross(a, b)
+        return total / (2 * area)
+    """}, why="every centroid is 3 times too far from (0, 0)"),
+    wrong("centroid_no_closing_edge", "off by one: the edge from the last point back to the first is left out",
+          "centroid", {3: """
+        total = Vector2()
+        for i in range(len(points) - 1):
+            a, b = points[i], points[i + 1]
+            total += (a + b) * cross(a, b)
+        return total / (6 * area)
+    """}, why="the right triangle with a corner at (0, 0) passes (its closing edge adds 0), the house does not"),
+    # ---------------------------------------------------------------- step 4: polygon_inertia
+    wrong("inertia_missing_six", "forgets the 6 in the denominator", "inertia_sum", {4: """
+        num = den = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            area2 = abs(cross(a, b))
+            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
+            den += area2
+        return mass * num / den
+    """}, why="6 times the lesson's value everywhere"),
+    wrong("inertia_dot_weight", "wrong operand: weighs each triangle by |a · b| instead of |a × b|", "inertia_sum", {4: """
+        num = den = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            area2 = abs(a.dot(b))
+            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
+            den += area2
+        return mass * num / (6 * den)
+    """}, why="a regular polygon still passes (equal weights); the irregular ones do not"),
+    wrong("inertia_unweighted", "averages the triangles' terms without weighing them by area", "inertia_sum", {4: """
+        num = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            num += a.dot(a) + a.dot(b) + b.dot(b)
+        return mass * num / (6 * len(points))
+    """}, why="exact for every regular polygon and every box; wrong for the house, trapezoid and hexagon"),
+    wrong("inertia_precedence", "operator precedence: mass * num / 6 * den", "inertia_sum", {4: """
+        num = den = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            area2 = abs(cross(a, b))
+            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
+            den += area2
+        return mass * num / 6 * den
+    """}, why="multiplies by the weights' sum instead of dividing"),
+    wrong("inertia_wrong_sign", "subtracts the a·b term", "inertia_sum", {4: """
+        num = den = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            area2 = abs(cross(a, b))
+            num += area2 * (a.dot(a) - a.dot(b) + b.dot(b))
+            den += area2
+        return mass * num / (6 * den)
+    """}, why="every shape's inertia is off (a hexagon by a factor 1.5/2.5)"),
+    # ---------------------------------------------------------------- step 5: separating_axes
+    wrong("axes_dot_not_cross", "wrong operand: skips an axis when |axis · kept| is small (perpendicular, not parallel)",
+          "parallel_axes", {5: """
+        for axis in edge_normals(pa) + edge_normals(pb):
+            if all(abs(axis.dot(kept)) > PARALLEL for kept in axes):
+                axes.append(axis)
+    """}, why="for two aligned boxes it drops the perpendicular direction and keeps the parallel twins"),
+    wrong("axes_same_way_only", "skips only normals pointing the same way; opposite ones stay", "parallel_axes", {5: """
+        for axis in edge_normals(pa) + edge_normals(pb):
+            if all(axis.dot(kept) < 1 - PARALLEL for kept in axes):
+                axes.append(axis)
+    """}, why="a hexagon keeps all 6 normals (3 opposite pairs)"),
+    wrong("axes_cross_without_abs", "skips when cross(axis, kept) < PARALLEL without abs(): non-parallel axes go too",
+          "parallel_axes", {5: """
+        for axis in edge_normals(pa) + edge_normals(pb):
+            if all(cross(axis, kept) > PARALLEL for kept in axes):
+                axes.append(axis)
+    """}, why="a box keeps only its first normal: the perpendicular one has a negative cross"),
+    wrong("axes_only_a", "only A's edge normals (deduplicated)", "parallel_axes", {5: """
+        for axis in edge_normals(pa):
+            if all(abs(cross(axis, kept)) > PARALLEL for kept in axes):
+                axes.append(axis)
+    """}, why="a box and a turned box: B's directions are missing, the lesson's diamond is called a hit"),
+    wrong("axes_last_kept_only", "compares each normal with the last kept axis only", "parallel_axes", {5: """
+        for axis in edge_normals(pa) + edge_normals(pb):
+            if not axes or abs(cross(axis, axes[-1])) > PARALLEL:
+                axes.append(axis)
+    """}, why="a hexagon's fourth normal is compared with the third, not with its twin the first"),
+    # ---------------------------------------------------------------- outside the steps
+    wrong("outside_library_inertia", "build() lets Body compute the inertia (the student's polygon_inertia unused)",
+          "handout_unchanged", edits=[(
+              "                vel=item.get(\"vel\", (0, 0)), omega=item.get(\"omega\", 0.0), "
+              "inertia=polygon_inertia(local, mass),\n",
+              "                vel=item.get(\"vel\", (0, 0)), omega=item.get(\"omega\", 0.0),\n")],
+          why="the handout's build() line changed"),
+    wrong("outside_sat_no_flip", "deleted the handout's A-to-B flip in sat()", "handout_unchanged", edits=[(
+        "    if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:\n        best_axis = -best_axis  # always from A to B\n",
+        "")], also=("parallel_axes",), why="sat() changed outside the steps; half its normals point B to A"),
+    wrong("outside_parallel_tolerance", "set PARALLEL to 0.1 (skips axes 5.7° apart)", "handout_unchanged", edits=[(
+        "PARALLEL = 1e-6 ", "PARALLEL = 0.1 ")], also=("parallel_axes",),
+        why="a constant of the handout changed; the 0.01 rad pair loses a direction"),
+]
+
+CORRECT = [
+    correct("correct_solution_steps", "the solution's own code in every step",
+            why="the reference build equals the solution"),
+    correct("correct_rotated_vectors", "rotate_rad for the corners, zip() over edges, a signed triangle fan", {
+        2: """
+            turn = 2 * math.pi / sides
+            return [Vector2(radius, 0).rotate_rad(k * turn) for k in range(sides)]
+        """,
+        3: """
+            cx = cy = 0.0
+            for a, b in zip(points, points[1:] + points[:1]):
+                w = a.x * b.y - a.y * b.x
+                cx += (a.x + b.x) * w
+                cy += (a.y + b.y) * w
+            return Vector2(cx, cy) / (6 * area)
+        """,
+        4: """
+            num = den = 0.0
+            for a, b in zip(points, points[1:] + points[:1]):
+                c = a.cross(b)  # signed: all one sign for a convex polygon around its centroid
+                num += c * (a.length_squared() + a.dot(b) + b.length_squared())
+                den += c
+            return mass * num / (6 * den)
+        """,
+        5: """
+            for axis in edge_normals(pa) + edge_normals(pb):
+                if not any(abs(axis.cross(kept)) <= PARALLEL for kept in axes):
+                    axes.append(axis)
+        """}, why="the same formulas: rotate_rad(θ) of (r, 0) is (r cos θ, r sin θ); signed weights cancel in "
+                  "the ratio; 'not any <=' is 'all >'"),
+    correct("correct_triangle_fan_centroid", "centroid as the area-weighted mean of fan triangles from corner 0; "
+            "math.fsum; a while loop", {
+        2: """
+            corners = []
+            k = 0
+            while k < sides:
+                angle = k * 2 * math.pi / sides
+                corners.append(Vector2(math.cos(angle), math.sin(angle)) * radius)
+                k += 1
+            return corners
+        """,
+        3: """
+            origin = points[0]
+            weighted = Vector2()
+            total = 0.0
+            for i in range(1, len(points) - 1):
+                b, c = points[i], points[i + 1]
+                part = cross(b - origin, c - origin) / 2  # signed area of triangle (origin, b, c)
+                weighted += (origin + b + c) / 3 * part
+                total += part
+            return weighted / total
+        """,
+        4: """
+            weights, terms = [], []
+            for i in range(len(points)):
+                a, b = points[i], points[(i + 1) % len(points)]
+                weights.append(abs(cross(a, b)))
+                terms.append(a.dot(a) + a.dot(b) + b.dot(b))
+            return mass * math.fsum(w * t for w, t in zip(weights, terms)) / (6 * math.fsum(weights))
+        """,
+        5: """
+            candidates = list(edge_normals(pa))
+            candidates.extend(edge_normals(pb))
+            for axis in candidates:
+                parallel = False
+                for kept in axes:
+                    if abs(axis.x * kept.y - axis.y * kept.x) <= PARALLEL:
+                        parallel = True
+                        break
+                if not parallel:
+                    axes.append(axis)
+        """}, why="a polygon's centroid is the area-weighted mean of its fan triangles' centroids; the rest "
+                  "are the lesson's sums written longhand"),
+    correct("correct_comprehensions", "sum() of generators; axes by index", {
+        3: """
+            n = len(points)
+            total = sum(((points[i] + points[(i + 1) % n]) * cross(points[i], points[(i + 1) % n])
+                         for i in range(n)), Vector2())
+            return total / (6 * area)
+        """,
+        4: """
+            n = len(points)
+            edges = [(points[i], points[(i + 1) % n]) for i in range(n)]
+            weights = [abs(cross(a, b)) for a, b in edges]
+            num = sum(w * (a * a + a * b + b * b) for w, (a, b) in zip(weights, edges))
+            return mass * num / (6 * sum(weights))
+        """,
+        5: """
+            normals = edge_normals(pa) + edge_normals(pb)
+            for i in range(len(normals)):
+                if all(abs(cross(normals[i], kept)) > PARALLEL for kept in axes):
+                    axes.append(normals[i])
+        """}, why="Vector2 * Vector2 is the dot product; by index is the same loop"),
+    correct("correct_b_first_one_way", "B's normals first, each axis turned to point right (or down)", {5: """
+        for axis in edge_normals(pb) + edge_normals(pa):
+            if axis.x < -PARALLEL or (abs(axis.x) <= PARALLEL and axis.y < 0):
+                axis = -axis  # one way per direction
+            if all(abs(cross(axis, kept)) > PARALLEL for kept in axes):
+                axes.append(axis)
+    """}, why="the same directions in another order and sense: sat() turns its normal from A to B anyway, "
+              "and no two directions tie for the smallest overlap"),
+]
+
+ENTRIES = CORRECT + WRONG
+BY_NAME = {entry.name: entry for entry in ENTRIES}
+assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
+
+
+# ================================================================ building the files
+
+def regions(source, where="file"):
+    """{step: (start marker line index, end marker line index, indent)} for steps 2-5; each marker exactly once."""
+    lines = source.split("\n")
+    starts, ends = {}, {}
+    for index, line in enumerate(lines):
+        match = START.match(line)
+        if match:
+            assert int(match.group("step")) not in starts, f"{where}: step {match.group('step')} starts twice"
+            starts[int(match.group("step"))] = (index, match.group("indent"))
+        match = END.match(line)
+        if match:
+            assert int(match.group("step")) not in ends, f"{where}: step {match.group('step')} ends twice"
+            ends[int(match.group("step"))] = index
+    found = {}
+    for step in STEPS:
+        if step not in starts or step not in ends or ends[step] <= starts[step][0]:
+            raise AssertionError(f"{where}: step {step} has no `# --- step {step}: ... ---` ... "
+                                 f"`# --- end of step {step} ---` region")
+        found[step] = (starts[step][0], ends[step], starts[step][1])
+    return found
+
+
+def step_code(source, where="file"):
+    """{step: the dedented code strictly between the step's markers}."""
+    lines = source.split("\n")
+    return {step: textwrap.dedent("\n".join(lines[start + 1:end])).strip("\n")
+            for step, (start, end, _) in regions(source, where).items()}
+
+
+def fill(source, codes, where="file"):
+    """source with the interior of each step in codes replaced by that code, indented like the step's marker."""
+    lines = source.split("\n")
+    found = regions(source, where)
+    for step in sorted(codes, key=lambda s: -found[s][0]):
+        start, end, indent = found[step]
+        lines[start + 1:end] = [indent + line if line.strip() else "" for line in codes[step].split("\n")]
+    return "\n".join(lines)
+
+
+def _read(path):
+    with open(path, encoding="utf-8") as handle:
+        return handle.read()
+
+
+def build(name, starter=None, solution=None):
+    """The source of entry `name`: the starter, its steps filled (the entry's code, else the solution's), then edits."""
+    entry = BY_NAME[name]
+    starter = _read(STARTER) if starter is None else starter
+    solution = _read(SOLUTION) if solution is None else solution
+    codes = step_code(solution, "solutions/more_shapes.py")
+    codes.update(entry.steps)
+    source = fill(starter, codes, "starters/more_shapes_starter.py")
+    return mutants.apply_edits(source, entry.edits, name, "the built file", "tests/corpus_more_shapes.py")
+
+
+def write_corpus(directory, names=None):
+    """Write NAME.py into directory for each entry (all by default); returns {name: path}."""
+    starter, solution = _read(STARTER), _read(SOLUTION)
+    paths = {}
+    for name in (BY_NAME if names is None else names):
+        path = os.path.join(str(directory), name + ".py")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(build(name, starter, solution))
+        paths[name] = path
+    return paths
