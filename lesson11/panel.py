@@ -43,6 +43,8 @@ from collections import deque
 
 import pygame
 
+from .physics2d.collision import circle_polygon
+
 MAX_ITERATIONS = 50     # the Up key stops here: 50 passes of the lesson solver take ~30 ms per step
 MAX_SUBSTEPS = 16       # the Right key stops here
 GRAPH_SECONDS = 3       # s of history in the graph
@@ -247,7 +249,7 @@ class LabPanel:
     def lines(self, world):
         """The HUD's setting rows as [(key label, setting, value, colour)], top to bottom.
 
-        The row after the solver has no key: it says whose sat() and resolve() run.
+        The row after the solver has no key: it says whose sat() (or circle_polygon()) and resolve() run.
         """
         now = self.settings()
 
@@ -259,11 +261,13 @@ class LabPanel:
 
         reference = now["solver"] == "accumulated"
         hooked = getattr(world, "resolve", None) != getattr(world, "lesson_resolve", None)
+        # a lab with balls hands in its own circle_polygon() (Ball on the Ramp); the others their sat()
+        test = "circle_polygon" if getattr(world, "circle_polygon", circle_polygon) is not circle_polygon else "sat"
         if reference:
-            note = ("your sat() and resolve() are NOT used" if hooked else "the lesson's resolve() is not used",
+            note = (f"your {test}() and resolve() are NOT used" if hooked else "the lesson's resolve() is not used",
                     WARNING)
         else:
-            note = ("runs your sat() and resolve()" if hooked else "runs physics2d's sat() and resolve()", DIM)
+            note = (f"runs your {test}() and resolve()" if hooked else "runs physics2d's sat() and resolve()", DIM)
         warm = ("on" if now["warm_starting"] else "off") + (missing("warm_starting") or
                                                              ("" if reference else "  (reference solver only)"))
         return [("S", "solver", "accumulated (reference)" if reference else "lesson",
