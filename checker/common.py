@@ -1,5 +1,11 @@
-"""What the checks of every lab share: accounts of failed runs, and numbers shown beside their bounds."""
+"""What the checks of every lab share: accounts of failed runs, numbers shown beside their bounds,
+and the bodies of the checks every lab has (the probe's data of one function, the handout
+comparison, the lab-runtime lines), each taking the lab's own starter and hints."""
+import ast
 import re
+
+from . import handout
+from .checks import Error, Fail, Hint
 
 
 def describe_run_failure(run, lab_name, what):
@@ -75,3 +81,64 @@ def shown(value, bound, unit=""):
         if text != limit or value == bound:
             return text.rstrip("0").rstrip(".") if "." in text and digits > 1 and text != limit else text
     return repr(value)
+
+
+# ---------------------------------------------------------------- checks every lab has (Tumbling Crates, Ball on the Ramp)
+
+def probe_data(sub, functions, probe, function, step, crash_hint):
+    """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped."""
+    entry = functions.get(probe)
+    if entry is None:
+        raise Error(f"{sub.name} defines no {function}().", crash_hint)
+    if not entry["ok"]:
+        hint = Hint(step, f"the error in {function}()", f"Your code in {function}() stopped with the error above; "
+                    "fix it at the line shown, then run the checker again.")
+        raise Error(describe_function_error(function, entry["error"], sub.name), hint)
+    return entry["data"]
+
+
+def compare_with_handout(sub, starter, hint):
+    """handout_unchanged's body: a message if the code outside the steps is the starter's, else Fail(hint).
+
+    With the instructor option allow_edits a difference is a warning (the message), not a failure.
+    """
+    try:
+        with open(starter, encoding="utf-8") as handle:
+            text = handle.read()
+    except OSError as exc:
+        raise Error(f"the checker cannot read the handout {starter} ({exc.strerror}) to compare with; "
+                    "reinstall the lab bundle.")
+    try:
+        comparison = handout.compare(sub.source, text, sub.name, "the handout")
+    except handout.MarkerError as exc:
+        raise Fail(f"{exc}.", hint)
+    added = f" (added imports: {'; '.join(comparison.added_imports)})" if comparison.added_imports else ""
+    if comparison.same:
+        return "the code outside the steps is the handout's" + added
+    listed = "; ".join(comparison.problems[:handout.MAX_PROBLEMS])
+    more = len(comparison.problems) - handout.MAX_PROBLEMS
+    text = f"code outside the steps differs from the handout: {listed}" + (f"; and {more} more" if more > 0 else "")
+    if sub.options.get("allow_edits"):
+        return f"warning (allowed by --allow-edits): {text}."
+    raise Fail(text + ".", hint)
+
+
+def check_runtime_calls(sub, hooks, hint, crash_hint):
+    """runtime_lines' body: Fail(hint) unless the source calls every lab-runtime hook in `hooks` (by name)."""
+    try:
+        tree = ast.parse(sub.source)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        raise Error(f"{sub.name} could not be read as Python source.", crash_hint)
+    called = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call):
+            func = node.func
+            if isinstance(func, ast.Attribute):
+                called.add(func.attr)
+            elif isinstance(func, ast.Name):
+                called.add(func.id)
+    missing = [hook for hook in hooks if hook not in called]
+    if missing:
+        raise Fail("the lab-runtime call" + ("s " if len(missing) > 1 else " ")
+                   + ", ".join(f"lab.{m}()" for m in missing) + " " + ("are" if len(missing) > 1 else "is")
+                   + " missing, so the checker cannot run the file headless.", hint)

@@ -7,7 +7,7 @@ scenarios()) and add one row to LABS.
 """
 from dataclasses import dataclass
 
-from . import tumbling_crates
+from . import ball_on_ramp, tumbling_crates
 
 
 @dataclass(frozen=True)
@@ -35,6 +35,7 @@ class Lab:
 
 LABS = (
     Lab("tumbling_crates", tumbling_crates.TITLE, tumbling_crates),
+    Lab("ball_on_ramp", ball_on_ramp.TITLE, ball_on_ramp),
 )
 
 

@@ -25,9 +25,8 @@ import re
 
 from . import crates_probes as probes
 from . import crates_scenarios as scenes
-from . import handout
 from .checks import Error, Fail, Hint, Passed, Registry
-from .common import describe_function_error, describe_run_failure, shown
+from .common import check_runtime_calls, compare_with_handout, describe_run_failure, probe_data, shown
 
 TITLE = "Tumbling Crates"
 PROBES = "checker.crates_probes"
@@ -152,14 +151,7 @@ def _vec(v):
 
 def _function(sub, functions, probe, function, step):
     """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped."""
-    entry = functions.get(probe)
-    if entry is None:
-        raise Error(f"{sub.name} defines no {function}().", HINTS["crash"])
-    if not entry["ok"]:
-        hint = Hint(step, f"the error in {function}()", f"Your code in {function}() stopped with the error above; "
-                    "fix it at the line shown, then run the checker again.")
-        raise Error(describe_function_error(function, entry["error"], sub.name), hint)
-    return entry["data"]
+    return probe_data(sub, functions, probe, function, step, HINTS["crash"])
 
 
 # ---------------------------------------------------------------- loading and the handout
@@ -181,47 +173,13 @@ def loads(sub):
 @CHECKS.check(depends=["loads"])
 def handout_unchanged(sub, functions):
     """The code outside the steps is the handout's (formatting and comments aside)."""
-    try:
-        with open(STARTER, encoding="utf-8") as handle:
-            starter = handle.read()
-    except OSError as exc:
-        raise Error(f"the checker cannot read the handout {STARTER} ({exc.strerror}) to compare with; "
-                    "reinstall the lab bundle.")
-    try:
-        comparison = handout.compare(sub.source, starter, sub.name, "the handout")
-    except handout.MarkerError as exc:
-        raise Fail(f"{exc}.", HINTS["handout"])
-    added = f" (added imports: {'; '.join(comparison.added_imports)})" if comparison.added_imports else ""
-    if comparison.same:
-        return "the code outside the steps is the handout's" + added
-    listed = "; ".join(comparison.problems[:handout.MAX_PROBLEMS])
-    more = len(comparison.problems) - handout.MAX_PROBLEMS
-    text = f"code outside the steps differs from the handout: {listed}" + (f"; and {more} more" if more > 0 else "")
-    if sub.options.get("allow_edits"):
-        return f"warning (allowed by --allow-edits): {text}."
-    raise Fail(text + ".", HINTS["handout"])
+    return compare_with_handout(sub, STARTER, HINTS["handout"])
 
 
 @CHECKS.check(depends=["loads"])
 def runtime_lines(sub, functions):
     """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
-    try:
-        tree = ast.parse(sub.source)
-    except (SyntaxError, ValueError, RecursionError, MemoryError):
-        raise Error(f"{sub.name} could not be read as Python source.", HINTS["crash"])
-    called = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Call):
-            func = node.func
-            if isinstance(func, ast.Attribute):
-                called.add(func.attr)
-            elif isinstance(func, ast.Name):
-                called.add(func.id)
-    missing = [hook for hook in RUNTIME_HOOKS if hook not in called]
-    if missing:
-        raise Fail("the lab-runtime call" + ("s " if len(missing) > 1 else " ")
-                   + ", ".join(f"lab.{m}()" for m in missing) + " " + ("are" if len(missing) > 1 else "is")
-                   + " missing, so the checker cannot run the file headless.", HINTS["runtime"])
+    check_runtime_calls(sub, RUNTIME_HOOKS, HINTS["runtime"], HINTS["crash"])
 
 
 # ---------------------------------------------------------------- step 2 and step 3: sat()

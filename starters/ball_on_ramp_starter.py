@@ -1,6 +1,6 @@
 """Ball on the Ramp: a Lesson 11 lab ("Going Further").
 
-A solid ball rolls down the 22° ramp of Tumbling Crates, drops onto the floor
+A solid ball rolls down the crates lab's 22° ramp, drops onto the floor
 and knocks crates over. Your circle_polygon() finds where the ball touches a
 polygon (the ramp, the floor, a crate), separate() pushes overlapping bodies
 apart, disc_inertia() says how hard the ball is to spin, contact_point() says
