@@ -225,10 +225,12 @@ def separate_cases():
 def probe_separate(module, lab_path):
     """The student's separate() on each case: both positions before, after and as the lesson moves them."""
     cases = []
+    slop = float(getattr(module, "SLOP", SLOP))   # the lab's own constants: a changed one is the handout's business
+    percent = float(getattr(module, "PERCENT", PERCENT))
     for name, a, b, normal, depth in separate_cases():
         before = {"a": list(a.pos), "b": list(b.pos)}
         total = a.inv_mass + b.inv_mass
-        push = max(depth - SLOP, 0.0) * PERCENT
+        push = max(depth - slop, 0.0) * percent
         want = {"a": list(a.pos - normal * (push * a.inv_mass / total)),
                 "b": list(b.pos + normal * (push * b.inv_mass / total))}
         module.separate(a, b, Vector2(normal), depth)
