@@ -60,9 +60,10 @@ HINTS = {
                     "Project p onto the edge: t = (p - a)·ab / (ab·ab) (divide by the squared length, so t runs "
                     "from 0 at a to 1 at b), clamp t to [0, 1], and return a + ab * t."),
     "inside": Hint(3, "the center inside: push out the other way",
-                   "When the ball's center is already inside the polygon, the closest point of the outline lies "
-                   "OUTSIDE the ball's way out: return the normal -offset / dist (flipped) and the depth "
-                   "radius + dist. Unflipped, the push drives the ball on through the polygon."),
+                   "When the ball's center is already inside the polygon, the nearest edge is its way out, and "
+                   "the normal (from the ball into the polygon) must point away from that edge: return "
+                   "-offset / dist (flipped) and the depth radius + dist. Unflipped, the push drives the ball on "
+                   "through the polygon."),
     "split": Hint(4, "split the push-out by inverse mass",
                   "The push is shared by inverse mass: A moves back by push * a.inv_mass / total, B forward by "
                   "push * b.inv_mass / total (total = a.inv_mass + b.inv_mass). A static floor (inv_mass 0) "

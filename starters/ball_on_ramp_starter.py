@@ -78,8 +78,8 @@ def circle_polygon(center, radius, points):
         return (centre_of(points) - center).normalize(), radius
     # --- step 3: the center inside the polygon ---
     # Step 3 (same section): if the center is already inside the polygon (inside(center, points)),
-    # the closest point lies the wrong way: return the normal -offset / dist and the depth
-    # radius + dist, so the ball is pushed out through the nearest edge, not through the polygon.
+    # the nearest edge is the ball's way out, so the push must go the other way: return the
+    # normal -offset / dist and the depth radius + dist (the ball leaves through that edge).
     # --- end of step 3 ---
     if dist >= radius:
         return None
