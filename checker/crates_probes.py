@@ -35,8 +35,9 @@ SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__
                         "tumbling_crates.py")
 
 
-def with_reference_steps(module, lab_path, function, steps):
-    """The lab's `function` rebuilt with the inside of each step in `steps` taken from the solution.
+def with_reference_steps(module, lab_path, function, steps, solution=SOLUTION):
+    """The lab's `function` rebuilt with the inside of each step in `steps` taken from the solution
+    (Tumbling Crates' by default; another lab passes the path of its own as `solution`).
 
     Grading step 2 with the solution's step 3 (and so on) tells a mistake in one step from a
     mistake in the next: e.g. a step 3 that negates the depth instead of the axis. The rest of
@@ -47,7 +48,7 @@ def with_reference_steps(module, lab_path, function, steps):
     try:
         with open(lab_path, encoding="utf-8") as handle:
             mine = handle.read().splitlines()
-        with open(SOLUTION, encoding="utf-8") as handle:
+        with open(solution, encoding="utf-8") as handle:
             theirs = handle.read().splitlines()
         my_regions, their_regions = step_regions(mine), step_regions(theirs)
         tree = ast.parse("\n".join(mine))

@@ -243,3 +243,53 @@ def resting_side_error(body):
     edges = [(points[i], points[(i + 1) % len(points)]) for i in range(len(points))]
     a, b = max(edges, key=lambda edge: edge[0][1] + edge[1][1])
     return math.atan2(abs(b[1] - a[1]), abs(b[0] - a[0]))
+
+
+# --- shared metrics added for Ball on the Ramp ---
+
+def body_track(record, index):
+    """One dynamic body (index among the dynamic bodies) through a record, as numpy arrays.
+
+    {"t": frame / FPS (s), "pos": n × 2 (px), "vel": n × 2 (px/s), "angle": (rad), "omega": (rad/s)}.
+    """
+    import numpy as np
+    frames = record["records"]
+    bodies = [dynamic(frame)[index] for frame in frames]
+    return {"t": np.array([frame["frame"] / FPS for frame in frames]),
+            "pos": np.array([body["pos"] for body in bodies], dtype=float),
+            "vel": np.array([body["vel"] for body in bodies], dtype=float),
+            "angle": np.array([body["angle"] for body in bodies], dtype=float),
+            "omega": np.array([body["omega"] for body in bodies], dtype=float)}
+
+
+def fitted_acceleration(times, speeds):
+    """The least-squares slope (px/s²) of speed (px/s) against time (s): the mean acceleration."""
+    import numpy as np
+    return float(np.polyfit(np.asarray(times, dtype=float), np.asarray(speeds, dtype=float), 1)[0])
+
+
+def circle_depth(center, radius, points):
+    """How far (px) a circle (center, radius px) overlaps a convex polygon (world points); 0 when apart.
+
+    physics2d's circle_polygon: radius - distance to the outline, or radius + distance when
+    the center is inside.
+    """
+    from lesson11.physics2d import circle_polygon
+    hit = circle_polygon(Vector2(center), radius, [Vector2(p) for p in points])
+    return 0.0 if hit is None else hit[1]
+
+
+def deepest_circle_overlap(record, index, radius):
+    """The deepest overlap (px) of dynamic circle `index` (radius px) with any polygon body, over a record.
+
+    Returns (depth, frame number, index of the polygon in the frame's bodies); depth 0 when never touching.
+    """
+    deepest = (0.0, None, None)
+    for frame in record["records"]:
+        circle = dynamic(frame)[index]
+        for number, body in enumerate(frame["bodies"]):
+            if len(body["points"]) >= 3:
+                depth = circle_depth(circle["pos"], radius, body["points"])
+                if depth > deepest[0]:
+                    deepest = (depth, frame["frame"], number)
+    return deepest

@@ -43,6 +43,7 @@ from collections import deque
 
 import pygame
 
+from .physics2d.collision import circle_polygon as circle_polygon_of_physics2d
 from .physics2d.collision import sat as sat_of_physics2d
 
 MAX_ITERATIONS = 50     # the Up key stops here: 50 passes of the lesson solver take ~30 ms per step
@@ -249,7 +250,7 @@ class LabPanel:
     def lines(self, world):
         """The HUD's setting rows as [(key label, setting, value, colour)], top to bottom.
 
-        The row after the solver has no key: it says whose sat() and resolve() run.
+        The row after the solver has no key: it says whose sat() (or circle_polygon()) and resolve() run.
         """
         now = self.settings()
 
@@ -261,13 +262,22 @@ class LabPanel:
 
         reference = now["solver"] == "accumulated"
         hooked = getattr(world, "resolve", None) != getattr(world, "lesson_resolve", None)
-        sat_only = not hooked and getattr(world, "sat", sat_of_physics2d) is not sat_of_physics2d  # e.g. More Shapes
+        # the lab's own functions the World runs: sat() (Tumbling Crates, More Shapes),
+        # circle_polygon() (Ball on the Ramp), resolve() (Tumbling Crates, Ball on the Ramp)
+        library = (("sat", sat_of_physics2d), ("circle_polygon", circle_polygon_of_physics2d))
+        yours = [name for name, function in library if getattr(world, name, function) is not function]
+        if hooked:
+            yours.append("resolve")
+        named = " and ".join(f"{name}()" for name in yours)
         if reference:
-            note = ("your sat() and resolve() are NOT used" if hooked else "your sat() is NOT used" if sat_only
+            note = (f"your {named} {'are' if len(yours) > 1 else 'is'} NOT used" if yours
                     else "the lesson's resolve() is not used", WARNING)
+        elif hooked:
+            note = (f"runs your {named}", DIM)
+        elif yours:
+            note = (f"runs your {named} and physics2d's resolve()", DIM)
         else:
-            note = ("runs your sat() and resolve()" if hooked else "runs your sat() and physics2d's resolve()"
-                    if sat_only else "runs physics2d's sat() and resolve()", DIM)
+            note = ("runs physics2d's sat() and resolve()", DIM)
         warm = ("on" if now["warm_starting"] else "off") + (missing("warm_starting") or
                                                              ("" if reference else "  (reference solver only)"))
         return [("S", "solver", "accumulated (reference)" if reference else "lesson",

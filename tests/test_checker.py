@@ -112,12 +112,11 @@ def test_solution_passes_every_check_in_order(graded):
 
 
 def test_solution_alone_exits_zero_and_prints_a_mark_per_check():
-    # solutions/ holds every lab's solution (Tumbling Crates, More Shapes): each passes every one of its checks
     from checker.labs import LABS
-    status, out, err = run_checker("solutions/")
+    status, out, err = run_checker("solutions/")  # every lab's solution (Tumbling Crates, More Shapes, Ball on the Ramp)
     assert status == 0, out + err
     assert out.count(":)") == sum(len(lab.checks.checks) for lab in LABS)
-    assert f"{MAX_SCORE}/{MAX_SCORE}" in out
+    assert f"tumbling_crates.py - Tumbling Crates: {MAX_SCORE}/{MAX_SCORE}" in out
 
 
 def test_every_schema_field_is_present(graded):

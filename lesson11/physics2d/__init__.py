@@ -3,7 +3,7 @@
     vectors    cross, spin_velocity, input checks
     shapes     box_points, regular_polygon, convex_polygon, polygon_inertia, Polygon, Circle
     bodies     Body
-    collision  sat, inside, circle_polygon, circle_circle, contact points, circle_toi,
+    collision  sat, inside, circle_polygon, circle_circle, contact points (circle_contact_point), circle_toi,
                collide (the shape-pair dispatch) returning a Manifold
     response   apply_impulse, resolve, separate
     arbiter    the reference ("accumulated") solver: accumulated impulses, soft contacts, sub-steps
@@ -13,8 +13,8 @@
 Units: px, s, rad; y grows downward; a positive angle turns clockwise on screen.
 """
 from .bodies import Body
-from .collision import (TOUCH_TOLERANCE, Manifold, centre_of, circle_circle, circle_polygon, circle_polygon_toi,
-                        circle_toi, clip_contact_points, closest_on_segment, collide, contact_points,
+from .collision import (TOUCH_TOLERANCE, Manifold, centre_of, circle_circle, circle_contact_point, circle_polygon,
+                        circle_polygon_toi, circle_toi, clip_contact_points, closest_on_segment, collide, contact_points,
                         corner_manifold, edge_normals, inside, orient_a_to_b, project, sat)
 from .response import (PERCENT, RESTING_SPEED, SLOP, apply_impulse, effective_mass_inverse,
                        relative_velocity, resolve, separate)

@@ -111,10 +111,15 @@ class Body:
         return (min(xs), min(ys), max(xs), max(ys))
 
     def kinetic_energy(self):
-        """½ m |v|² + ½ I ω² (mass·px²/s²); 0 for static bodies."""
+        """½ m |v|² + ½ I ω² (mass·px²/s²); 0 for static bodies.
+
+        A body that does not spin has no spin energy, even with an infinite
+        inertia (inv_inertia 0: a body that cannot turn), where I ω² would be NaN.
+        """
         if self.inv_mass == 0:
             return 0.0
-        return 0.5 * self.mass * self.vel.length_squared() + 0.5 * self.inertia * self.omega ** 2
+        spin = 0.5 * self.inertia * self.omega ** 2 if self.omega else 0.0
+        return 0.5 * self.mass * self.vel.length_squared() + spin
 
     def is_finite(self):
         """True when position, velocity, angle and omega are all finite numbers."""

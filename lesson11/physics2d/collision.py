@@ -145,6 +145,16 @@ def circle_polygon(center, radius, points, margin=0.0):
     return offset / dist, radius - dist
 
 
+def circle_contact_point(center, radius, normal, depth):
+    """Where a circle (center px, radius px) touches along the unit normal pointing out of it: world px.
+
+    Halfway into the overlap, center + normal (radius - depth / 2), so the point
+    lies on the circle's surface when the depth is 0. The World's default
+    `circle_point` hook; a lab may hand in its own (e.g. center + normal radius).
+    """
+    return center + normal * (radius - depth / 2)
+
+
 def circle_circle(center_a, radius_a, center_b, radius_b, margin=0.0):
     """Two circles: None if apart, else (normal from A to B, depth = ra + rb - |cB - cA|).
 
@@ -343,12 +353,25 @@ def corner_manifold(pa, pb, normal, margin=0.0):
     return kept
 
 
+def _circle_answer(hit, test):
+    """A circle test's answer as (Vector2 normal, float depth), or None; a one-line ValueError if it is neither."""
+    if hit is None:
+        return None
+    try:
+        normal, depth = hit
+        return Vector2(normal), float(depth)
+    except (TypeError, ValueError):
+        name = getattr(test, "__name__", "the circle test")
+        raise ValueError(f"{name}() must return None or (normal, depth), got {hit!r}") from None
+
+
 Manifold = namedtuple("Manifold", "normal depth points depths")
 Manifold.__doc__ = """One pair's narrow-phase answer: unit normal A→B, the pair's depth (px),
 the contact points (world px) and each point's own depth (px; negative = a gap, a speculative contact)."""
 
 
-def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0):
+def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0, circle_test=circle_polygon,
+            circle_point=circle_contact_point):
     """Narrow phase for one pair of bodies (with world points pa, pb): a Manifold, or None when apart.
 
     Polygons: polygon_test(pa, pb) (the lab's sat, if hooked) gives normal and
@@ -356,10 +379,14 @@ def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0):
       "corners"  the lesson's contact_points, every point with the pair's depth;
                  with a margin, corner_manifold (each corner its own depth);
       "clip"     clip_manifold, edge clipping, each point its own depth.
-    Circles: circle_circle / circle_polygon; the point sits halfway into the
-    overlap, c + d (r - depth/2) with d the direction from the circle's centre.
+    Circles: circle_circle, or circle_test(center, radius, points) for a circle
+    and a polygon (the lab's circle_polygon, if hooked), giving the normal out
+    of the circle and the depth; circle_point(center, radius, d, depth) places
+    the one contact point, d being the direction from the circle's centre
+    (default circle_contact_point: halfway into the overlap, c + d (r - depth/2)).
     A margin (px) asks for speculative contacts: pairs closer than that count,
-    with a negative depth; polygons then use this module's sat (which has a margin).
+    with a negative depth; polygons and circles then use this module's sat,
+    circle_polygon and circle_contact_point (which know about margins).
     """
     kind = (a.shape.kind, b.shape.kind)
     if kind == ("polygon", "polygon"):
@@ -376,13 +403,21 @@ def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0):
         return Manifold(normal, depth, [p for p, _ in pairs], [d for _, d in pairs])
     if kind == ("circle", "circle"):
         hit = circle_circle(a.pos, a.radius, b.pos, b.radius, margin)
+    elif margin:
+        if kind == ("circle", "polygon"):
+            hit = circle_polygon(a.pos, a.radius, pb, margin)
+        else:
+            hit = circle_polygon(b.pos, b.radius, pa, margin)
+            hit = None if hit is None else (-hit[0], hit[1])
+        circle_point = circle_contact_point
     elif kind == ("circle", "polygon"):
-        hit = circle_polygon(a.pos, a.radius, pb, margin)
+        hit = _circle_answer(circle_test(Vector2(a.pos), a.radius, [Vector2(p) for p in pb]), circle_test)
     else:
-        hit = circle_polygon(b.pos, b.radius, pa, margin)
+        hit = _circle_answer(circle_test(Vector2(b.pos), b.radius, [Vector2(p) for p in pa]), circle_test)
         hit = None if hit is None else (-hit[0], hit[1])
     if hit is None:
         return None
     normal, depth = hit
     circle, direction = (a, normal) if a.shape.kind == "circle" else (b, -normal)
-    return Manifold(normal, depth, [circle.pos + direction * (circle.radius - depth / 2)], [depth])
+    point = circle_point(Vector2(circle.pos), circle.radius, Vector2(direction), depth)
+    return Manifold(normal, depth, [point], [depth])

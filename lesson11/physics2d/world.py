@@ -4,8 +4,9 @@ A scene declares the effects it needs in `effects`; the world runs those and
 nothing else (no friction pass for a frictionless scene, no swept tests unless
 "ccd" is asked for). Every setting is an attribute, checked whenever it is set
 (in World(...) or later), with a one-line ValueError naming it and the value.
-A lab can hand in its own `sat`, `resolve` and `separate`, and the world calls
-them inside its loop, so a student's functions run the whole simulation.
+A lab can hand in its own `sat`, `resolve` and `separate` (and, for balls,
+`circle_polygon` and `circle_point`), and the world calls them inside its
+loop, so a student's functions run the whole simulation.
 
 World.step reads top to bottom, one comment per phase, for both solvers.
 """
@@ -88,6 +89,14 @@ def _check_effects(value):
     return frozenset(value)
 
 
+def _check_hook(name):
+    def check(value):
+        if not callable(value):
+            raise ValueError(f"world {name} must be a function (or None for the library's), got {value!r}")
+        return value
+    return check
+
+
 def _check_bool(name):
     def check(value):
         if not isinstance(value, bool):
@@ -134,7 +143,14 @@ class World:
                      soft contacts, sub-steps; for tall stacks and large mass ratios)
       warm_starting  True: the accumulated solver starts from last step's impulses
                      (the lesson solver ignores it)
-    Hooks: sat(pa, pb), resolve(a, b, normal, point), separate(a, b, normal, depth).
+    Hooks: sat(pa, pb), resolve(a, b, normal, point), separate(a, b, normal, depth);
+      for circles: circle_polygon(center, radius, points) -> None or (normal out of the
+      circle into the polygon, depth px), the test for every circle–polygon pair, and
+      circle_point(center, radius, normal, depth) -> the contact point (world px) of every
+      circle pair, normal pointing out of that circle (default collision.circle_contact_point,
+      halfway into the overlap). Each hook must be a function (or None: the library's);
+      anything else is a one-line ValueError. Like sat, the two circle hooks serve the
+      lesson solver; the accumulated solver's speculative contacts use the library's.
     After each step: `contacts` (list of Contact the impulses used) and
     `counters` (how many steps, pair tests, narrow tests, contacts, swept tests ran in all).
     Changing solver or contact_rule between steps is safe: the accumulated
@@ -160,11 +176,14 @@ class World:
     effects = _setting("effects", _check_effects)
     order = _setting("order", _check_order)
     warm_starting = _setting("warm_starting", _check_bool("warm_starting"))
+    circle_polygon = _setting("circle_polygon", _check_hook("circle_polygon"))
+    circle_point = _setting("circle_point", _check_hook("circle_point"))
 
     def __init__(self, bodies=(), *, gravity=GRAVITY, step_seconds=STEP, iterations=6, substeps=None,
                  slop=response.SLOP, percent=response.PERCENT, resting_speed=response.RESTING_SPEED,
                  max_frame=0.25, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
-                 warm_starting=True, order="solve-first", sat=None, resolve=None, separate=None):
+                 warm_starting=True, order="solve-first", sat=None, resolve=None, separate=None,
+                 circle_polygon=None, circle_point=None):
         self.arbiters = {}
         self.gravity = gravity
         self.step_seconds = step_seconds
@@ -182,6 +201,8 @@ class World:
         self.sat = sat or collision.sat
         self.resolve = resolve or self.lesson_resolve
         self.separate = separate or self.lesson_separate
+        self.circle_polygon = circle_polygon or collision.circle_polygon
+        self.circle_point = circle_point or collision.circle_contact_point
         self.bodies = []
         self.contacts = []
         self.accumulator = 0.0
@@ -480,7 +501,8 @@ class World:
                         box_a[3] + margin < box_b[1] or box_b[3] + margin < box_a[1]:
                     continue  # broad phase: bounding boxes apart
                 self.counters["narrow_tests"] += 1
-                manifold = collision.collide(a, b, shapes[i], shapes[j], self.contact_rule, self.sat, margin)
+                manifold = collision.collide(a, b, shapes[i], shapes[j], self.contact_rule, self.sat, margin,
+                                             self.circle_polygon, self.circle_point)
                 if manifold is not None:
                     self.counters["contacts"] += len(manifold.points)
                     yield a, b, manifold

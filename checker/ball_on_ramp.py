@@ -1,0 +1,478 @@
+"""Ball on the Ramp (Lesson 11, Going Further): the checks, their bounds and the hints.
+
+Order of checks (stable), one per lesson step where a step is the student's:
+  loads, handout_unchanged, runtime_lines,
+  closest_point (step 2), inside_case (step 3), push_out_split (step 4), ball_inertia (step 5),
+  contact_on_surface (step 6), friction_rolls (step 7),
+  runs, then the four done-criteria: rolls_without_slipping, slides_without_friction,
+  knocks_crate_over, pushed_out_of_crate.
+Checks are worth 1 point, the four criteria 2 points each.
+
+The function checks compare the student's functions with the lesson's
+formulas on the configurations of checker/ball_probes.py and name the first
+configuration that differs (and the mistake, when it is a known one). The
+scenes (checker/ball_scenarios.py) run only when every function check passes,
+so a mistake is reported once, under its own step. handout_unchanged and
+runtime_lines are the bodies every lab shares (checker/common.py).
+
+Every bound of the criteria comes from the issue (rolling within 2 % and 3 %,
+sliding within 1 %, sinking at most 1 px) or was set from what
+solutions/ball_on_ramp.py measures in the same scene, noted beside it.
+"""
+import math
+import os
+
+from . import ball_probes as probes
+from . import ball_scenarios as scenes
+from . import lab_checks
+from .checks import Fail, Hint, Passed, Registry
+from .common import shown
+from .crates_scenarios import finite
+
+TITLE = "Ball on the Ramp"
+PROBES = "checker.ball_probes"
+REQUIRED = probes.REQUIRED
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "ball_on_ramp_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")
+
+# ---------------------------------------------------------------- tolerances of the function checks
+REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
+ABS = 1e-7      # absolute floor of the same (px, px/s, rad/s, mass·px²)
+
+# ---------------------------------------------------------------- bounds of the criteria
+ROLL_ACCEL = 0.03      # relative to ⅔ g sin θ = 244.74 px/s² (the issue); solution: 244.743, off by 0.0000 %
+ROLL_SLIP = 0.02       # |ω r - v| / v (the issue); solution: 2e-15
+SLIDE_ACCEL = 0.01     # relative to g sin θ = 367.11 px/s² (the issue); solution: 367.114, off by 0.0000 %
+SLIDE_SPIN = 0.05      # rad/s (1 px/s at the rim of a 20 px ball); solution: 3e-14
+SINK = 1.0             # px into the ramp, the floor or a crate (the issue); solution: ramp 0.010, knock 0.43 (a crate)
+KNOCK_TURN = math.radians(60)   # the crate tips over; solution: 90.3° (it ends on its side)
+KNOCK_MOVE = 20.0      # px the crate's centre moves; solution: 72.9
+INSIDE_DEPTH = 1.0     # px of overlap left after 0.5 s; solution: 0.41 (the push-out's slop is 0.5)
+
+# ---------------------------------------------------------------- the hints, in the lesson's terms
+HINTS = {
+    "clamp": Hint(2, "clamp t to the segment",
+                  "The closest point of an EDGE is not the closest point of its infinite line: compute "
+                  "t = (p - a)·ab / (ab·ab), clamp it with max(0.0, min(1.0, t)), and return a + ab * t. Without "
+                  "the clamp a ball near a corner touches the edge's line far beyond the polygon."),
+    "closest": Hint(2, "the closest point on one edge",
+                    "Project p onto the edge: t = (p - a)·ab / (ab·ab) (divide by the squared length, so t runs "
+                    "from 0 at a to 1 at b), clamp t to [0, 1], and return a + ab * t."),
+    "inside": Hint(3, "the center inside: push out the other way",
+                   "When the ball's center is already inside the polygon, the nearest edge is its way out, and "
+                   "the normal (from the ball into the polygon) must point away from that edge: return "
+                   "-offset / dist (flipped) and the depth radius + dist. Unflipped, the push drives the ball on "
+                   "through the polygon."),
+    "split": Hint(4, "split the push-out by inverse mass",
+                  "The push is shared by inverse mass: A moves back by push * a.inv_mass / total, B forward by "
+                  "push * b.inv_mass / total (total = a.inv_mass + b.inv_mass). A static floor (inv_mass 0) "
+                  "never moves, and a light ball moves more than a heavy crate."),
+    "inertia": Hint(5, "a solid disc's moment of inertia",
+                    "A solid disc (the ball) has I = ½ m r², half of a ring's m r²: mass near the center is easy "
+                    "to spin. The wrong I changes how fast the ball rolls down the ramp (a = g sin θ / (1 + I / m r²))."),
+    "contact": Hint(6, "the contact point on the ball's surface",
+                    "A contact pushes on the ball where it touches: on its surface, center + normal * radius (the "
+                    "normal points out of the ball). At the center, friction has no lever arm and the ball slides "
+                    "without ever turning; on the wrong side it spins backwards."),
+    "friction_missing": Hint(7, "friction makes it roll",
+                             "Without a friction impulse the ball slides down the ramp like an ice cube. Compute "
+                             "kt (with both spin terms), jt = -rel·t / kt, clamp it to [-mu * j, mu * j] and apply "
+                             "t * jt at the contact with apply_impulse(a, b, t * jt, ra, rb)."),
+    "friction_sign": Hint(7, "the sign of the friction impulse",
+                          "Friction opposes the slip: jt = -rel·t / kt, and the clamp keeps its sign. With the sign "
+                          "flipped the ball spins up the wrong way and speeds up its slide."),
+    "friction_clamp": Hint(7, "Coulomb's clamp on friction",
+                           "Friction may never be bigger than mu times the normal impulse j: keep jt between "
+                           "-mu * j and mu * j (and leave it alone inside that range). On a frictionless ramp "
+                           "(mu = 0) it is then 0, and the ball slides without turning."),
+    "friction_kt": Hint(7, "the spin terms of kt",
+                        "kt, the effective mass along t, has the same spin terms as k: (ra × t)² / I_A + "
+                        "(rb × t)² / I_B. Without them friction stops the slip three times too hard for a ball "
+                        "and the contact point overshoots back and forth."),
+    "friction_centre": Hint(7, "friction acts at the contact point",
+                            "Apply the friction impulse at the contact, with the same ra and rb as the normal "
+                            "impulse: apply_impulse(a, b, t * jt, ra, rb). At the centres (zero offsets) it cannot "
+                            "turn the ball, so it never rolls."),
+    "handout": Hint(None, "keep the handed-out code",
+                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
+                    "everything else (the constants, the scene, make_ball, build, the World and its hooks, the "
+                    "`# lab runtime` lines) stays as handed out, so the checker measures the lab the lesson "
+                    "describes. Start again from the starter if you are unsure what changed."),
+    "runtime": Hint(None, "the lines marked # lab runtime",
+                    "Keep the lines marked `# lab runtime` from the handout (lab.seed, lab.scene, lab.frame_budget, "
+                    "lab.tick, lab.events, lab.record): they do nothing when you run the file yourself, and the "
+                    "checker needs them to run it headless."),
+    "settle": Hint(8, "watch it roll",
+                   "The function checks above all pass, yet the ball does not behave as the lesson says. Press D "
+                   "and watch the contact points and normals while it rolls; compare your file with the handout "
+                   "around the steps."),
+    "crash": Hint(1, "run the file",
+                  "Run the file yourself (python ball_on_ramp.py) and fix the error at the line shown."),
+}
+
+CHECKS = Registry()
+
+
+def recognise(path, source):
+    """True if the file is a Ball on the Ramp lab: its name or its text says so."""
+    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
+    return "ball_on_ramp" in name or "ball on the ramp" in source.lower()
+
+
+def scenarios():
+    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
+    return {name: build() for name, build in scenes.SCENARIOS.items()}
+
+
+# ---------------------------------------------------------------- helpers
+
+def _close(got, want):
+    return abs(got - want) <= ABS + REL * abs(want)
+
+
+def _same_point(got, want):
+    return isinstance(got, list) and all(_close(g, w) for g, w in zip(got, want))
+
+
+def _vec(v):
+    return f"({v[0]:.2f}, {v[1]:.2f})"
+
+
+def _function(sub, functions, probe, function, step):
+    return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
+
+
+def _bad(got):
+    return isinstance(got, dict) and "bad" in got
+
+
+# ---------------------------------------------------------------- loading and the handout
+
+@CHECKS.check()
+def loads(sub):
+    """The file imports without errors and defines closest_on_segment, circle_polygon, separate, disc_inertia,
+    contact_point, resolve and main."""
+    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
+                             "function names: closest_on_segment, circle_polygon, separate, disc_inertia, "
+                             "contact_point, resolve and main; the checker calls them."))
+
+
+@CHECKS.check(depends=["loads"])
+def handout_unchanged(sub, functions):
+    """The code outside the steps is the handout's (formatting and comments aside)."""
+    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+
+
+@CHECKS.check(depends=["loads"])
+def runtime_lines(sub, functions):
+    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
+    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+
+
+# ---------------------------------------------------------------- step 2: the closest point
+
+@CHECKS.check(depends=["loads"])
+def closest_point(sub, functions):
+    """Step 2: closest_on_segment() gives the point of the edge nearest to p (t clamped to [0, 1])."""
+    cases = _function(sub, functions, "closest_on_segment", "closest_on_segment", 2)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if _same_point(got, want):
+            continue
+        where = f"for {case['case']} (p = {_vec(case['p'])}, edge {_vec(case['a'])} to {_vec(case['b'])})"
+        if _bad(got):
+            placeholder = " (the handout's placeholder: write step 2)" if "inf" in got["bad"] else ""
+            raise Fail(f"{where}, closest_on_segment() returned {got['bad']}{placeholder}; expected the point "
+                       f"{_vec(want)}.", HINTS["closest"])
+        if _same_point(got, case["line"]):
+            raise Fail(f"{where}, your point {_vec(got)} lies on the edge's line beyond the edge; the nearest point "
+                       f"of the edge is {_vec(want)}: t is not clamped to [0, 1].", HINTS["clamp"])
+        if _same_point(got, case["unsquared"]):
+            raise Fail(f"{where}, your point is {_vec(got)}; expected {_vec(want)}: t is divided by |ab|, not by "
+                       "ab·ab = |ab|².", HINTS["closest"])
+        raise Fail(f"{where}, your point is {_vec(got)}; expected {_vec(want)}.", HINTS["closest"])
+    outside = _function(sub, functions, "circle_outside", "circle_polygon", 2)
+    for case in outside:
+        got, want = case["got"], case["want"]
+        if _hit_matches(got, want):
+            continue
+        raise Fail(f"for {case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}), circle_polygon() "
+                   f"with your closest_on_segment() returned {_show_hit(got)}; expected {_show_hit(want)}.",
+                   HINTS["closest"])
+    return Passed(f"the closest point matches the lesson in all {len(cases)} edges and {len(outside)} circles "
+                  "outside a polygon", value=cases)
+
+
+def _hit_matches(got, want):
+    if want is None:
+        return got is None or (not _bad(got) and got["depth"] <= 1e-6)  # exact touching may count as touching
+    return (got is not None and not _bad(got) and _same_point(got["normal"], want["normal"])
+            and _close(got["depth"], want["depth"]))
+
+
+def _show_hit(hit):
+    if hit is None:
+        return "None (apart)"
+    if _bad(hit):
+        return hit["bad"]
+    return f"normal {_vec(hit['normal'])}, depth {hit['depth']:.3f} px"
+
+
+# ---------------------------------------------------------------- step 3: the inside case
+
+@CHECKS.check(depends=["loads"])
+def inside_case(sub, functions):
+    """Step 3: circle_polygon() pushes a ball whose center is inside the polygon back out the nearest side."""
+    cases = _function(sub, functions, "circle_inside", "circle_polygon", 3)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if _hit_matches(got, want):
+            continue
+        where = f"for {case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}, {case['dist']:.2f} px " \
+                "from the nearest edge)"
+        if got is None:
+            raise Fail(f"{where}, circle_polygon() returned None (apart); expected {_show_hit(want)}: a center "
+                       "inside the polygon is the deepest overlap of all.", HINTS["inside"])
+        if _bad(got):
+            raise Fail(f"{where}, circle_polygon() returned {got['bad']}; expected (normal, depth).", HINTS["inside"])
+        flipped = _same_point(got["normal"], case["toward"])
+        deep = _close(got["depth"], want["depth"])
+        if flipped and deep:
+            raise Fail(f"{where}, your normal {_vec(got['normal'])} points from the center towards the nearest edge; "
+                       f"it must point the other way, {_vec(want['normal'])}, or the push drives the ball on through "
+                       "the polygon.", HINTS["inside"])
+        if flipped and _close(got["depth"], case["radius"] - case["dist"]):
+            raise Fail(f"{where}, circle_polygon() returned {_show_hit(got)}, the outside case's answer (normal towards "
+                       f"the nearest edge, depth radius - dist); expected {_show_hit(want)}: there is no inside case.",
+                       HINTS["inside"])
+        if _same_point(got["normal"], want["normal"]):
+            shallow = _close(got["depth"], case["radius"] - case["dist"])
+            raise Fail(f"{where}, the normal is right but the depth is {got['depth']:.3f} px; expected "
+                       f"radius + dist = {want['depth']:.3f} px" + (" (you used radius - dist, the outside case's)"
+                                                                  if shallow else "") + ".", HINTS["inside"])
+        raise Fail(f"{where}, circle_polygon() returned {_show_hit(got)}; expected {_show_hit(want)}.", HINTS["inside"])
+    return Passed(f"the inside case matches the lesson in all {len(cases)} circles", value=cases)
+
+
+# ---------------------------------------------------------------- step 4: the push-out
+
+@CHECKS.check(depends=["loads"])
+def push_out_split(sub, functions):
+    """Step 4: separate() splits the push-out by inverse mass (a static body never moves)."""
+    cases = _function(sub, functions, "separate", "separate", 4)
+    for case in cases:
+        for body in ("a", "b"):
+            got, want, before = case["after"][body], case["want"][body], case["before"][body]
+            if _same_point(got, want):
+                continue
+            letter = body.upper()
+            where = f"in '{case['case']}' (push {case['push']:.3f} px, inverse masses {case['inv']['a']:.3g} and " \
+                    f"{case['inv']['b']:.3g})"
+            if _bad(got):
+                raise Fail(f"{where}, {letter}'s position became {got['bad']}.", HINTS["split"])
+            moved = math.dist(got, before)
+            should = math.dist(want, before)
+            text = f"{where}, {letter} moved {moved:.3f} px; expected {should:.3f} px"
+            if case["inv"][body] == 0 and moved > 0:
+                text += f": {letter} is static (inverse mass 0) and must never move"
+            elif _close(moved, case["push"]) and not _close(should, case["push"]):
+                text += ": each body got the whole push instead of its share by inverse mass"
+            elif _close(moved, case["push"] / 2) and not _close(should, case["push"] / 2):
+                text += ": the push was halved, not split by inverse mass"
+            else:
+                other = "b" if body == "a" else "a"
+                total = case["inv"]["a"] + case["inv"]["b"]
+                if total and _close(moved, case["push"] * case["inv"][other] / total):
+                    text += f": {letter} got {other.upper()}'s share (the shares are swapped)"
+                elif should and _close(moved, should):
+                    text += ": the right distance but the wrong way (A moves back along the normal, B forward)"
+            raise Fail(text + ".", HINTS["split"])
+    return Passed(f"the push-out is split by inverse mass in all {len(cases)} cases", value=cases)
+
+
+# ---------------------------------------------------------------- step 5: the ball's inertia
+
+INERTIA_MISTAKES = {1.0: "m r², a thin ring's (all the mass at the rim)", 0.4: "2/5 m r², a solid sphere's",
+                    1 / 12: "m r² / 12, a thin rod's", 0.25: "m r² / 4"}
+
+
+@CHECKS.check(depends=["loads"])
+def ball_inertia(sub, functions):
+    """Step 5: disc_inertia() gives a solid disc's moment of inertia, I = ½ m r²."""
+    cases = _function(sub, functions, "disc_inertia", "disc_inertia", 5)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if not _bad(got) and _close(got, want):
+            continue
+        where = f"for mass {case['mass']:.4g} and radius {case['radius']:g} px"
+        if _bad(got):
+            raise Fail(f"{where}, disc_inertia() returned {got['bad']}; expected the number {want:.4g}.",
+                       HINTS["inertia"])
+        factor = got / (case["mass"] * case["radius"] ** 2) if case["mass"] and case["radius"] else math.nan
+        named = next((text for f, text in INERTIA_MISTAKES.items() if _close(factor, f)), None)
+        if named is None and _close(got, 0.5 * case["mass"] * case["radius"]):
+            named = "½ m r: the radius is not squared"
+        raise Fail(f"{where}, disc_inertia() returned {got:.4g}; expected ½ m r² = {want:.4g}"
+                   + (f" (yours is {named})" if named else "") + ".", HINTS["inertia"])
+    return Passed(f"I = ½ m r² in all {len(cases)} cases", value=cases)
+
+
+# ---------------------------------------------------------------- step 6: the contact point
+
+@CHECKS.check(depends=["loads"])
+def contact_on_surface(sub, functions):
+    """Step 6: contact_point() puts the contact on the ball's surface, center + normal * radius."""
+    cases = _function(sub, functions, "contact_point", "contact_point", 6)
+    halfway = 0
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if _same_point(got, want):
+            continue
+        if _same_point(got, case["halfway"]):
+            halfway += 1  # the library's choice, halfway into the overlap: also on the ball's edge
+            continue
+        where = f"for {case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}, normal " \
+                f"{_vec(case['normal'])}, depth {case['depth']:g})"
+        if _bad(got):
+            raise Fail(f"{where}, contact_point() returned {got['bad']}; expected the point {_vec(want)}.",
+                       HINTS["contact"])
+        centre, radius = case["center"], case["radius"]
+        normal = case["normal"]
+        if _same_point(got, centre):
+            what = ": that is the ball's center, where friction cannot turn it"
+        elif _same_point(got, [centre[0] - normal[0] * radius, centre[1] - normal[1] * radius]):
+            what = ": that is the far side of the ball (the normal points out of the ball, into the other body)"
+        elif _same_point(got, [centre[0] + normal[0] * case["depth"], centre[1] + normal[1] * case["depth"]]):
+            what = ": that is center + normal * depth; the surface is radius px from the center"
+        else:
+            what = ""
+        raise Fail(f"{where}, contact_point() returned {_vec(got)}; expected center + normal * radius = "
+                   f"{_vec(want)}{what}.", HINTS["contact"])
+    note = " (halfway into the overlap, as physics2d does)" if halfway else ""
+    return Passed(f"the contact point is on the ball's surface in all {len(cases)} cases{note}", value=cases)
+
+
+# ---------------------------------------------------------------- step 7: friction
+
+FRICTION_TEXT = {
+    "none": ("resolve() applied no friction: the ball would slide like an ice cube", "friction_missing"),
+    "sign": ("the friction impulse pushes along the slip instead of against it", "friction_sign"),
+    "unclamped": ("the friction impulse is not clamped to mu·j", "friction_clamp"),
+    "always_full": ("friction always takes its full mu·j, even where a smaller impulse stops the slip",
+                    "friction_clamp"),
+    "no_spin_kt": ("kt lacks the spin terms (ra × t)²/I_A + (rb × t)²/I_B", "friction_kt"),
+    "at_centre": ("the friction impulse acts at the centres (zero offsets), so it cannot turn the ball",
+                  "friction_centre"),
+}
+
+
+def _state_matches(got, want):
+    return all(_close(got[k]["omega"], want[k]["omega"]) and all(_close(g, w) for g, w in
+                                                                 zip(got[k]["vel"], want[k]["vel"]))
+               for k in ("a", "b"))
+
+
+def _describe_state(state):
+    return f"A v {_vec(state['a']['vel'])} ω {state['a']['omega']:.3f}; B v {_vec(state['b']['vel'])} " \
+           f"ω {state['b']['omega']:.3f}"
+
+
+@CHECKS.check(depends=["loads"])
+def friction_rolls(sub, functions):
+    """Step 7: resolve()'s friction impulse, jt = -rel·t / kt clamped to ±mu j, acts at the contact and turns the ball."""
+    cases = _function(sub, functions, "resolve", "resolve", 7)
+    for case in cases:
+        got, variants = case["got"], case["variants"]
+        if _state_matches(got, variants["right"]):
+            continue
+        named = next((key for key in FRICTION_TEXT
+                      if _state_matches(got, variants[key]) and not _state_matches(variants[key], variants["right"])),
+                     None)
+        text, hint = FRICTION_TEXT.get(named, ("the velocities and spins after resolve() differ from the lesson's",
+                                               "friction_missing"))
+        raise Fail(f"in '{case['case']}' (mu = {case['mu']:.2g}), {text}. After your resolve(): "
+                   f"{_describe_state(got)}; expected: {_describe_state(variants['right'])}.", HINTS[hint])
+    return Passed(f"friction matches the lesson in all {len(cases)} contacts", value=cases)
+
+
+# ---------------------------------------------------------------- the scenes and the lesson's criteria
+
+@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines", "closest_point", "inside_case", "push_out_split",
+                       "ball_inertia", "contact_on_surface", "friction_rolls"], needs_scenarios=True)
+def runs(sub, functions, handout_note, runtime, closest, inside, split, inertia, contact, friction):
+    """main() runs each of the checker's three scenes to the end."""
+    runs = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
+    for name, run in runs.items():
+        if not finite(run.record["records"]):
+            raise Fail(f"in the '{name}' scene a body's position or speed became infinite or NaN.", HINTS["settle"])
+    return {name: run.record for name, run in runs.items()}
+
+
+def _sunk(depth, where, frame):
+    if depth > SINK:
+        raise Fail(f"the ball sank {shown(depth, SINK)} px into {where} (at frame {frame}; bound {SINK:g} px).",
+                   HINTS["settle"])
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def rolls_without_slipping(sub, records):
+    """On the 22° ramp (mu 0.6) the ball rolls without slipping, |ω r - v| <= 2 % of v, at a = ⅔ g sin θ (criterion 1)."""
+    roll = scenes.measure_roll(records["ramp"], 0)
+    if roll["left_ramp"]:
+        raise Fail("the ball let go on the ramp did not stay on it (it bounced or flew off).", HINTS["settle"])
+    _sunk(roll["depth"], "the ramp", roll["depth_frame"])
+    off = abs(roll["accel"] - scenes.ROLLING) / scenes.ROLLING
+    if not off <= ROLL_ACCEL:
+        raise Fail(f"the ball speeds up at {roll['accel']:.1f} px/s² down the ramp; a rolling disc gets ⅔ g sin θ = "
+                   f"{scenes.ROLLING:.1f} px/s² (off by {off:.1%}; bound {ROLL_ACCEL:.0%}).", HINTS["settle"])
+    if not roll["slip"] <= ROLL_SLIP:
+        raise Fail(f"the ball slips: its rim moves {roll['slip']:.1%} faster or slower than its center "
+                   f"(|ω r - v| / v; bound {ROLL_SLIP:.0%}).", HINTS["settle"])
+    return (f"a = {roll['accel']:.2f} px/s² (⅔ g sin θ = {scenes.ROLLING:.2f}), slip {roll['slip']:.2%}, "
+            f"deepest {roll['depth']:.2f} px")
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def slides_without_friction(sub, records):
+    """On a frictionless ramp the ball slides at a = g sin θ (within 1 %) and does not spin (criterion 2)."""
+    slide = scenes.measure_roll(records["ramp"], 1)
+    if slide["left_ramp"]:
+        raise Fail("the frictionless ball let go on the ramp did not stay on it (it bounced or flew off).",
+                   HINTS["settle"])
+    _sunk(slide["depth"], "the ramp", slide["depth_frame"])
+    off = abs(slide["accel"] - scenes.SLIDING) / scenes.SLIDING
+    if not off <= SLIDE_ACCEL:
+        raise Fail(f"the frictionless ball speeds up at {slide['accel']:.1f} px/s²; without friction it slides at "
+                   f"g sin θ = {scenes.SLIDING:.1f} px/s² (off by {off:.1%}; bound {SLIDE_ACCEL:.0%}).",
+                   HINTS["friction_clamp"])
+    if slide["omega"] > SLIDE_SPIN:
+        raise Fail(f"the frictionless ball spins at up to {shown(slide['omega'], SLIDE_SPIN)} rad/s (bound "
+                   f"{SLIDE_SPIN:g}): with mu = 0 nothing can turn it.", HINTS["friction_clamp"])
+    return f"a = {slide['accel']:.2f} px/s² (g sin θ = {scenes.SLIDING:.2f}), spin {slide['omega']:.2g} rad/s"
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def knocks_crate_over(sub, records):
+    """The ball rolls off the ramp and knocks a tall crate over, never sinking more than 1 px into anything (criterion 3)."""
+    knock = scenes.measure_knock(records["knock"])
+    _sunk(knock["depth"], knock["depth_into"], knock["depth_frame"])
+    if knock["moved"] < KNOCK_MOVE or knock["turned"] < KNOCK_TURN:
+        raise Fail(f"the ball rolled off the ramp but the tall crate only turned {math.degrees(knock['turned']):.0f}° "
+                   f"and moved {knock['moved']:.1f} px (bounds: {math.degrees(KNOCK_TURN):.0f}° and "
+                   f"{KNOCK_MOVE:g} px).", HINTS["settle"])
+    return (f"the crate turned {math.degrees(knock['turned']):.0f}° and moved {knock['moved']:.0f} px; deepest "
+            f"overlap {knock['depth']:.2f} px")
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def pushed_out_of_crate(sub, records):
+    """A ball started with its center inside a crate is pushed out of the crate, not through it (criterion 4)."""
+    inside = scenes.measure_inside(records["inside"])
+    if inside["side"] == "far":
+        raise Fail("a ball started with its center inside a crate, 15 px from its left side, came out on the "
+                   "crate's right: it was pushed through the crate, not out.", HINTS["inside"])
+    if inside["depth"] > INSIDE_DEPTH or inside["side"] != "near":
+        raise Fail(f"a ball started with its center inside a crate is still {inside['depth']:.1f} px into it after "
+                   f"0.5 s (bound {INSIDE_DEPTH:g} px).", HINTS["inside"])
+    return f"out on the near side after 0.5 s, {inside['depth']:.2f} px of overlap left"

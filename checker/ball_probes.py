@@ -1,0 +1,405 @@
+"""Probes of a Ball on the Ramp file's own functions, run inside the checker's child process.
+
+Each probe calls one of the student's functions on configurations chosen so
+that together they exercise every term of the lesson's formula, and returns
+plain data: the student's answer beside the lesson's on the same inputs
+(checker/ball_on_ramp.py compares them and names the first that differs).
+
+    closest_on_segment  (step 2) points beside an edge, beyond either end, slanted and reversed edges
+    circle_outside      (step 2) circle_polygon() on circles outside or touching a polygon (near a
+                        face, near a corner, apart), with the solution's step 3 spliced in
+    circle_inside       (step 3) circle_polygon() with the center inside (near each kind of edge),
+                        run with the lesson's closest_on_segment in place of the student's
+    separate            (step 4) two dynamic bodies of different mass, a static A, a static B
+    disc_inertia        (step 5) masses and radii far from 1
+    contact_point       (step 6) balls touching along several normals, with small and large depths
+    resolve             (step 7) a ball slipping on the static ramp (clamped and not), spinning in
+                        place, hitting a crate, on a frictionless surface; resolve() runs with a
+                        recorder in place of apply_impulse, so each impulse and where it acts is seen
+
+Units: px, s, rad, mass in the lab's units (area / 1000).
+"""
+import math
+import os
+
+from pygame import Vector2
+
+from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
+from lesson11.physics2d import apply_impulse as reference_apply_impulse
+
+from .crates_probes import box, ngon, with_reference_steps
+
+REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
+RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
+SLOP, PERCENT = 0.5, 0.4   # px, share: the handout's push-out constants
+SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "solutions", "ball_on_ramp.py")
+RAMP_ANGLE = 22.0      # degrees
+
+
+def answer_point(value):
+    """A returned point as [x, y], or {"bad": what it is} when it is not a finite 2D point."""
+    try:
+        point = Vector2(value)
+    except (TypeError, ValueError):
+        return {"bad": _short(value)}
+    if not (math.isfinite(point.x) and math.isfinite(point.y)):
+        return {"bad": f"a point that is not finite: {_short(value)}"}
+    return [point.x, point.y]
+
+
+def answer_hit(hit):
+    """circle_polygon's answer as None, {"normal": [x, y], "depth": d} or {"bad": what is wrong}."""
+    if hit is None:
+        return None
+    try:
+        first, second = hit
+    except (TypeError, ValueError):
+        return {"bad": f"a {type(hit).__name__} ({_short(hit)})"}
+    if isinstance(first, (int, float)) and not isinstance(second, (int, float)):
+        return {"bad": "(depth, normal)"}
+    try:
+        normal, depth = Vector2(first), float(second)
+    except (TypeError, ValueError):
+        return {"bad": f"({_short(first)}, {_short(second)})"}
+    if not (math.isfinite(normal.x) and math.isfinite(normal.y) and math.isfinite(depth)):
+        return {"bad": f"a normal or depth that is not finite: ({_short(first)}, {depth!r})"}
+    return {"normal": [normal.x, normal.y], "depth": depth}
+
+
+def _short(value):
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+# ---------------------------------------------------------------- the lesson's formulas
+
+def reference_closest(p, a, b):
+    """The lesson's closest_on_segment: a + ab t, t = clamp((p - a)·ab / ab·ab, 0, 1)."""
+    ab = b - a
+    t = max(0.0, min(1.0, (p - a).dot(ab) / ab.dot(ab)))
+    return a + ab * t
+
+
+def reference_circle_polygon(center, radius, points):
+    """The lesson's circle_polygon: None, or (normal from the circle into the polygon, depth px)."""
+    closest = min((reference_closest(center, points[i], points[(i + 1) % len(points)]) for i in range(len(points))),
+                  key=center.distance_squared_to)
+    offset = closest - center
+    dist = offset.length()
+    if dist < 1e-9:
+        return (centre_of(points) - center).normalize(), radius
+    if inside(center, points):
+        return -offset / dist, radius + dist
+    if dist >= radius:
+        return None
+    return offset / dist, radius - dist
+
+
+def _plain(hit):
+    return None if hit is None else {"normal": [hit[0].x, hit[0].y], "depth": hit[1]}
+
+
+# ---------------------------------------------------------------- step 2: closest_on_segment
+
+def segment_cases():
+    """(name, p, a, b) in px."""
+    slant_a, slant_b = Vector2(10, 20), Vector2(130, 70)
+    return [
+        ("a point above the middle of a flat edge", Vector2(30, -20), Vector2(0, 0), Vector2(100, 0)),
+        ("a point beyond the edge's end b", Vector2(130, 15), Vector2(0, 0), Vector2(100, 0)),
+        ("a point before the edge's start a", Vector2(-40, -10), Vector2(0, 0), Vector2(100, 0)),
+        ("a point beside a slanted edge", Vector2(60, 20), slant_a, slant_b),
+        ("a point beyond the end of a slanted edge", Vector2(170, 60), slant_a, slant_b),
+        ("a point beside the same edge walked the other way", Vector2(60, 20), slant_b, slant_a),
+        ("a point before the start of a short steep edge", Vector2(-3, -30), Vector2(2, -12), Vector2(6, 14)),
+        ("a point beside a short steep edge", Vector2(-9, 4), Vector2(2, -12), Vector2(6, 14)),
+    ]
+
+
+def probe_closest(module, lab_path):
+    """The student's closest_on_segment(p, a, b) on each case beside the lesson's and the unclamped answer."""
+    cases = []
+    for name, p, a, b in segment_cases():
+        got = module.closest_on_segment(Vector2(p), Vector2(a), Vector2(b))
+        ab = b - a
+        line = a + ab * ((p - a).dot(ab) / ab.dot(ab))
+        cases.append({"case": name, "p": list(p), "a": list(a), "b": list(b), "got": answer_point(got),
+                      "want": list(reference_closest(p, a, b)), "line": list(line),
+                      "unsquared": list(a + ab * max(0.0, min(1.0, (p - a).dot(ab) / ab.length())))})
+    return cases
+
+
+# ---------------------------------------------------------------- steps 2 and 3: circle_polygon
+
+def _ramp():
+    return box(420, 24, (230, 380), RAMP_ANGLE)
+
+
+def outside_cases():
+    """(name, center, radius, polygon points): circles outside, touching or apart from a polygon."""
+    ramp = _ramp()
+    up = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))
+    slope = Vector2(math.cos(math.radians(RAMP_ANGLE)), math.sin(math.radians(RAMP_ANGLE)))
+    crate = box(60, 40, (600, 540))
+    return [
+        ("a ball sunk 3 px into the ramp's top face", Vector2(230, 380) + up * (12 + 17), 20, ramp),
+        ("a ball overlapping the ramp's lower end corner", Vector2(230, 380) + slope * 222 + up * 14, 20, ramp),
+        ("a ball overlapping a crate's top-right corner", Vector2(643, 508), 20, crate),
+        ("a ball beside a crate's left side", Vector2(556, 545), 16, crate),
+        ("a ball near a pentagon's corner", Vector2(40, 0), 14, ngon(5, 30, (0, 0), 0)),
+        ("a ball just apart from a crate's corner", Vector2(645, 505), 20, crate),
+        ("a ball far from a turned crate", Vector2(0, 0), 20, box(50, 30, (200, 100), 30)),
+        ("a ball above the ramp, 10 px clear", Vector2(230, 380) + up * (12 + 30), 20, ramp),
+    ]
+
+
+def inside_cases():
+    """(name, center, radius, polygon points): circles whose center is inside the polygon."""
+    ramp = _ramp()
+    up = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))
+    return [
+        ("a ball whose center is 5 px inside the ramp's top face", Vector2(230, 380) + up * 7, 20, ramp),
+        ("a ball whose center is inside a crate, near its left side", Vector2(575, 538), 20, box(80, 60, (600, 530))),
+        ("a ball whose center is inside a turned crate, near its top", Vector2(4, -10), 12, box(70, 40, (0, 0), 15)),
+        ("a ball whose center is inside a triangle", Vector2(3, 8), 10, ngon(3, 40, (0, 0), 12)),
+        ("a ball whose center is inside a hexagon, near a corner", Vector2(-20, 2), 15, ngon(6, 30, (0, 0), 0)),
+    ]
+
+
+def _circle_cases(function, cases):
+    out = []
+    for name, center, radius, points in cases:
+        got = function(Vector2(center), radius, [Vector2(p) for p in points])
+        closest = min((reference_closest(center, points[i], points[(i + 1) % len(points)])
+                       for i in range(len(points))), key=center.distance_squared_to)
+        out.append({"case": name, "center": list(center), "radius": radius, "points": [list(p) for p in points],
+                    "got": answer_hit(got), "want": _plain(reference_circle_polygon(center, radius, points)),
+                    "dist": center.distance_to(closest), "toward": list((closest - center).normalize())})
+    return out
+
+
+def probe_circle_outside(module, lab_path):
+    """circle_polygon() on the outside cases, with the solution's step 3 spliced in (step 2 graded on its own).
+
+    Falls back to the student's own circle_polygon when the markers cannot be found.
+    """
+    function = with_reference_steps(module, lab_path, "circle_polygon", (3,), solution=SOLUTION) or \
+        module.circle_polygon
+    return _circle_cases(function, outside_cases())
+
+
+def probe_circle_inside(module, lab_path):
+    """circle_polygon() on the inside cases, with the lesson's closest_on_segment in place of the student's."""
+    own = module.closest_on_segment
+    module.closest_on_segment = reference_closest
+    try:
+        return _circle_cases(module.circle_polygon, inside_cases())
+    finally:
+        module.closest_on_segment = own
+
+
+# ---------------------------------------------------------------- step 4: separate
+
+def _ball(radius, pos, mass=None, friction=0.6, vel=(0, 0), omega=0.0, restitution=0.2):
+    mass = math.pi * radius ** 2 / 1000 if mass is None else mass
+    return Body(Circle(radius), pos, mass, vel=vel, omega=omega, friction=friction, restitution=restitution)
+
+
+def separate_cases():
+    """(name, body A, body B, unit normal A→B, depth px)."""
+    normal = Vector2(1, -2).normalize()
+    return [
+        ("a heavy crate (A) and a light ball (B)", Body(box_points(80, 60), (600, 530), 4.8),
+         _ball(20, (575, 538)), Vector2(-1, 0), 25.0),
+        ("a static ramp (A) and a ball (B)", Body(box_points(420, 24), (230, 380), 0, angle=math.radians(22)),
+         _ball(20, (240, 350)), normal, 3.0),
+        ("a ball (A) and a static floor (B)", _ball(15, (300, 546)), Body(box_points(900, 40), (450, 580), 0),
+         Vector2(0, 1), 1.7),
+        ("a light ball (A) and a heavy ball (B)", _ball(10, (0, 0)), _ball(30, (38, 5)),
+         Vector2(38, 5).normalize(), 1.66),
+        ("a ball (A) and a crate (B) overlapping less than the slop", _ball(20, (0, 0)),
+         Body(box_points(40, 40), (39.7, 0), 1.6), Vector2(1, 0), 0.3),
+    ]
+
+
+def probe_separate(module, lab_path):
+    """The student's separate() on each case: both positions before, after and as the lesson moves them."""
+    cases = []
+    slop = float(getattr(module, "SLOP", SLOP))   # the lab's own constants: a changed one is the handout's business
+    percent = float(getattr(module, "PERCENT", PERCENT))
+    for name, a, b, normal, depth in separate_cases():
+        before = {"a": list(a.pos), "b": list(b.pos)}
+        total = a.inv_mass + b.inv_mass
+        push = max(depth - slop, 0.0) * percent
+        want = {"a": list(a.pos - normal * (push * a.inv_mass / total)),
+                "b": list(b.pos + normal * (push * b.inv_mass / total))}
+        module.separate(a, b, Vector2(normal), depth)
+        cases.append({"case": name, "normal": list(normal), "depth": depth, "push": push,
+                      "inv": {"a": a.inv_mass, "b": b.inv_mass}, "mass": {"a": a.mass, "b": b.mass},
+                      "before": before, "after": {"a": answer_point(a.pos), "b": answer_point(b.pos)},
+                      "want": want})
+    return cases
+
+
+# ---------------------------------------------------------------- step 5: disc_inertia
+
+def probe_inertia(module, lab_path):
+    """The student's disc_inertia(mass, radius) beside ½ m r², for masses and radii far from 1."""
+    cases = []
+    for mass, radius in ((math.pi * 400 / 1000, 20), (2.0, 12.0), (0.35, 37.5), (12.5, 3.0)):
+        got = module.disc_inertia(mass, radius)
+        try:
+            got = float(got)
+        except (TypeError, ValueError):
+            got = {"bad": _short(got)}
+        cases.append({"mass": mass, "radius": radius, "got": got, "want": 0.5 * mass * radius ** 2})
+    return cases
+
+
+# ---------------------------------------------------------------- step 6: contact_point
+
+def contact_cases():
+    """(name, center, radius, unit normal out of the ball, depth px)."""
+    down_ramp = Vector2(-math.sin(math.radians(RAMP_ANGLE)), math.cos(math.radians(RAMP_ANGLE)))
+    return [
+        ("a ball resting on the ramp", Vector2(240, 350), 20.0, down_ramp, 0.4),
+        ("a ball against a crate on its right", Vector2(575, 538), 20.0, Vector2(1, 0), 3.0),
+        ("a small ball touching a wall above it, to the left", Vector2(-30, 12), 8.0, Vector2(-3, -4).normalize(), 0.05),
+        ("a big ball sunk deep into the floor", Vector2(400, 520), 45.0, Vector2(0, 1), 5.0),
+    ]
+
+
+def probe_contact(module, lab_path):
+    """The student's contact_point(center, radius, normal, depth) beside the point on the surface."""
+    cases = []
+    for name, center, radius, normal, depth in contact_cases():
+        got = module.contact_point(Vector2(center), radius, Vector2(normal), depth)
+        cases.append({"case": name, "center": list(center), "radius": radius, "normal": list(normal),
+                      "depth": depth, "got": answer_point(got), "want": list(center + normal * radius),
+                      "halfway": list(center + normal * (radius - depth / 2))})
+    return cases
+
+
+# ---------------------------------------------------------------- step 7: friction in resolve
+
+def resolve_cases():
+    """(name, body A, body B, unit normal A→B, contact point): each a contact resolve() is called on.
+
+    The ramp and the floor are A (the world lists static bodies first), so the
+    normal points from them into the ball; a ball hitting a crate is A.
+    """
+    theta = math.radians(RAMP_ANGLE)
+    slope = Vector2(math.cos(theta), math.sin(theta))
+    up = Vector2(math.sin(theta), -math.cos(theta))
+    centre = Vector2(230, 380) + up * (12 + 20)
+    touch = centre - up * 20
+
+    def on_ramp(vel, omega, friction=0.6):
+        ball = _ball(20, centre, vel=vel, omega=omega, friction=friction)
+        return Body(box_points(420, 24), (230, 380), 0, angle=theta), ball
+
+    return [
+        ("a ball landing on the ramp, slipping a little",) + on_ramp(slope * 50 - up * 40, 2.3) + (up, touch),
+        ("a ball landing on the ramp, sliding fast (friction clamped)",) + on_ramp(slope * 300 - up * 35, 0.0)
+        + (up, touch),
+        ("a ball spinning backwards as it lands on the ramp",) + on_ramp(slope * 20 - up * 60, -9.0) + (up, touch),
+        ("a ball landing on the floor, rolling too fast for its speed",
+         Body(box_points(900, 40), (450, 580), 0), _ball(15, (300, 545), vel=(40, 90), omega=6.0),
+         Vector2(0, -1), Vector2(300, 560)),
+        ("a ball hitting a crate's left side while it spins",
+         _ball(20, (575, 530), vel=(250, 30), omega=4.0, restitution=0.3),
+         Body(box_points(30, 80), (610, 520), 2.4, vel=(0, 10), omega=0.2, restitution=0.3),
+         Vector2(1, 0), Vector2(595, 530)),
+        ("a ball on a frictionless ramp (mu = 0)",) + on_ramp(slope * 120 - up * 45, 0.0, friction=0.0)
+        + (up, touch),
+    ]
+
+
+FRICTION_VARIANTS = ("right", "none", "sign", "unclamped", "no_spin_kt", "at_centre", "always_full")
+
+
+def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEED):
+    """The handout's resolve() with the lesson's friction ("right") or a plausible mistake in step 7.
+
+    Variants: "none" no friction; "sign" the clamped impulse pushed along the slip; "unclamped"
+    no Coulomb clamp; "no_spin_kt" kt without the spin terms; "at_centre" the friction impulse
+    applied at the centres (ra = rb = 0); "always_full" friction always mu j, against the slip.
+    """
+    ra, rb = point - a.pos, point - b.pos
+    rel = relative_velocity(a, b, ra, rb)
+    vn = rel.dot(normal)
+    if vn >= 0:
+        return
+    ran, rbn = cross(ra, normal), cross(rb, normal)
+    k = a.inv_mass + b.inv_mass + ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia
+    e = min(a.restitution, b.restitution) if vn < -resting else 0.0
+    j = -(1 + e) * vn / k
+    reference_apply_impulse(a, b, normal * j, ra, rb)
+    rel = relative_velocity(a, b, ra, rb)
+    tangent = rel - normal * rel.dot(normal)
+    if tangent.length_squared() <= 1e-12 or variant == "none":
+        return
+    t = tangent.normalize()
+    mu = math.sqrt(a.friction * b.friction)
+    rat, rbt = cross(ra, t), cross(rb, t)
+    kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+    if variant == "no_spin_kt":
+        kt = a.inv_mass + b.inv_mass
+    jt = -rel.dot(t) / kt
+    if variant == "always_full":
+        jt = math.copysign(mu * j, jt)
+    elif variant != "unclamped":
+        jt = max(-mu * j, min(mu * j, jt))
+    if variant == "sign":
+        jt = -jt
+    if variant == "at_centre":
+        ra, rb = Vector2(), Vector2()
+    reference_apply_impulse(a, b, t * jt, ra, rb)
+
+
+def _copy(body):
+    """A separate body with the same shape, mass, inertia, state and material."""
+    twin = Body(body.shape, body.pos, body.mass, angle=body.angle, vel=body.vel, omega=body.omega,
+                restitution=body.restitution, friction=body.friction)
+    twin.inertia, twin.inv_inertia = body.inertia, body.inv_inertia
+    return twin
+
+
+def _outcome(a, b):
+    return {"a": {"vel": [a.vel.x, a.vel.y], "omega": a.omega}, "b": {"vel": [b.vel.x, b.vel.y], "omega": b.omega}}
+
+
+def probe_resolve(module, lab_path):
+    """The student's resolve() on each contact: both bodies' velocities and spins after it.
+
+    Beside them: the same after the handout's resolve with the lesson's friction ("right")
+    and with each plausible step-7 mistake (FRICTION_VARIANTS), from the same start. Also
+    the slip speed and the impulses involved, for the message. The library's apply_impulse
+    is the lab's (imported), so only step 7 can differ.
+    """
+    cases = []
+    resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
+    for name, a, b, normal, point in resolve_cases():
+        variants = {}
+        for variant in FRICTION_VARIANTS:
+            ca, cb = _copy(a), _copy(b)
+            reference_resolve(ca, cb, Vector2(normal), Vector2(point), variant, resting)
+            variants[variant] = _outcome(ca, cb)
+        ra, rb = point - a.pos, point - b.pos
+        mu = math.sqrt(a.friction * b.friction)
+        module.resolve(a, b, Vector2(normal), Vector2(point))
+        cases.append({"case": name, "mu": mu, "got": _outcome(a, b), "variants": variants,
+                      "ra": list(ra), "rb": list(rb)})
+    return cases
+
+
+# probe name -> (the lab function it needs, the probe)
+PROBES = {
+    "closest_on_segment": ("closest_on_segment", probe_closest),
+    "circle_outside": ("circle_polygon", probe_circle_outside),
+    "circle_inside": ("circle_polygon", probe_circle_inside),
+    "separate": ("separate", probe_separate),
+    "disc_inertia": ("disc_inertia", probe_inertia),
+    "contact_point": ("contact_point", probe_contact),
+    "resolve": ("resolve", probe_resolve),
+}

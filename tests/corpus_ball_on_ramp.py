@@ -1,0 +1,274 @@
+"""The Ball on the Ramp mistake corpus: plausible student files and the verdict the checker owes each one.
+
+Every entry is a whole student file built from the CURRENT starter
+(starters/ball_on_ramp_starter.py): the lines strictly between a step's start
+marker (`# --- step N: ... ---`) and its end marker (`# --- end of step N ---`)
+are replaced by the student's code for that step; a step the entry does not
+give gets the solution's code, read from the same regions of
+solutions/ball_on_ramp.py, so the corpus follows the lab when the lab changes.
+An entry that changes code OUTSIDE the steps lists exact (old, new) edits,
+applied after the steps are filled; each old must occur exactly once
+(tests/mutants.py).
+
+Verdicts:
+  CORRECT entries: every check passes.
+  WRONG entries: `check` fails (or errors, for a crash; `status` lists what is
+  accepted) and its JSON `step` is `step`; every other function check passes,
+  and so do loads, handout_unchanged and runtime_lines unless the mistake is
+  outside the steps (then handout_unchanged is the check that fails). The scene
+  checks need every function check, so they are not constrained for a wrong entry.
+
+Each entry's `why` says which input shows the mistake (wrong) or why the code is
+the lesson's formula in another style (correct).
+
+    build(name) -> source text
+    write_corpus(directory, names=None) -> {name: path}
+"""
+import os
+import sys
+import textwrap
+from typing import NamedTuple
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mutants  # noqa: E402
+
+from checker.handout import step_regions  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "ball_on_ramp_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")
+STEPS = (2, 3, 4, 5, 6, 7)
+
+# the checker's checks and the lesson step each one's hint names
+CHECK_STEP = {
+    "loads": None, "handout_unchanged": None, "runtime_lines": None,
+    "closest_point": 2, "inside_case": 3, "push_out_split": 4, "ball_inertia": 5, "contact_on_surface": 6,
+    "friction_rolls": 7,
+    "runs": None, "rolls_without_slipping": None, "slides_without_friction": None, "knocks_crate_over": None,
+    "pushed_out_of_crate": None,
+}
+FUNCTION_CHECKS = ("closest_point", "inside_case", "push_out_split", "ball_inertia", "contact_on_surface",
+                   "friction_rolls")
+
+
+class Entry(NamedTuple):
+    name: str
+    what: str            # what the student did, one line
+    steps: dict          # {step: code} (dedented)
+    edits: tuple         # ((old, new), ...) outside the steps
+    check: str           # "pass", or the id of the check that must fail
+    step: object         # the lesson step the failing check's hint names (None for correct / outside)
+    status: tuple        # accepted statuses of that check
+    why: str
+
+
+def _code(text):
+    return textwrap.dedent(text).strip("\n")
+
+
+def wrong(name, what, check, steps=None, edits=(), status=("fail",), why=""):
+    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
+                 CHECK_STEP[check], tuple(status), why)
+
+
+def correct(name, what, steps, why):
+    return Entry(name, what, {k: _code(v) for k, v in steps.items()}, (), "pass", None, ("pass",), why)
+
+
+WRONG = [
+    # ---- step 2: the closest point on one edge
+    wrong("closest_not_clamped", "projects onto the edge's line but never clamps t", "closest_point", {2: """
+        t = (p - a).dot(ab) / ab.dot(ab)
+        return a + ab * t
+    """}, why="a point beyond the edge's end b gets a point on the line past b"),
+    wrong("closest_divides_by_length", "divides by |ab| instead of ab·ab", "closest_point", {2: """
+        t = (p - a).dot(ab) / ab.length()
+        t = max(0.0, min(1.0, t))
+        return a + ab * t
+    """}, why="t is |ab| times too big: a point above the middle of a 100 px edge maps to its end"),
+    wrong("closest_p_minus_b", "measures from b instead of a", "closest_point", {2: """
+        t = (p - b).dot(ab) / ab.dot(ab)
+        t = max(0.0, min(1.0, t))
+        return a + ab * t
+    """}, why="t is 1 less than it should be: every point beside the edge maps to a"),
+    # ---- step 3: the center inside
+    wrong("inside_not_flipped", "centre inside: keeps the normal towards the nearest edge", "inside_case", {3: """
+        if inside(center, points):
+            return offset / dist, radius + dist
+    """}, why="a center 15 px inside a crate's left side gets a normal pointing left: the push drives it through"),
+    wrong("inside_shallow_depth", "centre inside: flips the normal but keeps depth radius - dist", "inside_case", {3: """
+        if inside(center, points):
+            return -offset / dist, radius - dist
+    """}, why="depth 15 px instead of 25 for a center 5 px inside the ramp's face"),
+    # ---- step 4: the push-out
+    wrong("push_not_split", "moves both bodies by the whole push", "push_out_split", {4: """
+        a.pos -= normal * push
+        b.pos += normal * push
+    """}, why="a static ramp (A) moves by the push"),
+    wrong("push_halved", "splits the push half and half", "push_out_split", {4: """
+        a.pos -= normal * (push / 2)
+        b.pos += normal * (push / 2)
+    """}, why="a heavy crate moves as far as a light ball, and a static ramp moves"),
+    wrong("push_shares_swapped", "gives each body the other's share", "push_out_split", {4: """
+        a.pos -= normal * (push * b.inv_mass / total)
+        b.pos += normal * (push * a.inv_mass / total)
+    """}, why="against a static ramp the ball stays and the ramp moves"),
+    # ---- step 5: the inertia
+    wrong("inertia_ring", "I = m r² (a ring's)", "ball_inertia", {5: """
+        return mass * radius ** 2
+    """}, why="twice ½ m r² for every mass and radius"),
+    wrong("inertia_sphere", "I = 2/5 m r² (a solid sphere's)", "ball_inertia", {5: """
+        return 2 / 5 * mass * radius ** 2
+    """}, why="0.4 m r² instead of 0.5 m r²"),
+    # ---- step 6: the contact point
+    wrong("contact_at_centre", "returns the ball's center as the contact point", "contact_on_surface", {6: """
+        return center
+    """}, why="the point should be radius px along the normal"),
+    wrong("contact_far_side", "center - normal * radius (the wrong side of the ball)", "contact_on_surface", {6: """
+        return center - normal * radius
+    """}, why="the normal points out of the ball, into the other body"),
+    # ---- step 7: friction
+    wrong("friction_sign_flipped", "jt = +rel·t / kt (pushes along the slip)", "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="every slipping contact slips faster after resolve()"),
+    wrong("friction_not_clamped", "no Coulomb clamp", "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="a ball sliding fast onto the ramp, and any ball with mu = 0, is stopped dead"),
+    wrong("friction_kt_no_spin", "kt = 1/mA + 1/mB, without the spin terms", "friction_rolls", {7: """
+        kt = a.inv_mass + b.inv_mass
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="a ball slipping a little on the ramp gets 3x the impulse that stops the slip"),
+    wrong("friction_at_centre", "applies the friction impulse at the centres", "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, pygame.Vector2(), pygame.Vector2())
+    """}, why="the friction impulse changes no spin: the ball never starts to roll"),
+    wrong("friction_velocity_only", "updates the velocities by hand and forgets the spins", "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        a.vel -= t * jt * a.inv_mass
+        b.vel += t * jt * b.inv_mass
+    """}, why="the same as at the centres: no spin change, so the ball slides"),
+    wrong("friction_crashes", "uses a name that does not exist (tangent_speed)", "friction_rolls", {7: """
+        jt = -tangent_speed / kt
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, status=("error",), why="NameError on the first slipping contact"),
+    # ---- outside the steps
+    wrong("world_hook_removed", "drops circle_polygon=circle_polygon from the World (the library's test runs)",
+          "handout_unchanged", edits=[("                 circle_polygon=circle_polygon, circle_point=contact_point)",
+                                       "                 circle_point=contact_point)")],
+          why="the World no longer uses the student's circle_polygon"),
+    wrong("inertia_bypassed", "make_ball uses ½ m r² itself instead of calling disc_inertia()", "handout_unchanged",
+          edits=[("    inertia = disc_inertia(mass, radius)\n", "    inertia = 0.5 * mass * radius ** 2\n")],
+          why="code outside the steps changed"),
+    wrong("slop_zeroed", "sets SLOP = 0 to make the ball sit deeper-free", "handout_unchanged",
+          edits=[("SLOP = 0.5 ", "SLOP = 0.0 ")], why="a handed-out constant changed"),
+]
+
+CORRECT = [
+    correct("correct_solution_steps", "the solution's own code in every step", {},
+            why="the reference build is the solution, byte for byte"),
+    correct("correct_unit_direction", "closest point by a unit direction and a distance along it; inertia as m r r / 2",
+            {2: """
+                length = ab.length()
+                direction = ab / length
+                along = min(max((p - a).dot(direction), 0.0), length)
+                return a + direction * along
+            """, 5: """
+                return mass * radius * radius / 2
+            """}, why="along = t |ab|, clamped to [0, |ab|]: the same point"),
+    correct("correct_named_parts", "inside case with a named normal; push-out with named shares; halfway contact point",
+            {3: """
+                if inside(center, points):
+                    way_out = (center - closest).normalize()
+                    return way_out, radius + dist
+            """, 4: """
+                share_a = a.inv_mass / total
+                share_b = b.inv_mass / total
+                a.pos = a.pos - normal * push * share_a
+                b.pos = b.pos + normal * push * share_b
+            """, 6: """
+                surface = radius - depth / 2  # halfway into the overlap, as physics2d places it
+                return center + normal * surface
+            """}, why="(center - closest) / dist is -offset / dist; shares by inverse mass; a point within the overlap"),
+    correct("correct_friction_if_clamp", "friction clamped with if/copysign, kt from named terms", {7: """
+        spin_a = cross(ra, t) ** 2 * a.inv_inertia
+        spin_b = cross(rb, t) ** 2 * b.inv_inertia
+        kt = a.inv_mass + b.inv_mass + spin_a + spin_b
+        jt = -rel.dot(t) / kt
+        if abs(jt) > mu * j:
+            jt = math.copysign(mu * j, jt)
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="the same Coulomb clamp written as an if"),
+]
+
+ENTRIES = CORRECT + WRONG
+BY_NAME = {entry.name: entry for entry in ENTRIES}
+
+
+def regions(source, where="file"):
+    """{step: (start marker index, end marker index, indent)} for steps 2-7 (checker/handout.py's step_regions)."""
+    found = step_regions(source.split("\n"))
+    missing = [step for step in STEPS if step not in found]
+    if missing:
+        raise AssertionError(f"{where}: step {missing[0]} has no `# --- step {missing[0]}: ... ---` region")
+    return found
+
+
+def step_code(source, where="file"):
+    """{step: the dedented code strictly between the step's markers}."""
+    lines = source.split("\n")
+    return {step: textwrap.dedent("\n".join(lines[start + 1:end])).strip("\n")
+            for step, (start, end, _) in regions(source, where).items()}
+
+
+def fill(source, codes, where="file"):
+    """source with the inside of each step in codes replaced by that code, indented like the step's marker."""
+    lines = source.split("\n")
+    found = regions(source, where)
+    for step in sorted(codes, key=lambda s: -found[s][0]):
+        start, end, indent = found[step]
+        body = [indent + line if line.strip() else "" for line in codes[step].split("\n")] if codes[step] else []
+        lines[start + 1:end] = body
+    return "\n".join(lines)
+
+
+def _read(path):
+    with open(path, encoding="utf-8") as handle:
+        return handle.read()
+
+
+def build(name, starter=None, solution=None):
+    """The source of entry `name`: the starter, its steps filled (the entry's code, else the solution's), then edits."""
+    entry = BY_NAME[name]
+    starter = _read(STARTER) if starter is None else starter
+    solution = _read(SOLUTION) if solution is None else solution
+    codes = step_code(solution, "solutions/ball_on_ramp.py")
+    codes.update(entry.steps)
+    source = fill(starter, codes, "starters/ball_on_ramp_starter.py")
+    return mutants.apply_edits(source, entry.edits, name, "the built file", "tests/corpus_ball_on_ramp.py")
+
+
+def write_corpus(directory, names=None):
+    """Write NAME.py into directory for each entry (all by default); returns {name: path}."""
+    starter, solution = _read(STARTER), _read(SOLUTION)
+    paths = {}
+    for name in (BY_NAME if names is None else names):
+        path = os.path.join(str(directory), name + ".py")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(build(name, starter, solution))
+        paths[name] = path
+    return paths
