@@ -37,7 +37,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lesson11.physics2d import LESSON_EFFECTS, World
+from lesson11.physics2d import LESSON_EFFECTS
 from lesson11.physics2d import world as world_module
 
 from . import scenes

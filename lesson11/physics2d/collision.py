@@ -11,7 +11,7 @@ despite rounding.
 import math
 from collections import namedtuple
 
-from .vectors import Vector2, cross
+from .vectors import Vector2
 
 TOUCH_TOLERANCE = 1e-6  # px: overlaps this small are "touching", i.e. apart
 CORNER_MERGE = 0.5      # px: corners closer than this are one contact point (corner_manifold)
