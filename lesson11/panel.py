@@ -272,12 +272,15 @@ class LabPanel:
         if reference:
             note = (f"your {named} {'are' if len(yours) > 1 else 'is'} NOT used" if yours
                     else "the lesson's resolve() is not used", WARNING)
-        elif hooked:
-            note = (f"runs your {named}", DIM)
-        elif yours:
-            note = (f"runs your {named} and physics2d's resolve()", DIM)
-        else:
+        elif not yours:
             note = ("runs physics2d's sat() and resolve()", DIM)
+        else:
+            runs = [f"your {named}"]
+            if not {"sat", "circle_polygon"} & set(yours):
+                runs.insert(0, "physics2d's sat()")
+            if not hooked:
+                runs.append("physics2d's resolve()")
+            note = ("runs " + " and ".join(runs), DIM)
         warm = ("on" if now["warm_starting"] else "off") + (missing("warm_starting") or
                                                              ("" if reference else "  (reference solver only)"))
         return [("S", "solver", "accumulated (reference)" if reference else "lesson",

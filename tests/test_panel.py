@@ -218,7 +218,11 @@ def test_hud_shows_the_settings_measurements_and_who_solves():
     panel.handle(key("s"))
     hud(panel, world, 1)
     assert "accumulated (reference)" in text_of(panel) and "NOT used" not in text_of(panel)
-    lab_world = small_world(resolve=lambda a, b, normal, point: None)
+    resolve_only = small_world(resolve=lambda a, b, normal, point: None)
+    panel = lp.LabPanel()
+    hud(panel, resolve_only, 1)
+    assert "runs physics2d's sat() and your resolve()" in text_of(panel)
+    lab_world = small_world(sat=lambda pa, pb: None, resolve=lambda a, b, normal, point: None)  # Tumbling Crates
     panel = lp.LabPanel()
     hud(panel, lab_world, 1)
     assert "runs your sat() and resolve()" in text_of(panel)
