@@ -27,7 +27,7 @@ from . import ball_scenarios as scenes
 from . import lab_checks
 from .checks import Fail, Hint, Passed, Registry
 from .common import shown
-from .crates_scenarios import finite
+from .records import finite
 
 TITLE = "Ball on the Ramp"
 PROBES = "checker.ball_probes"

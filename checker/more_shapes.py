@@ -21,8 +21,8 @@ measures in the same scene, with the measured value noted next to it.
 import math
 import os
 
-from . import crates_scenarios as crates
 from . import lab_checks
+from . import records as metrics
 from . import shapes_scenarios as scenes
 from .checks import Fail, Hint, Passed, Registry
 from .common import shown
@@ -384,9 +384,9 @@ def runs(sub, functions, handout_note, runtime, axes, inertia):
     """main() runs each of the checker's two scenes to the end, with the course's gravity."""
     records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in records.items():
-        if not crates.finite(run.record["records"]):
+        if not metrics.finite(run.record["records"]):
             raise Fail(f"in the '{name}' scene a shape's position or speed became infinite or NaN.", HINTS["settle"])
-    gravity = crates.free_fall(records["pile"].record)
+    gravity = metrics.free_fall(records["pile"].record)
     if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
         raise Fail(f"shapes fall with {gravity:.1f} px/s² in the pile scene; the course's gravity is "
                    f"{GRAVITY:g} px/s².", HINTS["handout"])
@@ -422,7 +422,7 @@ def _comes_to_rest(shape, what, turn, turn_words):
 def triangle_tips(sub, records):
     """A triangle dropped on a corner falls onto a side and comes to rest."""
     record = records["solo"].record
-    _escaped(crates.summary(record), "a triangle dropped on its corner did not land")
+    _escaped(metrics.summary(record), "a triangle dropped on its corner did not land")
     shape = scenes.measure_tipping(record, scenes.TRIANGLE)
     _comes_to_rest(shape, "the triangle dropped on its corner", TRIANGLE_TURN, "fall onto a side")
     return f"it turned {math.degrees(shape['turned']):.0f}° and rests {math.degrees(shape['side_error']):.1f}° from flat"
@@ -432,7 +432,7 @@ def triangle_tips(sub, records):
 def hexagon_tips(sub, records):
     """A hexagon pushed along the floor tips over its corners and stops, on a side."""
     record = records["solo"].record
-    _escaped(crates.summary(record), "a hexagon pushed along the floor did not stay on it")
+    _escaped(metrics.summary(record), "a hexagon pushed along the floor did not stay on it")
     shape = scenes.measure_tipping(record, scenes.PUSHED)
     _comes_to_rest(shape, f"the hexagon pushed at {scenes.PUSH_SPEED:g} px/s", HEXAGON_TURN,
                    "tip over a corner onto the next side")
@@ -444,8 +444,8 @@ def hexagon_tips(sub, records):
 def pile_stable(sub, records):
     """Shapes of every kind piled together neither sink into the floor or each other nor jitter."""
     record = records["pile"].record
-    _escaped(crates.summary(record, scenes.PILE_TAIL), "the pile of seven shapes fell apart")
-    pile = crates.measure_pile(record, scenes.PILE_TAIL)
+    _escaped(metrics.summary(record, scenes.PILE_TAIL), "the pile of seven shapes fell apart")
+    pile = metrics.measure_pile(record, scenes.PILE_TAIL)
     if pile["floor_penetration"] > PENETRATION or pile["pair_overlap"] > PAIR_OVERLAP:
         raise Fail(f"the pile sinks: shapes end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
                    f"floor (bound {PENETRATION:g} px) and up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into "
@@ -462,9 +462,9 @@ def pile_stable(sub, records):
 def ramp_holds(sub, records):
     """A pentagon and a hexagon set on the 22° ramp stay put."""
     record = records["solo"].record
-    arrays = crates.dynamic_arrays(record)
-    ramp = [crates.measure_ramp(record)[i] for i in scenes.ON_RAMP]
-    tail_speed = float(arrays["speed"][-crates.FPS:, list(scenes.ON_RAMP)].max())
+    arrays = metrics.dynamic_arrays(record)
+    ramp = [metrics.measure_ramp(record)[i] for i in scenes.ON_RAMP]
+    tail_speed = float(arrays["speed"][-metrics.FPS:, list(scenes.ON_RAMP)].max())
     worst = max(ramp, key=lambda shape: abs(shape["slid"]))
     if abs(worst["slid"]) > RAMP_SLIDE or tail_speed > RAMP_SPEED:
         raise Fail(f"a pentagon and a hexagon set at rest on the 22° ramp did not stay put: one moved "

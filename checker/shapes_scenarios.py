@@ -1,6 +1,6 @@
 """The More Shapes scenes: which shapes the checker sets where, and what it measures.
 
-Scene geometry is Tumbling Crates' (checker/crates_scenarios.py): the floor's
+Scene geometry is Tumbling Crates' (checker/records.py): the floor's
 top face at y = 560 px, the 420 × 24 px ramp centred at (230, 380) turned 22°,
 the wall just off the right edge; y grows downward, a positive angle turns
 clockwise on screen. Scenario items are the lab's own shape descriptions
@@ -11,18 +11,18 @@ Two scenes keep grading cheap (each is one child process):
   solo  (3 s): an equilateral triangle dropped on a corner, a hexagon pushed along the
         floor, a pentagon and a hexagon set at rest on the ramp. They never meet.
   pile  (1.5 s): seven shapes of every kind stacked loosely over the floor's right half.
-The measurements reuse crates_scenarios' metrics (summary, measure_ramp,
-measure_pile, free_fall) and its shared metrics for More Shapes.
+The measurements reuse checker/records.py's metrics (summary, measure_ramp,
+measure_pile, free_fall, dynamic_arrays, resting_side_error).
 """
 import math
 
 from pygame import Vector2
 
-from . import crates_scenarios as crates
+from . import records as metrics
 
-FPS = crates.FPS
-SEED = crates.SEED
-FLOOR_TOP = crates.FLOOR_TOP
+FPS = metrics.FPS
+SEED = metrics.SEED
+FLOOR_TOP = metrics.FLOOR_TOP
 SOLO_FRAMES = 180     # 3 s: the ramp criterion is "at most 1 px in 3 s", as in Tumbling Crates
 PILE_FRAMES = 90      # 1.5 s: the pile is still 0.5 s after its top row lands (frame 30)
 PILE_TAIL = 0.5       # s: the pile's last half second is where sinking and jitter are measured
@@ -49,10 +49,10 @@ def resting_on_side(sides, radius, surface_point, down_angle, gap=0.25):
 
 
 def _on_ramp(kind, sides, radius, along):
-    slope = Vector2(math.cos(crates.RAMP_ANGLE), math.sin(crates.RAMP_ANGLE))
-    up = Vector2(math.sin(crates.RAMP_ANGLE), -math.cos(crates.RAMP_ANGLE))
-    surface = crates.RAMP_CENTRE + slope * along + up * (crates.RAMP_THICKNESS / 2)
-    pos, angle = resting_on_side(sides, radius, surface, math.pi / 2 + crates.RAMP_ANGLE)
+    slope = Vector2(math.cos(metrics.RAMP_ANGLE), math.sin(metrics.RAMP_ANGLE))
+    up = Vector2(math.sin(metrics.RAMP_ANGLE), -math.cos(metrics.RAMP_ANGLE))
+    surface = metrics.RAMP_CENTRE + slope * along + up * (metrics.RAMP_THICKNESS / 2)
+    pos, angle = resting_on_side(sides, radius, surface, math.pi / 2 + metrics.RAMP_ANGLE)
     return {"kind": kind, "size": radius, "pos": pos, "angle": angle}
 
 
@@ -91,14 +91,14 @@ SCENARIOS = {"solo": solo_scenario, "pile": pile_scenario}
 
 def measure_tipping(record, index, tail_seconds=0.5):
     """One solo-scene shape: turned (rad), side_error (rad), travelled (px), rest speed (px/s) and spin (rad/s)."""
-    arrays = crates.dynamic_arrays(record)
+    arrays = metrics.dynamic_arrays(record)
     tail = int(tail_seconds * FPS)
-    last = crates.dynamic(record["records"][-1])[index]
+    last = metrics.dynamic(record["records"][-1])[index]
     return {
         "turned": float(abs(arrays["angle"][-1, index] - arrays["angle"][0, index])),
-        "side_error": crates.resting_side_error(last),
+        "side_error": metrics.resting_side_error(last),
         "travelled": float(arrays["pos"][-1, index, 0] - arrays["pos"][0, index, 0]),
-        "floor_gap": -crates.floor_penetration(last),
+        "floor_gap": -metrics.floor_penetration(last),
         "rest_speed": float(arrays["speed"][-tail:, index].max()),
         "rest_omega": float(abs(arrays["omega"][-tail:, index]).max()),
     }

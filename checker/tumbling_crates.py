@@ -26,6 +26,7 @@ import re
 from . import crates_probes as probes
 from . import crates_scenarios as scenes
 from . import lab_checks
+from . import records as metrics
 from .checks import Error, Fail, Hint, Passed, Registry
 from .common import describe_run_failure, shown
 
@@ -446,10 +447,10 @@ def runs(sub, functions, handout_note, runtime, sat_cases, resolve_cases, fricti
         if not frames:
             raise Fail(f"the '{name}' scene recorded no frames: main() returned before its loop ran, or the loop "
                        "does not call lab.record(...).", HINTS["runtime"])
-        if not scenes.finite(frames):
+        if not metrics.finite(frames):
             raise Fail(f"in the '{name}' scene a crate's position or speed became infinite or NaN.", HINTS["settle"])
         records[name] = run
-    gravity = scenes.free_fall(records["corner"].record)
+    gravity = metrics.free_fall(records["corner"].record)
     if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
         raise Fail(f"crates fall with {gravity:.1f} px/s² in the corner scene; the course's gravity is "
                    f"{GRAVITY:g} px/s².", HINTS["handout"])
@@ -475,7 +476,7 @@ def _escaped(summary, what):
 def corner_tips(sub, records):
     """A crate that lands on a corner tips over onto a flat side and comes to rest (criterion 1)."""
     record = records["corner"].record
-    _escaped(scenes.summary(record), "two crates dropped on a corner did not land")
+    _escaped(metrics.summary(record), "two crates dropped on a corner did not land")
     for index, crate in enumerate(scenes.measure_corner(record), 1):
         if -crate["floor_gap"] > PENETRATION:
             raise Fail(f"crate {index} landed on its corner but sank {shown(-crate['floor_gap'], PENETRATION)} px "
@@ -494,9 +495,9 @@ def corner_tips(sub, records):
 def ramp_holds(sub, records):
     """Crates set on the 22° ramp (friction 0.6) stay put (criterion 2)."""
     record = records["ramp"].record
-    summary = scenes.summary(record)
+    summary = metrics.summary(record)
     _escaped(summary, "three crates set on the ramp did not stay there")
-    worst = max(scenes.measure_ramp(record), key=lambda c: abs(c["slid"]))
+    worst = max(metrics.measure_ramp(record), key=lambda c: abs(c["slid"]))
     if abs(worst["slid"]) > RAMP_SLIDE or summary["tail_speed"] > RAMP_SPEED:
         raise Fail(f"crates set at rest on the 22° ramp did not stay put: one moved {shown(worst['slid'], RAMP_SLIDE)} "
                    f"px along the slope in 3 s (bound {RAMP_SLIDE:g} px) and the fastest moves "
@@ -509,8 +510,8 @@ def ramp_holds(sub, records):
 def pile_stable(sub, records):
     """A pile of a dozen crates neither sinks into the floor nor jitters apart (criterion 3)."""
     record = records["pile"].record
-    _escaped(scenes.summary(record), "the pile of 12 crates fell apart")
-    pile = scenes.measure_pile(record)
+    _escaped(metrics.summary(record), "the pile of 12 crates fell apart")
+    pile = metrics.measure_pile(record)
     if pile["floor_penetration"] > PENETRATION or pile["pair_overlap"] > PAIR_OVERLAP:
         raise Fail(f"the pile sinks: crates end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
                    f"floor and up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into each other (bound "
@@ -531,10 +532,10 @@ def fast_movers_zero(sub, records):
     """After four clicked drops the program prints `fast movers now: 0`, matching the simulation (criterion 4)."""
     run = records["own_scene"]
     frames = run.record["records"]
-    added = scenes.drops_added(run.record)
+    added = metrics.drops_added(run.record)
     if added < len(scenes.DROPS):
         raise Fail(f"the checker clicked {len(scenes.DROPS)} times to drop crates, but only {added} crate(s) "
-                   f"appeared ({len(scenes.dynamic(frames[0]))} at the start, {len(scenes.dynamic(frames[-1]))} at "
+                   f"appeared ({len(metrics.dynamic(frames[0]))} at the start, {len(metrics.dynamic(frames[-1]))} at "
                    "the end): every click must drop a crate (MAX_CRATES is 14).", HINTS["handout"])
     matches = LINE.findall(run.stdout)
     if not matches:
@@ -542,16 +543,16 @@ def fast_movers_zero(sub, records):
                    "'Simulated 5.5 s with 8 crates; fast movers now: 0'.", HINTS["print"])
     seconds, crates, movers = float(matches[-1][0]), int(matches[-1][1]), int(matches[-1][2])
     last = frames[-1]
-    recorded_movers = scenes.fast_movers(last)
-    recorded_crates = len(scenes.dynamic(last))
-    recorded_seconds = last["frame"] / scenes.FPS
+    recorded_movers = metrics.fast_movers(last)
+    recorded_crates = len(metrics.dynamic(last))
+    recorded_seconds = last["frame"] / metrics.FPS
     if movers != recorded_movers or crates != recorded_crates or abs(seconds - recorded_seconds) > 0.15:
         raise Fail(f"the printed line says {seconds:g} s, {crates} crates, {movers} fast movers, but the simulation "
                    f"recorded {recorded_seconds:.1f} s, {recorded_crates} crates and {recorded_movers} faster than "
-                   f"{scenes.FAST_MOVER:g} px/s at the end.", HINTS["print"])
+                   f"{metrics.FAST_MOVER:g} px/s at the end.", HINTS["print"])
     if movers:
-        _escaped(scenes.summary(run.record), f"in the lab's own scene with {len(scenes.DROPS)} dropped crates, "
+        _escaped(metrics.summary(run.record), f"in the lab's own scene with {len(scenes.DROPS)} dropped crates, "
                  f"the program printed 'fast movers now: {movers}'")
-        raise Fail(f"{scenes.SETTLE_FRAMES / scenes.FPS:g} s after the last of {len(scenes.DROPS)} dropped "
+        raise Fail(f"{scenes.SETTLE_FRAMES / metrics.FPS:g} s after the last of {len(scenes.DROPS)} dropped "
                    f"crates the program printed 'fast movers now: {movers}' (expected 0).", HINTS["settle"])
     return f"'fast movers now: 0' with {crates} crates after {seconds:g} s"

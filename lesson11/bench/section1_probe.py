@@ -30,6 +30,7 @@ os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
 from checker import crates_scenarios as scenes  # noqa: E402
+from checker import records as metrics  # noqa: E402
 from lesson11 import runtime  # noqa: E402
 from lesson11.bench import solver_probe as probe  # noqa: E402
 from lesson11.physics2d import World  # noqa: E402
@@ -62,18 +63,18 @@ def run_lab(settings):
 
 def lab_rows():
     ramp = run_lab(scenes.ramp_scenario())
-    slid = max(abs(c["slid"]) for c in scenes.measure_ramp(ramp))
-    ramp_tail = scenes.summary(ramp)["tail_speed"]
+    slid = max(abs(c["slid"]) for c in metrics.measure_ramp(ramp))
+    ramp_tail = metrics.summary(ramp)["tail_speed"]
     pile = run_lab(pile_settings(settle_frames=240))
     frames = pile["records"]
-    tail = frames[-scenes.FPS:]
-    top = max(scenes.speed(b) for f in tail for b in scenes.dynamic(f))
-    deep_end = max(scenes.floor_penetration(b) for f in frames[-2 * scenes.FPS:] for b in scenes.dynamic(f))
-    deep_all = max(scenes.floor_penetration(b) for f in frames for b in scenes.dynamic(f))
-    moves = [math.dist(a["pos"], b["pos"]) for a, b in zip(scenes.dynamic(tail[0]), scenes.dynamic(tail[-1]))]
-    overlap = max(scenes.max_pair_overlap(scenes.dynamic(f)) for f in tail[::10] + [tail[-1]])
-    bricks = scenes.measure_pile(run_lab(scenes.pile_scenario()))
-    own = scenes.summary(run_lab(scenes.own_scene_scenario()))
+    tail = frames[-metrics.FPS:]
+    top = max(metrics.speed(b) for f in tail for b in metrics.dynamic(f))
+    deep_end = max(metrics.floor_penetration(b) for f in frames[-2 * metrics.FPS:] for b in metrics.dynamic(f))
+    deep_all = max(metrics.floor_penetration(b) for f in frames for b in metrics.dynamic(f))
+    moves = [math.dist(a["pos"], b["pos"]) for a, b in zip(metrics.dynamic(tail[0]), metrics.dynamic(tail[-1]))]
+    overlap = max(metrics.max_pair_overlap(metrics.dynamic(f)) for f in tail[::10] + [tail[-1]])
+    bricks = metrics.measure_pile(run_lab(scenes.pile_scenario()))
+    own = metrics.summary(run_lab(scenes.own_scene_scenario()))
     return (f"ramp slide {slid:.2f} px (tail {ramp_tail:.2f} px/s) | pile top {top:.2f} px/s, corner last 2 s "
             f"{deep_end:.2f} px, all {deep_all:.2f} px, move max {max(moves):.2f} px, overlap {overlap:.2f} px | "
             f"bricks {bricks['tail_speed']:.2f} px/s drift {bricks['drift']:.2f} px corner "
