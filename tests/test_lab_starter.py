@@ -1,20 +1,21 @@
-"""The Tumbling Crates starter is the solution with steps 2-6 left to write, and it runs as handed out.
+"""Every lab's starter is its solution with the student's steps left to write (one table, LABS).
 
 Step regions are the lines between `# --- step N: ... ---` and
 `# --- end of step N ---`. Outside them the two files must be identical line
 by line (module docstring included); inside, the solution has code and the
-starter only comments (plus step 2's placeholder `return None`).
+starter only comments and the one-line placeholders that keep it running.
+How each starter runs as handed out is tested here for Tumbling Crates and
+in test_more_shapes_starter.py / test_ball_on_ramp_starter.py for the others.
 """
+import os
 import re
 
 import pytest
 
-from lab_run import HEIGHT, SOLUTION, STARTER, clicks, run_lab
+from lab_run import HEIGHT, ROOT, SOLUTION, STARTER, clicks, run_lab
 
 START = re.compile(r"^\s*# --- step (\d): .+ ---$")
 END = re.compile(r"^\s*# --- end of step (\d) ---$")
-STUDENT_STEPS = {"2", "3", "4", "5", "6"}
-PLACEHOLDERS = {"return None"}  # the only code a starter region may hold
 
 
 def split_regions(path):
@@ -51,38 +52,66 @@ def code_lines(lines):
     return out
 
 
-def test_both_files_mark_the_same_student_steps():
-    assert set(split_regions(SOLUTION)[1]) == STUDENT_STEPS
-    assert set(split_regions(STARTER)[1]) == STUDENT_STEPS
+# Each lab: its solution, its starter, the steps the student writes, the only code a starter region
+# may hold per step (placeholders that keep the starter running), and how many numbered steps its
+# comments name (the steps to write plus "run it" first and "click and watch" last).
+LABS = {
+    "tumbling_crates": (SOLUTION, STARTER, {step: {"return None"} if step == "2" else set()
+                                            for step in ("2", "3", "4", "5", "6")}, 7),
+    "more_shapes": (os.path.join(ROOT, "solutions", "more_shapes.py"),
+                    os.path.join(ROOT, "starters", "more_shapes_starter.py"),
+                    {"2": {"return box_points(radius, radius)"}, "3": {"return Vector2()"}, "4": {"return 1e9"},
+                     "5": {"axes = edge_normals(pa) + edge_normals(pb)"}}, 6),
+    "ball_on_ramp": (os.path.join(ROOT, "solutions", "ball_on_ramp.py"),
+                     os.path.join(ROOT, "starters", "ball_on_ramp_starter.py"),
+                     {step: {"return pygame.Vector2(math.inf, math.inf)", "return math.inf", "return center"}
+                      for step in ("2", "3", "4", "5", "6", "7")}, 8),
+}
+STEPS = [(lab, step) for lab, (_, _, placeholders, _) in LABS.items() for step in sorted(placeholders)]
 
 
-def test_files_are_identical_outside_the_step_regions():
-    solution, _ = split_regions(SOLUTION)
-    starter, _ = split_regions(STARTER)
+def test_every_registered_lab_is_in_the_table():
+    from checker.labs import LABS as REGISTERED
+    assert {lab.id for lab in REGISTERED} == set(LABS)
+    for lab in REGISTERED:
+        assert (lab.module.SOLUTION, lab.module.STARTER) == LABS[lab.id][:2]
+
+
+@pytest.mark.parametrize("lab", LABS)
+def test_both_files_mark_the_same_student_steps(lab):
+    solution, starter, placeholders, _ = LABS[lab]
+    assert set(split_regions(solution)[1]) == set(placeholders)
+    assert set(split_regions(starter)[1]) == set(placeholders)
+
+
+@pytest.mark.parametrize("lab", LABS)
+def test_files_are_identical_outside_the_step_regions(lab):
+    solution, starter = (split_regions(path)[0] for path in LABS[lab][:2])
     for number, (a, b) in enumerate(zip(solution, starter), 1):
         assert a == b, f"outside-region line {number} differs:\n solution: {a!r}\n starter:  {b!r}"
     assert len(solution) == len(starter)
 
 
-@pytest.mark.parametrize("step", sorted(STUDENT_STEPS))
-def test_solution_regions_hold_code(step):
-    assert code_lines(split_regions(SOLUTION)[1][step])
-
-
-@pytest.mark.parametrize("step", sorted(STUDENT_STEPS))
-def test_starter_regions_hold_no_solution_code(step):
-    region = split_regions(STARTER)[1][step]
-    assert set(code_lines(region)) <= PLACEHOLDERS
-    assert code_lines(region) != code_lines(split_regions(SOLUTION)[1][step])
+@pytest.mark.parametrize("lab, step", STEPS)
+def test_starter_regions_hold_no_solution_code(lab, step):
+    solution_path, starter_path, placeholders, _ = LABS[lab]
+    region = split_regions(starter_path)[1][step]
+    solution = code_lines(split_regions(solution_path)[1][step])
+    assert solution, f"the solution's step {step} is empty"
+    assert set(code_lines(region)) <= placeholders[step]
+    assert set(solution) - set(code_lines(region)), "the starter's region holds the whole solution"
     comments = [line.strip() for line in region if line.strip().startswith("#")]
     assert comments and comments[0].startswith(f"# Step {step} "), "the region's comment names its step"
 
 
-def test_starter_comments_number_all_seven_steps():
-    with open(STARTER, encoding="utf-8") as handle:
+@pytest.mark.parametrize("lab", LABS)
+def test_starter_comments_number_every_step(lab):
+    _, starter, _, steps = LABS[lab]
+    with open(starter, encoding="utf-8") as handle:
         text = handle.read()
-    for step in range(1, 8):
+    for step in range(1, steps + 1):
         assert re.search(rf"# Step {step}\b", text), f"no comment for step {step}"
+    assert not re.search(rf"# Step {steps + 1}\b", text)
 
 
 def test_starter_runs_to_the_end_and_the_crates_fall_through(tmp_path):
