@@ -66,11 +66,13 @@ def own_scene_scenario():
     return {"frames": LAST_FRAME + 5, "fps": FPS, "seed": SEED, "record_every": 1, "script": script}
 
 
+# Longest first (CPU-s for a correct file: pile 5.6, own scene 4.0, ramp 1.2, corner 0.7): the grader
+# starts a file's scenes in this order on its shared worker slots, so the long ones do not start last.
 SCENARIOS = {
-    "corner": corner_scenario,
-    "ramp": ramp_scenario,
     "pile": pile_scenario,
     "own_scene": own_scene_scenario,
+    "ramp": ramp_scenario,
+    "corner": corner_scenario,
 }
 
 
