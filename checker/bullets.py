@@ -1,0 +1,360 @@
+"""Bullets (Lesson 11, Going Further): the checks, their bounds and the hints.
+
+Order of checks (stable), one per lesson step where a step is the student's:
+  loads, handout_unchanged, runtime_lines,
+  toi_matches_root (step 2; also done-criterion 3), bounding_circle (step 3), broad_test (step 4),
+  swept_move_resolves (step 5),
+  runs, then the other three done-criteria: ccd_never_tunnels, substeps_still_tunnel, crate_momentum.
+Checks are worth 1 point, the criteria (toi_matches_root among them) 2 points each.
+
+The function checks compare the student's functions with analytic answers on
+the cases of checker/bullets_probes.py and name the first case that differs
+(and the mistake, when it is a known one). A step is graded with the lesson's
+code standing in for the steps it calls (time_of_impact with the lesson's
+circle_toi and bounding_radius, swept_move with the lesson's time_of_impact),
+so a mistake is reported once, under its own step. The criteria run only when
+every function check passes; they come from the probe (the lab's own
+BulletWorld, wall and modes, stepped in the child process), the one scene
+(main() with scripted keys and clicks) only shows that the file runs.
+
+Bounds come from the issue (no tunnel with CCD in >= 100 shots at 3000-12000
+px/s; some tunnel with sub-steps x8 at 12000 px/s; 1e-9 s; 5 %); what
+solutions/bullets.py measures is noted beside each.
+"""
+import math
+import os
+
+from . import bullets_probes as probes
+from . import lab_checks
+from .checks import Fail, Hint, Passed, Registry
+from .records import FPS, SEED, finite
+
+TITLE = "Bullets"
+PROBES = "checker.bullets_probes"
+REQUIRED = probes.REQUIRED
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "bullets_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "bullets.py")
+
+# ---------------------------------------------------------------- tolerances and bounds
+TOI_TOLERANCE = 1e-9   # s (the issue); solution: at most 5e-16 s off the geometric answer
+REL, ABS = 1e-7, 1e-7  # relative and absolute (px, px/s) against the lesson's code on the same inputs
+MIN_SHOTS = 100        # the issue: >= 100 shots with CCD; the probe fires 7 speeds x 16 = 112
+MOMENTUM = 0.05        # the issue: the crate's momentum within 5 %; solution: 0.0000 % off
+
+# ---------------------------------------------------------------- the hints, in the lesson's terms
+HINTS = {
+    "toi": Hint(2, "the time of impact of two circles",
+                "Write the gap as dp + dv t (dp = p2 - p1, dv = v2 - v1) and square |dp + dv t| = r1 + r2: "
+                "a = dv·dv, b = 2 dp·dv, c = dp·dp - (r1 + r2)². Return 0.0 when c <= 0 (already touching), None "
+                "when a == 0 or b² - 4ac < 0, else the EARLIER root (-b - √(b² - 4ac)) / 2a if it lies in [0, dt]."),
+    "toi_later": Hint(2, "the earlier root is the first contact",
+                      "The quadratic has two roots: the moment the circles start to touch and the moment they "
+                      "would stop touching if they passed through each other. The first contact is the smaller "
+                      "one, (-b - √disc) / 2a."),
+    "toi_apart": Hint(2, "no contact: apart, parallel, missing, too far",
+                      "Return None when there is no contact in [0, dt]: the paths miss (b² - 4ac < 0), the circles "
+                      "do not move relative to each other (a = 0), or the earlier root is negative (moving apart: "
+                      "the touching lies in the past) or later than dt."),
+    "toi_touching": Hint(2, "already touching",
+                         "When c = |dp|² - (r1 + r2)² <= 0 the circles already overlap: return 0.0 (the impact is "
+                         "now) before solving the quadratic; its roots are then on both sides of 0."),
+    "bounding": Hint(3, "the bounding circle holds every corner",
+                     "The bounding circle around the crate's centre must reach its farthest corner: the largest "
+                     "centre.distance_to(p) over the points. Half the width or the nearest corner leaves corners "
+                     "outside, and a bullet aimed at a corner is skipped by the broad test."),
+    "broad": Hint(4, "the broad test before the exact test",
+                  "Call circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(), "
+                  "bounding_radius(points, other.pos), dt); only when it returns None (is None: 0.0 is a hit "
+                  "that happens now) return None at once. Otherwise go on to the exact swept test."),
+    "broad_missing": Hint(4, "skip what the bullet cannot reach",
+                          "Your time_of_impact() ran the exact swept test on a crate the bullet cannot reach this "
+                          "step. The broad test is the point of step 4: one circle_toi() against the bounding "
+                          "circle, and return None when it finds no contact."),
+    "swept": Hint(5, "move to the impact, resolve, spend the rest",
+                  "Move the bullet to its time of impact (bullet.pos += bullet.vel * t), resolve there with "
+                  "world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius), then move it for the "
+                  "rest of the step, dt - t, with its NEW velocity."),
+    "handout": Hint(None, "keep the handed-out code",
+                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
+                    "everything else (the constants, the wall, the modes, BulletWorld, the `# lab runtime` lines) "
+                    "stays as handed out, so the checker measures the lab the lesson describes. Start again from "
+                    "the starter if you are unsure what changed."),
+    "runtime": lab_checks.RUNTIME_HINT,
+    "watch": Hint(6, "watch the bullets",
+                  "The function checks above all pass, yet the bullets do not behave as the lesson says. Press 5 "
+                  "(CCD), fire at the wall and watch the tunnelled count; compare your file with the handout "
+                  "around the steps."),
+    "crash": Hint(1, "run the file", "Run the file yourself (python bullets.py) and fix the error at the line shown."),
+}
+
+CHECKS = Registry()
+
+
+def recognise(path, source):
+    """True if the file is a Bullets lab: its name or its docstring's first line says so."""
+    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
+    return name.startswith("bullets") or source.lstrip().startswith('"""Bullets:')
+
+
+def scene_scenario():
+    """The lab's own scene in CCD mode (key 5), 6 bullets fired at the wall and the crates, 0.5 s."""
+    clicks = [(300, 250), (700, 100), (400, 540), (700, 400), (560, 480), (700, 250)]
+    script = [{"frame": 1, "type": "key", "key": "5"}]
+    script += [{"frame": 2 + 3 * i, "type": "click", "pos": list(pos)} for i, pos in enumerate(clicks)]
+    return {"frames": 30, "fps": FPS, "seed": SEED, "record_every": 1, "script": script}
+
+
+SCENARIOS = {"scene": scene_scenario}
+
+
+def scenarios():
+    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
+    return {name: build() for name, build in SCENARIOS.items()}
+
+
+# ---------------------------------------------------------------- helpers
+
+def _close(got, want):
+    return abs(got - want) <= ABS + REL * abs(want)
+
+
+def _same_point(got, want):
+    return isinstance(got, list) and len(got) == len(want) and all(_close(g, w) for g, w in zip(got, want))
+
+
+def _bad(got):
+    return isinstance(got, dict) and "bad" in got
+
+
+def _function(sub, functions, probe, function, step):
+    return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
+
+
+def _time(value):
+    if value is None:
+        return "None (no contact)"
+    if _bad(value):
+        return value["bad"]
+    return f"{value:.9g} s"
+
+
+def _vec(v):
+    return f"({v[0]:.2f}, {v[1]:.2f})"
+
+
+# ---------------------------------------------------------------- loading and the handout
+
+@CHECKS.check()
+def loads(sub):
+    """The file imports without errors and defines circle_toi, bounding_radius, time_of_impact, swept_move,
+    BulletWorld, apply_mode, make_wall, make_bullet and main."""
+    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
+                             "names: circle_toi, bounding_radius, time_of_impact, swept_move, BulletWorld, "
+                             "apply_mode, make_wall, make_bullet and main; the checker calls them."))
+
+
+@CHECKS.check(depends=["loads"])
+def handout_unchanged(sub, functions):
+    """The code outside the steps is the handout's (formatting and comments aside)."""
+    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+
+
+@CHECKS.check(depends=["loads"])
+def runtime_lines(sub, functions):
+    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
+    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+
+
+# ---------------------------------------------------------------- step 2: circle_toi (criterion 3)
+
+def _toi_ok(got, want):
+    if want is None:
+        return got is None
+    return isinstance(got, float) and abs(got - want) <= TOI_TOLERANCE
+
+
+@CHECKS.check(depends=["loads"], max_score=2)
+def toi_matches_root(sub, functions):
+    """Step 2 (criterion 3): circle_toi() equals the analytic first-contact time within 1e-9 s (head-on, glancing,
+    already touching, moving apart, parallel paths, missing)."""
+    cases = _function(sub, functions, "circle_toi", "circle_toi", 2)
+    worst = 0.0
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if _toi_ok(got, want):
+            if want is not None:
+                worst = max(worst, abs(got - want))
+            continue
+        where = f"for {case['case']} (dt = {case['dt']:.4g} s)"
+        text = f"{where}, circle_toi() returned {_time(got)}; expected {_time(want)}"
+        hint = HINTS["toi"]
+        if _bad(got):
+            hint = HINTS["toi"]
+        elif want == 0.0 and case["c"] <= 0:
+            text += ": the circles already overlap, so the impact is now"
+            hint = HINTS["toi_touching"]
+        elif got is not None and case["later"] is not None and abs(got - case["later"]) <= TOI_TOLERANCE:
+            text += ": that is the later root, when the circles would stop touching"
+            hint = HINTS["toi_later"]
+        elif want is None and got is not None:
+            if got < 0:
+                text += ": a negative time is in the past (the circles are moving apart)"
+            elif got > case["dt"]:
+                text += f": later than this step's dt = {case['dt']:.4g} s"
+            hint = HINTS["toi_apart"]
+        elif want is not None and got is None:
+            text += ": the circles do touch within the step"
+        raise Fail(text + ".", hint)
+    return Passed(f"the time of impact matches the analytic root in all {len(cases)} cases (largest difference "
+                  f"{worst:.1e} s; bound {TOI_TOLERANCE:g} s)", value=cases)
+
+
+# ---------------------------------------------------------------- step 3: bounding_radius
+
+@CHECKS.check(depends=["loads"])
+def bounding_circle(sub, functions):
+    """Step 3: bounding_radius() is the distance from the centre to the farthest point of the outline."""
+    cases = _function(sub, functions, "bounding_radius", "bounding_radius", 3)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if isinstance(got, float) and _close(got, want):
+            continue
+        text = f"for {case['case']}, bounding_radius() returned {_time(got).replace(' s', ' px')}; expected the " \
+               f"farthest corner's distance, {want:.3f} px"
+        if isinstance(got, float) and got < want:
+            text += ": corners stick out of that circle, so bullets aimed at them are skipped"
+        raise Fail(text + ".", HINTS["bounding"])
+    return Passed(f"the bounding circle reaches the farthest corner in all {len(cases)} shapes", value=cases)
+
+
+# ---------------------------------------------------------------- step 4: the broad test
+
+def _hit_matches(got, want):
+    if want is None:
+        return got is None
+    return (isinstance(got, dict) and "t" in got and _close(got["t"], want["t"])
+            and _same_point(got["normal"], want["normal"]))
+
+
+def _hit(hit):
+    if hit is None:
+        return "None (no hit)"
+    if _bad(hit):
+        return hit["bad"]
+    return f"t = {hit['t']:.6g} s, normal {_vec(hit['normal'])}"
+
+
+@CHECKS.check(depends=["loads"])
+def broad_test(sub, functions):
+    """Step 4: time_of_impact() skips a crate whose bounding circle the bullet cannot reach, and finds every hit."""
+    cases = _function(sub, functions, "time_of_impact", "time_of_impact", 4)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        if not _hit_matches(got, want):
+            text = f"for {case['case']}, time_of_impact() returned {_hit(got)}; expected {_hit(want)}"
+            if want is not None and got is None and case["exact_tests"] == 0:
+                text += ": the broad test gave up on a crate the bullet does hit"
+            raise Fail(text + ".", HINTS["broad"])
+        if not case["needs_exact"] and case["exact_tests"]:
+            raise Fail(f"for {case['case']}, the answer is right but time_of_impact() ran the exact swept test "
+                       f"{case['exact_tests']} time(s); the bullet cannot reach the crate's bounding circle this "
+                       "step, so the broad test should have returned None first.", HINTS["broad_missing"])
+    return Passed(f"the broad test skips the crates out of reach and keeps every hit in all {len(cases)} cases",
+                  value=cases)
+
+
+# ---------------------------------------------------------------- step 5: the swept move
+
+SWEPT_TEXT = {
+    "stops": "the bullet stopped at the impact: the rest of the step (dt - t) was not spent",
+    "old_velocity": "the bullet spent the step with its velocity from before the hit (it went on through)",
+    "no_resolve": "the bullet moved on through without a resolve() at the impact",
+    "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
+}
+
+
+@CHECKS.check(depends=["loads"])
+def swept_move_resolves(sub, functions):
+    """Step 5: swept_move() moves a bullet to its time of impact, resolves there and spends the rest of the step."""
+    cases = _function(sub, functions, "swept_move", "swept_move", 5)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        ok = _same_point(got["bullet"]["pos"], want["bullet"]["pos"]) and \
+            _same_point(got["bullet"]["vel"], want["bullet"]["vel"]) and \
+            all(_same_point(g["vel"], w["vel"]) and _same_point(g["pos"], w["pos"])
+                for g, w in zip(got["others"], want["others"]))
+        if ok:
+            continue
+        named = next((key for key, pos in case["variants"].items() if _same_point(got["bullet"]["pos"], pos)), None)
+        where = f"in '{case['case']}'" + (f" (impact at t = {case['t'] * 1000:.3f} ms)" if case["t"] is not None else "")
+        text = (f"{where}, after swept_move() the bullet is at {_vec(got['bullet']['pos'])} moving "
+                f"{_vec(got['bullet']['vel'])} px/s; expected {_vec(want['bullet']['pos'])} moving "
+                f"{_vec(want['bullet']['vel'])} px/s")
+        if named:
+            text += f": {SWEPT_TEXT[named]}"
+        raise Fail(text + ".", HINTS["swept"])
+    return Passed(f"the swept move matches the lesson in all {len(cases)} cases", value=cases)
+
+
+FUNCTION_CHECKS = ["toi_matches_root", "bounding_circle", "broad_test", "swept_move_resolves"]
+
+
+# ---------------------------------------------------------------- the scene and the criteria
+
+@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines"] + FUNCTION_CHECKS, needs_scenarios=True)
+def runs(sub, functions, *passed):
+    """main() runs the lab's scene in CCD mode with six bullets fired, and no bullet passes the wall."""
+    run = lab_checks.scene_records(sub, SCENARIOS, HINTS["crash"], HINTS["runtime"])["scene"]
+    frames = run.record["records"]
+    if not finite(frames):
+        raise Fail("in the scene a body's position or speed became infinite or NaN.", HINTS["watch"])
+    wall_x = 640.0
+    passed_wall = sum(1 for body in frames[-1]["bodies"] if not body["static"] and not body["points"]
+                      and body["pos"][0] > wall_x + 2)
+    if passed_wall:
+        raise Fail(f"in the scene (CCD mode, six bullets fired) {passed_wall} bullet(s) ended beyond the wall.",
+                   HINTS["watch"])
+    return f"{len(frames)} frames, {max(len(f['bodies']) for f in frames) - 5} bullets at most, none past the wall"
+
+
+@CHECKS.check(depends=["loads"] + FUNCTION_CHECKS, max_score=2)
+def ccd_never_tunnels(sub, functions, *passed):
+    """With CCD no bullet tunnels through the 4 px wall at any speed from 3000 to 12000 px/s (>= 100 shots; criterion 1)."""
+    shots = _function(sub, functions, "shots", "swept_move", None)
+    total = shots["per_speed"] * len(shots["ccd"])
+    tunnelled = {speed: n for speed, n in shots["ccd"].items() if n}
+    if total < MIN_SHOTS:
+        raise Fail(f"only {total} shots were fired (bound: at least {MIN_SHOTS}).", HINTS["watch"])
+    if tunnelled:
+        listed = ", ".join(f"{n} of {shots['per_speed']} at {speed} px/s" for speed, n in tunnelled.items())
+        raise Fail(f"with CCD, bullets tunnelled through the {shots['wall']:g} px wall: {listed} (bound: none).",
+                   HINTS["watch"])
+    return (f"0 of {total} shots tunnelled at {min(shots['ccd'], key=int)}-{max(shots['ccd'], key=int)} px/s "
+            f"({shots['ccd_seconds'] * 1000:.0f} ms of physics)")
+
+
+@CHECKS.check(depends=["loads"] + FUNCTION_CHECKS, max_score=2)
+def substeps_still_tunnel(sub, functions, *passed):
+    """With sub-stepping x8 alone some bullets still tunnel at 12000 px/s: the lab shows the lesson's point (criterion 2)."""
+    shots = _function(sub, functions, "shots", "swept_move", None)
+    if shots["x8"] == 0:
+        raise Fail(f"with sub-steps x8 (no CCD) none of {shots['x8_shots']} shots at 12000 px/s tunnelled, so the "
+                   "scene does not show that sub-stepping still misses fast bullets (the wall and the bullet must "
+                   "stay as handed out: 4 px and radius 3 px).", HINTS["handout"])
+    return (f"{shots['x8']} of {shots['x8_shots']} shots tunnelled at 12000 px/s with sub-steps x8 "
+            f"({shots['x8_seconds'] * 1000:.0f} ms of physics for {shots['x8_shots']} shots; CCD: "
+            f"{shots['ccd_seconds'] * 1000:.0f} ms for {shots['per_speed'] * len(shots['ccd'])})")
+
+
+@CHECKS.check(depends=["loads"] + FUNCTION_CHECKS, max_score=2)
+def crate_momentum(sub, functions, *passed):
+    """A bullet hitting a free crate with CCD gives it the lesson's momentum, M (1 + e) m v / (m + M), within 5 % (criterion 4)."""
+    hit = _function(sub, functions, "crate_hit", "swept_move", None)
+    got = math.hypot(*hit["got"])
+    off = abs(got - hit["want"]) / hit["want"]
+    if not off <= MOMENTUM:
+        raise Fail(f"a bullet of momentum {hit['bullet_momentum']:.0f} hitting a free crate head-on left the crate "
+                   f"with momentum {got:.1f}; the lesson's answer (e = {hit['e']:g}) is {hit['want']:.1f} (off by "
+                   f"{off:.1%}; bound {MOMENTUM:.0%}).", HINTS["watch"])
+    return f"crate momentum {got:.1f} against {hit['want']:.1f} ({off:.2%} off; bound {MOMENTUM:.0%})"

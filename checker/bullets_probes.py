@@ -1,0 +1,395 @@
+"""Probes of a Bullets file's own functions, run inside the checker's child process.
+
+Each probe calls the student's functions and returns plain data: the
+student's answer beside the analytic one (checker/bullets.py compares them
+and names the first case that differs).
+
+    circle_toi      (step 2) head-on, glancing, both moving, already touching, moving apart,
+                    parallel paths, missing, too far for this step; the analytic answer is the
+                    geometric one (closest approach, then back along the path), not the quadratic
+    bounding_radius (step 3) boxes, turned boxes and a triangle around their centres
+    time_of_impact  (step 4) crates hit, missed, grazed at a corner, a bullet already inside the
+                    bounding circle; the lesson's circle_toi and bounding_radius stand in for the
+                    student's, and the exact swept test is counted (the broad test must skip it)
+    swept_move      (step 5) one swept move against a wall, a crate and nothing, with the
+                    lesson's time_of_impact standing in for the student's
+    shots           (criteria 1 and 2) the lab's own BulletWorld with its wall: >= 100 shots
+                    at 3000-12000 px/s with CCD, and shots at 12000 px/s with sub-steps x8
+    crate_hit       (criterion 4) a bullet hits a free crate with CCD: the crate's momentum
+
+Units: px, s, mass in the lab's units (area / 1000).
+"""
+import math
+import time
+
+from pygame import Vector2
+
+from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
+
+from .crates_probes import box, ngon
+
+REQUIRED = ("circle_toi", "bounding_radius", "time_of_impact", "swept_move", "apply_mode", "make_wall", "make_bullet",
+            "BulletWorld", "main")
+STEP = 1 / 120                          # s
+SHOT_SPEEDS = (3000, 4500, 6000, 7500, 9000, 10500, 12000)   # px/s, with CCD
+SHOTS_PER_SPEED = 16                    # 7 x 16 = 112 shots, start offsets spread over one step's travel
+SUBSTEP_SHOTS = 32                      # shots at 12000 px/s with sub-steps x8
+FAST = 12000.0                          # px/s
+
+
+def answer_time(value):
+    """A returned time as a float, None, or {"bad": what it is}."""
+    if value is None:
+        return None
+    if isinstance(value, bool):
+        return {"bad": repr(value)}
+    try:
+        t = float(value)
+    except (TypeError, ValueError):
+        return {"bad": _short(value)}
+    return t if math.isfinite(t) else {"bad": f"a number that is not finite: {t!r}"}
+
+
+def _short(value):
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+# ---------------------------------------------------------------- step 2: circle_toi
+
+def analytic_toi(p1, v1, r1, p2, v2, r2, dt):
+    """The first touching time by geometry: closest approach of the relative path, then back by the chord.
+
+    Independent of the quadratic: s* = -dp·dv / |dv|² is when the centres are
+    closest, h² = |dp|² - (dp·dv)²/|dv|² the squared closest distance; the
+    circles touch sqrt(R² - h²) / |dv| before s*.
+    """
+    dp, dv = p2 - p1, v2 - v1
+    reach = r1 + r2
+    if dp.length() <= reach:
+        return 0.0
+    speed = dv.length()
+    if speed == 0:
+        return None
+    along = -dp.dot(dv) / speed              # px travelled until closest approach
+    miss_sq = dp.length_squared() - along * along
+    if miss_sq > reach * reach:
+        return None
+    t = (along - math.sqrt(max(reach * reach - miss_sq, 0.0))) / speed
+    return t if 0 <= t <= dt else None
+
+
+def toi_cases():
+    """(name, p1, v1, r1, p2, v2, r2, dt) in px, px/s, s."""
+    return [
+        ("head-on: a bullet at 3000 px/s towards a still circle 60 px away", Vector2(0, 0), Vector2(3000, 0), 2.0,
+         Vector2(60, 0), Vector2(0, 0), 5.0, 1 / 30),
+        ("head-on, both moving towards each other", Vector2(10, 20), Vector2(0, 400), 6.0,
+         Vector2(10, 220), Vector2(0, -200), 14.0, 1.0),
+        ("glancing: the path passes 9 px from the centre, radii adding to 12", Vector2(0, 0), Vector2(500, 0), 4.0,
+         Vector2(100, 9), Vector2(0, 0), 8.0, 1.0),
+        ("a slanted path towards a moving circle", Vector2(-30, 40), Vector2(250, -120), 3.0,
+         Vector2(120, -20), Vector2(-40, 10), 10.0, 1.0),
+        ("already touching (overlapping by 1 px)", Vector2(0, 0), Vector2(100, 0), 5.0,
+         Vector2(9, 0), Vector2(0, 0), 5.0, 0.1),
+        ("moving apart", Vector2(0, 0), Vector2(-300, 0), 5.0, Vector2(40, 0), Vector2(0, 0), 5.0, 1.0),
+        ("moving apart at a slant, paths crossing behind", Vector2(0, 0), Vector2(-200, -150), 3.0,
+         Vector2(30, 10), Vector2(50, 0), 4.0, 1.0),
+        ("parallel paths at the same velocity", Vector2(0, 0), Vector2(800, 0), 5.0,
+         Vector2(0, 30), Vector2(800, 0), 5.0, 1.0),
+        ("parallel paths 20 px apart, radii adding to 10", Vector2(0, 0), Vector2(600, 0), 5.0,
+         Vector2(100, 20), Vector2(0, 0), 5.0, 1.0),
+        ("missing: the path passes 15 px from the centre, radii adding to 12", Vector2(0, 0), Vector2(0, 700), 4.0,
+         Vector2(15, 200), Vector2(0, 0), 8.0, 1.0),
+        ("head-on but too far away for this step", Vector2(0, 0), Vector2(1200, 0), 3.0,
+         Vector2(200, 0), Vector2(0, 0), 2.0, 1 / 120),
+    ]
+
+
+def probe_toi(module, lab_path):
+    """The student's circle_toi on each case beside the analytic time and the usual wrong answers."""
+    cases = []
+    for name, p1, v1, r1, p2, v2, r2, dt in toi_cases():
+        got = module.circle_toi(Vector2(p1), Vector2(v1), r1, Vector2(p2), Vector2(v2), r2, dt)
+        dp, dv = p2 - p1, v2 - v1
+        a, b, c = dv.dot(dv), 2 * dp.dot(dv), dp.dot(dp) - (r1 + r2) ** 2
+        disc = b * b - 4 * a * c
+        later = (-b + math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
+        earlier = (-b - math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
+        cases.append({"case": name, "dt": dt, "got": answer_time(got), "want": analytic_toi(p1, v1, r1, p2, v2, r2, dt),
+                      "later": later, "earlier": earlier, "c": c})
+    return cases
+
+
+# ---------------------------------------------------------------- step 3: bounding_radius
+
+def reference_bounding_radius(points, centre):
+    return max(centre.distance_to(p) for p in points)
+
+
+def bounding_cases():
+    """(name, points, centre)."""
+    return [
+        ("a 40 x 40 crate", box(40, 40, (380, 540)), Vector2(380, 540)),
+        ("a 36 x 100 crate", box(36, 100, (540, 510)), Vector2(540, 510)),
+        ("a 50 x 70 crate turned 30°", box(50, 70, (0, 0), 30), Vector2(0, 0)),
+        ("a triangle around its circumcentre", ngon(3, 25, (10, -5), 12), Vector2(10, -5)),
+    ]
+
+
+def probe_bounding(module, lab_path):
+    cases = []
+    for name, points, centre in bounding_cases():
+        got = module.bounding_radius([Vector2(p) for p in points], Vector2(centre))
+        half_sides = [abs(p.x - centre.x) for p in points] + [abs(p.y - centre.y) for p in points]
+        cases.append({"case": name, "got": answer_time(got), "want": reference_bounding_radius(points, centre),
+                      "smallest": min(centre.distance_to(p) for p in points), "half_side": max(half_sides) if
+                      half_sides else 0.0})
+    return cases
+
+
+# ---------------------------------------------------------------- step 4: time_of_impact
+
+def reference_circle_toi(p1, v1, r1, p2, v2, r2, dt):
+    """The lesson's circle_toi (the quadratic's earlier root)."""
+    dp, dv = p2 - p1, v2 - v1
+    c = dp.dot(dp) - (r1 + r2) ** 2
+    if c <= 0:
+        return 0.0
+    a, b = dv.dot(dv), 2 * dp.dot(dv)
+    disc = b * b - 4 * a * c
+    if a == 0 or disc < 0:
+        return None
+    t = (-b - math.sqrt(disc)) / (2 * a)
+    return t if 0 <= t <= dt else None
+
+
+def _bullet(pos, vel, radius=3.0, mass=0.05):
+    return Body(Circle(radius), pos, mass, vel=vel, bullet=True)
+
+
+def _crate(w, h, pos, angle=0.0, mass=None):
+    return Body(box_points(w, h), pos, w * h / 1000 if mass is None else mass, angle=math.radians(angle))
+
+
+def impact_cases():
+    """(name, bullet, other body, dt, does the bullet reach the bounding circle this step?)."""
+    return [
+        ("a bullet at 12000 px/s hitting a 40 x 40 crate head-on", _bullet((300, 540), (12000, 0)),
+         _crate(40, 40, (380, 540)), STEP, True),
+        ("a bullet at 6000 px/s hitting a turned crate's corner", _bullet((330, 486), (6000, 0)),
+         _crate(50, 70, (380, 520), 30), STEP, True),
+        ("a bullet flying far above a crate", _bullet((300, 300), (12000, 0)), _crate(40, 40, (380, 540)), STEP, False),
+        ("a bullet too slow to reach a crate this step", _bullet((100, 540), (3000, 0)),
+         _crate(40, 40, (380, 540)), STEP, False),
+        ("a bullet already inside a tall crate's bounding circle, 1 px from its side",
+         _bullet((518, 470), (4000, 0)), _crate(36, 100, (540, 510)), STEP, True),
+        ("a bullet crossing a tall crate's bounding circle 2 px above the crate",
+         _bullet((500, 455), (4000, 0)), _crate(36, 100, (540, 510)), STEP, True),
+    ]
+
+
+def _plain_hit(hit):
+    if hit is None:
+        return None
+    try:
+        t, normal = hit
+        return {"t": float(t), "normal": [float(Vector2(normal).x), float(Vector2(normal).y)]}
+    except (TypeError, ValueError):
+        return {"bad": _short(hit)}
+
+
+def probe_impact(module, lab_path):
+    """time_of_impact() with the lesson's circle_toi and bounding_radius; counts the exact swept tests."""
+    own = module.circle_toi, module.bounding_radius, getattr(module, "circle_polygon_toi", None)
+    calls = [0]
+
+    def counted(*args):
+        calls[0] += 1
+        return circle_polygon_toi(*args)
+
+    module.circle_toi, module.bounding_radius = reference_circle_toi, reference_bounding_radius
+    module.circle_polygon_toi = counted
+    try:
+        cases = []
+        for name, bullet, other, dt, exact in impact_cases():
+            calls[0] = 0
+            got = module.time_of_impact(bullet, other, dt)
+            want = circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), dt)
+            cases.append({"case": name, "got": _plain_hit(got), "want": _plain_hit(want), "exact_tests": calls[0],
+                          "needs_exact": exact})
+        return cases
+    finally:
+        module.circle_toi, module.bounding_radius = own[0], own[1]
+        if own[2] is not None:
+            module.circle_polygon_toi = own[2]
+
+
+# ---------------------------------------------------------------- step 5: swept_move
+
+def reference_time_of_impact(bullet, other, dt):
+    if other.shape.kind == "circle":
+        t = reference_circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(), other.radius, dt)
+        return None if t is None else (t, (other.pos - bullet.pos - bullet.vel * t).normalize())
+    return circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), dt)
+
+
+def reference_swept_move(world, bullet, dt):
+    first = None
+    for other in world.bodies:
+        if other is bullet:
+            continue
+        hit = reference_time_of_impact(bullet, other, dt)
+        if hit is not None and (first is None or hit[0] < first[0]):
+            first = (hit[0], hit[1], other)
+    if first is None:
+        bullet.pos += bullet.vel * dt
+        return
+    t, normal, other = first
+    bullet.pos += bullet.vel * t
+    world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
+    bullet.pos += bullet.vel * (dt - t)
+
+
+def swept_cases(module):
+    """(name, a function making (world, bullet)) for one swept move of 1/120 s each."""
+    wall_x = float(getattr(module, "WALL_X", 640.0))
+
+    def wall_world(speed, y=240.0, vy=0.0):
+        def make():
+            wall = module.make_wall()
+            bullet = _bullet((wall_x - 60, y), (speed, vy))
+            return module.BulletWorld([wall, bullet], effects={"ccd", "restitution"}, substeps=1), bullet
+        return make
+
+    def crate_world():
+        crate = _crate(40, 40, (380, 300))
+        bullet = _bullet((300, 300), (9000, 0))
+        return module.BulletWorld([crate, bullet], effects={"ccd", "restitution"}, substeps=1), bullet
+
+    def nothing():
+        bullet = _bullet((100, 100), (5000, 700))
+        return module.BulletWorld([bullet], effects={"ccd"}, substeps=1), bullet
+
+    return [("a bullet at 12000 px/s hitting the wall 60 px ahead", wall_world(12000.0)),
+            ("a bullet at 9000 px/s hitting the wall at a slant", wall_world(9000.0, 200.0, 3000.0)),
+            ("a bullet at 9000 px/s hitting a free crate head-on", crate_world),
+            ("a bullet with nothing in its way", nothing)]
+
+
+def _state(body):
+    return {"pos": [body.pos.x, body.pos.y], "vel": [body.vel.x, body.vel.y]}
+
+
+def probe_swept(module, lab_path):
+    """One swept_move() of 1/120 s per case with the lesson's time_of_impact, beside the lesson's swept move.
+
+    Also the state after the usual mistakes, for the message: "stops" (the rest of the step
+    not spent), "old_velocity" (the rest spent with the velocity before the hit), "whole_step"
+    (a whole dt moved after the impact), "no_resolve" (moved through without resolving).
+    """
+    own = module.time_of_impact
+    module.time_of_impact = reference_time_of_impact
+    try:
+        cases = []
+        for name, make in swept_cases(module):
+            world, bullet = make()
+            module.swept_move(world, bullet, STEP)
+            got = {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
+            world, bullet = make()
+            start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
+            reference_swept_move(world, bullet, STEP)
+            want = {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
+            world, bullet = make()
+            hit = min((h + (o,) for o in world.bodies if o is not bullet
+                       for h in [reference_time_of_impact(bullet, o, STEP)] if h is not None),
+                      key=lambda h: h[0], default=None)
+            variants = {}
+            if hit is not None:
+                t = hit[0]
+                world.resolve(bullet, hit[2], hit[1], start + velocity * t + hit[1] * bullet.radius)
+                after = Vector2(bullet.vel)
+                variants = {"stops": list(start + velocity * t), "old_velocity": list(start + velocity * STEP),
+                            "whole_step": list(start + velocity * t + after * STEP),
+                            "no_resolve": list(start + velocity * STEP)}
+            cases.append({"case": name, "got": got, "want": want, "variants": variants,
+                          "t": None if hit is None else hit[0]})
+        return cases
+    finally:
+        module.time_of_impact = own
+
+
+# ---------------------------------------------------------------- criteria 1 and 2: the shots
+
+def shoot(module, mode, speed, shots):
+    """`shots` bullets fired one at a time at the lab's wall in its BulletWorld set to `mode`.
+
+    Each starts 1 px plus 1 + k/shots steps' travel short of touching the wall,
+    at the wall's mid-height, flying along +x, with no gravity (the wall is
+    400 px tall: gravity cannot take a shot over it in 3 steps). A shot
+    tunnels when the bullet's centre ends past the wall's centre line.
+    Returns (tunnelled, physics seconds spent).
+    """
+    wall_x = float(module.WALL_X)
+    half = float(module.WALL_WIDTH) / 2
+    radius = float(module.BULLET_RADIUS)
+    travel = speed * STEP
+    steps = 3 + math.ceil((2 * radius + 2 * half + 2) / travel)
+    tunnelled, spent = 0, 0.0
+    for k in range(shots):
+        start_x = wall_x - half - radius - 1 - travel * (1 + (k + 0.5) / shots)
+        wall = module.make_wall()
+        bullet = module.make_bullet((start_x, (wall.pos.y)), (speed, 0))
+        world = module.BulletWorld([wall, bullet], effects={"restitution", "correction"})
+        module.apply_mode(world, mode)
+        begin = time.process_time()
+        for _ in range(steps):
+            world.step()
+        spent += time.process_time() - begin
+        tunnelled += bullet.pos.x > wall_x
+    return tunnelled, spent
+
+
+def probe_shots(module, lab_path):
+    """Criterion 1: shots with CCD at every speed; criterion 2: shots at 12000 px/s with sub-steps x8 (and x1)."""
+    ccd = {}
+    cost = {}
+    for speed in SHOT_SPEEDS:
+        ccd[str(speed)], cost[f"ccd {speed}"] = shoot(module, "ccd", speed, SHOTS_PER_SPEED)
+    x8, cost["x8"] = shoot(module, "x8", FAST, SUBSTEP_SHOTS)
+    return {"ccd": ccd, "per_speed": SHOTS_PER_SPEED, "x8": x8, "x8_shots": SUBSTEP_SHOTS,
+            "ccd_seconds": sum(v for k, v in cost.items() if k.startswith("ccd")), "x8_seconds": cost["x8"],
+            "wall": float(module.WALL_WIDTH), "radius": float(module.BULLET_RADIUS)}
+
+
+# ---------------------------------------------------------------- criterion 4: momentum into a crate
+
+def probe_crate_hit(module, lab_path):
+    """A bullet at 9000 px/s hits a free 40 x 40 crate (mass 1.6) through its centre, with CCD, no gravity.
+
+    The lesson's answer for a central impact with restitution e = 0.2 (both
+    bodies' default): the crate leaves at (1 + e) m v / (m + M), so its momentum
+    is M (1 + e) m v / (m + M). The world runs 3 steps of 1/120 s.
+    """
+    bullet = module.make_bullet((300, 300), (9000, 0))
+    crate = _crate(40, 40, (380, 300))
+    world = module.BulletWorld([crate, bullet], effects={"ccd", "restitution"})
+    module.apply_mode(world, "ccd")
+    for _ in range(3):
+        world.step()
+    m, mass, v = bullet.mass, crate.mass, 9000.0
+    e = min(bullet.restitution, crate.restitution)
+    want = mass * (1 + e) * m * v / (m + mass)
+    return {"got": [crate.vel.x * mass, crate.vel.y * mass], "want": want, "bullet_momentum": m * v,
+            "bullet_x": bullet.pos.x, "crate_x": crate.pos.x, "e": e}
+
+
+# probe name -> (the lab function it needs, the probe)
+PROBES = {
+    "circle_toi": ("circle_toi", probe_toi),
+    "bounding_radius": ("bounding_radius", probe_bounding),
+    "time_of_impact": ("time_of_impact", probe_impact),
+    "swept_move": ("swept_move", probe_swept),
+    "shots": ("swept_move", probe_shots),
+    "crate_hit": ("swept_move", probe_crate_hit),
+}
