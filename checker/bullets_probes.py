@@ -134,6 +134,8 @@ def bounding_cases():
         ("a 36 x 100 crate", box(36, 100, (540, 510)), Vector2(540, 510)),
         ("a 50 x 70 crate turned 30°", box(50, 70, (0, 0), 30), Vector2(0, 0)),
         ("a triangle around its circumcentre", ngon(3, 25, (10, -5), 12), Vector2(10, -5)),
+        ("an uneven pentagon around its middle", [Vector2(0, 0), Vector2(60, 0), Vector2(70, 30), Vector2(30, 50),
+                                                  Vector2(-10, 30)], Vector2(30, 22)),
     ]
 
 

@@ -66,6 +66,8 @@ LABS = {
                      os.path.join(ROOT, "starters", "ball_on_ramp_starter.py"),
                      {step: {"return pygame.Vector2(math.inf, math.inf)", "return math.inf", "return center"}
                       for step in ("2", "3", "4", "5", "6", "7")}, 8),
+    "bullets": (os.path.join(ROOT, "solutions", "bullets.py"), os.path.join(ROOT, "starters", "bullets_starter.py"),
+                {"2": {"return None"}, "3": {"return math.inf"}, "4": set(), "5": {"bullet.pos += bullet.vel * dt"}}, 6),
 }
 STEPS = [(lab, step) for lab, (_, _, placeholders, _) in LABS.items() for step in sorted(placeholders)]
 

@@ -1,0 +1,304 @@
+"""The Bullets mistake corpus: plausible student files and the verdict the checker owes each one.
+
+Every entry is a whole student file built from the CURRENT starter
+(starters/bullets_starter.py): the lines strictly between a step's start
+marker (`# --- step N: ... ---`) and its end marker (`# --- end of step N ---`)
+are replaced by the student's code for that step; a step the entry does not
+give gets the solution's code, read from the same regions of
+solutions/bullets.py, so the corpus follows the lab when the lab changes.
+An entry that changes code OUTSIDE the steps lists exact (old, new) edits,
+applied after the steps are filled; each old must occur exactly once
+(tests/mutants.py).
+
+Verdicts:
+  CORRECT entries: every check passes.
+  WRONG entries: `check` fails (or errors, for a crash; `status` lists what is
+  accepted) and its JSON `step` is `step`; every other function check passes,
+  and so do loads, handout_unchanged and runtime_lines unless the mistake is
+  outside the steps (then handout_unchanged is the check that fails). The scene
+  checks need every function check, so they are not constrained for a wrong entry.
+
+Each entry's `why` says which input shows the mistake (wrong) or why the code is
+the lesson's formula in another style (correct).
+
+    build(name) -> source text
+    write_corpus(directory, names=None) -> {name: path}
+"""
+import os
+import sys
+import textwrap
+from typing import NamedTuple
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mutants  # noqa: E402
+
+from checker.handout import step_regions  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "bullets_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "bullets.py")
+STEPS = (2, 3, 4, 5)
+
+# the checker's checks and the lesson step each one's hint names
+CHECK_STEP = {
+    "loads": None, "handout_unchanged": None, "runtime_lines": None,
+    "toi_matches_root": 2, "bounding_circle": 3, "broad_test": 4, "swept_move_resolves": 5,
+    "runs": None, "ccd_never_tunnels": None, "substeps_still_tunnel": None, "crate_momentum": None,
+}
+FUNCTION_CHECKS = ("toi_matches_root", "bounding_circle", "broad_test", "swept_move_resolves")
+
+
+class Entry(NamedTuple):
+    name: str
+    what: str            # what the student did, one line
+    steps: dict          # {step: code} (dedented)
+    edits: tuple         # ((old, new), ...) outside the steps
+    check: str           # "pass", or the id of the check that must fail
+    step: object         # the lesson step the failing check's hint names (None for correct / outside)
+    status: tuple        # accepted statuses of that check
+    why: str
+
+
+def _code(text):
+    return textwrap.dedent(text).strip("\n")
+
+
+def wrong(name, what, check, steps=None, edits=(), status=("fail",), why=""):
+    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
+                 CHECK_STEP[check], tuple(status), why)
+
+
+def correct(name, what, steps, why):
+    return Entry(name, what, {k: _code(v) for k, v in steps.items()}, (), "pass", None, ("pass",), why)
+
+
+# the first lines of step 2 as the lesson writes them, indented like the entries' code below
+TOI_HEAD = """
+        c = dp.dot(dp) - reach * reach
+        if c <= 0:
+            return 0.0
+        a = dv.dot(dv)
+        b = 2 * dp.dot(dv)
+        disc = b * b - 4 * a * c"""
+
+WRONG = [
+    # ---- step 2: circle_toi
+    wrong("toi_later_root", "takes the later root (-b + √disc) / 2a", "toi_matches_root", {2: TOI_HEAD + """
+        if a == 0 or disc < 0:
+            return None
+        t = (-b + math.sqrt(disc)) / (2 * a)
+        return t if 0 <= t <= dt else None
+    """}, why="head-on at 3000 px/s: 22.3 ms (when the circles would stop touching) instead of 17.7 ms"),
+    wrong("toi_disc_sign_flipped", "returns None when the discriminant is POSITIVE", "toi_matches_root", {2: TOI_HEAD + """
+        if a == 0 or disc > 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if 0 <= t <= dt else None
+    """}, status=("fail", "error"), why="every real hit (disc > 0) is reported as a miss"),
+    wrong("toi_a_not_squared", "a = |dv| instead of dv·dv = |dv|²", "toi_matches_root", {2: """
+        c = dp.dot(dp) - reach * reach
+        if c <= 0:
+            return 0.0
+        a = dv.length()
+        b = 2 * dp.dot(dv)
+        disc = b * b - 4 * a * c
+        if a == 0 or disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if 0 <= t <= dt else None
+    """}, why="the head-on time comes out thousands of times too large (or no contact at all)"),
+    wrong("toi_no_past_check", "no early-out for circles moving apart (negative t returned)", "toi_matches_root",
+          {2: TOI_HEAD + """
+        if a == 0 or disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if t <= dt else None
+    """}, why="two circles moving apart get a time in the past, -0.17 s"),
+    wrong("toi_no_touching_case", "forgets the already-touching case (c <= 0)", "toi_matches_root", {2: """
+        c = dp.dot(dp) - reach * reach
+        a = dv.dot(dv)
+        b = 2 * dp.dot(dv)
+        disc = b * b - 4 * a * c
+        if a == 0 or disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if 0 <= t <= dt else None
+    """}, why="overlapping circles: the earlier root is -0.01 s, so None instead of 0.0"),
+    wrong("toi_ignores_dt", "returns a root later than this step's dt", "toi_matches_root", {2: TOI_HEAD + """
+        if a == 0 or disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if t >= 0 else None
+    """}, why="a circle 195 px away at 1200 px/s is hit after 0.16 s, not within 1/120 s"),
+    wrong("toi_b_sign", "b = -2 dp·dv (the gap taken the other way round)", "toi_matches_root", {2: """
+        c = dp.dot(dp) - reach * reach
+        if c <= 0:
+            return 0.0
+        a = dv.dot(dv)
+        b = -2 * dp.dot(dv)
+        disc = b * b - 4 * a * c
+        if a == 0 or disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if 0 <= t <= dt else None
+    """}, why="approaching circles get negative roots: no contact"),
+    wrong("toi_parallel_crash", "no a == 0 test: parallel paths at the same velocity divide by zero",
+          "toi_matches_root", {2: TOI_HEAD + """
+        if disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if 0 <= t <= dt else None
+    """}, status=("error", "fail"), why="ZeroDivisionError for two circles moving together"),
+    # ---- step 3: bounding_radius
+    wrong("bounding_half_width", "half the width (largest |x - centre.x|)", "bounding_circle", {3: """
+        return max(abs(p.x - centre.x) for p in points)
+    """}, why="a 40 x 40 crate gets 20 px instead of 28.3: its corners stick out"),
+    wrong("bounding_nearest_corner", "the NEAREST point's distance", "bounding_circle", {3: """
+        return min(centre.distance_to(p) for p in points)
+    """}, why="right for boxes around their centre; the uneven pentagon shows it"),
+    wrong("bounding_average", "the average distance to the points", "bounding_circle", {3: """
+        return sum(centre.distance_to(p) for p in points) / len(points)
+    """}, why="the uneven pentagon's farthest corner is outside the average"),
+    # ---- step 4: the broad test
+    wrong("broad_test_missing", "no broad test: every crate goes to the exact swept test", "broad_test", {4: """
+        pass
+    """}, why="a crate the bullet cannot reach still costs a circle_polygon_toi() call"),
+    wrong("broad_zero_is_falsy", "`if not circle_toi(...)`: t = 0.0 (inside the bounding circle) counts as a miss",
+          "broad_test", {4: """
+        if not circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(),
+                          bounding_radius(points, other.pos), dt):
+            return None
+    """}, why="a bullet already inside a tall crate's bounding circle, 1 px from its side, never hits it"),
+    wrong("broad_inverted", "returns None when the bounding circle IS reached", "broad_test", {4: """
+        if circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(),
+                      bounding_radius(points, other.pos), dt) is not None:
+            return None
+    """}, why="every crate that could be hit is skipped"),
+    # ---- step 5: the swept move
+    wrong("swept_stops_at_impact", "moves to the impact and resolves, but never spends the rest of the step",
+          "swept_move_resolves", {5: """
+        bullet.pos += bullet.vel * t
+        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
+    """}, why="the bullet stays stuck at the wall's face for the rest of the step"),
+    wrong("swept_old_velocity", "spends the rest of the step with the velocity from before the hit",
+          "swept_move_resolves", {5: """
+        velocity = Vector2(bullet.vel)
+        bullet.pos += velocity * t
+        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
+        bullet.pos += velocity * (dt - t)
+    """}, why="the bullet ends 40 px past the wall at 12000 px/s"),
+    wrong("swept_whole_step_after", "moves a whole dt after the impact instead of dt - t", "swept_move_resolves", {5: """
+        bullet.pos += bullet.vel * t
+        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
+        bullet.pos += bullet.vel * dt
+    """}, why="the bounce goes back too far: the step lasted t + dt"),
+    wrong("swept_resolve_before_move", "resolves at the start of the step, then moves the whole dt", "swept_move_resolves",
+          {5: """
+        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
+        bullet.pos += bullet.vel * dt
+    """}, why="the bullet turns back before it reaches the wall: it never touches it"),
+    # ---- outside the steps
+    wrong("wall_thickened", "makes the wall 20 px thick so nothing tunnels", "handout_unchanged",
+          edits=[("WALL_WIDTH = 4.0 ", "WALL_WIDTH = 20.0 ")], why="a handed-out constant changed"),
+    wrong("world_not_hooked", "BulletWorld no longer uses this file's swept_move()", "handout_unchanged",
+          edits=[("    def swept_move(self, bullet, dt):\n        swept_move(self, bullet, dt)\n",
+                  "    pass\n")], why="the World's own swept move would run instead of the student's"),
+]
+
+CORRECT = [
+    correct("correct_solution_steps", "the solution's own code in every step", {},
+            why="the reference build is the solution, byte for byte"),
+    correct("correct_half_b", "the quadratic with half of b (b' = dp·dv, t = (-b' - √(b'² - ac)) / a)", {2: """
+        c = dp.dot(dp) - reach ** 2
+        if c <= 0:
+            return 0.0
+        a = dv.dot(dv)
+        half_b = dp.dot(dv)
+        quarter_disc = half_b * half_b - a * c
+        if a == 0 or quarter_disc < 0:
+            return None
+        t = (-half_b - math.sqrt(quarter_disc)) / a
+        if t < 0 or t > dt:
+            return None
+        return t
+    """}, why="dividing the quadratic by 2 changes no root"),
+    correct("correct_stable_root", "the earlier root as 2c / (-b + √disc), squared distances, a named broad result",
+            {2: TOI_HEAD + """
+        if a == 0 or disc < 0:
+            return None
+        t = 2 * c / (-b + math.sqrt(disc))  # the same root, without cancellation
+        return t if 0 <= t <= dt else None
+    """, 3: """
+        return math.sqrt(max((p - centre).length_squared() for p in points))
+    """, 4: """
+        reach_time = circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(),
+                                bounding_radius(points, other.pos), dt)
+        if reach_time is None:
+            return None
+    """}, why="(-b - √disc)/2a = 2c/(-b + √disc) when the earlier root is positive; the same radius squared first"),
+    correct("correct_named_rest", "swept move with the remaining time named and the contact point named", {5: """
+        remaining = dt - t
+        bullet.pos = bullet.pos + bullet.vel * t
+        contact = bullet.pos + normal * bullet.radius
+        world.resolve(bullet, other, normal, contact)
+        bullet.pos = bullet.pos + bullet.vel * remaining
+    """}, why="the same three moves in other words"),
+]
+
+ENTRIES = CORRECT + WRONG
+BY_NAME = {entry.name: entry for entry in ENTRIES}
+
+
+def regions(source, where="file"):
+    """{step: (start marker index, end marker index, indent)} for steps 2-5 (checker/handout.py's step_regions)."""
+    found = step_regions(source.split("\n"))
+    missing = [step for step in STEPS if step not in found]
+    if missing:
+        raise AssertionError(f"{where}: step {missing[0]} has no `# --- step {missing[0]}: ... ---` region")
+    return found
+
+
+def step_code(source, where="file"):
+    """{step: the dedented code strictly between the step's markers}."""
+    lines = source.split("\n")
+    return {step: textwrap.dedent("\n".join(lines[start + 1:end])).strip("\n")
+            for step, (start, end, _) in regions(source, where).items()}
+
+
+def fill(source, codes, where="file"):
+    """source with the inside of each step in codes replaced by that code, indented like the step's marker."""
+    lines = source.split("\n")
+    found = regions(source, where)
+    for step in sorted(codes, key=lambda s: -found[s][0]):
+        start, end, indent = found[step]
+        body = [indent + line if line.strip() else "" for line in codes[step].split("\n")] if codes[step] else []
+        lines[start + 1:end] = body
+    return "\n".join(lines)
+
+
+def _read(path):
+    with open(path, encoding="utf-8") as handle:
+        return handle.read()
+
+
+def build(name, starter=None, solution=None):
+    """The source of entry `name`: the starter, its steps filled (the entry's code, else the solution's), then edits."""
+    entry = BY_NAME[name]
+    starter = _read(STARTER) if starter is None else starter
+    solution = _read(SOLUTION) if solution is None else solution
+    codes = step_code(solution, "solutions/bullets.py")
+    codes.update(entry.steps)
+    source = fill(starter, codes, "starters/bullets_starter.py")
+    return mutants.apply_edits(source, entry.edits, name, "the built file", "tests/corpus_bullets.py")
+
+
+def write_corpus(directory, names=None):
+    """Write NAME.py into directory for each entry (all by default); returns {name: path}."""
+    starter, solution = _read(STARTER), _read(SOLUTION)
+    paths = {}
+    for name in (BY_NAME if names is None else names):
+        path = os.path.join(str(directory), name + ".py")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(build(name, starter, solution))
+        paths[name] = path
+    return paths
