@@ -39,7 +39,7 @@ from lesson11.physics2d.draw import draw_body, draw_contacts, draw_text
 
 WIDTH, HEIGHT = 900, 600
 GUN = Vector2(40, 250)       # px, where bullets start
-WALL_X = 640.0               # px, the centre line of the thin wall
+WALL_X = 470.0               # px, the centre line of the thin wall
 WALL_WIDTH = 4.0             # px: thinner than one step of a fast bullet
 WALL_TOP, WALL_BOTTOM = 40.0, 440.0   # px, the wall's vertical extent
 BULLET_RADIUS = 3.0          # px
@@ -179,7 +179,7 @@ def make_scene(rng):
     """The floor, the thin wall and three crates on the floor between the gun and the wall."""
     floor = Body(box_points(WIDTH, 40), (WIDTH / 2, HEIGHT - 20), 0, color=GREY)
     crates = []
-    for x, (w, h) in zip((380, 460, 540), ((40, 40), (50, 70), (36, 100))):
+    for x, (w, h) in zip((250, 320, 390), ((40, 40), (50, 70), (36, 100))):
         color = (rng.randint(170, 240), rng.randint(110, 170), rng.randint(60, 110))
         crates.append(Body(box_points(w, h), (x, HEIGHT - 40 - h / 2), w * h / 1000, color=color))
     return [floor, make_wall()] + crates
@@ -211,6 +211,8 @@ def main():
     world = make_world(rng, mode)
     fired = tunnelled = 0
     seen = set()   # ids of the bullets already counted as tunnelled
+    marks = []     # heights (px) where bullets went through the wall, drawn as red ticks
+    streaks = []   # (from, to) of every bullet's move in the last frame
     spent = []     # physics ms of the last frames
     debug = True
     running = True
@@ -231,12 +233,14 @@ def main():
             elif event.type == pygame.KEYDOWN and event.key in MODE_KEYS:
                 mode = MODE_KEYS[event.key]
                 apply_mode(world, mode)
+                panel.change("substeps", MODES[mode])  # solver panel: shows the mode's sub-steps
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_v:
                 speed = SPEEDS[(SPEEDS.index(speed) + 1) % len(SPEEDS)]
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_r:
                 world = make_world(rng, mode)
                 fired = tunnelled = 0
                 seen.clear()
+                marks.clear()
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_d:
                 debug = not debug
         bullets = [body for body in world.bodies if body.bullet]
@@ -248,6 +252,9 @@ def main():
             if id(body) not in seen and crossed_wall(before[id(body)], body.pos):
                 seen.add(id(body))
                 tunnelled += 1
+                marks.append(before[id(body)].y + (body.pos.y - before[id(body)].y)
+                             * (WALL_X - before[id(body)].x) / (body.pos.x - before[id(body)].x))
+        streaks = [(before[id(body)], Vector2(body.pos)) for body in bullets]
         for body in bullets[:-MAX_BULLETS] + [b for b in bullets if not -50 < b.pos.x < WIDTH + 50
                                               or not -50 < b.pos.y < HEIGHT + 50]:
             if body in world.bodies:
@@ -258,6 +265,10 @@ def main():
         for body in world.bodies:
             draw_body(screen, body)
         pygame.draw.circle(screen, BULLET_COLOR, GUN, 8, 2)
+        for start, end in streaks:  # where each bullet went this frame
+            pygame.draw.line(screen, BULLET_COLOR, start, end, 1)
+        for y in marks[-50:]:  # where bullets tunnelled
+            pygame.draw.line(screen, (235, 80, 80), (WALL_X - 8, y), (WALL_X + 8, y), 2)
         if debug:
             draw_contacts(screen, world.contacts)
         hud = (f"{MODE_NAMES[mode]} | {speed} px/s | fired {fired} | tunnelled {tunnelled} | "
