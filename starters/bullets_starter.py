@@ -82,8 +82,9 @@ def circle_toi(p1, v1, r1, p2, v2, r2, dt):
 def bounding_radius(points, centre):
     """The radius (px) of the smallest circle around `centre` that holds every point of the outline."""
     # --- step 3: the crate's bounding circle ---
-    # Step 3 (lesson: "Going Further"): the bounding circle around `centre` must hold every point: return the largest
-    # distance from centre to a point of the outline (centre.distance_to(p)).
+    # Step 3 (lesson: "Going Further"): the bounding circle around `centre` must hold every
+    # point: return the largest distance from centre to a point of the outline
+    # (centre.distance_to(p)).
     return math.inf  # until you write step 3, every bounding circle is endless
     # --- end of step 3 ---
 
@@ -105,9 +106,9 @@ def time_of_impact(bullet, other, dt):
         return t, (gap.normalize() if gap.length_squared() > 0 else Vector2(1, 0))
     points = other.world_points()
     # --- step 4: the broad test against the bounding circle ---
-    # Step 4 (lesson: "Going Further"): the broad test. Call circle_toi() for the bullet (pos, vel, radius) against the crate's
-    # bounding circle: centre other.pos, not moving (Vector2()), radius bounding_radius(points, other.pos),
-    # over dt. If it finds no contact (None, not merely 0.0), the bullet cannot reach the crate this
+    # Step 4 (lesson: "Going Further"): the broad test. Call circle_toi() for the bullet
+    # (pos, vel, radius) against the crate's bounding circle: centre other.pos, not moving
+    # (Vector2()), radius bounding_radius(points, other.pos), over dt. If it finds no contact (None, not merely 0.0), the bullet cannot reach the crate this
     # step: return None at once, before the exact swept test below.
     # --- end of step 4 ---
     return circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, points, dt)
@@ -136,8 +137,8 @@ def swept_move(world, bullet, dt):
         return
     t, normal, other = first
     # --- step 5: move to the impact, resolve there, spend the rest of the step ---
-    # Step 5 (lesson: "Tunneling"): move the bullet to its time of impact (bullet.pos += bullet.vel * t), resolve the hit
-    # there with world.resolve(bullet, other, normal, point), the point being on the bullet's surface
+    # Step 5 (lesson: "Tunneling"): move the bullet to its time of impact
+    # (bullet.pos += bullet.vel * t), resolve the hit there with world.resolve(bullet, other, normal, point), the point being on the bullet's surface
     # (bullet.pos + normal * bullet.radius), then spend the rest of the step, dt - t, moving with
     # the bullet's NEW velocity.
     bullet.pos += bullet.vel * dt  # until you write step 5, a bullet ignores the impact it found
