@@ -7,7 +7,7 @@ scenarios()) and add one row to LABS.
 """
 from dataclasses import dataclass
 
-from . import ball_on_ramp, more_shapes, tumbling_crates
+from . import ball_on_ramp, more_shapes, sleeping_crates, tumbling_crates
 
 
 @dataclass(frozen=True)
@@ -37,6 +37,7 @@ LABS = (
     Lab("tumbling_crates", tumbling_crates.TITLE, tumbling_crates),
     Lab("more_shapes", more_shapes.TITLE, more_shapes),
     Lab("ball_on_ramp", ball_on_ramp.TITLE, ball_on_ramp),
+    Lab("sleeping_crates", sleeping_crates.TITLE, sleeping_crates),
 )
 
 

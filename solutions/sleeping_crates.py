@@ -10,7 +10,7 @@ and the floor). An awake crate that touches a sleeping one wakes it, and the
 island it fell asleep with.
 
 physics2d's World runs the "sleep" effect; this file hands it three functions,
-as Tumbling Crates hands in sat():
+as the lesson's project hands in sat():
     sleep_timer(timer, speed, spin, dt)   after every step, for every awake crate
     moves(body)                           which bodies are integrated and tested
     wake_on_contact(a, b)                 for every touching pair: which bodies to wake

@@ -66,6 +66,9 @@ LABS = {
                      os.path.join(ROOT, "starters", "ball_on_ramp_starter.py"),
                      {step: {"return pygame.Vector2(math.inf, math.inf)", "return math.inf", "return center"}
                       for step in ("2", "3", "4", "5", "6", "7")}, 8),
+    "sleeping_crates": (os.path.join(ROOT, "solutions", "sleeping_crates.py"),
+                        os.path.join(ROOT, "starters", "sleeping_crates_starter.py"),
+                        {"2": {"return 0.0"}, "3": {"return body.inv_mass != 0"}, "4": {"return []"}}, 5),
 }
 STEPS = [(lab, step) for lab, (_, _, placeholders, _) in LABS.items() for step in sorted(placeholders)]
 
