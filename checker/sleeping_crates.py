@@ -122,11 +122,11 @@ def _timer_mistake(case, got):
     calm = want != 0.0
     if calm and abs(got - (timer + 1)) <= ABS:
         return " That adds 1 (a frame) per step; the timer counts seconds: add dt."
+    if calm and abs(got - timer) <= ABS:
+        return " The timer did not grow: add dt while the crate is calm."
     if calm and abs(got) <= ABS:
         return " The timer went back to 0 although the crate is calm" + (
             ": its spin is negative, so compare abs(spin)." if case["spin"] < 0 else ".")
-    if calm and abs(got - timer) <= ABS:
-        return " The timer did not grow: add dt while the crate is calm."
     if not calm and abs(got - timer) <= ABS:
         return (" The timer kept its value: a crate that moves must start again from 0, or a throw that is slow "
                 "at its top adds up calm instants and sleeps in the air.")
@@ -209,8 +209,8 @@ def wakes_on_contact(sub, functions):
 
 # ---------------------------------------------------------------- the cost criterion
 
-@CHECKS.check(depends=["loads", "skips_sleepers", "wakes_on_contact"], max_score=2)
-def narrow_work(sub, functions, moves, wake):
+@CHECKS.check(depends=["loads", "timer_rule", "skips_sleepers", "wakes_on_contact"], max_score=2)
+def narrow_work(sub, functions, timer, moves, wake):
     """With a 40-crate pile asleep a step does at most a tenth of the narrow-phase tests of the same pile awake."""
     data = _function(sub, functions, "narrow_work", "build", None)
     awake, asleep = data["awake"], data["asleep"]
