@@ -9,6 +9,9 @@ A lab can hand in its own `sat`, `resolve` and `separate` (and, for balls,
 loop, so a student's functions run the whole simulation.
 
 World.step reads top to bottom, one comment per phase, for both solvers.
+With the "sleep" effect, step() ends with update_sleep (sleep timers, then
+calm islands fall asleep), and manifolds() visits only pairs in which a body
+moves and wakes what an awake body touches (the hooks sleep_timer, moves, wake).
 """
 import math
 from collections import namedtuple
