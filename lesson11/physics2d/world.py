@@ -507,9 +507,9 @@ class World:
         """Gravity for every dynamic body: v += g dt (only if the scene declares "gravity")."""
         if "gravity" not in self.effects:
             return
-        moves = self.moves if "sleep" in self.effects else None
-        for body in self.bodies:
-            if body.inv_mass != 0 and (moves is None or moves(body)):
+        bodies = [body for body in self.bodies if self.moves(body)] if "sleep" in self.effects else self.bodies
+        for body in bodies:
+            if body.inv_mass != 0:
                 body.vel += self.gravity * dt
 
     def body_motion(self, start, motion):
@@ -527,9 +527,9 @@ class World:
         """Move every dynamic body: x += v dt, angle += ω dt (semi-implicit Euler, after the velocities)."""
         rotation = "rotation" in self.effects
         ccd = "ccd" in self.effects
-        moves = self.moves if "sleep" in self.effects else None
-        for body in self.bodies:
-            if body.inv_mass == 0 or (moves is not None and not moves(body)):
+        bodies = [body for body in self.bodies if self.moves(body)] if "sleep" in self.effects else self.bodies
+        for body in bodies:
+            if body.inv_mass == 0:
                 continue
             if ccd and body.bullet and body.shape.kind == "circle":
                 self.swept_move(body, dt)
