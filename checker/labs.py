@@ -7,7 +7,7 @@ scenarios()) and add one row to LABS.
 """
 from dataclasses import dataclass
 
-from . import ball_on_ramp, bullets, more_shapes, tumbling_crates
+from . import ball_on_ramp, bullets, more_shapes, sleeping_crates, tumbling_crates
 
 
 @dataclass(frozen=True)
@@ -38,6 +38,7 @@ LABS = (
     Lab("more_shapes", more_shapes.TITLE, more_shapes),
     Lab("ball_on_ramp", ball_on_ramp.TITLE, ball_on_ramp),
     Lab("bullets", bullets.TITLE, bullets),
+    Lab("sleeping_crates", sleeping_crates.TITLE, sleeping_crates),
 )
 
 

@@ -28,7 +28,7 @@ Settings (all optional):
 
 Each recorded frame holds "frame", "contacts" (how many), "touching" (each
 contact: body indices "a" and "b", "point", "normal" A→B, "depth") and
-"bodies" (each: "static", "pos", "vel", "angle", "omega", "points").
+"bodies" (each: "static", "asleep" (the "sleep" effect), "pos", "vel", "angle", "omega", "points").
 """
 import atexit
 import json
@@ -203,6 +203,7 @@ def record(bodies, contacts=()):
         "touching": [_contact(c, index) for c in contacts],
         "bodies": [{
             "static": body.inv_mass == 0,
+            "asleep": bool(getattr(body, "asleep", False)),
             "pos": [body.pos.x, body.pos.y],
             "vel": [body.vel.x, body.vel.y],
             "angle": body.angle,

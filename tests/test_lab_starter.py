@@ -68,6 +68,9 @@ LABS = {
                       for step in ("2", "3", "4", "5", "6", "7")}, 8),
     "bullets": (os.path.join(ROOT, "solutions", "bullets.py"), os.path.join(ROOT, "starters", "bullets_starter.py"),
                 {"2": {"return None"}, "3": {"return math.inf"}, "4": set(), "5": {"bullet.pos += bullet.vel * dt"}}, 6),
+    "sleeping_crates": (os.path.join(ROOT, "solutions", "sleeping_crates.py"),
+                        os.path.join(ROOT, "starters", "sleeping_crates_starter.py"),
+                        {"2": {"return 0.0"}, "3": {"return body.inv_mass != 0"}, "4": {"return []"}}, 5),
 }
 STEPS = [(lab, step) for lab, (_, _, placeholders, _) in LABS.items() for step in sorted(placeholders)]
 

@@ -151,7 +151,7 @@ def test_checker_record_file_has_the_expected_keys(tmp_path):
     assert set(frame["touching"][0]) == {"a", "b", "point", "normal", "depth"}
     assert (frame["touching"][0]["a"], frame["touching"][0]["b"]) == (0, 1)
     body = frame["bodies"][1]
-    assert set(body) == {"static", "pos", "vel", "angle", "omega", "points"}
+    assert set(body) == {"static", "asleep", "pos", "vel", "angle", "omega", "points"}
     assert body["static"] is False and len(body["points"]) == 4
     assert frame["bodies"][0]["static"] is True
 

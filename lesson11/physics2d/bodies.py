@@ -52,6 +52,8 @@ class Body:
             raise ValueError(f"body friction must be >= 0, got {self.friction}")
         self.color = color
         self.bullet = bool(bullet)
+        self.asleep = False    # "sleep" effect: a sleeping body is not integrated (World.update_sleep)
+        self.sleep_time = 0.0  # s its speed and spin have stayed under the world's sleep thresholds
         self.mass = mass
         if inertia is not None:
             inertia = finite_number(inertia, "body inertia")

@@ -9,6 +9,9 @@ A lab can hand in its own `sat`, `resolve` and `separate` (and, for balls,
 loop, so a student's functions run the whole simulation.
 
 World.step reads top to bottom, one comment per phase, for both solvers.
+With the "sleep" effect, step() ends with update_sleep (sleep timers, then
+calm islands fall asleep), and manifolds() visits only pairs in which a body
+moves and wakes what an awake body touches (the hooks sleep_timer, moves, wake).
 """
 import math
 from collections import namedtuple
@@ -20,12 +23,15 @@ from .vectors import Vector2, finite_number, finite_vector
 
 GRAVITY = Vector2(0, 980)  # px/s², the course's gravity (y down)
 STEP = 1 / 120             # s, the course's fixed physics step
-EFFECTS = ("gravity", "rotation", "friction", "restitution", "correction", "ccd")
+EFFECTS = ("gravity", "rotation", "friction", "restitution", "correction", "ccd", "sleep")
 SOLVERS = ("lesson", "accumulated")
 ORDERS = ("move-first", "solve-first")
 LESSON_SUBSTEPS = 4        # the lesson solver's sub-steps in the solve-first order (see World.lesson_solve_first)
 CONTACT_RULES = ("corners", "clip")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
+SLEEP_SPEED = 5.0          # px/s: "sleep" effect, a body slower than this (and spinning slower than SLEEP_SPIN) ...
+SLEEP_SPIN = 0.1           # rad/s
+SLEEP_AFTER = 0.5          # s ... for this long, with every body it touches, falls asleep
 
 Contact = namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = "One contact: bodies a and b, the world point (px), the unit normal A→B, the depth (px)."
@@ -143,7 +149,18 @@ class World:
                      soft contacts, sub-steps; for tall stacks and large mass ratios)
       warm_starting  True: the accumulated solver starts from last step's impulses
                      (the lesson solver ignores it)
+      sleep_speed    SLEEP_SPEED = 5 px/s, sleep_spin SLEEP_SPIN = 0.1 rad/s, sleep_after SLEEP_AFTER = 0.5 s:
+                     the "sleep" effect (not in LESSON_EFFECTS; a scene that does not declare it
+                     pays nothing). After each step every awake dynamic body's `sleep_time` is
+                     sleep_timer(sleep_time, speed, spin, dt); an island of touching dynamic bodies
+                     whose sleep_time are all >= sleep_after falls asleep together (`asleep`,
+                     velocity and spin zeroed). Bodies for which moves(body) is False are not
+                     integrated, and a pair in which neither moves is never visited by the broad
+                     phase. For every touching pair found, wake(a, b) returns the bodies to wake;
+                     World.wake(body) wakes the body and the island it fell asleep with.
     Hooks: sat(pa, pb), resolve(a, b, normal, point), separate(a, b, normal, depth);
+      for sleep: sleep_timer(timer, speed, spin, dt) -> the new timer (s), moves(body) -> bool,
+      wake(a, b) -> the bodies to wake (library: sleep_timer_of_world, moves_of_world, wake_of_world);
       for circles: circle_polygon(center, radius, points) -> None or (normal out of the
       circle into the polygon, depth px), the test for every circle–polygon pair, and
       circle_point(center, radius, normal, depth) -> the contact point (world px) of every
@@ -178,13 +195,21 @@ class World:
     warm_starting = _setting("warm_starting", _check_bool("warm_starting"))
     circle_polygon = _setting("circle_polygon", _check_hook("circle_polygon"))
     circle_point = _setting("circle_point", _check_hook("circle_point"))
+    sleep_speed = _setting("sleep_speed", _at_least_zero("sleep_speed", "px/s"))
+    sleep_spin = _setting("sleep_spin", _at_least_zero("sleep_spin", "rad/s"))
+    sleep_after = _setting("sleep_after", _positive_seconds("sleep_after"))
+    sleep_timer = _setting("sleep_timer", _check_hook("sleep_timer"))
+    moves = _setting("moves", _check_hook("moves"))
+    wake_pair = _setting("wake_pair", _check_hook("wake"))
 
     def __init__(self, bodies=(), *, gravity=GRAVITY, step_seconds=STEP, iterations=6, substeps=None,
                  slop=response.SLOP, percent=response.PERCENT, resting_speed=response.RESTING_SPEED,
                  max_frame=0.25, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
                  warm_starting=True, order="solve-first", sat=None, resolve=None, separate=None,
-                 circle_polygon=None, circle_point=None):
+                 circle_polygon=None, circle_point=None, sleep_speed=SLEEP_SPEED, sleep_spin=SLEEP_SPIN,
+                 sleep_after=SLEEP_AFTER, sleep_timer=None, moves=None, wake=None):
         self.arbiters = {}
+        self.touched = set()  # "sleep": pairs (id(a), id(b)) that touched during this step
         self.gravity = gravity
         self.step_seconds = step_seconds
         self.iterations = iterations
@@ -203,6 +228,12 @@ class World:
         self.separate = separate or self.lesson_separate
         self.circle_polygon = circle_polygon or collision.circle_polygon
         self.circle_point = circle_point or collision.circle_contact_point
+        self.sleep_speed = sleep_speed
+        self.sleep_spin = sleep_spin
+        self.sleep_after = sleep_after
+        self.sleep_timer = sleep_timer or self.sleep_timer_of_world
+        self.moves = moves or self.moves_of_world
+        self.wake_pair = wake or self.wake_of_world
         self.bodies = []
         self.contacts = []
         self.accumulator = 0.0
@@ -233,6 +264,74 @@ class World:
     def lesson_separate(self, a, b, normal, depth):
         """The library's separate() with this world's slop and percent."""
         response.separate(a, b, normal, depth, self.slop, self.percent)
+
+    # ---------------------------------------------------------------- the "sleep" effect
+
+    def sleep_timer_of_world(self, timer, speed, spin, dt):
+        """The library's sleep timer: timer + dt (s) while speed < sleep_speed and |spin| < sleep_spin, else 0."""
+        return timer + dt if speed < self.sleep_speed and abs(spin) < self.sleep_spin else 0.0
+
+    @staticmethod
+    def moves_of_world(body):
+        """The library's rule: a body is integrated (and its pairs tested) if it is dynamic and awake."""
+        return body.inv_mass != 0 and not body.asleep
+
+    @staticmethod
+    def wake_of_world(a, b):
+        """The library's rule: of a touching pair, the sleeping body is woken if the other is dynamic and awake."""
+        return [sleeper for sleeper, other in ((a, b), (b, a))
+                if sleeper.asleep and other.inv_mass != 0 and not other.asleep]
+
+    def wake(self, body):
+        """Wake `body` and every body that fell asleep in the same island (timers back to 0)."""
+        for other in getattr(body, "island", None) or [body]:
+            if other.asleep:
+                other.asleep = False
+                other.sleep_time = 0.0
+                other.island = None
+        body.asleep = False
+        body.sleep_time = 0.0
+
+    def fall_asleep(self, bodies):
+        """Put these dynamic bodies to sleep together, as one island: no velocity, no spin."""
+        island = list(bodies)
+        for body in island:
+            body.asleep = True
+            body.vel = Vector2()
+            body.omega = 0.0
+            body.island = island
+
+    def update_sleep(self, dt):
+        """After a step: each awake dynamic body's sleep_time = sleep_timer(...); calm islands fall asleep.
+
+        An island is a group of awake dynamic bodies joined by the pairs that touched
+        in any contact search of this step
+        (static bodies do not join islands); it sleeps when every member's
+        sleep_time >= sleep_after, so a pile sleeps as one (and World.wake wakes it
+        as one).
+        """
+        awake = [body for body in self.bodies if body.inv_mass != 0 and not body.asleep]
+        for body in awake:
+            timer = finite_number(self.sleep_timer(body.sleep_time, body.vel.length(), body.omega, dt),
+                                  "sleep_timer's result")
+            body.sleep_time = timer
+        parent = {id(body): id(body) for body in awake}
+
+        def root(key):
+            while parent[key] != key:
+                parent[key] = parent[parent[key]]
+                key = parent[key]
+            return key
+        for ka, kb in self.touched:
+            if ka in parent and kb in parent:
+                parent[root(ka)] = root(kb)
+        self.touched = set()
+        islands = {}
+        for body in awake:
+            islands.setdefault(root(id(body)), []).append(body)
+        for members in islands.values():
+            if all(body.sleep_time >= self.sleep_after for body in members):
+                self.fall_asleep(members)
 
     def advance(self, frame_seconds):
         """Run as many fixed steps as fit in the frame's time (s), carrying the remainder.
@@ -329,6 +428,8 @@ class World:
                     arbiter.bounce(self.resting_speed)
             self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
                              for arb in arbiters.values() for c in arb.points]
+        if "sleep" in self.effects:
+            self.update_sleep(dt)
         self.time += dt
         self.counters["steps"] += 1
         for index, body in enumerate(self.bodies):
@@ -406,7 +507,8 @@ class World:
         """Gravity for every dynamic body: v += g dt (only if the scene declares "gravity")."""
         if "gravity" not in self.effects:
             return
-        for body in self.bodies:
+        bodies = [body for body in self.bodies if self.moves(body)] if "sleep" in self.effects else self.bodies
+        for body in bodies:
             if body.inv_mass != 0:
                 body.vel += self.gravity * dt
 
@@ -425,7 +527,8 @@ class World:
         """Move every dynamic body: x += v dt, angle += ω dt (semi-implicit Euler, after the velocities)."""
         rotation = "rotation" in self.effects
         ccd = "ccd" in self.effects
-        for body in self.bodies:
+        bodies = [body for body in self.bodies if self.moves(body)] if "sleep" in self.effects else self.bodies
+        for body in bodies:
             if body.inv_mass == 0:
                 continue
             if ccd and body.bullet and body.shape.kind == "circle":
@@ -481,11 +584,17 @@ class World:
         """Every touching pair now: yields (a, b, Manifold) (collision.collide with this world's rule and sat).
 
         Broad phase first: pairs of static bodies and pairs whose bounding boxes
-        are apart are skipped; the rest go to the narrow phase. speculative=dt
+        are apart are skipped; the rest go to the narrow phase. With "sleep", a
+        pair in which neither body moves (moves(body) False: static or asleep) is
+        never visited, and each touching pair may wake bodies (wake(a, b)). speculative=dt
         (s) also yields pairs that could touch within dt: closer than
         SPECULATIVE_MARGIN plus both bodies' reach, with negative depths.
         """
         bodies = self.bodies
+        sleep = "sleep" in self.effects
+        if sleep:
+            yield from self.manifolds_sleeping(speculative)
+            return
         shapes = self.world_shapes()
         boxes = [body.aabb(points) for body, points in zip(bodies, shapes)]
         reach = [self.reach(body, speculative) if speculative else 0.0 for body in bodies]
@@ -505,4 +614,47 @@ class World:
                                              self.circle_polygon, self.circle_point)
                 if manifold is not None:
                     self.counters["contacts"] += len(manifold.points)
+                    yield a, b, manifold
+
+    def manifolds_sleeping(self, speculative=None):
+        """manifolds() with the "sleep" effect: only pairs in which a body moves are visited.
+
+        World points and bounding boxes are computed only for the bodies of
+        visited pairs, so a sleeping pile costs neither. Each touching pair is
+        handed to wake(a, b) and every body it returns is woken (World.wake)
+        before the pair is yielded; the pair is remembered for the islands of
+        update_sleep.
+        """
+        bodies = self.bodies
+        moving = [self.moves(body) for body in bodies]
+        if not any(moving):
+            return
+        shapes, boxes = {}, {}
+
+        def shape_box(k):
+            if k not in shapes:
+                shapes[k] = bodies[k].world_points()
+                boxes[k] = bodies[k].aabb(shapes[k])
+            return shapes[k], boxes[k]
+        for i in range(len(bodies)):
+            for j in range(i + 1, len(bodies)):
+                if not moving[i] and not moving[j]:
+                    continue
+                a, b = bodies[i], bodies[j]
+                self.counters["pair_tests"] += 1
+                (shape_a, box_a), (shape_b, box_b) = shape_box(i), shape_box(j)
+                margin = SPECULATIVE_MARGIN + self.reach(a, speculative) + self.reach(b, speculative) \
+                    if speculative else 0.0
+                if box_a[2] + margin < box_b[0] or box_b[2] + margin < box_a[0] or \
+                        box_a[3] + margin < box_b[1] or box_b[3] + margin < box_a[1]:
+                    continue  # broad phase: bounding boxes apart
+                self.counters["narrow_tests"] += 1
+                manifold = collision.collide(a, b, shape_a, shape_b, self.contact_rule, self.sat, margin,
+                                             self.circle_polygon, self.circle_point)
+                if manifold is not None:
+                    self.counters["contacts"] += len(manifold.points)
+                    for body in self.wake_pair(a, b) or ():
+                        self.wake(body)
+                        moving = [self.moves(other) for other in bodies]
+                    self.touched.add((id(a), id(b)))
                     yield a, b, manifold

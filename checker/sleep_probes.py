@@ -1,0 +1,157 @@
+"""Probes of a Sleeping Crates file's own functions, run inside the checker's child process.
+
+Each probe calls one of the student's functions on cases chosen to show the
+usual mistakes and returns plain data: what the student's function gave and
+what the lesson's rule gives. The checks in checker/sleeping_crates.py
+compare them in the grading process.
+
+    sleep_timer      (step 2) calm and not calm crates: fast, spinning either way, both
+    moves            (step 3) static, awake, sleeping bodies (and a static body flagged asleep)
+    wake_on_contact  (step 4) every kind of pair, in both orders
+    narrow_work      (the cost criterion) one step of a touching 40-crate grid built by the
+                     lab's build(), awake and then asleep, in a World running the lab's
+                     three functions; World.counters gives the pair and narrow-phase tests
+
+Units: px, s, rad.
+"""
+import time
+
+from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
+
+REQUIRED = ("sleep_timer", "moves", "wake_on_contact", "build", "main")
+SLEEP_SPEED = 5.0   # px/s, the handout's thresholds
+SLEEP_SPIN = 0.1    # rad/s
+DT = 1 / 120        # s, the course's step
+GRID_CRATES = 40
+GRID_COLUMNS = 10
+W, H = 50, 36       # px
+FLOOR_TOP = 560.0   # px
+
+
+def _text(value):
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _number(value):
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return _text(value)
+
+
+# ---------------------------------------------------------------- step 2: sleep_timer
+
+TIMER_CASES = (
+    # (what, timer s, speed px/s, spin rad/s)
+    ("a crate at rest", 0.0, 0.0, 0.0),
+    ("a calm crate, 0.25 s into its timer", 0.25, 2.0, 0.02),
+    ("a calm crate spinning slowly backwards", 0.3, 1.0, -0.05),
+    ("a crate just under the speed threshold", 0.45, 4.9, 0.0),
+    ("a crate moving at 6 px/s", 0.4, 6.0, 0.0),
+    ("a crate falling at 300 px/s", 0.2, 300.0, 0.0),
+    ("a crate spinning at 0.2 rad/s", 0.4, 1.0, 0.2),
+    ("a crate spinning backwards at 0.3 rad/s", 0.4, 1.0, -0.3),
+    ("a crate fast and spinning", 0.1, 40.0, 2.0),
+)
+
+
+def reference_timer(timer, speed, spin, dt):
+    return timer + dt if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN else 0.0
+
+
+def probe_sleep_timer(module, lab_path):
+    """The student's sleep_timer on each case (dt = 1/120 s) beside the rule, and with dt = 1/60 s once."""
+    cases = []
+    for what, timer, speed, spin in TIMER_CASES:
+        for dt in (DT,) if what != "a calm crate, 0.25 s into its timer" else (DT, 1 / 60):
+            cases.append({"case": what, "timer": timer, "speed": speed, "spin": spin, "dt": dt,
+                          "got": _number(module.sleep_timer(timer, speed, spin, dt)),
+                          "want": reference_timer(timer, speed, spin, dt)})
+    return cases
+
+
+# ---------------------------------------------------------------- step 3: moves
+
+def _crate(mass=1.8, asleep=False, pos=(100, 100)):
+    body = Body(box_points(W, H), pos, mass)
+    body.asleep = asleep
+    return body
+
+
+MOVES_CASES = (("the floor (static)", 0.0, False), ("an awake crate", 1.8, False),
+               ("a sleeping crate", 1.8, True), ("a static body flagged asleep", 0.0, True))
+
+
+def probe_moves(module, lab_path):
+    """The student's moves(body) for static, awake and sleeping bodies."""
+    cases = []
+    for what, mass, asleep in MOVES_CASES:
+        got = module.moves(_crate(mass, asleep))
+        cases.append({"case": what, "got": bool(got) if isinstance(got, (bool, int)) else _text(got),
+                      "want": mass != 0 and not asleep})
+    return cases
+
+
+# ---------------------------------------------------------------- step 4: wake_on_contact
+
+KINDS = {"static": (0.0, False), "awake": (1.8, False), "asleep": (1.8, True)}
+PAIRS = (("awake", "asleep"), ("asleep", "awake"), ("static", "asleep"), ("asleep", "static"),
+         ("asleep", "asleep"), ("awake", "awake"), ("awake", "static"))
+
+
+def probe_wake_on_contact(module, lab_path):
+    """The student's wake_on_contact(a, b) for every kind of pair: which of "a" and "b" it returns."""
+    cases = []
+    for kind_a, kind_b in PAIRS:
+        a, b = _crate(*KINDS[kind_a]), _crate(*KINDS[kind_b])
+        got = module.wake_on_contact(a, b)
+        try:
+            woken = sorted({"a" if body is a else "b" if body is b else "another body" for body in (got or ())})
+        except TypeError:
+            woken = _text(got)
+        want = sorted(name for name, me, other in (("a", kind_a, kind_b), ("b", kind_b, kind_a))
+                      if me == "asleep" and other == "awake")
+        cases.append({"a": kind_a, "b": kind_b, "got": woken, "want": want})
+    return cases
+
+
+# ---------------------------------------------------------------- the cost criterion
+
+def grid_items(asleep):
+    """40 crates in 4 rows of 10, each row resting on the one below (0.2 px of overlap, so they touch)."""
+    items = []
+    for k in range(GRID_CRATES):
+        row, column = divmod(k, GRID_COLUMNS)
+        items.append({"w": W, "h": H, "pos": [160 + column * W + (row % 2) * 10,
+                                             FLOOR_TOP - H / 2 + 0.2 - row * (H - 0.2)], "asleep": asleep})
+    return items
+
+
+def grid_world(module, asleep):
+    floor = Body(box_points(900, 40), (450, 580), 0)
+    world = World([floor] + [module.build(item) for item in grid_items(asleep)],
+                  effects=LESSON_EFFECTS | {"sleep"}, sleep_timer=module.sleep_timer, moves=module.moves,
+                  wake=module.wake_on_contact)
+    if asleep:
+        world.fall_asleep(world.bodies[1:])
+    return world
+
+
+def probe_narrow_work(module, lab_path):
+    """One step of the 40-crate grid awake, then asleep: pair and narrow tests (World.counters) and CPU ms."""
+    out = {}
+    for name, asleep in (("awake", False), ("asleep", True)):
+        world = grid_world(module, asleep)
+        start = time.process_time()
+        world.step()
+        out[name] = dict(world.counters, ms=(time.process_time() - start) * 1000,
+                         still_asleep=sum(1 for body in world.bodies if body.asleep))
+    return out
+
+
+# probe name -> (the lab function it needs, the probe)
+PROBES = {"sleep_timer": ("sleep_timer", probe_sleep_timer),
+          "moves": ("moves", probe_moves),
+          "wake_on_contact": ("wake_on_contact", probe_wake_on_contact),
+          "narrow_work": ("build", probe_narrow_work)}

@@ -1,0 +1,301 @@
+"""Sleeping Crates (Lesson 11 "Going Further"): the checks, their bounds and the hints.
+
+Order of checks (stable), one per lesson step where a step is the student's:
+  loads, handout_unchanged, runtime_lines,
+  timer_rule (step 2), skips_sleepers (step 3), wakes_on_contact (step 4),
+  narrow_work (the cost criterion, on a 40-crate grid built by the lab's build()),
+  runs, then the scene's criteria: pile_sleeps, no_sleep_in_air, drop_wakes_pile.
+Checks are worth 1 point, the four criteria 2 points each.
+
+The function checks call the student's sleep_timer, moves and wake_on_contact
+on checker/sleep_probes.py's cases and name the first that differs, and the
+mistake when it is a usual one. narrow_work counts World.counters' narrow-phase
+tests in one step of the same 40-crate pile awake and asleep (deterministic,
+unlike a time). The scene (checker/sleep_scenarios.py) runs only when every
+function check passes.
+
+Every bound of the criteria was set from what solutions/sleeping_crates.py
+measures in the same scene, with the measured value noted next to it.
+"""
+import os
+
+from . import lab_checks
+from . import records as metrics
+from . import sleep_scenarios as scenes
+from .checks import Fail, Hint, Passed, Registry
+from .common import shown
+
+TITLE = "Sleeping Crates"
+PROBES = "checker.sleep_probes"
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
+
+ABS = 1e-9      # s: the timer against the rule (same arithmetic, timer + dt)
+
+# ---------------------------------------------------------------- bounds (measured on the solution)
+NARROW_SHARE = 0.1     # asleep / awake narrow tests in one step of the 40-crate pile; solution: 0 / 484 = 0
+SLEEP_WITHIN = 2.0     # s from settling to every crate of the loose pile asleep; solution: 0.50 s (0.40 -> 0.90)
+SLEPT_BY = 1.4         # s: the loose pile must be asleep before this (the scene lasts 1.5 s); solution: 0.90 s
+WAKE_AGAIN = 1.4       # s: the dropped crate and the pile all asleep again by then; solution: 1.02 s
+PENETRATION = 1.0      # px below the floor's top face at the end; solution: loose 0.26, dropped-on pile 0.24
+PAIR_OVERLAP = 2.0     # px between two crates at the end; solution: loose 0.39, dropped-on pile 0.50
+SINK = 2.0             # px a pile crate's centre ends below where it slept; solution: 0.44
+JUMP = 3.0             # px a pile crate's centre rises above where it slept; solution: 0.04
+THROW_HEIGHT = 60.0    # px the thrown crate must rise (it did leave the floor); solution: 82.2 (v²/2g = 81.6)
+
+# ---------------------------------------------------------------- the hints, in the lesson's terms
+HINTS = {
+    "timer": Hint(2, "the sleep timer",
+                  "While the crate is calm, speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN (spin has a sign: use "
+                  "abs), return timer + dt, the seconds it has been calm. As soon as either is at or above its "
+                  "threshold return 0.0: the timer starts again, so a crate that is slow for one instant (at the "
+                  "top of a throw) never reaches SLEEP_AFTER. dt is in seconds, not frames."),
+    "moves": Hint(3, "skip sleeping bodies",
+                  "moves(body) is True only for a body the World must integrate: dynamic (body.inv_mass != 0) and "
+                  "awake (not body.asleep). A static body and a sleeping body both return False, so a pair of them "
+                  "is never tested."),
+    "wake": Hint(4, "wake on contact",
+                 "Return a list of the bodies to wake: a sleeping body whose partner is dynamic (inv_mass != 0) and "
+                 "awake. Check both orders (a sleeping, b awake, and the other way round). The floor and walls "
+                 "never wake anything (a crate sleeps on the floor), two sleeping crates leave each other asleep, "
+                 "and an awake body is not 'woken'. Return [] when nothing wakes."),
+    "handout": Hint(None, "keep the handed-out code",
+                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
+                    "else (the thresholds, build(), the scene, the World and its hooks, the `# lab runtime` lines, "
+                    "the final print) stays as handed out, so the checker measures the lab the exercise describes. "
+                    "Start again from the starter if you are unsure what changed."),
+    "runtime": lab_checks.RUNTIME_HINT,
+    "settle": Hint(5, "watch the pile sleep",
+                   "The function checks above all pass, yet the scene misbehaves. Run the file, drop crates and "
+                   "watch which ones go dim and when (D shows the contacts); compare your file with the handout "
+                   "around the steps."),
+    "crash": Hint(1, "run the file",
+                  "Run the file yourself (python sleeping_crates.py) and fix the error at the line shown."),
+}
+
+CHECKS = Registry()
+
+
+def recognise(path, source):
+    """True if the file is a Sleeping Crates lab: its name or its text says so."""
+    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
+    return "sleeping_crates" in name or "sleeping crates" in source.lower()
+
+
+def scenarios():
+    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
+    return {name: build() for name, build in scenes.SCENARIOS.items()}
+
+
+def _function(sub, functions, probe, function, step):
+    return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
+
+
+# ---------------------------------------------------------------- loading and the handout
+
+@CHECKS.check()
+def loads(sub):
+    """The file imports without errors and defines sleep_timer, moves, wake_on_contact, build and main."""
+    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
+                             "function names: sleep_timer, moves, wake_on_contact, build and main; the checker "
+                             "calls them."))
+
+
+@CHECKS.check(depends=["loads"])
+def handout_unchanged(sub, functions):
+    """The code outside the steps is the handout's (formatting and comments aside)."""
+    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+
+
+@CHECKS.check(depends=["loads"])
+def runtime_lines(sub, functions):
+    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
+    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+
+
+# ---------------------------------------------------------------- step 2: sleep_timer
+
+def _timer_mistake(case, got):
+    """A sentence naming a usual step-2 mistake, or ''."""
+    timer, dt, want = case["timer"], case["dt"], case["want"]
+    calm = want != 0.0
+    if calm and abs(got - (timer + 1)) <= ABS:
+        return " That adds 1 (a frame) per step; the timer counts seconds: add dt."
+    if calm and abs(got - timer) <= ABS:
+        return " The timer did not grow: add dt while the crate is calm."
+    if calm and abs(got) <= ABS:
+        return " The timer went back to 0 although the crate is calm" + (
+            ": its spin is negative, so compare abs(spin)." if case["spin"] < 0 else ".")
+    if not calm and abs(got - timer) <= ABS:
+        return (" The timer kept its value: a crate that moves must start again from 0, or a throw that is slow "
+                "at its top adds up calm instants and sleeps in the air.")
+    if not calm and abs(got - (timer + dt)) <= ABS:
+        if case["spin"] < 0 and case["speed"] < scenes.SLEEP_SPEED:
+            return " The spin is negative: compare abs(spin) with SLEEP_SPIN."
+        return (" The crate is not calm (it needs both speed < SLEEP_SPEED and |spin| < SLEEP_SPIN: `and`, not "
+                "`or`), so the timer starts again from 0.")
+    return ""
+
+
+@CHECKS.check(depends=["loads"])
+def timer_rule(sub, functions):
+    """Step 2: sleep_timer() adds dt while speed < SLEEP_SPEED and |spin| < SLEEP_SPIN, else starts again from 0."""
+    cases = _function(sub, functions, "sleep_timer", "sleep_timer", 2)
+    for case in cases:
+        got = case["got"]
+        label = (f"sleep_timer({case['timer']:g}, {case['speed']:g}, {case['spin']:g}, {case['dt']:.4g}) "
+                 f"({case['case']})")
+        if isinstance(got, str):
+            raise Fail(f"{label} must return a number of seconds; it returned {got}.", HINTS["timer"])
+        if abs(got - case["want"]) <= ABS:
+            continue
+        raise Fail(f"{label} returned {got:.6g} s; the timer should be {case['want']:.6g} s."
+                   + _timer_mistake(case, got), HINTS["timer"])
+    return f"all {len(cases)} cases (calm, fast, spinning either way) follow the rule"
+
+
+# ---------------------------------------------------------------- step 3: moves
+
+@CHECKS.check(depends=["loads"])
+def skips_sleepers(sub, functions):
+    """Step 3: moves(body) is True for an awake dynamic body only (False for static and sleeping bodies)."""
+    cases = _function(sub, functions, "moves", "moves", 3)
+    for case in cases:
+        got = case["got"]
+        if isinstance(got, str):
+            raise Fail(f"moves() must return True or False; for {case['case']} it returned {got}.", HINTS["moves"])
+        if got == case["want"]:
+            continue
+        if case["want"]:
+            why = " An awake crate must be integrated, or nothing ever falls."
+        elif "static" in case["case"]:
+            why = (" A static body never moves: with moves() True for the floor, every sleeping crate on it is "
+                   "still tested against it.")
+        else:
+            why = " A sleeping crate is not integrated and its pairs with sleeping or static bodies are not tested."
+        raise Fail(f"moves() says {got} for {case['case']}; it should say {case['want']}." + why, HINTS["moves"])
+    return "awake crates move; static and sleeping bodies do not"
+
+
+# ---------------------------------------------------------------- step 4: wake_on_contact
+
+@CHECKS.check(depends=["loads"])
+def wakes_on_contact(sub, functions):
+    """Step 4: wake_on_contact(a, b) returns the sleeping body of a pair whose other body is dynamic and awake."""
+    cases = _function(sub, functions, "wake_on_contact", "wake_on_contact", 4)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        label = f"wake_on_contact(a, b) with a {case['a']} and b {case['b']}"
+        if isinstance(got, str):
+            raise Fail(f"{label} must return a list of bodies (or []); it returned {got}.", HINTS["wake"])
+        if got == want:
+            continue
+        names = " and ".join(got) if got else "nothing"
+        if not want and "static" in (case["a"], case["b"]) and got:
+            why = " The floor never wakes a crate: a crate sleeps on the floor."
+        elif not want and case["a"] == case["b"] == "asleep":
+            why = " Two sleeping crates leave each other asleep (their pair is not even tested)."
+        elif not want and case["a"] == case["b"] == "awake":
+            why = " Neither is asleep: there is nothing to wake."
+        elif want and not got:
+            order = "with the sleeping body second" if want == ["b"] else "with the sleeping body first"
+            why = f" An awake crate touching a sleeping one must wake it ({order}: check both orders)."
+        else:
+            why = " Only the sleeping body of the pair is woken."
+        raise Fail(f"{label} wakes {names}; it should wake {' and '.join(want) or 'nothing'}." + why, HINTS["wake"])
+    return f"all {len(cases)} kinds of pair, both orders, wake the right body"
+
+
+# ---------------------------------------------------------------- the cost criterion
+
+@CHECKS.check(depends=["loads", "timer_rule", "skips_sleepers", "wakes_on_contact"], max_score=2)
+def narrow_work(sub, functions, timer, moves, wake):
+    """With a 40-crate pile asleep a step does at most a tenth of the narrow-phase tests of the same pile awake."""
+    data = _function(sub, functions, "narrow_work", "build", None)
+    awake, asleep = data["awake"], data["asleep"]
+    if awake["narrow_tests"] == 0:
+        raise Fail("the 40-crate pile, awake, made no narrow-phase test at all: build() must make the crates it is "
+                   "given.", HINTS["handout"])
+    share = asleep["narrow_tests"] / awake["narrow_tests"]
+    if share > NARROW_SHARE:
+        raise Fail(f"with the 40-crate pile asleep a step made {asleep['narrow_tests']} narrow-phase tests "
+                   f"({asleep['pair_tests']} pairs visited), {shown(share, NARROW_SHARE)} of the "
+                   f"{awake['narrow_tests']} of the same pile awake (bound {NARROW_SHARE:g}). The broad phase must "
+                   "skip every pair in which neither body moves.", HINTS["moves"])
+    if asleep["still_asleep"] < 40:
+        raise Fail(f"one step woke the sleeping 40-crate pile ({asleep['still_asleep']} of 40 still asleep): nothing "
+                   "touched it.", HINTS["wake"])
+    return (f"{asleep['narrow_tests']} narrow tests asleep against {awake['narrow_tests']} awake "
+            f"({asleep['pair_tests']} against {awake['pair_tests']} pairs visited)")
+
+
+# ---------------------------------------------------------------- the scene
+
+@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines", "timer_rule", "skips_sleepers",
+                       "wakes_on_contact"], needs_scenarios=True)
+def runs(sub, functions, handout_note, runtime, timer, moves, wake):
+    """main() runs the checker's scene to the end."""
+    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
+    for name, run in records.items():
+        if not metrics.finite(run.record["records"]):
+            raise Fail(f"in the '{name}' scene a crate's position or speed became infinite or NaN.", HINTS["settle"])
+    return records
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def pile_sleeps(sub, records):
+    """A loose pile of four crates settles and falls asleep within 2 s of settling, without sinking."""
+    pile = scenes.measure_loose(records["sleep"].record)
+    if pile["settled"] is None:
+        raise Fail("four crates dropped a little above the floor never settled (some crate stays faster than "
+                   f"{scenes.SLEEP_SPEED:g} px/s or spins faster than {scenes.SLEEP_SPIN:g} rad/s).", HINTS["settle"])
+    if pile["asleep"] is None or pile["asleep"] > SLEPT_BY or pile["asleep"] - pile["settled"] > SLEEP_WITHIN:
+        when = "were not all asleep at the end" if pile["asleep"] is None else f"were all asleep at {pile['asleep']:.2f} s"
+        raise Fail(f"four crates settled at {pile['settled']:.2f} s but {when} (bound: asleep by {SLEPT_BY:g} s and "
+                   f"within {SLEEP_WITHIN:g} s of settling).", HINTS["timer"])
+    if pile["penetration"] > PENETRATION or pile["overlap"] > PAIR_OVERLAP:
+        raise Fail(f"the sleeping pile sank: {shown(pile['penetration'], PENETRATION)} px into the floor (bound "
+                   f"{PENETRATION:g}) and {shown(pile['overlap'], PAIR_OVERLAP)} px into each other (bound "
+                   f"{PAIR_OVERLAP:g}).", HINTS["moves"])
+    return (f"settled at {pile['settled']:.2f} s, all asleep at {pile['asleep']:.2f} s "
+            f"({pile['asleep'] - pile['settled']:.2f} s later)")
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def no_sleep_in_air(sub, records):
+    """A crate thrown straight up does not fall asleep at the top of its flight (or anywhere in the air)."""
+    throw = scenes.measure_throw(records["sleep"].record)
+    if throw["height"] < THROW_HEIGHT:
+        raise Fail(f"a crate thrown up at {scenes.THROW_SPEED:g} px/s rose only {throw['height']:.1f} px (at least "
+                   f"{THROW_HEIGHT:g} px expected): it was stopped on its way up.", HINTS["timer"])
+    if throw["asleep_in_air"]:
+        t, gap = throw["asleep_in_air"][0]
+        raise Fail(f"a crate thrown up at {scenes.THROW_SPEED:g} px/s was asleep at {t:.2f} s, {gap:.1f} px above the "
+                   "floor: at the top of a throw a crate is slow for an instant, not for SLEEP_AFTER.", HINTS["timer"])
+    return f"it rose {throw['height']:.0f} px and slept only on the floor"
+
+
+@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
+def drop_wakes_pile(sub, records):
+    """A crate dropped on a sleeping pile wakes what it touches, and the pile settles and sleeps again without
+    sinking or jumping."""
+    drop = scenes.measure_drop(records["sleep"].record)
+    if drop["landed"] is None:
+        raise Fail("the crate dropped on the sleeping pile never touched it.", HINTS["settle"])
+    if not drop["woke"]:
+        raise Fail(f"a crate landed on the sleeping pile at {drop['landed']:.2f} s and no crate of the pile woke: "
+                   "what an awake crate touches must wake.", HINTS["wake"])
+    if drop["sink"] > SINK or drop["penetration"] > PENETRATION or drop["overlap"] > PAIR_OVERLAP:
+        raise Fail(f"the pile sank when a crate landed on it: a pile crate ended {shown(drop['sink'], SINK)} px "
+                   f"lower (bound {SINK:g}), {shown(drop['penetration'], PENETRATION)} px into the floor (bound "
+                   f"{PENETRATION:g}), {shown(drop['overlap'], PAIR_OVERLAP)} px into another crate (bound "
+                   f"{PAIR_OVERLAP:g}).", HINTS["wake"])
+    if drop["jump"] > JUMP:
+        raise Fail(f"the pile jumped when a crate landed on it: a pile crate rose {shown(drop['jump'], JUMP)} px "
+                   f"(bound {JUMP:g}).", HINTS["wake"])
+    if drop["asleep_again"] is None or drop["asleep_again"] > WAKE_AGAIN:
+        raise Fail(f"after the crate landed at {drop['landed']:.2f} s the pile and the crate were not all asleep "
+                   f"again by {WAKE_AGAIN:g} s.", HINTS["timer"])
+    return Passed(f"{len(drop['woke'])} pile crates woke at {drop['landed']:.2f} s; all asleep again at "
+                  f"{drop['asleep_again']:.2f} s, {drop['sink']:.2f} px lower at most", value=drop)

@@ -1,0 +1,254 @@
+"""The Sleeping Crates mistake corpus: plausible student files and the verdict the checker owes each one.
+
+Every entry is a whole student file built from the CURRENT starter
+(starters/sleeping_crates_starter.py): the lines strictly between a step's
+start marker and its end marker are replaced by the student's code for that
+step; a step the entry does not give gets the solution's code, read from the
+same regions of solutions/sleeping_crates.py, so the corpus follows the lab
+when the lab changes. An entry that changes code OUTSIDE the steps lists exact
+(old, new) edits, applied after the steps are filled; each old must occur
+exactly once (tests/mutants.py), else building raises AssertionError.
+
+Verdicts:
+  CORRECT entries: every check passes.
+  WRONG entries: `check` fails (or errors, for a crash) naming `step`; every
+  other function check passes; narrow_work (it needs steps 2 to 4) may be
+  skipped; a mistake outside the steps fails handout_unchanged and whatever
+  its `also` lists.
+
+    build(name) -> source text
+    write_corpus(directory, names=None) -> {name: path}
+"""
+import os
+import re
+import sys
+import textwrap
+from typing import NamedTuple
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
+
+STEPS = (2, 3, 4)
+START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+): .*---[ \t]*$")
+END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---[ \t]*$")
+
+CHECK_STEP = {
+    "loads": None, "handout_unchanged": None, "runtime_lines": None,
+    "timer_rule": 2, "skips_sleepers": 3, "wakes_on_contact": 4,
+    "narrow_work": None, "runs": None, "pile_sleeps": None, "no_sleep_in_air": None, "drop_wakes_pile": None,
+}
+FUNCTION_CHECKS = ("timer_rule", "skips_sleepers", "wakes_on_contact")
+NEEDS_STEPS_2_TO_4 = ("narrow_work",)
+
+
+class Entry(NamedTuple):
+    name: str
+    what: str            # what the student did, one line
+    steps: dict          # {step: code} (dedented)
+    edits: tuple         # ((old, new), ...) outside the steps, applied after the steps are filled
+    check: str           # "pass" for a correct completion, else the id of the check that must fail
+    step: object         # the lesson step the failing check's hint names (None for a correct entry)
+    status: tuple        # accepted statuses of that check
+    also: tuple          # other checks this mistake may fail too
+    why: str             # the input that shows the mistake, or why a correct variant is correct
+
+
+def _code(text):
+    return textwrap.dedent(text).strip("\n")
+
+
+def wrong(name, what, check, steps=None, edits=(), status=("fail",), also=(), why=""):
+    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
+                 CHECK_STEP[check], tuple(status), tuple(also), why)
+
+
+def correct(name, what, steps=None, edits=(), why=""):
+    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), "pass", None,
+                 ("pass",), (), why)
+
+
+WRONG = [
+    # ---------------------------------------------------------------- step 2: sleep_timer
+    wrong("timer_never_resets", "adds dt while calm but keeps the timer when the crate moves", "timer_rule", {2: """
+        if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
+            return timer + dt
+        return timer
+    """}, why="a crate at 6 px/s with 0.4 s on its timer keeps 0.4 s: calm instants add up and a throw sleeps"),
+    wrong("timer_counts_frames", "adds 1 per step instead of dt", "timer_rule", {2: """
+        if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
+            return timer + 1
+        return 0.0
+    """}, why="a crate at rest goes from 0 to 1 in one step: it sleeps after one step"),
+    wrong("timer_signed_spin", "compares spin, not abs(spin), with SLEEP_SPIN", "timer_rule", {2: """
+        if speed < SLEEP_SPEED and spin < SLEEP_SPIN:
+            return timer + dt
+        return 0.0
+    """}, why="a crate spinning backwards at 0.3 rad/s counts as calm"),
+    wrong("timer_or", "calm when speed OR spin is under its threshold", "timer_rule", {2: """
+        if speed < SLEEP_SPEED or abs(spin) < SLEEP_SPIN:
+            return timer + dt
+        return 0.0
+    """}, why="a crate spinning at 0.2 rad/s but slow counts as calm"),
+    wrong("timer_ignores_spin", "looks at the speed only", "timer_rule", {2: """
+        return timer + dt if speed < SLEEP_SPEED else 0.0
+    """}, why="a slow crate spinning at 0.2 rad/s counts as calm"),
+    wrong("timer_returns_none", "sets a local timer but returns nothing", "timer_rule", {2: """
+        if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
+            timer += dt
+        else:
+            timer = 0.0
+    """}, why="the function returns None: the checker must say it needs a number, not crash"),
+    # ---------------------------------------------------------------- step 3: moves
+    wrong("moves_ignores_static", "not body.asleep only: the floor counts as moving", "skips_sleepers", {3: """
+        return not body.asleep
+    """}, why="moves(floor) is True, so every sleeping crate on the floor is still tested against it"),
+    wrong("moves_ignores_sleep", "body.inv_mass != 0 only (the starter's line kept)", "skips_sleepers", {3: """
+        return body.inv_mass != 0
+    """}, why="a sleeping crate moves and its pairs are all tested"),
+    wrong("moves_inverted", "returns True for sleeping bodies", "skips_sleepers", {3: """
+        return body.inv_mass != 0 and body.asleep
+    """}, why="an awake crate is not integrated: nothing falls"),
+    wrong("moves_mass_zero", "flips the static test: mass == 0 counts as moving", "skips_sleepers", {3: """
+        return body.mass == 0 or not body.asleep
+    """}, why="the floor (mass 0) moves"),
+    # ---------------------------------------------------------------- step 4: wake_on_contact
+    wrong("wake_one_order", "checks only a asleep, b awake", "wakes_on_contact", {4: """
+        if a.asleep and b.inv_mass != 0 and not b.asleep:
+            return [a]
+        return []
+    """}, why="an awake crate listed first never wakes the sleeping one after it"),
+    wrong("wake_by_floor", "any partner wakes a sleeping body, the floor too", "wakes_on_contact", {4: """
+        return [body for body in (a, b) if body.asleep]
+    """}, why="the floor wakes the crate sleeping on it (its pair is not tested, but a rule must not depend on that), "
+              "and two sleeping crates wake each other"),
+    wrong("wake_both", "wakes both bodies of any pair with a sleeper", "wakes_on_contact", {4: """
+        if a.asleep or b.asleep:
+            return [a, b]
+        return []
+    """}, why="the floor and an awake crate are 'woken' too"),
+    wrong("wake_the_awake_one", "returns the awake body instead of the sleeping one", "wakes_on_contact", {4: """
+        woken = []
+        for sleeper, other in ((a, b), (b, a)):
+            if sleeper.asleep and other.inv_mass != 0 and not other.asleep:
+                woken.append(other)
+        return woken
+    """}, why="the sleeping crate is never woken"),
+    wrong("wake_sets_flag", "sets asleep = False itself and returns nothing", "wakes_on_contact", {4: """
+        for sleeper, other in ((a, b), (b, a)):
+            if sleeper.asleep and other.inv_mass != 0 and not other.asleep:
+                sleeper.asleep = False
+    """}, why="returns None: the body wakes alone (its island and its timer are left as they were); the checker "
+              "asks for the list of bodies to wake"),
+    # ---------------------------------------------------------------- outside the steps
+    wrong("outside_no_sleep_effect", "removed the \"sleep\" effect from the World", "handout_unchanged", edits=[(
+        "effects=LESSON_EFFECTS | {\"sleep\"},", "effects=LESSON_EFFECTS,")],
+        why="nothing ever sleeps; the handout is changed"),
+]
+
+CORRECT = [
+    correct("correct_solution_steps", "the solution's own code in every step",
+            why="the reference solution"),
+    correct("correct_one_liners", "each step on one line", {2: """
+        return timer + dt if speed < SLEEP_SPEED and -SLEEP_SPIN < spin < SLEEP_SPIN else 0.0
+    """, 3: """
+        return not (body.inv_mass == 0 or body.asleep)
+    """, 4: """
+        return [s for s, o in ((a, b), (b, a)) if s.asleep and o.inv_mass != 0 and not o.asleep]
+    """}, why="the same rules written differently"),
+    correct("correct_is_static_and_moves", "uses body.is_static and calls moves() for the partner", {3: """
+        if body.is_static:
+            return False
+        return not body.asleep
+    """, 4: """
+        woken = []
+        if a.asleep and moves(b):
+            woken.append(a)
+        if b.asleep and moves(a):
+            woken.append(b)
+        return woken
+    """}, why="is_static is inv_mass == 0, and moves(partner) is 'dynamic and awake'"),
+    correct("correct_timer_early_reset", "resets first, then adds", {2: """
+        if speed >= SLEEP_SPEED or abs(spin) >= SLEEP_SPIN:
+            return 0.0
+        calm_for = timer
+        calm_for += dt
+        return calm_for
+    """}, why="the negation of the calm test; the same values"),
+]
+
+ENTRIES = CORRECT + WRONG
+BY_NAME = {entry.name: entry for entry in ENTRIES}
+assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
+
+
+# ================================================================ building the files
+
+def regions(source, where="file"):
+    """{step: (start marker line index, end marker line index, indent)} for steps 2-4; each marker exactly once."""
+    lines = source.split("\n")
+    starts, ends = {}, {}
+    for index, line in enumerate(lines):
+        match = START.match(line)
+        if match:
+            assert int(match.group("step")) not in starts, f"{where}: step {match.group('step')} starts twice"
+            starts[int(match.group("step"))] = (index, match.group("indent"))
+        match = END.match(line)
+        if match:
+            assert int(match.group("step")) not in ends, f"{where}: step {match.group('step')} ends twice"
+            ends[int(match.group("step"))] = index
+    found = {}
+    for step in STEPS:
+        if step not in starts or step not in ends or ends[step] <= starts[step][0]:
+            raise AssertionError(f"{where}: step {step} has no `# --- step {step}: ... ---` ... "
+                                 f"`# --- end of step {step} ---` region")
+        found[step] = (starts[step][0], ends[step], starts[step][1])
+    return found
+
+
+def step_code(source, where="file"):
+    """{step: the dedented code strictly between the step's markers}."""
+    lines = source.split("\n")
+    return {step: textwrap.dedent("\n".join(lines[start + 1:end])).strip("\n")
+            for step, (start, end, _) in regions(source, where).items()}
+
+
+def fill(source, codes, where="file"):
+    """source with the interior of each step in codes replaced by that code, indented like the step's marker."""
+    lines = source.split("\n")
+    found = regions(source, where)
+    for step in sorted(codes, key=lambda s: -found[s][0]):
+        start, end, indent = found[step]
+        lines[start + 1:end] = [indent + line if line.strip() else "" for line in codes[step].split("\n")]
+    return "\n".join(lines)
+
+
+def _read(path):
+    with open(path, encoding="utf-8") as handle:
+        return handle.read()
+
+
+def build(name, starter=None, solution=None):
+    """The source of entry `name`: the starter, its steps filled (the entry's code, else the solution's), then edits."""
+    entry = BY_NAME[name]
+    starter = _read(STARTER) if starter is None else starter
+    solution = _read(SOLUTION) if solution is None else solution
+    codes = step_code(solution, "solutions/sleeping_crates.py")
+    codes.update(entry.steps)
+    source = fill(starter, codes, "starters/sleeping_crates_starter.py")
+    return mutants.apply_edits(source, entry.edits, name, "the built file", "tests/corpus_sleeping_crates.py")
+
+
+def write_corpus(directory, names=None):
+    """Write NAME.py into directory for each entry (all by default); returns {name: path}."""
+    starter, solution = _read(STARTER), _read(SOLUTION)
+    paths = {}
+    for name in (BY_NAME if names is None else names):
+        path = os.path.join(str(directory), name + ".py")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(build(name, starter, solution))
+        paths[name] = path
+    return paths
