@@ -353,8 +353,9 @@ class World:
         """Advance every body by one step of dt seconds (default: step_seconds), in `substeps` sub-steps h = dt/substeps.
 
         The lesson solver, order="solve-first" (the default, Box2D-Lite's order),
-        each sub-step: contacts once, resolve() passes, then move, then the
-        push-out (lesson_solve_first has the phases). order="move-first" (the
+        each sub-step: contacts once, the push-out of the last move, resolve()
+        passes, then move; the step ends with one more contact search and the
+        last move's push-out (lesson_solve_first has the phases). order="move-first" (the
         lesson text's order), each sub-step:
           1. v += g h
           2. x += v h, angle += ω h (a swept move for "ccd" bullets)
