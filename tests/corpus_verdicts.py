@@ -1,0 +1,101 @@
+"""What every lab's mistake-corpus test shares: one checker run over the whole corpus, and the verdict rules.
+
+A corpus module (tests/corpus_<lab>.py) builds plausible student files from
+the lab's current starter. It has ENTRIES (= CORRECT + WRONG; each entry has
+name, what, why, check, step, steps, edits, status and, optionally, also),
+STEPS, CHECK_STEP {check id: step}, FUNCTION_CHECKS, SOLUTION, build(name) and
+write_corpus(directory) -> {name: path}; optionally NEEDS_STEPS_2_TO_4, the
+checks that need several steps and so may be skipped when one step is wrong.
+
+The rules, one test per entry (test_corpus_<lab>.py calls these):
+  correct entry: every check passes;
+  wrong entry: the named check has one of the entry's statuses ("fail", or
+  "error" for a crash), its JSON step is the entry's step and its hint names
+  that step; loads passes; a mistake inside the steps leaves handout_unchanged
+  and runtime_lines passing; every other function check passes (those in
+  NEEDS_STEPS_2_TO_4 may be skipped); the entry's `also` checks are free. The
+  scenes need every function check, so they are not constrained for a wrong
+  entry (a wrong file stops after its probe run).
+"""
+import json
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+NON_FUNCTION = ("loads", "handout_unchanged", "runtime_lines")
+
+
+def grade(built, lab_id):
+    """{entry name: {check id: the check's JSON}} from ONE `python -m checker --json` run over `built` {name: path}.
+
+    Every file must be graded as `lab_id`.
+    """
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--timeout", "120",
+                           "--total-timeout", "1500", *built.values()],
+                          cwd=ROOT, env=env, capture_output=True, text=True, timeout=1800)
+    assert proc.returncode in (0, 1), f"the checker exited {proc.returncode}: {proc.stderr[-2000:]}"
+    names = {os.path.abspath(path): name for name, path in built.items()}
+    result = {}
+    for lab in json.loads(proc.stdout)["labs"]:
+        assert lab["lab"] == lab_id, f"{lab['path']} was graded as {lab['lab']}, not {lab_id}"
+        result[names[os.path.abspath(lab["path"])]] = {check["id"]: check for check in lab["criteria"]}
+    assert set(result) == set(built)
+    return result
+
+
+def show(checks):
+    """Every check of one file on a line: id, status, step and message."""
+    return "\n".join(f"  {cid}: {c['status']} (step {c['step']}): {c['message']}" for cid, c in checks.items())
+
+
+def assert_big_enough(corpus, per_step):
+    """At least 10 wrong and 3 correct entries, `per_step` wrong ones in every step, one outside the steps."""
+    assert len(corpus.WRONG) >= 10 and len(corpus.CORRECT) >= 3
+    for step in corpus.STEPS:
+        assert len([e for e in corpus.WRONG if e.step == step]) >= per_step, f"too few mistakes in step {step}"
+    assert [e for e in corpus.WRONG if e.check == "handout_unchanged"], "no mistake outside the steps"
+
+
+def assert_builds(entry, corpus, title):
+    """The entry is described, builds a file that compiles and names the lab, and changes only what it says."""
+    assert entry.what and "\n" not in entry.what and entry.why
+    source = corpus.build(entry.name)
+    compile(source, entry.name + ".py", "exec")
+    assert title in source.split('"""')[1], "the checker recognises the lab by its docstring's title"
+    if entry.check == "pass":
+        assert entry.step is None and not entry.edits
+    elif entry.check == "handout_unchanged":
+        assert entry.edits and not entry.steps
+    else:
+        assert list(entry.steps) == [entry.step] and not entry.edits
+        assert corpus.CHECK_STEP[entry.check] == entry.step
+        assert source != corpus.build("correct_solution_steps")
+
+
+def assert_reference_build_is_the_solution(corpus):
+    with open(corpus.SOLUTION, encoding="utf-8") as handle:
+        assert corpus.build("correct_solution_steps") == handle.read()
+
+
+def assert_verdict(entry, checks, corpus):
+    """The checker's verdict on one entry's file (`checks`: {check id: JSON}) follows the module docstring's rules."""
+    assert set(corpus.CHECK_STEP) <= set(checks), show(checks)
+    if entry.check == "pass":
+        failing = {cid: c for cid, c in checks.items() if c["status"] != "pass"}
+        assert not failing, f"{entry.name} is correct ({entry.what}) but:\n{show(failing)}\nwhy: {entry.why}"
+        return
+    named = checks[entry.check]
+    assert named["status"] in entry.status and named["step"] == entry.step, (
+        f"{entry.name} ({entry.what}): expected {entry.check} {'/'.join(entry.status)} naming step {entry.step}; "
+        f"got {named['status']} naming step {named['step']}: {named['message']}\nwhy: {entry.why}\n{show(checks)}")
+    if entry.step is not None:
+        assert named["hint"].startswith(f"[step {entry.step}: "), named["hint"]
+    may_skip = tuple(getattr(corpus, "NEEDS_STEPS_2_TO_4", ()))
+    for cid in NON_FUNCTION + tuple(corpus.FUNCTION_CHECKS) + may_skip:
+        if cid == entry.check or cid in getattr(entry, "also", ()):
+            continue
+        allowed = ("pass", "skip") if cid in may_skip else ("pass",)
+        assert checks[cid]["status"] in allowed, (f"{entry.name} ({entry.what}) is a mistake for {entry.check}, but "
+                                                  f"{cid} is {checks[cid]['status']}:\n{show(checks)}")
