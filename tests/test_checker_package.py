@@ -111,6 +111,8 @@ def test_gradescope_zip_layout(bundle):
     for variable in ("SDL_VIDEODRIVER=dummy", "SDL_AUDIODRIVER=dummy", "PYGAME_HIDE_SUPPORT_PROMPT=1",
                      "AUTOGRADER_ROOT:-/autograder"):
         assert variable in run
+    for script in ("setup.sh", "run_autograder"):
+        assert subprocess.run(["bash", "-n", str(source / script)]).returncode == 0, script
     config = json.loads((source / "autograder.json").read_text())
     assert [lab["file"] for lab in config["labs"]] == ["bullets.py", "tumbling_crates.py"]
     assert config["hide"] == ["crate_momentum"]
@@ -144,6 +146,8 @@ def test_gradescope_wrong_name_and_several_files(bundle, tmp_path):
     assert doc["score"] == 3.0 and "my_lab.py" in doc["output"] and "expected name" in doc["output"]
     doc = grade_gradescope(bundle[1], tmp_path / "two", {"a.py": "x = 1\n", "b.py": "y = 2\n"})
     assert doc["score"] == 0 and "a.py" in doc["output"] and "b.py" in doc["output"]
+    doc = grade_gradescope(bundle[1], tmp_path / "three", {"notes.txt": "my lab is in my other folder"})
+    assert doc["score"] == 0 and "notes.txt" in doc["output"]
 
 
 def test_gradescope_hostile_submission(bundle, tmp_path):
