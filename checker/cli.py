@@ -166,8 +166,12 @@ def write_outputs(args, rows):
 
 def main(argv=None):
     """Grade the paths; returns the exit status (see the module docstring)."""
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["package"]:  # python -m checker package PLATFORM --out ...: see checker/package.py
+        from . import package
+        return package.main(argv[1:])
     try:
-        args = parse_args(sys.argv[1:] if argv is None else argv)
+        args = parse_args(argv)
         if args.list:
             report.list_labs(labs.LABS, sys.stdout)
             return 0

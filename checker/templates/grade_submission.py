@@ -1,0 +1,217 @@
+"""Grade one submission for an autograding platform; ALWAYS writes a valid results file.
+
+Shipped by `python -m checker package ...` next to autograder.json (which labs,
+hidden checks, limits). Standard library only, and the checker runs in a child
+process, so a submission (or a checker bug) that crashes still ends in a
+results file with score 0 and the reason.
+
+    python3 grade_submission.py gradescope      # $AUTOGRADER_ROOT (default /autograder)
+    python3 grade_submission.py prairielearn    # $GRADE_ROOT (default /grade)
+"""
+import json
+import os
+import pwd
+import shutil
+import subprocess
+import sys
+import tempfile
+import traceback
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SKIP_DIRS = {"__pycache__", ".git", ".venv", "venv", "node_modules", "__MACOSX"}
+
+
+def load_config():
+    with open(os.path.join(HERE, "autograder.json"), encoding="utf-8") as handle:
+        return json.load(handle)
+
+
+def python_files(folder):
+    """Every *.py under folder (hidden files and SKIP_DIRS left out), shallowest first."""
+    found = []
+    for root, dirs, files in os.walk(folder):
+        dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d not in SKIP_DIRS)
+        found += [os.path.join(root, f) for f in sorted(files) if f.endswith(".py") and not f.startswith(".")
+                  and not os.path.islink(os.path.join(root, f))]  # a link could point at the grader's files
+    return sorted(found, key=lambda p: (p.count(os.sep), p))
+
+
+def find_lab_file(folder, config):
+    """(path, note) of the file to grade, or (None, why not) naming what was found."""
+    expected = [lab["file"] for lab in config["labs"]]
+    names = " or ".join(expected)
+    if not os.path.isdir(folder):
+        return None, f"No submission folder ({folder}): nothing was submitted. Submit {names}."
+    files = python_files(folder)
+    for path in files:
+        if os.path.basename(path) in expected:
+            rel = os.path.relpath(path, folder)
+            note = f"Graded {rel}." if rel == os.path.basename(path) else f"Graded {rel} (found in a folder)."
+            return path, note
+    if len(files) == 1:
+        rel = os.path.relpath(files[0], folder)
+        return files[0], f"Graded {rel}: the expected name is {names}; please submit it under that name."
+    if not files:
+        others = sorted(os.path.relpath(os.path.join(r, f), folder) for r, _, fs in os.walk(folder) for f in fs)
+        seen = f" Found instead: {', '.join(others[:10])}." if others else " The submission is empty."
+        return None, f"No Python file was submitted: expected {names}.{seen}"
+    listed = ", ".join(os.path.relpath(p, folder) for p in files[:10])
+    return None, f"Expected one file named {names}; found {len(files)} Python files and none with that name: {listed}."
+
+
+def run_as(config):
+    """The user to run the student's code as: $AUTOGRADER_USER (\"\" = nobody else), else config's, when root."""
+    name = os.environ.get("AUTOGRADER_USER", config.get("user", "student"))
+    if not name or os.geteuid() != 0 or not shutil.which("runuser"):
+        return None
+    try:
+        pwd.getpwnam(name)
+    except KeyError:
+        print(f"grade_submission: no user {name!r}: the student's code runs as root", file=sys.stderr)
+        return None
+    probe = subprocess.run(["runuser", "-u", name, "--", sys.executable, "-c", "import checker"],
+                           env=dict(os.environ, PYTHONPATH=os.path.join(HERE, "project")), cwd="/",
+                           stdin=subprocess.DEVNULL, capture_output=True)
+    if probe.returncode != 0:  # the user cannot run this Python or read the project: grade as we are
+        print(f"grade_submission: {name} cannot run the checker ({probe.stderr.decode(errors='replace').strip()}); "
+              f"the student's code runs as root", file=sys.stderr)
+        return None
+    return name
+
+
+def run_checker(path, config):
+    """The checker's --json document for path (a dict), or raises RuntimeError saying what went wrong."""
+    work = tempfile.mkdtemp(prefix="autograde-")
+    try:
+        os.chmod(work, 0o755)
+        copy = os.path.join(work, os.path.basename(path))  # a private copy: the original is never touched
+        shutil.copyfile(path, copy)
+        os.chmod(copy, 0o644)
+        env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYGAME_HIDE_SUPPORT_PROMPT="1",
+                   PYTHONDONTWRITEBYTECODE="1", PYTHONPATH=os.path.join(HERE, "project"), HOME=work)
+        command = [sys.executable, "-m", "checker", copy, "--json", "--quiet",
+                   "--jobs", str(config.get("jobs", os.cpu_count() or 1)),
+                   "--timeout", str(config.get("timeout", 20)),
+                   "--total-timeout", str(config.get("total_timeout", 600))]
+        user = run_as(config)
+        if user:
+            command = ["runuser", "-u", user, "--"] + command
+        proc = subprocess.run(command, cwd=work, env=env, stdin=subprocess.DEVNULL, capture_output=True,
+                              timeout=config.get("total_timeout", 600) + 60)
+        try:
+            document = json.loads(proc.stdout.decode("utf-8", "replace"))
+            document["labs"][0]
+        except (ValueError, KeyError, IndexError, TypeError):
+            tail = proc.stderr.decode("utf-8", "replace").strip()[-1500:]
+            raise RuntimeError(f"the checker stopped without a result (exit status {proc.returncode}). {tail}")
+        document["ran_as"] = user or ""
+        return document
+    except subprocess.TimeoutExpired:
+        raise RuntimeError("the checker ran out of time on this submission")
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def grade(submission_folder, config):
+    """(labs entry of the checker's JSON or None, note, max_score) for the submission."""
+    path, note = find_lab_file(submission_folder, config)
+    max_score = max((lab["max_score"] for lab in config["labs"]), default=0.0)
+    if path is None:
+        return None, note, max_score
+    document = run_checker(path, config)
+    row = document["labs"][0]
+    known = {lab["id"]: lab for lab in config["labs"]}
+    if row.get("lab") and row["lab"] not in known:
+        return None, (f"{note} It is the {row.get('title')} lab, which this assignment does not grade "
+                      f"(expected {' or '.join(lab['file'] for lab in config['labs'])})."), max_score
+    return row, note, row.get("max_score") or max_score
+
+
+def check_output(check):
+    parts = [check.get("message") or "", ("Hint " + check["hint"]) if check.get("hint") else ""]
+    text = "\n".join(p for p in parts if p)
+    return text or ("skipped: an earlier check must pass first" if check.get("status") == "skip" else "")
+
+
+def summary(row, note):
+    if row is None:
+        return note
+    status = {"pass": "passes every check", "fail": "fails some checks", "error": "could not be fully graded"}
+    line = f"{note} {row.get('title') or 'The file'}: {row['score']:g}/{row['max_score']:g}, " \
+           f"{status.get(row['status'], row['status'])}."
+    if row.get("message"):
+        line += f" {row['message']}"
+    return line
+
+
+def gradescope_results(row, note, max_score, config):
+    hidden = set(config.get("hide", []))
+    if row is None or not row.get("criteria"):
+        reason = summary(row, note)
+        return {"score": 0.0, "output": reason, "visibility": "visible", "stdout_visibility": "hidden",
+                "tests": [{"name": "Submission graded", "score": 0.0, "max_score": max_score, "status": "failed",
+                           "output": reason, "visibility": "visible"}]}
+    tests = [{"name": f"{c['id']}: {c['name']}", "score": c["score"], "max_score": c["max_score"],
+              "status": "passed" if c["status"] == "pass" else "failed", "output": check_output(c),
+              "visibility": "hidden" if c["id"] in hidden else "visible"} for c in row["criteria"]]
+    return {"score": row["score"], "output": summary(row, note), "visibility": "visible",
+            "stdout_visibility": "hidden", "tests": tests}
+
+
+def prairielearn_results(row, note, max_score, config):
+    hidden = set(config.get("hide", []))
+    if row is None or not row.get("criteria"):
+        reason = summary(row, note)
+        return {"gradable": True, "score": 0.0, "message": reason, "output": reason, "images": [],
+                "tests": [{"name": "Submission graded", "points": 0.0, "max_points": max_score,
+                           "output": reason, "message": reason}]}
+    tests = [{"name": f"{c['id']}: {c['name']}", "points": c["score"], "max_points": c["max_score"],
+              "message": c["status"], "output": check_output(c)}
+             for c in row["criteria"] if c["id"] not in hidden]
+    total = row["max_score"] or 1.0
+    return {"gradable": True, "score": round(row["score"] / total, 6), "message": summary(row, note),
+            "output": summary(row, note), "images": [], "tests": tests}
+
+
+def fallback(platform, message):
+    """A valid results document when everything else failed."""
+    if platform == "gradescope":
+        return {"score": 0.0, "output": message, "tests": [{"name": "Submission graded", "score": 0.0,
+                "max_score": 0.0, "status": "failed", "output": message, "visibility": "visible"}]}
+    return {"gradable": True, "score": 0.0, "message": message, "output": message, "images": [], "tests": []}
+
+
+def write_json(path, document):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    temp = path + ".tmp"
+    with open(temp, "w", encoding="utf-8") as handle:
+        json.dump(document, handle, indent=2)
+        handle.write("\n")
+    os.replace(temp, path)
+
+
+def main(argv):
+    platform = argv[1] if len(argv) > 1 else "gradescope"
+    if platform == "gradescope":
+        root = os.environ.get("AUTOGRADER_ROOT", "/autograder")
+        submission, results = os.path.join(root, "submission"), os.path.join(root, "results", "results.json")
+        build = gradescope_results
+    else:
+        root = os.environ.get("GRADE_ROOT", "/grade")
+        submission, results = os.path.join(root, "student"), os.path.join(root, "results", "results.json")
+        build = prairielearn_results
+    try:
+        config = load_config()
+        row, note, max_score = grade(submission, config)
+        document = build(row, note, max_score, config)
+    except Exception as exc:  # a checker failure must still give the student a result
+        traceback.print_exc()
+        document = fallback(platform, f"The autograder could not grade this submission ({exc}). "
+                                      f"Please tell your instructor.")
+    write_json(results, document)
+    print(document.get("output") or document.get("message"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

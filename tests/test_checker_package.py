@@ -1,0 +1,252 @@
+"""python -m checker package: each package against its platform's documented fields, and the Gradescope
+bundle run end to end (unzipped into a temporary AUTOGRADER_ROOT, its run_autograder run with this
+interpreter) on a passing, a failing, a missing, a misnamed, a hostile submission and a broken checker."""
+import json
+import os
+import re
+import shutil
+import stat
+import subprocess
+import sys
+import zipfile
+
+import pytest
+
+from checker import labs, package
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+GRADESCOPE_VISIBILITY = {"hidden", "after_due_date", "after_published", "visible"}
+MAX = {lab.id: lab.checks.max_score for lab in labs.LABS}
+
+
+def run_package(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "checker", "package", *args], cwd=cwd or ROOT,
+                          capture_output=True, text=True, env=dict(os.environ, PYTHONPATH=ROOT))
+
+
+def assert_gradescope(doc):
+    """Gradescope's results.json: top-level score and output, tests[] with name/score/max_score/status/output/
+    visibility."""
+    assert isinstance(doc["score"], (int, float)) and isinstance(doc["output"], str) and doc["output"]
+    assert doc.get("visibility", "visible") in GRADESCOPE_VISIBILITY
+    assert doc["tests"], "every result has at least one test (the reason when nothing was graded)"
+    for test in doc["tests"]:
+        assert isinstance(test["name"], str) and test["name"]
+        assert isinstance(test["score"], (int, float)) and isinstance(test["max_score"], (int, float))
+        assert 0 <= test["score"] <= test["max_score"]
+        assert test["status"] in {"passed", "failed"}
+        assert isinstance(test["output"], str)
+        assert test["visibility"] in GRADESCOPE_VISIBILITY
+    assert doc["score"] == pytest.approx(sum(t["score"] for t in doc["tests"]))
+
+
+def assert_prairielearn(doc):
+    """PrairieLearn's results.json: gradable, score 0-1, message, tests[] with name/points/max_points, images[]."""
+    assert doc["gradable"] is True
+    assert 0.0 <= doc["score"] <= 1.0
+    assert isinstance(doc["message"], str) and doc["message"]
+    assert doc["images"] == []
+    for test in doc["tests"]:
+        assert isinstance(test["name"], str) and test["name"]
+        assert 0 <= test["points"] <= test["max_points"]
+        assert isinstance(test["output"], str)
+
+
+@pytest.fixture(scope="module")
+def bundle(tmp_path_factory):
+    """The Gradescope zip (Bullets and Tumbling Crates, one check hidden) and its unpacked source folder."""
+    base = tmp_path_factory.mktemp("gradescope")
+    out = base / "autograder.zip"
+    done = run_package("gradescope", "--out", str(out), "--labs", "bullets", "tumbling_crates",
+                       "--hide", "crate_momentum")
+    assert done.returncode == 0, done.stderr
+    source = base / "source"
+    with zipfile.ZipFile(out) as archive:
+        archive.extractall(source)
+        modes = {info.filename: info.external_attr >> 16 for info in archive.infolist()}
+    for name in ("setup.sh", "run_autograder"):  # zipfile drops the modes: set them as Gradescope's unzip does
+        os.chmod(source / name, modes[name] & 0o777)
+    return out, source, modes
+
+
+def grade_gradescope(source, tmp_path, files, env=None):
+    """Run the bundle's run_autograder on a submission made of `files` {relative path: text}; its results."""
+    root = tmp_path / "autograder"
+    (root / "submission").mkdir(parents=True)
+    for rel, text in files.items():
+        target = root / "submission" / rel
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(text, encoding="utf-8")
+    environment = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "SDL_VIDEODRIVER")}
+    environment.update(AUTOGRADER_ROOT=str(root), AUTOGRADER_PYTHON=sys.executable, AUTOGRADER_USER="")
+    environment.update(env or {})
+    done = subprocess.run([str(source / "run_autograder")], env=environment, capture_output=True, text=True,
+                          timeout=180)
+    assert done.returncode == 0, done.stderr
+    with open(root / "results" / "results.json", encoding="utf-8") as handle:
+        doc = json.load(handle)
+    assert_gradescope(doc)
+    return doc
+
+
+def read(rel):
+    with open(os.path.join(ROOT, rel), encoding="utf-8") as handle:
+        return handle.read()
+
+
+def test_gradescope_zip_layout(bundle):
+    out, source, modes = bundle
+    assert modes["setup.sh"] & 0o111 and modes["run_autograder"] & 0o111
+    names = set(modes)
+    for rel in ("project/pyproject.toml", "project/checker/cli.py", "project/lesson11/runtime.py",
+                "project/starters/bullets_starter.py", "project/solutions/tumbling_crates.py",
+                "grade_submission.py", "autograder.json"):
+        assert rel in names, rel
+    assert not any("__pycache__" in n or n.endswith(".pyc") for n in names)
+    setup = (source / "setup.sh").read_text()
+    for name, version in package.installed_versions().items():
+        assert f"{name}=={version}" in setup
+    assert "useradd" in setup and "pip install --no-deps -e" in setup
+    run = (source / "run_autograder").read_text()
+    for variable in ("SDL_VIDEODRIVER=dummy", "SDL_AUDIODRIVER=dummy", "PYGAME_HIDE_SUPPORT_PROMPT=1",
+                     "AUTOGRADER_ROOT:-/autograder"):
+        assert variable in run
+    for script in ("setup.sh", "run_autograder"):
+        assert subprocess.run(["bash", "-n", str(source / script)]).returncode == 0, script
+    config = json.loads((source / "autograder.json").read_text())
+    assert [lab["file"] for lab in config["labs"]] == ["bullets.py", "tumbling_crates.py"]
+    assert config["hide"] == ["crate_momentum"]
+
+
+def test_gradescope_passing_submission(bundle, tmp_path):
+    doc = grade_gradescope(bundle[1], tmp_path, {"tumbling_crates.py": read("solutions/tumbling_crates.py")})
+    assert doc["score"] == MAX["tumbling_crates"] == sum(t["max_score"] for t in doc["tests"])
+    assert all(t["status"] == "passed" for t in doc["tests"])
+    assert "Graded tumbling_crates.py" in doc["output"] and "17/17" in doc["output"]
+
+
+def test_gradescope_failing_submission_in_a_folder(bundle, tmp_path):
+    doc = grade_gradescope(bundle[1], tmp_path, {"lab/bullets.py": read("starters/bullets_starter.py")})
+    assert doc["score"] == 3.0 and sum(t["max_score"] for t in doc["tests"]) == MAX["bullets"]
+    assert "lab/bullets.py" in doc["output"] and "found in a folder" in doc["output"]
+    failed = [t for t in doc["tests"] if t["status"] == "failed"]
+    assert failed and all(t["output"] for t in failed), "a failed check says why"
+    hidden = [t for t in doc["tests"] if t["visibility"] == "hidden"]
+    assert [t["name"].split(":")[0] for t in hidden] == ["crate_momentum"]
+
+
+def test_gradescope_missing_submission(bundle, tmp_path):
+    doc = grade_gradescope(bundle[1], tmp_path, {})
+    assert doc["score"] == 0 and "No Python file" in doc["output"] and "bullets.py" in doc["output"]
+    assert doc["tests"][0]["max_score"] == max(MAX["bullets"], MAX["tumbling_crates"])
+
+
+def test_gradescope_wrong_name_and_several_files(bundle, tmp_path):
+    doc = grade_gradescope(bundle[1], tmp_path / "one", {"my_lab.py": read("starters/bullets_starter.py")})
+    assert doc["score"] == 3.0 and "my_lab.py" in doc["output"] and "expected name" in doc["output"]
+    doc = grade_gradescope(bundle[1], tmp_path / "two", {"a.py": "x = 1\n", "b.py": "y = 2\n"})
+    assert doc["score"] == 0 and "a.py" in doc["output"] and "b.py" in doc["output"]
+    doc = grade_gradescope(bundle[1], tmp_path / "three", {"notes.txt": "my lab is in my other folder"})
+    assert doc["score"] == 0 and "notes.txt" in doc["output"]
+
+
+def test_gradescope_hostile_submission(bundle, tmp_path):
+    hostile = "import sys\nsys.exit(3)\n" + read("starters/bullets_starter.py")
+    doc = grade_gradescope(bundle[1], tmp_path, {"bullets.py": hostile})
+    assert doc["score"] < MAX["bullets"]
+    assert doc["tests"][0]["status"] == "failed" and doc["tests"][0]["output"]
+
+
+def test_gradescope_checker_crash_still_writes_results(bundle, tmp_path):
+    broken = tmp_path / "source"
+    shutil.copytree(bundle[1], broken)
+    (broken / "project" / "checker" / "cli.py").write_text("raise RuntimeError('a checker bug')\n")
+    doc = grade_gradescope(broken, tmp_path, {"bullets.py": read("starters/bullets_starter.py")})
+    assert doc["score"] == 0 and "could not grade" in doc["output"]
+
+
+def test_prairielearn_package_and_entrypoint(tmp_path):
+    out = tmp_path / "pl"
+    done = run_package("prairielearn", "--out", str(out), "--labs", "bullets", "--image", "me/l11")
+    assert done.returncode == 0, done.stderr
+    snippet = json.loads((out / "info.json.snippet").read_text())
+    options = snippet["externalGradingOptions"]
+    assert snippet["gradingMethod"] == "External" and options["enabled"] is True
+    assert options["image"] == "me/l11" and options["entrypoint"] == "/grader/run_prairielearn"
+    assert isinstance(options["timeout"], int) and options["timeout"] > 0
+    dockerfile = (out / "Dockerfile").read_text()
+    assert re.search(r"^FROM python:\d+\.\d+-slim$", dockerfile, re.M) and "COPY . /grader" in dockerfile
+    for name, version in package.installed_versions().items():
+        assert f"{name}=={version}" in dockerfile
+    assert os.stat(out / "run_prairielearn").st_mode & stat.S_IXUSR
+    assert 'file-names="bullets.py"' in (out / "question.html").read_text()
+    grade = tmp_path / "grade"
+    (grade / "student").mkdir(parents=True)
+    (grade / "student" / "bullets.py").write_text(read("starters/bullets_starter.py"), encoding="utf-8")
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env.update(GRADE_ROOT=str(grade), GRADER_PYTHON=sys.executable, AUTOGRADER_USER="")
+    done = subprocess.run([str(out / "run_prairielearn")], env=env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    doc = json.loads((grade / "results" / "results.json").read_text())
+    assert_prairielearn(doc)
+    assert doc["score"] == pytest.approx(3.0 / MAX["bullets"])
+    assert sum(t["max_points"] for t in doc["tests"]) == MAX["bullets"]
+    shutil.rmtree(grade / "student")  # nothing submitted: still a valid result
+    subprocess.run([str(out / "run_prairielearn")], env=env, capture_output=True, timeout=60)
+    doc = json.loads((grade / "results" / "results.json").read_text())
+    assert_prairielearn(doc)
+    assert doc["score"] == 0 and "nothing was submitted" in doc["message"]
+
+
+def test_classroom_workflow(tmp_path):
+    out = tmp_path / "cl"
+    done = run_package("classroom", "--out", str(out), "--labs", "bullets")
+    assert done.returncode == 0, done.stderr
+    assert "solutions" in done.stdout  # the warning: the copy in the repository holds the solutions
+    workflow = (out / ".github" / "workflows" / "classroom.yml").read_text()
+    assert (out / ".autograder" / "project" / "starters" / "bullets_starter.py").is_file()
+    checks = labs.LABS[[lab.id for lab in labs.LABS].index("bullets")].checks.checks
+    ids = re.findall(r"^        id: (\S+)$", workflow, re.M)
+    assert ids == [f"bullets_{c.id}" for c in checks]
+    assert workflow.count("uses: classroom-resources/autograding-command-grader@v1") == len(checks)
+    points = [float(p) for p in re.findall(r"^          max-score: (\S+)$", workflow, re.M)]
+    assert points == [c.max_score for c in checks]
+    assert "uses: classroom-resources/autograding-grading-reporter@v1" in workflow
+    assert re.search(r"^          runners: (\S+)$", workflow, re.M).group(1).split(",") == ids
+    for step_id in ids:
+        assert f"{step_id.upper()}_RESULTS: \"${{{{steps.{step_id}.outputs.result}}}}\"" in workflow
+    assert "SDL_VIDEODRIVER: dummy" in workflow and "\t" not in workflow
+    done = run_package("classroom", "--out", str(tmp_path / "src"), "--source", "git+https://example.org/l11")
+    assert done.returncode == 0 and not (tmp_path / "src" / ".autograder").exists()
+
+
+def test_classroom_verdict(tmp_path, capsys):
+    result = tmp_path / "bullets.json"
+    result.write_text(json.dumps({"labs": [{"lab": "bullets", "message": "", "criteria": [
+        {"id": "loads", "name": "loads", "status": "pass", "message": "", "hint": ""},
+        {"id": "broad_test", "name": "broad", "status": "fail", "message": "missed a hit", "hint": "[step 4] x"}]}]}))
+    assert package.verdict([str(result), "bullets", "loads"]) == 0
+    assert package.verdict([str(result), "bullets", "broad_test"]) == 1
+    assert "missed a hit" in capsys.readouterr().out
+    result.write_text("")  # the checker wrote nothing (no bullets.py in the repository)
+    assert package.verdict([str(result), "bullets", "loads"]) == 1
+    assert "bullets.py" in capsys.readouterr().out
+
+
+def test_refuses_existing_output_and_bad_options(tmp_path):
+    out = tmp_path / "autograder.zip"
+    out.write_text("keep me")
+    done = run_package("gradescope", "--out", str(out), "--labs", "bullets")
+    assert done.returncode == 2 and out.read_text() == "keep me"
+    assert done.stderr.strip().count("\n") == 0 and str(out) in done.stderr and "--force" in done.stderr
+    assert run_package("gradescope", "--out", str(out), "--labs", "bullets", "--force").returncode == 0
+    assert zipfile.is_zipfile(out)
+    folder = tmp_path / "pl"
+    folder.mkdir()
+    assert run_package("prairielearn", "--out", str(folder)).returncode == 2
+    assert run_package("gradescope", "--out", os.path.join(ROOT, "starters", "x.zip")).returncode == 2
+    assert not os.path.exists(os.path.join(ROOT, "starters", "x.zip"))
+    done = run_package("gradescope", "--out", str(tmp_path / "a.zip"), "--hide", "no_such_check")
+    assert done.returncode == 2 and "no_such_check" in done.stderr
+    done = run_package("gradescope", "--out", str(tmp_path / "b.zip"), "--labs", "nope")
+    assert done.returncode == 2 and "nope" in done.stderr
