@@ -8,9 +8,9 @@ file, lab, score, status or first problem), and each file's checks with their
 messages, hints and pictures (checker/pictures.py).
 """
 import html
-import os
 
-from .report import SYMBOL, NotGraded, _rel, _summary_line, message_of
+from .outputs import submission_names
+from .report import SYMBOL, NotGraded, _summary_line, message_of, write_atomic
 
 STATUS_ORDER = ("pass", "fail", "error", "skip")
 COLOURS = {"pass": "#3a9a5b", "fail": "#d0453a", "error": "#7d1d17", "skip": "#b9bcc4"}
@@ -108,13 +108,13 @@ def histogram(rows):
     return "\n".join(out)
 
 
-def summary_table(rows, root=None):
+def summary_table(rows, names):
     """HTML: the sortable table, one row per file (the file name links to its checks below)."""
     out = ['<table id="summary"><thead><tr><th data-type="text">file</th><th data-type="text">lab</th>'
            '<th data-type="number">score</th><th data-type="text">status</th><th data-type="text">first problem</th>'
            '</tr></thead><tbody>']
     for k, row in enumerate(rows):
-        name = _rel(row.path, root)
+        name = names[row.path]
         title = row.lab.title if row.lab is not None else ""
         out.append(f'<tr data-index="{k}"><td><a href="#file-{k}">{_e(name)}</a></td><td>{_e(title)}</td>'
                    f'<td class="num" data-sort="{row.score:g}">{row.score:g}/{row.max_score:g}</td>'
@@ -123,9 +123,8 @@ def summary_table(rows, root=None):
     return "\n".join(out)
 
 
-def submission(row, index, pictures, root=None):
+def submission(row, index, pictures, name):
     """HTML: one file's checks, each with its message, hint and pictures."""
-    name = _rel(row.path, root)
     title = f" - {row.lab.title}" if row.lab is not None else ""
     opened = "" if row.passed else " open"
     out = [f'<details id="file-{index}" class="file"{opened}><summary>{_e(name)}{_e(title)}: '
@@ -147,9 +146,13 @@ def submission(row, index, pictures, root=None):
     return "\n".join(out)
 
 
-def html_text(rows, pictures=None, root=None, title="Lesson 11 lab checker: class report"):
-    """The whole report as one HTML document (str). pictures: {row path: {check id: [Picture]}}."""
+def html_text(rows, pictures=None, title="Lesson 11 lab checker: class report"):
+    """The whole report as one HTML document (str). pictures: {row path: {check id: [Picture]}}.
+
+    Each file is named by its path below the files' common folder (as for --gradescope-dir).
+    """
     pictures = pictures or {}
+    names = submission_names([r.path for r in rows])
     graded = [r for r in rows if not isinstance(r, NotGraded)]
     mean = sum(r.score for r in rows) / len(rows) if rows else 0.0
     parts = [
@@ -159,15 +162,14 @@ def html_text(rows, pictures=None, root=None, title="Lesson 11 lab checker: clas
         f"<h1>{_e(title)}</h1>",
         f"<p>{len(rows)} file(s), {len(graded)} graded; mean score {mean:.3g}. {_e(_summary_line(rows))}</p>",
         "<h2>Where the class struggled: results per check</h2>", histogram(rows),
-        "<h2>Files</h2><p>Click a heading to sort; click a file to see its checks.</p>", summary_table(rows, root),
+        "<h2>Files</h2><p>Click a heading to sort; click a file to see its checks.</p>", summary_table(rows, names),
         "<h2>Checks of each file</h2>",
     ]
-    parts += [submission(row, k, pictures.get(row.path), root) for k, row in enumerate(rows)]
+    parts += [submission(row, k, pictures.get(row.path), names[row.path]) for k, row in enumerate(rows)]
     parts += [f"<script>{JS}</script>", "</body></html>", ""]
     return "\n".join(parts)
 
 
-def write_html(rows, path, pictures=None, root=None):
-    """Write html_text(...) to path (atomically)."""
-    from .report import write_atomic
-    write_atomic(path, html_text(rows, pictures, root or os.path.dirname(os.path.abspath(path))))
+def write_html(rows, path, pictures=None):
+    """Write html_text(rows, pictures) to path (atomically)."""
+    write_atomic(path, html_text(rows, pictures))
