@@ -5,7 +5,7 @@ PICTURE_SCENES {check id: (scene name, ...)}. When such a check fails (or
 errs) and the LabReport kept its records (Grader(keep_records=True)), this
 module draws the scene from the recorded frames, headless, with pygame:
 FRAMES frames spread over the run, the bodies' outlines (static grey, moving
-blue, asleep dimmed), every contact point as a red dot with its normal, and
+in colours, asleep paler, outlines over the fills), every contact point as a red dot with its normal, and
 under it the lab's reference solution running the same scene (run once per
 process and scene, then cached). When the check's message names a frame
 ("... at frame 42 ..."), that frame is one of those shown and is framed in red
@@ -46,8 +46,8 @@ GAP = 4
 BACKGROUND = (250, 250, 247)
 SKY = (236, 240, 246)
 STATIC = (120, 124, 134)
-MOVING = (70, 140, 215)
-ASLEEP = (150, 175, 205)
+MOVING = (70, 140, 215)    # the first moving body; the others take the next colours (asleep: paler)
+PALETTE = (MOVING, (235, 150, 60), (120, 185, 95), (175, 120, 200), (230, 200, 80), (90, 190, 190))
 OUTLINE = (25, 25, 30)
 CONTACT = (225, 40, 40)
 MARK = (220, 30, 30)
@@ -165,22 +165,35 @@ def _draw_frame(surface, rect, frame, view, marked):
     if frame is None:
         surface.blit(_font(16).render("no frame", True, TEXT), (rect.x + 6, rect.y + 6))
     else:
+        moving = 0
+        outlines = []
         for body in frame.get("bodies", ()):
             if not all(abs(v) < 1e6 for v in body["pos"]):
                 continue
-            fill = STATIC if body.get("static") else (ASLEEP if body.get("asleep") else MOVING)
+            if body.get("static"):
+                fill = STATIC
+            else:
+                fill = PALETTE[moving % len(PALETTE)]
+                fill = tuple((c + 255) // 2 for c in fill) if body.get("asleep") else fill
+                moving += 1
             points = body.get("points") or []
             if len(points) >= 3:
                 corners = [at(p) for p in points]
                 pygame.draw.polygon(surface, fill, corners)
-                pygame.draw.polygon(surface, OUTLINE, corners, 1)
+                outlines.append(("polygon", corners))
             elif body.get("radius"):
                 centre = at(body["pos"])
                 r = max(2, round(body["radius"] * scale))
                 pygame.draw.circle(surface, fill, centre, r)
+                spoke = pygame.Vector2(1, 0).rotate_rad(body.get("angle", 0.0)) * r
+                outlines.append(("circle", (centre, r, (centre[0] + spoke.x, centre[1] + spoke.y))))
+        for kind, shape in outlines:   # after every fill, so an overlap shows as crossing outlines
+            if kind == "polygon":
+                pygame.draw.polygon(surface, OUTLINE, shape, 1)
+            else:
+                centre, r, tip = shape
                 pygame.draw.circle(surface, OUTLINE, centre, r, 1)
-                angle = pygame.Vector2(1, 0).rotate_rad(body.get("angle", 0.0)) * r
-                pygame.draw.line(surface, OUTLINE, centre, (centre[0] + angle.x, centre[1] + angle.y), 1)
+                pygame.draw.line(surface, OUTLINE, centre, tip, 1)
         for contact in frame.get("touching", ()):
             point, normal = contact["point"], contact["normal"]
             if not all(abs(v) < 1e6 for v in point + normal):
