@@ -15,7 +15,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
-from .checks import ERROR, PASS, skipped_all
+from .checks import ERROR, FAIL, PASS, skipped_all
 from .sandbox import Limits, run_child
 
 
@@ -41,7 +41,8 @@ class LabReport:
 
     `records` maps a scene's name to its recorded run (lesson11.runtime's
     record), kept only when the Grader is asked to (keep_records=True, for
-    --pictures and --html); otherwise it is empty.
+    --pictures and --html) and only for the scenes a failed check reads (the
+    lab's picture_scenes); otherwise it is empty.
     """
     path: str
     lab: object
@@ -127,8 +128,12 @@ class Grader:
         with open(path, "rb") as handle:
             if hashlib.sha256(handle.read()).hexdigest() != digest:
                 results = skipped_all(lab.checks, f"{sub.name} changed while it was being graded; grade it again.")
-        records = {name: run.record for name, run in sub.scenarios.items()
-                   if self.keep_records and getattr(run, "record", None)}
+        records = {}
+        if self.keep_records:   # only the scenes a failed check reads (the lab's picture_scenes): records are big
+            scenes = getattr(lab, "picture_scenes", None) or {}
+            wanted = {scene for r in results if r.status in (FAIL, ERROR) for scene in scenes.get(r.id, ())}
+            records = {name: run.record for name, run in sub.scenarios.items()
+                       if name in wanted and getattr(run, "record", None)}
         return LabReport(path, lab, results, time.monotonic() - start, records)
 
     def _late_message(self):
