@@ -121,3 +121,21 @@ def test_table_sorts_in_a_real_browser(produced, tmp_path):
     assert by_score_down == f"{a},{b},{c}"
     assert by_problem == f"{a},{c},{b}"      # "" < "closest_point (fail)" < "pushed_out_of_crate (fail)"
     assert by_name_down == f"{c},{b},{a}"
+
+
+def test_html_refuses_bad_paths(tmp_path):
+    graded = tmp_path / "class"
+    graded.mkdir()
+    (graded / "ball_on_ramp.py").write_text("# not a lab\n")
+    for target, words in ((graded / "report.html", "a folder being graded"), (tmp_path, "is a folder"),
+                          (graded / "ball_on_ramp.py", "refusing to write to a .py file")):
+        status, out, err = run_checker(str(graded), "--html", str(target))
+        assert status == 2 and words in err, (target, err)
+    assert sorted(os.listdir(graded)) == ["ball_on_ramp.py"]
+
+
+def test_a_file_not_graded_is_a_row_too():
+    from checker import html_report
+    from checker.report import NotGraded
+    text = html_report.html_text([NotGraded("/x/notes/readme.py", None, "not a lab file <b>")])
+    assert "readme" in text and "not a lab file &lt;b&gt;" in text and 'class="error"' in text
