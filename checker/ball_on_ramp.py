@@ -111,6 +111,10 @@ HINTS = {
                   "Run the file yourself (python ball_on_ramp.py) and fix the error at the line shown."),
 }
 
+# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+PICTURE_SCENES = {"runs": ("ramp", "knock", "inside"), "rolls_without_slipping": ("ramp",),
+                  "slides_without_friction": ("ramp",), "knocks_crate_over": ("knock",), "pushed_out_of_crate": ("inside",)}
+
 CHECKS = Registry()
 
 

@@ -89,6 +89,9 @@ HINTS = {
     "crash": Hint(1, "run the file", "Run the file yourself (python bullets.py) and fix the error at the line shown."),
 }
 
+# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+PICTURE_SCENES = {"runs": ("scene",)}   # the criteria step the lab's BulletWorld in the probe: no scene to show
+
 CHECKS = Registry()
 
 

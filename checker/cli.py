@@ -13,7 +13,7 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
-from . import outputs, report
+from . import html_report, outputs, pictures, report
 from .entries import discover, graded_folders
 from .grade import Grader
 from . import labs
@@ -37,8 +37,8 @@ def parse_args(argv):
         prog="python -m checker", allow_abbrev=False,
         description="Grade Lesson 11 lab files headless: each file runs in its own limited process.",
         epilog="Exit status: 0 every entry graded and passing; 1 an entry fails or could not be graded; 2 a wrong "
-               "command line (nothing graded, nothing written). No file is written unless --csv, --gradescope or "
-               "--gradescope-dir asks. See checker/README.md.")
+               "command line (nothing graded, nothing written). No file is written unless --csv, --gradescope, "
+               "--gradescope-dir, --pictures or --html asks. See checker/README.md.")
     parser.add_argument("paths", nargs="*", metavar="PATH",
                         help="lab files, folders of lab files, or folders of submission folders")
     parser.add_argument("--list", action="store_true",
@@ -50,6 +50,12 @@ def parse_args(argv):
                         help="write Gradescope's results.json for the one submission being graded to FILE")
     parser.add_argument("--gradescope-dir", metavar="DIR",
                         help="write one Gradescope results.json per submission: DIR/<submission>/results.json")
+    parser.add_argument("--pictures", metavar="DIR",
+                        help="draw each failed behaviour check's scene (and the solution's) as a PNG filmstrip: "
+                             "DIR/<submission>/<check>.png, listed in the report and embedded in --gradescope output")
+    parser.add_argument("--html", metavar="FILE",
+                        help="write a class report to FILE: one self-contained HTML page (sortable table, every "
+                             "check with its hint and pictures, a histogram per check)")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
                         help="child processes at once (default: all cores, %(default)s here)")
     parser.add_argument("--timeout", type=float, default=20.0,
@@ -77,7 +83,7 @@ def parse_args(argv):
         parser.error(f"--max-output must be >= 1 KB, got {args.max_output}")
     if args.csv is not None and args.csv.lower() == "none":
         args.csv = None  # `--csv none` from older scripts: no CSV (which is now the default)
-    for option in ("csv", "gradescope", "gradescope_dir"):
+    for option in ("csv", "gradescope", "gradescope_dir", "pictures", "html"):
         if getattr(args, option) == "":
             parser.error(f"--{option.replace('_', '-')} needs a path, got an empty one")
     return args
@@ -87,7 +93,8 @@ def plan(args):
     """(entries, the outputs to write) for the command line; raises UsageError naming every problem."""
     entries, problems = discover(args.paths)
     wanted = [(f"--{name.replace('_', '-')}", getattr(args, name), kind)
-              for name, kind in (("csv", "file"), ("gradescope", "file"), ("gradescope_dir", "folder"))
+              for name, kind in (("csv", "file"), ("gradescope", "file"), ("gradescope_dir", "folder"),
+                                 ("pictures", "folder"), ("html", "file"))
               if getattr(args, name)]
     problems += outputs.check(wanted, args.paths, entries, graded_folders(args.paths))
     if not problems and args.gradescope and len(entries) > 1:
@@ -136,13 +143,27 @@ def grade_all(entries, grader, jobs, progress):
 
 
 def write_outputs(args, rows):
-    """Write the outputs asked for; returns the one-line problems (an output that could not be written)."""
-    problems, written = [], []
+    """Write the outputs asked for; returns (the one-line problems (an output that could not be written),
+    what was written, {row path: {check id: [picture paths]}})."""
+    problems, written, links = [], [], {}
+    made = pictures.all_pictures(rows) if args.pictures or args.html else {}
+    shown = made if args.pictures else None   # pictures go into results.json only when --pictures asks
+    if args.pictures:
+        try:
+            links = pictures.write_pictures(rows, args.pictures, outputs.submission_names([r.path for r in rows]),
+                                            made)
+            count = sum(len(paths) for by_check in links.values() for paths in by_check.values())
+            written.append(f"Pictures: {count} PNG file(s) written under {args.pictures}")
+        except OSError as exc:
+            problems.append(f"--pictures {args.pictures}: cannot write a picture: {exc.strerror or exc}")
     jobs = []
     if args.csv:
         jobs.append(("--csv", args.csv, lambda: report.csv_text(rows), "CSV"))
     if args.gradescope:
-        jobs.append(("--gradescope", args.gradescope, lambda: report.gradescope_text(rows), "Gradescope"))
+        jobs.append(("--gradescope", args.gradescope, lambda: report.gradescope_text(rows, pictures=shown),
+                     "Gradescope"))
+    if args.html:
+        jobs.append(("--html", args.html, lambda: html_report.html_text(rows, made), "HTML report"))
     for option, path, text, what in jobs:
         try:
             report.write_atomic(path, text())
@@ -156,12 +177,12 @@ def write_outputs(args, rows):
             target = os.path.join(args.gradescope_dir, names[row.path], "results.json")
             try:
                 os.makedirs(os.path.dirname(target), exist_ok=True)
-                report.write_atomic(target, report.gradescope_text([row]))
+                report.write_atomic(target, report.gradescope_text([row], pictures=shown))
                 count += 1
             except OSError as exc:
                 problems.append(f"--gradescope-dir: cannot write {target}: {exc.strerror or exc}")
         written.append(f"Gradescope: {count} results.json written under {args.gradescope_dir}")
-    return problems, written
+    return problems, written, links
 
 
 def main(argv=None):
@@ -181,15 +202,15 @@ def main(argv=None):
             print(f"checker: error: {line}", file=sys.stderr)
         return USAGE
     grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024), args.jobs, args.total_timeout,
-                    options={"allow_edits": args.allow_edits})
+                    options={"allow_edits": args.allow_edits}, keep_records=bool(args.pictures or args.html))
     rows = grade_all(entries, grader, args.jobs, progress=not args.quiet and len(entries) > 1)
-    problems, written = write_outputs(args, rows)
+    problems, written, links = write_outputs(args, rows)
     if args.json:
         json.dump(report.to_json(rows), sys.stdout, indent=2)
         sys.stdout.write("\n")
     else:
         for row in rows:
-            report.text_report(row, sys.stdout)
+            report.text_report(row, sys.stdout, pictures=links.get(row.path))
         if len(rows) > 1:
             report.summary_table(rows, sys.stdout)
         for line in written:

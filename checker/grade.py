@@ -15,7 +15,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
-from .checks import ERROR, PASS, skipped_all
+from .checks import ERROR, FAIL, PASS, skipped_all
 from .sandbox import Limits, run_child
 
 
@@ -37,11 +37,18 @@ class Submission:
 
 @dataclass
 class LabReport:
-    """The graded result of one file."""
+    """The graded result of one file.
+
+    `records` maps a scene's name to its recorded run (lesson11.runtime's
+    record), kept only when the Grader is asked to (keep_records=True, for
+    --pictures and --html) and only for the scenes a failed check reads (the
+    lab's picture_scenes); otherwise it is empty.
+    """
     path: str
     lab: object
     results: list
     seconds: float
+    records: dict = field(default_factory=dict)
 
     @property
     def score(self):
@@ -65,8 +72,9 @@ class LabReport:
 class Grader:
     """Runs child processes for many labs with at most `jobs` at a time and an overall deadline."""
 
-    def __init__(self, limits=None, jobs=None, total_timeout=None, options=None):
+    def __init__(self, limits=None, jobs=None, total_timeout=None, options=None, keep_records=False):
         self.limits = limits or Limits()
+        self.keep_records = keep_records
         self.options = dict(options or {})
         self.jobs = max(1, jobs or os.cpu_count() or 1)
         self.slots = threading.Semaphore(self.jobs)
@@ -120,7 +128,13 @@ class Grader:
         with open(path, "rb") as handle:
             if hashlib.sha256(handle.read()).hexdigest() != digest:
                 results = skipped_all(lab.checks, f"{sub.name} changed while it was being graded; grade it again.")
-        return LabReport(path, lab, results, time.monotonic() - start)
+        records = {}
+        if self.keep_records:   # only the scenes a failed check reads (the lab's picture_scenes): records are big
+            scenes = getattr(lab, "picture_scenes", None) or {}
+            wanted = {scene for r in results if r.status in (FAIL, ERROR) for scene in scenes.get(r.id, ())}
+            records = {name: run.record for name, run in sub.scenarios.items()
+                       if name in wanted and getattr(run, "record", None)}
+        return LabReport(path, lab, results, time.monotonic() - start, records)
 
     def _late_message(self):
         return f"not graded: the time limit for the whole run ({self.total_timeout:g} s) ran out first."

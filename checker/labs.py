@@ -3,7 +3,8 @@
 To add a lab, write a module like checker/tumbling_crates.py (CHECKS, TITLE,
 PROBES (the module the child process imports to probe the lab's functions:
 REQUIRED names and PROBES {function name: probe}), recognise(path, source),
-scenarios()) and add one row to LABS.
+scenarios(), and optionally PICTURE_SCENES {check id: scene names} for
+--pictures) and add one row to LABS.
 """
 from dataclasses import dataclass
 
@@ -26,6 +27,16 @@ class Lab:
 
     def scenarios(self):
         return self.module.scenarios()
+
+    @property
+    def picture_scenes(self):
+        """{check id: (scene name, ...)}: the scenes a behaviour check reads (its module's PICTURE_SCENES)."""
+        return getattr(self.module, "PICTURE_SCENES", {})
+
+    @property
+    def solution(self):
+        """Path of the lab's reference solution (its module's SOLUTION), or None."""
+        return getattr(self.module, "SOLUTION", None)
 
     @property
     def probes(self):

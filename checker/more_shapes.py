@@ -92,6 +92,10 @@ HINTS = {
                   "Run the file yourself (python more_shapes.py) and fix the error at the line shown."),
 }
 
+# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+PICTURE_SCENES = {"runs": ("solo", "pile"), "triangle_tips": ("solo",), "hexagon_tips": ("solo",), "pile_stable": ("pile",),
+                  "ramp_holds": ("solo",)}
+
 CHECKS = Registry()
 
 

@@ -27,6 +27,7 @@ JSON schema (`--json`, version 1):
 }
 """
 import csv
+import html
 import io
 import json
 import os
@@ -63,8 +64,11 @@ def message_of(row):
     return getattr(row, "message", "") or ""
 
 
-def text_report(report, stream, root=None):
-    """The readable report of one row: a mark per check, the message, and the hint under each failure."""
+def text_report(report, stream, root=None, pictures=None):
+    """The readable report of one row: a mark per check, the message, and the hint under each failure.
+
+    pictures: {check id: [PNG paths]} (--pictures), each listed under its check.
+    """
     name = _rel(report.path, root)
     if isinstance(report, NotGraded):
         title = f" - {report.lab.title}" if report.lab is not None else ""
@@ -79,6 +83,8 @@ def text_report(report, stream, root=None):
             stream.write(f"      {r.message}\n")
         if r.hint:
             stream.write(f"      hint {r.hint}\n")
+        for picture in (pictures or {}).get(r.id, ()):
+            stream.write(f"      picture {picture}\n")
     stream.write("\n")
 
 
@@ -99,10 +105,12 @@ def to_json(reports, errors=(), root=None):
     }
 
 
-def gradescope(reports, root=None):
+def gradescope(reports, root=None, pictures=None):
     """Gradescope's results.json: top-level score, and one test per check (name, score, max_score, status, output).
 
     Meant for one submission (one row); a row that could not be graded is one failed test saying why.
+    pictures: {row path: {check id: [checker.pictures.Picture]}} (--pictures): a test with pictures gets
+    output_format "html", its text in a <pre> and each picture as an <img> with a data: URI.
     """
     tests = []
     for report in reports:
@@ -114,9 +122,16 @@ def gradescope(reports, root=None):
             continue
         for r in report.results:
             output = "\n".join(part for part in (r.message, ("Hint " + r.hint) if r.hint else "") if part)
-            tests.append({"name": prefix + r.name, "score": r.score, "max_score": r.max_score,
-                          "status": "passed" if r.status == "pass" else "failed",
-                          "output": output or ("skipped" if r.status == "skip" else ""), "visibility": "visible"})
+            test = {"name": prefix + r.name, "score": r.score, "max_score": r.max_score,
+                    "status": "passed" if r.status == "pass" else "failed",
+                    "output": output or ("skipped" if r.status == "skip" else ""), "visibility": "visible"}
+            shown = ((pictures or {}).get(report.path) or {}).get(r.id)
+            if shown:
+                test["output_format"] = "html"
+                test["output"] = f"<pre>{html.escape(test['output'])}</pre>" + "".join(
+                    f'<p><img alt="{html.escape(p.check_id)}: scene {html.escape(p.scene)}" src="{p.data_url}"></p>'
+                    for p in shown)
+            tests.append(test)
     return {"score": sum(r.score for r in reports), "output": _summary_line(reports),
             "visibility": "visible", "stdout_visibility": "hidden", "tests": tests}
 
@@ -166,8 +181,8 @@ def write_csv(reports, path, root=None):
     write_atomic(path, csv_text(reports, root))
 
 
-def gradescope_text(reports, root=None):
-    return json.dumps(gradescope(reports, root), indent=2) + "\n"
+def gradescope_text(reports, root=None, pictures=None):
+    return json.dumps(gradescope(reports, root, pictures), indent=2) + "\n"
 
 
 def write_atomic(path, text):

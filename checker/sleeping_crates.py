@@ -74,6 +74,9 @@ HINTS = {
                   "Run the file yourself (python sleeping_crates.py) and fix the error at the line shown."),
 }
 
+# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+PICTURE_SCENES = {"runs": ("sleep",), "pile_sleeps": ("sleep",), "no_sleep_in_air": ("sleep",), "drop_wakes_pile": ("sleep",)}
+
 CHECKS = Registry()
 
 

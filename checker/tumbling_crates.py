@@ -124,6 +124,10 @@ HINTS = {
                   "Run the file yourself (python tumbling_crates.py) and fix the error at the line shown."),
 }
 
+# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+PICTURE_SCENES = {"runs": ("corner", "ramp", "pile", "own_scene"), "corner_tips": ("corner",), "ramp_holds": ("ramp",),
+                  "pile_stable": ("pile",), "fast_movers_zero": ("own_scene",)}
+
 CHECKS = Registry()
 
 

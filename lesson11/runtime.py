@@ -28,7 +28,8 @@ Settings (all optional):
 
 Each recorded frame holds "frame", "contacts" (how many), "touching" (each
 contact: body indices "a" and "b", "point", "normal" A→B, "depth") and
-"bodies" (each: "static", "asleep" (the "sleep" effect), "pos", "vel", "angle", "omega", "points").
+"bodies" (each: "static", "asleep" (the "sleep" effect), "pos", "vel", "angle", "omega", "points", and
+"radius" for a circle, whose "points" are []).
 """
 import atexit
 import json
@@ -209,6 +210,7 @@ def record(bodies, contacts=()):
             "angle": body.angle,
             "omega": body.omega,
             "points": [[p.x, p.y] for p in body.world_points()],
+            **({"radius": body.radius} if getattr(getattr(body, "shape", None), "kind", None) == "circle" else {}),
         } for body in bodies],
     })
 

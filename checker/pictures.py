@@ -1,0 +1,324 @@
+"""Pictures of what happened: a filmstrip PNG for each failed behaviour check.
+
+A behaviour check reads recorded scenes; each lab module says which ones in
+PICTURE_SCENES {check id: (scene name, ...)}. When such a check fails (or
+errs) and the LabReport kept its records (Grader(keep_records=True)), this
+module draws the scene from the recorded frames, headless, with pygame:
+FRAMES frames spread over the run, the bodies' outlines (static grey, moving
+in colours, asleep paler, outlines over the fills), every contact point as a red dot with its normal, and
+under it the lab's reference solution running the same scene (run once per
+process and scene, then cached). When the check's message names a frame
+("... at frame 42 ..."), that frame is one of those shown and is framed in red
+in both rows.
+
+Nothing here knows a lab: the scenes come from PICTURE_SCENES, the reference
+from the lab module's SOLUTION, the settings from its scenarios().
+
+Entry points:
+  pictures_for(report, check_id)  -> [Picture(check_id, scene, png bytes)]
+  prairielearn_images(report, check_id) -> [{"label", "url": "data:image/png;base64,..."}]
+  base64_pngs(report, check_id)   -> [base64 str]
+  write_pictures(rows, folder)    -> {row path: {check id: [written paths]}}
+"""
+import base64
+import io
+import os
+import re
+import threading
+from dataclasses import dataclass
+
+os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
+os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
+import pygame  # noqa: E402
+
+from .sandbox import Limits, run_child  # noqa: E402
+
+FRAMES = 6                 # frames per row
+TILE = (220, 150)          # px of one frame (the 900 × 600 scene drawn at about 1/4)
+WORLD = (0, 0, 900, 600)   # px: the labs' window, shown when no body moves
+MARGIN = 40                # px around the moving bodies
+MIN_VIEW = (300, 200)      # px: the smallest part of the scene a tile shows
+FPS = 60
+LABEL_H = 18
+HEAD_H = 22
+GAP = 4
+BACKGROUND = (250, 250, 247)
+SKY = (236, 240, 246)
+STATIC = (120, 124, 134)
+MOVING = (70, 140, 215)    # the first moving body; the others take the next colours (asleep: paler)
+PALETTE = (MOVING, (235, 150, 60), (120, 185, 95), (175, 120, 200), (230, 200, 80), (90, 190, 190))
+OUTLINE = (25, 25, 30)
+CONTACT = (225, 40, 40)
+MARK = (220, 30, 30)
+TEXT = (30, 30, 35)
+FAILED = ("fail", "error")
+FRAME_IN_MESSAGE = re.compile(r"\bframe (\d+)\b")
+
+
+@dataclass
+class Picture:
+    """One PNG: the check it shows, the scene drawn, and the bytes."""
+    check_id: str
+    scene: str
+    png: bytes
+
+    @property
+    def base64(self):
+        return base64.b64encode(self.png).decode("ascii")
+
+    @property
+    def data_url(self):
+        return "data:image/png;base64," + self.base64
+
+
+# ---------------------------------------------------------------- the reference solution's runs (cached)
+
+_REFERENCE = {}
+_REFERENCE_LOCK = threading.Lock()
+
+
+def reference_record(lab, scene, limits=None):
+    """The record of the lab's SOLUTION running `scene` (one child run per process and scene), or None."""
+    key = (getattr(lab, "id", None), scene)
+    with _REFERENCE_LOCK:
+        if key in _REFERENCE:
+            return _REFERENCE[key]
+        record = None
+        solution = getattr(lab, "solution", None)
+        settings = lab.scenarios().get(scene) if solution and os.path.isfile(solution) else None
+        if settings is not None:
+            run = run_child(solution, "scenario", dict(settings, probes=lab.probes), limits or Limits())
+            record = getattr(run, "record", None)
+        _REFERENCE[key] = record
+        return record
+
+
+# ---------------------------------------------------------------- drawing
+
+def _font(size):
+    if not pygame.font.get_init():
+        pygame.font.init()
+    return pygame.font.Font(None, size)
+
+
+def _view(frames):
+    """(left, top, width, height) in px: around every moving body shown (40 px margin, at least MIN_VIEW px),
+    in the tile's shape; the labs' whole window when nothing moves."""
+    xs, ys = [], []
+    for frame in frames:
+        for body in frame.get("bodies", ()):
+            if body.get("static"):
+                continue
+            r = body.get("radius") or 0.0
+            points = body.get("points") or [body["pos"]]
+            for x, y in points:
+                if abs(x) < 1e5 and abs(y) < 1e5:
+                    xs += [x - r, x + r]
+                    ys += [y - r, y + r]
+    if not xs:
+        left, top, right, bottom = WORLD
+    else:
+        left, top, right, bottom = min(xs) - MARGIN, min(ys) - MARGIN, max(xs) + MARGIN, max(ys) + MARGIN
+    width, height = max(right - left, MIN_VIEW[0]), max(bottom - top, MIN_VIEW[1])
+    cx, cy = (left + right) / 2, (top + bottom) / 2
+    aspect = TILE[0] / TILE[1]
+    if width / height < aspect:   # keep the tile's shape: widen or heighten around the centre
+        width = height * aspect
+    else:
+        height = width / aspect
+    return cx - width / 2, cy - height / 2, width, height
+
+
+def _pick(frames, marked=None, count=FRAMES):
+    """`count` recorded frames spread evenly from first to last, the marked frame (a frame number) among them."""
+    if not frames:
+        return []
+    n = len(frames)
+    indices = sorted({round(i * (n - 1) / max(count - 1, 1)) for i in range(min(count, n))})
+    if marked is not None:
+        at = min(range(n), key=lambda i: abs(frames[i].get("frame", i) - marked))
+        if at not in indices:
+            nearest = min(range(len(indices)), key=lambda k: abs(indices[k] - at))
+            indices[nearest] = at
+            indices.sort()
+    return [frames[i] for i in indices]
+
+
+def _nearest(frames, number):
+    if not frames:
+        return None
+    return min(frames, key=lambda f: abs(f.get("frame", 0) - number))
+
+
+def _draw_frame(surface, rect, frame, view, marked):
+    """Draw one recorded frame into rect (a pygame.Rect) of surface, seen through view."""
+    left, top, width, height = view
+    scale = rect.width / width
+    clip = surface.get_clip()
+    surface.set_clip(rect)
+    surface.fill(SKY, rect)
+
+    def at(p):
+        return (rect.x + (p[0] - left) * scale, rect.y + (p[1] - top) * scale)
+
+    if frame is None:
+        surface.blit(_font(16).render("no frame", True, TEXT), (rect.x + 6, rect.y + 6))
+    else:
+        moving = 0
+        outlines = []
+        for body in frame.get("bodies", ()):
+            if not all(abs(v) < 1e6 for v in body["pos"]):
+                continue
+            if body.get("static"):
+                fill = STATIC
+            else:
+                fill = PALETTE[moving % len(PALETTE)]
+                fill = tuple((c + 255) // 2 for c in fill) if body.get("asleep") else fill
+                moving += 1
+            points = body.get("points") or []
+            if len(points) >= 3:
+                corners = [at(p) for p in points]
+                pygame.draw.polygon(surface, fill, corners)
+                outlines.append(("polygon", corners))
+            elif body.get("radius"):
+                centre = at(body["pos"])
+                r = max(2, round(body["radius"] * scale))
+                pygame.draw.circle(surface, fill, centre, r)
+                spoke = pygame.Vector2(1, 0).rotate_rad(body.get("angle", 0.0)) * r
+                outlines.append(("circle", (centre, r, (centre[0] + spoke.x, centre[1] + spoke.y))))
+        for kind, shape in outlines:   # after every fill, so an overlap shows as crossing outlines
+            if kind == "polygon":
+                pygame.draw.polygon(surface, OUTLINE, shape, 1)
+            else:
+                centre, r, tip = shape
+                pygame.draw.circle(surface, OUTLINE, centre, r, 1)
+                pygame.draw.line(surface, OUTLINE, centre, tip, 1)
+        for contact in frame.get("touching", ()):
+            point, normal = contact["point"], contact["normal"]
+            if not all(abs(v) < 1e6 for v in point + normal):
+                continue
+            p = at(point)
+            pygame.draw.line(surface, CONTACT, p, (p[0] + normal[0] * 9, p[1] + normal[1] * 9), 1)
+            pygame.draw.circle(surface, CONTACT, p, 2)
+    surface.set_clip(clip)
+    if marked:
+        pygame.draw.rect(surface, MARK, rect.inflate(4, 4), 3)
+
+
+def filmstrip(record, reference=None, marked=None, title="", count=FRAMES):
+    """A pygame Surface: the run's frames in a row (and the reference's same frames below), labelled.
+
+    record / reference: lesson11.runtime records ({"records": [frame, ...]});
+    marked: the frame number of the failure, if known.
+    """
+    frames = (record or {}).get("records") or []
+    shown = _pick(frames, marked, count)
+    ref_frames = (reference or {}).get("records") or []
+    rows = [("yours", shown)]
+    if ref_frames:
+        rows.append(("solution", [_nearest(ref_frames, f.get("frame", 0)) for f in shown]))
+    view = _view(shown + [f for f in rows[-1][1] if f is not None])
+    label_w = 70
+    width = label_w + len(shown) * (TILE[0] + GAP) + GAP
+    height = HEAD_H + len(rows) * (TILE[1] + LABEL_H + GAP) + GAP
+    surface = pygame.Surface((max(width, 320), height))
+    surface.fill(BACKGROUND)
+    small, big = _font(16), _font(19)
+    surface.blit(big.render(title, True, TEXT), (GAP + 2, 4))
+    marked_at = min(shown, key=lambda f: abs(f.get("frame", 0) - marked)).get("frame") \
+        if marked is not None and shown else None
+    for r, (name, row) in enumerate(rows):
+        y = HEAD_H + r * (TILE[1] + LABEL_H + GAP)
+        surface.blit(small.render(name, True, TEXT), (GAP + 2, y + LABEL_H + TILE[1] // 2 - 6))
+        for k, frame in enumerate(row):
+            x = label_w + k * (TILE[0] + GAP)
+            number = shown[k].get("frame", 0)
+            is_marked = marked_at is not None and number == marked_at
+            label = f"frame {number}  t = {number / FPS:.2f} s" + ("  <- here" if is_marked and r == 0 else "")
+            surface.blit(small.render(label, True, MARK if is_marked else TEXT), (x + 2, y + 3))
+            _draw_frame(surface, pygame.Rect(x, y + LABEL_H, TILE[0], TILE[1]), frame, view, is_marked)
+    return surface
+
+
+def png_bytes(surface):
+    """The surface as PNG bytes (pygame.image.save into memory)."""
+    buffer = io.BytesIO()
+    pygame.image.save(surface, buffer, "picture.png")
+    return buffer.getvalue()
+
+
+# ---------------------------------------------------------------- per check
+
+def marked_frame(result):
+    """The frame number a check's message names ("... at frame 42 ..."), or None."""
+    found = FRAME_IN_MESSAGE.search(getattr(result, "message", "") or "")
+    return int(found.group(1)) if found else None
+
+
+def pictured_results(report):
+    """The results of a report that get a picture: failed behaviour checks whose scenes were recorded."""
+    lab = getattr(report, "lab", None)
+    scenes = getattr(lab, "picture_scenes", None) or {}
+    records = getattr(report, "records", None) or {}
+    return [r for r in getattr(report, "results", ())
+            if r.status in FAILED and any(s in records for s in scenes.get(r.id, ()))]
+
+
+def pictures_for(report, check_id, with_reference=True):
+    """[Picture] for one failed behaviour check of a report: one filmstrip per scene it reads ([] otherwise)."""
+    result = next((r for r in pictured_results(report) if r.id == check_id), None)
+    if result is None:
+        return []
+    pictures = []
+    for scene in report.lab.picture_scenes.get(check_id, ()):
+        record = report.records.get(scene)
+        if not record or not record.get("records"):
+            continue
+        reference = reference_record(report.lab, scene) if with_reference else None
+        title = f"{check_id}: scene '{scene}' ({report.lab.title}); top: this file, bottom: the solution"
+        surface = filmstrip(record, reference, marked_frame(result), title)
+        pictures.append(Picture(check_id, scene, png_bytes(surface)))
+    return pictures
+
+
+def base64_pngs(report, check_id):
+    """The check's pictures as base64 PNG strings (for PrairieLearn's images[] or an <img> data: URI)."""
+    return [p.base64 for p in pictures_for(report, check_id)]
+
+
+def prairielearn_images(report, check_id):
+    """PrairieLearn results.json images[] entries for the check: [{"label", "url": data: URI}]."""
+    return [{"label": f"{p.check_id}: scene {p.scene}", "url": p.data_url} for p in pictures_for(report, check_id)]
+
+
+def all_pictures(rows):
+    """{row path: {check id: [Picture]}} for every failed behaviour check of every row (rows without any left out)."""
+    found = {}
+    for row in rows:
+        for result in pictured_results(row):
+            pictures = pictures_for(row, result.id)
+            if pictures:
+                found.setdefault(row.path, {})[result.id] = pictures
+    return found
+
+
+def write_pictures(rows, folder, names, pictures=None):
+    """Write each picture to folder/<submission name>/<check id>[-<scene>].png; returns {row path: {check id: [paths]}}.
+
+    names: {row path: submission folder name} (checker/outputs.submission_names).
+    pictures: all_pictures(rows), if already made.
+    """
+    pictures = all_pictures(rows) if pictures is None else pictures
+    written = {}
+    for path, by_check in pictures.items():
+        target = os.path.join(folder, names[path])
+        os.makedirs(target, exist_ok=True)
+        for check_id, shown in by_check.items():
+            for picture in shown:
+                name = check_id if len(shown) == 1 else f"{check_id}-{picture.scene}"
+                file = os.path.join(target, name + ".png")
+                with open(file, "wb") as handle:
+                    handle.write(picture.png)
+                written.setdefault(path, {}).setdefault(check_id, []).append(file)
+    return written

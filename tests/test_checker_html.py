@@ -1,0 +1,140 @@
+"""The class report in the browser (issue 14 §3): `python -m checker FOLDER --html report.html`.
+
+One module-scoped run grades a small class of Ball on the Ramp files: the
+solution, the solution with SLOP = 6 (fails one scene, so it gets a picture;
+graded with --allow-edits) and the starter (fails at step 2 after one probe),
+about 7 CPU s. The sorting JS runs in a real headless Chromium when
+/usr/bin/chromium (or chromium on PATH) is there; otherwise that test skips.
+"""
+import html
+import json
+import os
+import re
+import shutil
+import subprocess
+
+import pytest
+
+from test_checker_pictures import ROOT, SOLUTION, run_checker, slop_file
+
+STARTER = os.path.join(ROOT, "starters", "ball_on_ramp_starter.py")
+NAMES = ("alice", "bob", "carol")
+
+
+@pytest.fixture(scope="module")
+def produced(tmp_path_factory):
+    base = tmp_path_factory.mktemp("class")
+    folder = base / "submissions"
+    for name in NAMES:
+        (folder / name).mkdir(parents=True)
+    shutil.copy(SOLUTION, folder / "alice" / "ball_on_ramp.py")
+    slop_file(str(folder / "bob"))
+    shutil.copy(STARTER, folder / "carol" / "ball_on_ramp.py")
+    report = base / "report.html"
+    status, out, err = run_checker(str(folder), "--allow-edits", "--html", str(report), "--json")
+    assert status == 1, err
+    return report, json.loads(out), base
+
+
+def test_one_self_contained_file(produced):
+    report, _, base = produced
+    text = report.read_text(encoding="utf-8")
+    assert sorted(os.listdir(base)) == ["report.html", "submissions"]   # nothing else written
+    assert text.startswith("<!DOCTYPE html>") and text.rstrip().endswith("</html>")
+    assert not re.search(r"https?://", text), "the report must not reach the network"
+    assert not re.search(r'<(link|script)[^>]*(href|src)=', text), "no external style sheet or script"
+    assert "<style>" in text and "<script>" in text
+    assert len(text) < 2_000_000
+
+
+def test_every_submission_and_check_is_there(produced):
+    report, data, _ = produced
+    text = report.read_text(encoding="utf-8")
+    for name in NAMES:
+        assert f"{name}/ball_on_ramp" in text
+    for lab in data["labs"]:
+        for criterion in lab["criteria"]:
+            assert f'data-check="{criterion["id"]}"' in text
+            if criterion["hint"]:
+                assert html.escape(criterion["hint"], quote=True) in text
+    # the histogram: one bar row per check, the failing scene shows one fail of three
+    assert text.count('<tr data-check="') == len(data["labs"][0]["criteria"])
+    row = re.search(r'<tr data-check="pushed_out_of_crate">.*?</tr>', text).group(0)
+    assert 'title="1 fail"' in row and "1/3" in row
+    # bob's failed scene is pictured inline, once; the others have no picture
+    assert text.count('src="data:image/png;base64,') == 1
+    assert re.search(r'alt="pushed_out_of_crate: scene inside" src="data:image/png;base64,', text)
+
+
+def test_summary_rows_carry_sort_keys(produced):
+    text = produced[0].read_text(encoding="utf-8")
+    table = re.search(r'<table id="summary">.*?</table>', text, re.S).group(0)
+    assert re.findall(r'data-sort="([0-9.]+)"', table) == ["18", "16", "3"]
+    assert table.count('data-type="number"') == 1
+
+
+def chromium():
+    for candidate in ("/usr/bin/chromium", shutil.which("chromium"), shutil.which("chromium-browser"),
+                      shutil.which("google-chrome")):
+        if candidate and os.path.exists(candidate):
+            return candidate
+    return None
+
+
+def dump_dom(browser, page, profile):
+    """The page's DOM after its scripts ran, from headless Chromium."""
+    proc = subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                           "--no-first-run", "--disable-background-networking", "--disable-component-update",
+                           "--disable-sync", f"--user-data-dir={profile}", "--dump-dom", page.as_uri()],
+                          capture_output=True, text=True, timeout=90)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    return proc.stdout
+
+
+def test_table_sorts_in_a_real_browser(produced, tmp_path):
+    browser = chromium()
+    if browser is None:
+        pytest.skip("no Chromium here (apt-get install -y chromium); CI installs only pip packages, "
+                    "so the sorting JS is tested only where a browser is installed")
+    text = produced[0].read_text(encoding="utf-8")
+    # click the headings the way a user does, then write the order of the rows into the page for --dump-dom
+    probe = """<script>
+    function order() { return Array.prototype.map.call(document.querySelectorAll('#summary tbody tr'),
+        function (r) { return r.cells[0].textContent; }).join(','); }
+    var heads = document.querySelectorAll('#summary th'), seen = [];
+    heads[2].click(); seen.push(order());
+    heads[2].click(); seen.push(order());
+    heads[4].click(); seen.push(order());
+    heads[0].click(); heads[0].click(); seen.push(order());
+    var out = document.createElement('pre'); out.id = 'sorted'; out.textContent = seen.join('|');
+    document.body.appendChild(out);
+    </script></body>"""
+    page = tmp_path / "probe.html"
+    page.write_text(text.replace("</body>", probe), encoding="utf-8")
+    dom = dump_dom(browser, page, tmp_path / "profile")
+    found = re.search(r'<pre id="sorted">(.*?)</pre>', dom)
+    assert found, dom[-2000:]
+    by_score_up, by_score_down, by_problem, by_name_down = found.group(1).split("|")
+    a, b, c = (f"{n}/ball_on_ramp" for n in NAMES)
+    assert by_score_up == f"{c},{b},{a}"
+    assert by_score_down == f"{a},{b},{c}"
+    assert by_problem == f"{a},{c},{b}"      # "" < "closest_point (fail)" < "pushed_out_of_crate (fail)"
+    assert by_name_down == f"{c},{b},{a}"
+
+
+def test_html_refuses_bad_paths(tmp_path):
+    graded = tmp_path / "class"
+    graded.mkdir()
+    (graded / "ball_on_ramp.py").write_text("# not a lab\n")
+    for target, words in ((graded / "report.html", "a folder being graded"), (tmp_path, "is a folder"),
+                          (graded / "ball_on_ramp.py", "refusing to write to a .py file")):
+        status, out, err = run_checker(str(graded), "--html", str(target))
+        assert status == 2 and words in err, (target, err)
+    assert sorted(os.listdir(graded)) == ["ball_on_ramp.py"]
+
+
+def test_a_file_not_graded_is_a_row_too():
+    from checker import html_report
+    from checker.report import NotGraded
+    text = html_report.html_text([NotGraded("/x/notes/readme.py", None, "not a lab file <b>")])
+    assert "readme" in text and "not a lab file &lt;b&gt;" in text and 'class="error"' in text

@@ -1,0 +1,148 @@
+"""Pictures of failed behaviour checks (issue 14 §2): checker/pictures.py and --pictures.
+
+One Ball on the Ramp file fails one scene cheaply: the solution with the
+push-out's SLOP raised from 0.5 to 6 px (graded with allow_edits), so a ball
+started inside a crate stays 5.9 px into it and pushed_out_of_crate fails
+while every function check passes. It is graded once (about 3 CPU s, plus
+one run of the solution's scene for the bottom row); the solution itself once
+more to show a passing file gets no picture. The --pictures refusals stop
+before anything is graded.
+"""
+import io
+import os
+import subprocess
+import sys
+
+import pygame
+import pytest
+
+from checker import labs, pictures
+from checker.grade import Grader
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")
+LAB = next(lab for lab in labs.LABS if lab.id == "ball_on_ramp")
+MAX_BYTES = 150_000
+
+
+def slop_file(folder):
+    """The solution with SLOP = 6.0: passes every function check, fails pushed_out_of_crate."""
+    with open(SOLUTION, encoding="utf-8") as handle:
+        text = handle.read()
+    assert "SLOP = 0.5 " in text
+    path = os.path.join(folder, "ball_on_ramp.py")
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(text.replace("SLOP = 0.5 ", "SLOP = 6.0 ", 1))
+    return path
+
+
+@pytest.fixture(scope="module")
+def failing(tmp_path_factory):
+    path = slop_file(str(tmp_path_factory.mktemp("slop")))
+    report = Grader(options={"allow_edits": True}, keep_records=True).grade(path, LAB)
+    by_id = {r.id: r for r in report.results}
+    assert by_id["closest_point"].status == "pass" and by_id["pushed_out_of_crate"].status == "fail", \
+        [(r.id, r.status) for r in report.results]
+    return report
+
+
+def load(png):
+    return pygame.image.load(io.BytesIO(png), "picture.png")
+
+
+def test_failed_criterion_gets_a_small_filmstrip_of_frames(failing):
+    assert [r.id for r in pictures.pictured_results(failing)] == ["pushed_out_of_crate"]
+    shown = pictures.pictures_for(failing, "pushed_out_of_crate")
+    assert [p.scene for p in shown] == ["inside"]
+    png = shown[0].png
+    assert png.startswith(b"\x89PNG") and 2_000 < len(png) < MAX_BYTES
+    image = load(png)
+    width, height = image.get_size()
+    # a row of frames for the file and one for the solution
+    assert width >= pictures.FRAMES * pictures.TILE[0] and height >= 2 * pictures.TILE[1]
+    assert width <= 1600 and height <= 500
+    colours = {tuple(image.get_at((x, y)))[:3] for x in range(0, width, 3) for y in range(0, height, 3)}
+    assert len(colours) > 8, "the picture is blank"
+    # moving bodies are drawn in both rows, contacts in red
+    half = height // 2
+    rows = [{tuple(image.get_at((x, y)))[:3] for x in range(0, width, 2) for y in range(lo, hi, 2)}
+            for lo, hi in ((0, half), (half, height))]
+    assert all(pictures.MOVING in row for row in rows)
+    assert pictures.CONTACT in rows[0]
+
+
+def test_base64_and_prairielearn_images(failing):
+    import base64
+    strings = pictures.base64_pngs(failing, "pushed_out_of_crate")
+    assert len(strings) == 1 and base64.b64decode(strings[0]).startswith(b"\x89PNG")
+    images = pictures.prairielearn_images(failing, "pushed_out_of_crate")
+    assert images[0]["url"].startswith("data:image/png;base64,") and "inside" in images[0]["label"]
+    assert pictures.pictures_for(failing, "closest_point") == []   # a passing function check: none
+
+
+def test_marked_frame_is_read_from_the_message():
+    class R:
+        message = "the ball sank 3.2 px into the ramp (at frame 42; bound 1 px)."
+    assert pictures.marked_frame(R) == 42
+    frames = [{"frame": k, "bodies": [], "touching": []} for k in range(1, 101)]
+    picked = pictures._pick(frames, 42)
+    assert len(picked) == pictures.FRAMES and any(f["frame"] == 42 for f in picked)
+    assert picked[0]["frame"] == 1 and picked[-1]["frame"] == 100
+
+
+def test_passing_file_gets_no_picture():
+    report = Grader(keep_records=True).grade(SOLUTION, LAB)
+    assert report.passed and report.records == {}    # nothing failed: no scene kept ...
+    assert pictures.all_pictures([report]) == {}     # ... and no picture
+
+
+def test_records_are_kept_only_when_asked(failing):
+    assert set(failing.records) == {"inside"}       # only the failed check's scene is kept
+    assert Grader().keep_records is False
+
+
+def test_every_lab_declares_scenes_it_has():
+    for lab in labs.LABS:
+        ids = {c.id for c in lab.checks.checks}
+        for check_id, scenes in lab.picture_scenes.items():
+            assert check_id in ids and set(scenes) <= set(lab.scenarios()), (lab.id, check_id)
+
+
+def run_checker(*args):
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+               PYTHONDONTWRITEBYTECODE="1")
+    proc = subprocess.run([sys.executable, "-m", "checker", *args], cwd=ROOT, env=env, capture_output=True,
+                          text=True, timeout=300)
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+def test_pictures_refuses_bad_folders(tmp_path):
+    graded = tmp_path / "class"
+    graded.mkdir()
+    lab = graded / "ball_on_ramp.py"
+    lab.write_text("# not a lab\n")
+    for target, words in ((graded / "pics", "a folder being graded"), (graded, "being graded"),
+                          (lab, "refusing to write to a .py file"), (tmp_path / "no" / "pics", "does not exist")):
+        status, out, err = run_checker(str(graded), "--pictures", str(target))
+        assert status == 2 and words in err, (target, err)
+    status, out, err = run_checker(str(graded), "--pictures", "")
+    assert status == 2 and "needs a path" in err
+    assert sorted(os.listdir(graded)) == ["ball_on_ramp.py"] and not (tmp_path / "no").exists()
+
+
+def test_cli_writes_links_and_embeds_in_gradescope(tmp_path):
+    folder = tmp_path / "bob"
+    folder.mkdir()
+    path = slop_file(str(folder))
+    out = tmp_path / "pics"
+    status, text, err = run_checker(path, "--allow-edits", "--pictures", str(out),
+                                    "--gradescope", str(tmp_path / "results.json"))
+    assert status == 1, err
+    png = out / "ball_on_ramp" / "pushed_out_of_crate.png"
+    assert png.is_file() and png.stat().st_size < MAX_BYTES
+    assert f"picture {png}" in text
+    import json
+    tests = json.loads((tmp_path / "results.json").read_text())["tests"]
+    pictured = [t for t in tests if t.get("output_format") == "html"]
+    assert len(pictured) == 1 and 'src="data:image/png;base64,' in pictured[0]["output"]
+    assert "<pre>" in pictured[0]["output"] and "still 5.9 px into it" in pictured[0]["output"]
