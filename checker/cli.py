@@ -146,7 +146,11 @@ def write_outputs(args, rows):
     """Write the outputs asked for; returns (the one-line problems (an output that could not be written),
     what was written, {row path: {check id: [picture paths]}})."""
     problems, written, links = [], [], {}
-    made = pictures.all_pictures(rows) if args.pictures or args.html else {}
+    try:
+        made = pictures.all_pictures(rows) if args.pictures or args.html else {}
+    except Exception as exc:  # a picture that cannot be drawn must not cost the grades: no pictures then
+        made = {}
+        problems.append(f"cannot draw the pictures ({type(exc).__name__}: {exc}); none written")
     shown = made if args.pictures else None   # pictures go into results.json only when --pictures asks
     if args.pictures:
         try:
@@ -206,7 +210,7 @@ def main(argv=None):
     rows = grade_all(entries, grader, args.jobs, progress=not args.quiet and len(entries) > 1)
     problems, written, links = write_outputs(args, rows)
     if args.json:
-        json.dump(report.to_json(rows), sys.stdout, indent=2)
+        json.dump(report.to_json(rows, pictures=links if args.pictures else None), sys.stdout, indent=2)
         sys.stdout.write("\n")
     else:
         for row in rows:

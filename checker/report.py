@@ -88,8 +88,9 @@ def text_report(report, stream, root=None, pictures=None):
     stream.write("\n")
 
 
-def to_json(reports, errors=(), root=None):
-    """The whole run as the documented JSON document (a dict). `errors`: extra (path, message) pairs."""
+def to_json(reports, errors=(), root=None, pictures=None):
+    """The whole run as the documented JSON document (a dict). `errors`: extra (path, message) pairs.
+    pictures: {row path: {check id: [PNG paths]}} (--pictures): then each criterion gets "pictures": [paths]."""
     not_graded = [(_rel(r.path, root), message_of(r)) for r in reports if isinstance(r, NotGraded)]
     all_errors = not_graded + [(p, m) for p, m in errors]
     return {
@@ -100,9 +101,17 @@ def to_json(reports, errors=(), root=None):
         "labs": [{"path": _rel(r.path, root), "lab": r.lab.id if r.lab is not None else None,
                   "title": r.lab.title if r.lab is not None else None, "status": r.status,
                   "score": r.score, "max_score": r.max_score, "seconds": round(r.seconds, 2),
-                  "message": message_of(r), "criteria": [c.to_json() for c in r.results]} for r in reports],
+                  "message": message_of(r), "criteria": [_criterion_json(c, r, pictures) for c in r.results]}
+                 for r in reports],
         "errors": [{"path": p, "message": m} for p, m in all_errors],
     }
+
+
+def _criterion_json(result, report, pictures):
+    document = result.to_json()
+    if pictures is not None:
+        document["pictures"] = list(((pictures.get(report.path) or {}).get(result.id)) or ())
+    return document
 
 
 def gradescope(reports, root=None, pictures=None):
