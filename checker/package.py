@@ -85,6 +85,7 @@ def config(labs, hide, args):
         "labs": [{"id": lab.id, "title": lab.title, "file": lab.id + ".py", "max_score": lab.checks.max_score}
                  for lab in labs],
         "hide": list(hide), "user": "student", "timeout": args.timeout, "total_timeout": args.total_timeout,
+        "pictures": True,
         "versions": installed_versions(), "built_with_python": python_version(),
     }
 

@@ -8,6 +8,8 @@ results file with score 0 and the reason.
     python3 grade_submission.py gradescope      # $AUTOGRADER_ROOT (default /autograder)
     python3 grade_submission.py prairielearn    # $GRADE_ROOT (default /grade)
 """
+import base64
+import html
 import json
 import os
 import pwd
@@ -19,6 +21,10 @@ import traceback
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SKIP_DIRS = {"__pycache__", ".git", ".venv", "venv", "node_modules", "__MACOSX"}
+PNG = b"\x89PNG\r\n\x1a\n"
+MAX_PICTURE_BYTES = 200_000   # one picture (they are 15-40 kB); a bigger one is left out
+MAX_PICTURES = 8              # pictures in one results file
+MAX_PICTURES_BYTES = 450_000  # all pictures of one results file (base64 makes them 4/3 bigger): well under 1 MB
 
 
 def load_config():
@@ -79,8 +85,67 @@ def run_as(config):
     return name
 
 
+def read_picture(path, folder):
+    """The PNG bytes at path when it is a regular file inside folder, a PNG, not too big; else None.
+    (The folder is writable by the user the student's code runs as: nothing else is read from there.)"""
+    try:
+        real = os.path.realpath(path)
+        if os.path.commonpath([real, os.path.realpath(folder)]) != os.path.realpath(folder):
+            return None
+        fd = os.open(real, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
+        with os.fdopen(fd, "rb") as handle:
+            if not os.path.isfile(real) or os.fstat(handle.fileno()).st_size > MAX_PICTURE_BYTES:
+                return None
+            data = handle.read(MAX_PICTURE_BYTES + 1)
+    except (OSError, ValueError, TypeError):
+        return None
+    return data if data.startswith(PNG) and len(data) <= MAX_PICTURE_BYTES else None
+
+
+def attach_pictures(document, folder):
+    """Replace each criterion's "pictures" (PNG paths the checker wrote, --pictures) by
+    "images": [{"label", "data": base64}] for failed checks, within MAX_PICTURES / MAX_PICTURES_BYTES;
+    "images_left_out": how many were not attached because of those caps."""
+    budget, count = MAX_PICTURES_BYTES, 0
+    for row in document.get("labs") or []:
+        for check in row.get("criteria") or []:
+            paths = check.pop("pictures", None)
+            if check.get("status") not in ("fail", "error") or not isinstance(paths, list):
+                continue
+            images, left_out = [], 0
+            for path in paths:
+                data = read_picture(path, folder) if isinstance(path, str) else None
+                if data is None:
+                    continue
+                if count >= MAX_PICTURES or len(data) > budget:
+                    left_out += 1
+                    continue
+                budget -= len(data)
+                count += 1
+                name = os.path.splitext(os.path.basename(path))[0]
+                images.append({"label": name, "data": base64.b64encode(data).decode("ascii")})
+            if images:
+                check["images"] = images
+            if left_out:
+                check["images_left_out"] = left_out
+
+
+def checker_command(copy, config, pictures=None):
+    command = [sys.executable, "-m", "checker", copy, "--json", "--quiet",
+               "--jobs", str(config.get("jobs", os.cpu_count() or 1)),
+               "--timeout", str(config.get("timeout", 20)),
+               "--total-timeout", str(config.get("total_timeout", 600))]
+    if config.get("allow_edits"):
+        command.append("--allow-edits")
+    if pictures:
+        command += ["--pictures", pictures]
+    return command
+
+
 def run_checker(path, config):
-    """The checker's --json document for path (a dict), or raises RuntimeError saying what went wrong."""
+    """The checker's --json document for path (a dict), or raises RuntimeError saying what went wrong.
+    Failed behaviour checks get "images" (base64 PNGs, see attach_pictures) unless config's "pictures" is false;
+    when the run with pictures gives no result, the file is graded again without them."""
     work = tempfile.mkdtemp(prefix="autograde-")
     try:
         os.chmod(work, 0o755)
@@ -89,21 +154,45 @@ def run_checker(path, config):
         os.chmod(copy, 0o644)
         env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYGAME_HIDE_SUPPORT_PROMPT="1",
                    PYTHONDONTWRITEBYTECODE="1", PYTHONPATH=os.path.join(HERE, "project"), HOME=work)
-        command = [sys.executable, "-m", "checker", copy, "--json", "--quiet",
-                   "--jobs", str(config.get("jobs", os.cpu_count() or 1)),
-                   "--timeout", str(config.get("timeout", 20)),
-                   "--total-timeout", str(config.get("total_timeout", 600))]
         user = run_as(config)
-        if user:
-            command = ["runuser", "-u", user, "--"] + command
-        proc = subprocess.run(command, cwd=work, env=env, stdin=subprocess.DEVNULL, capture_output=True,
-                              timeout=config.get("total_timeout", 600) + 60)
+        pictures = None
+        if config.get("pictures", True):
+            try:
+                pictures = tempfile.mkdtemp(prefix="pictures-", dir=work)
+                if user:
+                    shutil.chown(pictures, user)
+                else:
+                    os.chmod(pictures, 0o755)
+            except (OSError, LookupError) as exc:
+                print(f"grade_submission: no pictures ({exc})", file=sys.stderr)
+                pictures = None
+        attempts = [pictures, None] if pictures else [None]
+        for attempt in attempts:
+            command = checker_command(copy, config, attempt)
+            if user:
+                command = ["runuser", "-u", user, "--"] + command
+            proc = subprocess.run(command, cwd=work, env=env, stdin=subprocess.DEVNULL, capture_output=True,
+                                  timeout=config.get("total_timeout", 600) + 60)
+            try:
+                document = json.loads(proc.stdout.decode("utf-8", "replace"))
+                document["labs"][0]
+            except (ValueError, KeyError, IndexError, TypeError):
+                tail = proc.stderr.decode("utf-8", "replace").strip()[-1500:]
+                if attempt:  # perhaps the pictures: grade once more without them
+                    print(f"grade_submission: no result with --pictures ({tail[-300:]}); again without",
+                          file=sys.stderr)
+                    continue
+                raise RuntimeError(f"the checker stopped without a result (exit status {proc.returncode}). {tail}")
+            break
         try:
-            document = json.loads(proc.stdout.decode("utf-8", "replace"))
-            document["labs"][0]
-        except (ValueError, KeyError, IndexError, TypeError):
-            tail = proc.stderr.decode("utf-8", "replace").strip()[-1500:]
-            raise RuntimeError(f"the checker stopped without a result (exit status {proc.returncode}). {tail}")
+            attach_pictures(document, pictures or work)
+        except Exception:  # pictures are a bonus: never the reason a grade is lost
+            traceback.print_exc()
+            for row in document.get("labs") or []:
+                for check in row.get("criteria") or []:
+                    if isinstance(check, dict):
+                        for key in ("pictures", "images", "images_left_out"):
+                            check.pop(key, None)
         document["ran_as"] = user or ""
         return document
     except subprocess.TimeoutExpired:
@@ -144,6 +233,35 @@ def summary(row, note):
     return line
 
 
+def left_out_note(check):
+    left = check.get("images_left_out")
+    return (f"{left} more picture(s) not shown: a results file holds at most {MAX_PICTURES} pictures "
+            f"and {MAX_PICTURES_BYTES // 1000} kB of them." if left else "")
+
+
+def gradescope_test(check, hidden):
+    test = {"name": f"{check['id']}: {check['name']}", "score": check["score"], "max_score": check["max_score"],
+            "status": "passed" if check["status"] == "pass" else "failed", "output": check_output(check),
+            "visibility": "hidden" if check["id"] in hidden else "visible"}
+    images = check.get("images") or []
+    if images and test["status"] == "failed":
+        test["output_format"] = "html"
+        note = left_out_note(check)
+        test["output"] = (f"<pre>{html.escape(test['output'])}</pre>" + "".join(
+            f'<p><img alt="{html.escape(image["label"])}" src="data:image/png;base64,{image["data"]}"></p>'
+            for image in images) + (f"<p>{html.escape(note)}</p>" if note else ""))
+    elif check.get("images_left_out"):
+        test["output"] = "\n".join(p for p in (test["output"], left_out_note(check)) if p)
+    return test
+
+
+def prairielearn_images(row, hidden):
+    """PrairieLearn's images[]: {"label", "url": data: URI} for each picture of a failed, visible check."""
+    return [{"label": f"{c['id']}: {image['label']}", "url": "data:image/png;base64," + image["data"]}
+            for c in row["criteria"] if c["id"] not in hidden and c["status"] != "pass"
+            for image in c.get("images") or []]
+
+
 def gradescope_results(row, note, max_score, config):
     hidden = set(config.get("hide", []))
     if row is None or not row.get("criteria"):
@@ -151,9 +269,7 @@ def gradescope_results(row, note, max_score, config):
         return {"score": 0.0, "output": reason, "visibility": "visible", "stdout_visibility": "hidden",
                 "tests": [{"name": "Submission graded", "score": 0.0, "max_score": max_score, "status": "failed",
                            "output": reason, "visibility": "visible"}]}
-    tests = [{"name": f"{c['id']}: {c['name']}", "score": c["score"], "max_score": c["max_score"],
-              "status": "passed" if c["status"] == "pass" else "failed", "output": check_output(c),
-              "visibility": "hidden" if c["id"] in hidden else "visible"} for c in row["criteria"]]
+    tests = [gradescope_test(c, hidden) for c in row["criteria"]]
     return {"score": row["score"], "output": summary(row, note), "visibility": "visible",
             "stdout_visibility": "hidden", "tests": tests}
 
@@ -166,11 +282,11 @@ def prairielearn_results(row, note, max_score, config):
                 "tests": [{"name": "Submission graded", "points": 0.0, "max_points": max_score,
                            "output": reason, "message": reason}]}
     tests = [{"name": f"{c['id']}: {c['name']}", "points": c["score"], "max_points": c["max_score"],
-              "message": c["status"], "output": check_output(c)}
+              "message": c["status"], "output": "\n".join(p for p in (check_output(c), left_out_note(c)) if p)}
              for c in row["criteria"] if c["id"] not in hidden]
     total = row["max_score"] or 1.0
     return {"gradable": True, "score": round(row["score"] / total, 6), "message": summary(row, note),
-            "output": summary(row, note), "images": [], "tests": tests}
+            "output": summary(row, note), "images": prairielearn_images(row, hidden), "tests": tests}
 
 
 def fallback(platform, message):
