@@ -1,6 +1,8 @@
 """python -m checker package: each package against its platform's documented fields, and the Gradescope
 bundle run end to end (unzipped into a temporary AUTOGRADER_ROOT, its run_autograder run with this
 interpreter) on a passing, a failing, a missing, a misnamed, a hostile submission and a broken checker."""
+import base64
+import importlib.util
 import json
 import os
 import re
@@ -17,6 +19,8 @@ from checker import labs, package
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GRADESCOPE_VISIBILITY = {"hidden", "after_due_date", "after_published", "visible"}
 MAX = {lab.id: lab.checks.max_score for lab in labs.LABS}
+PNG = b"\x89PNG\r\n\x1a\n"
+DATA_IMAGE = re.compile(r'<img [^>]*src="data:image/png;base64,([A-Za-z0-9+/=]+)"')
 
 
 def run_package(*args, cwd=None):
@@ -45,7 +49,11 @@ def assert_prairielearn(doc):
     assert doc["gradable"] is True
     assert 0.0 <= doc["score"] <= 1.0
     assert isinstance(doc["message"], str) and doc["message"]
-    assert doc["images"] == []
+    assert isinstance(doc["images"], list)
+    for image in doc["images"]:  # PrairieLearn's documented image entry: a label and a data: URL
+        assert isinstance(image["label"], str) and image["label"]
+        assert image["url"].startswith("data:image/png;base64,")
+        assert base64.b64decode(image["url"].split(",", 1)[1]).startswith(PNG)
     for test in doc["tests"]:
         assert isinstance(test["name"], str) and test["name"]
         assert 0 <= test["points"] <= test["max_points"]
@@ -123,6 +131,7 @@ def test_gradescope_passing_submission(bundle, tmp_path):
     assert doc["score"] == MAX["tumbling_crates"] == sum(t["max_score"] for t in doc["tests"])
     assert all(t["status"] == "passed" for t in doc["tests"])
     assert "Graded tumbling_crates.py" in doc["output"] and "17/17" in doc["output"]
+    assert not any("output_format" in t or "<img" in t["output"] for t in doc["tests"]), "no pictures"
 
 
 def test_gradescope_failing_submission_in_a_folder(bundle, tmp_path):
@@ -189,6 +198,7 @@ def test_prairielearn_package_and_entrypoint(tmp_path):
     assert done.returncode == 0, done.stderr
     doc = json.loads((grade / "results" / "results.json").read_text())
     assert_prairielearn(doc)
+    assert doc["images"] == []  # fails the function checks: no scene ran, nothing to picture
     assert doc["score"] == pytest.approx(3.0 / MAX["bullets"])
     assert sum(t["max_points"] for t in doc["tests"]) == MAX["bullets"]
     shutil.rmtree(grade / "student")  # nothing submitted: still a valid result
@@ -250,3 +260,135 @@ def test_refuses_existing_output_and_bad_options(tmp_path):
     assert done.returncode == 2 and "no_such_check" in done.stderr
     done = run_package("gradescope", "--out", str(tmp_path / "b.zip"), "--labs", "nope")
     assert done.returncode == 2 and "nope" in done.stderr
+
+
+# ---------------------------------------------------------------- pictures of failed behaviour checks
+
+def slop_six():
+    """The Ball on the Ramp solution with SLOP = 6: every function check passes, the ball started inside a
+    crate stays 6 px in (pushed_out_of_crate fails); it edits a handed-out constant, so grade with allow_edits."""
+    text = read("solutions/ball_on_ramp.py")
+    assert "\nSLOP = 0.5 " in text
+    return text.replace("\nSLOP = 0.5 ", "\nSLOP = 6 ", 1)
+
+
+def allow_edits(folder):
+    path = os.path.join(folder, "autograder.json")
+    with open(path, encoding="utf-8") as handle:
+        config = json.load(handle)
+    assert config["pictures"] is True
+    config["allow_edits"] = True
+    with open(path, "w", encoding="utf-8") as handle:
+        json.dump(config, handle)
+
+
+@pytest.fixture(scope="module")
+def ramp_bundle(tmp_path_factory):
+    """The Gradescope bundle of Ball on the Ramp, unpacked, with "allow_edits": true in autograder.json."""
+    base = tmp_path_factory.mktemp("ramp")
+    done = run_package("gradescope", "--out", str(base / "autograder.zip"), "--labs", "ball_on_ramp")
+    assert done.returncode == 0, done.stderr
+    source = base / "source"
+    with zipfile.ZipFile(base / "autograder.zip") as archive:
+        archive.extractall(source)
+    os.chmod(source / "run_autograder", 0o755)
+    allow_edits(source)
+    return source
+
+
+def test_gradescope_failed_scene_has_a_picture(ramp_bundle, tmp_path):
+    doc = grade_gradescope(ramp_bundle, tmp_path, {"ball_on_ramp.py": slop_six()})
+    size = (tmp_path / "autograder" / "results" / "results.json").stat().st_size
+    assert size < 200_000, size
+    failed = [t for t in doc["tests"] if t["status"] == "failed"]
+    assert [t["name"].split(":")[0] for t in failed] == ["pushed_out_of_crate"]
+    test = failed[0]
+    assert test["output_format"] == "html" and test["output"].startswith("<pre>")
+    assert "still 5.9 px into it" in test["output"] and "ball&#x27;s center" in test["output"]  # escaped text
+    images = DATA_IMAGE.findall(test["output"])
+    assert images and all(base64.b64decode(i).startswith(PNG) for i in images)
+    passed = [t for t in doc["tests"] if t["status"] == "passed"]
+    assert passed and not any("output_format" in t or "<img" in t["output"] for t in passed)
+
+
+def test_gradescope_pictures_that_cannot_be_drawn_cost_nothing(ramp_bundle, tmp_path):
+    broken = tmp_path / "source"
+    shutil.copytree(ramp_bundle, broken)
+    with open(broken / "project" / "checker" / "pictures.py", "a", encoding="utf-8") as handle:
+        handle.write("\n\ndef filmstrip(*args, **kwargs):\n    raise RuntimeError('a drawing bug')\n")
+    doc = grade_gradescope(broken, tmp_path, {"ball_on_ramp.py": slop_six()})
+    assert doc["score"] == MAX["ball_on_ramp"] - 2.0
+    assert not any("output_format" in t or "<img" in t["output"] for t in doc["tests"])
+
+
+def test_prairielearn_failed_scene_has_images(tmp_path):
+    out = tmp_path / "pl"
+    done = run_package("prairielearn", "--out", str(out), "--labs", "ball_on_ramp", "--image", "me/l11")
+    assert done.returncode == 0, done.stderr
+    allow_edits(out)
+    grade = tmp_path / "grade"
+    (grade / "student").mkdir(parents=True)
+    (grade / "student" / "ball_on_ramp.py").write_text(slop_six(), encoding="utf-8")
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env.update(GRADE_ROOT=str(grade), GRADER_PYTHON=sys.executable, AUTOGRADER_USER="")
+    done = subprocess.run([str(out / "run_prairielearn")], env=env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    doc = json.loads((grade / "results" / "results.json").read_text())
+    assert_prairielearn(doc)
+    assert doc["images"] and all(i["label"].startswith("pushed_out_of_crate") for i in doc["images"])
+    assert doc["score"] == pytest.approx((MAX["ball_on_ramp"] - 2.0) / MAX["ball_on_ramp"])
+
+
+def grading_script():
+    spec = importlib.util.spec_from_file_location("grade_submission",
+                                                  os.path.join(ROOT, "checker", "templates", "grade_submission.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_pictures_capped_and_read_only_from_the_folder(tmp_path):
+    script = grading_script()
+    folder = tmp_path / "pictures"
+    folder.mkdir()
+    png = PNG + b"x" * 100_000
+    paths = []
+    for k in range(6):
+        (folder / f"p{k}.png").write_bytes(png)
+        paths.append(str(folder / f"p{k}.png"))
+    (folder / "big.png").write_bytes(PNG + b"x" * (script.MAX_PICTURE_BYTES + 1))
+    (folder / "text.png").write_bytes(b"not a png")
+    secret = tmp_path / "secret.png"
+    secret.write_bytes(PNG + b"secret")
+    (folder / "link.png").symlink_to(secret)
+    odd = [str(folder / n) for n in ("big.png", "text.png", "link.png")] + [str(secret), 42]
+
+    def criteria():
+        return [{"id": "a", "name": "A", "status": "fail", "message": "m <b>", "hint": "", "score": 0.0,
+                 "max_score": 1.0, "pictures": odd + paths[:3]},
+                {"id": "b", "name": "B", "status": "fail", "message": "n", "hint": "", "score": 0.0,
+                 "max_score": 1.0, "pictures": paths[3:]},
+                {"id": "c", "name": "C", "status": "pass", "message": "", "hint": "", "score": 1.0,
+                 "max_score": 1.0, "pictures": []}]
+    document = {"labs": [{"title": "T", "status": "fail", "score": 1.0, "max_score": 3.0, "message": "",
+                          "criteria": criteria()}]}
+    script.attach_pictures(document, str(folder))
+    row = document["labs"][0]
+    a, b, c = row["criteria"]
+    assert len(a["images"]) == 3 and "images_left_out" not in a  # only the three good files
+    assert len(b["images"]) == 1 and b["images_left_out"] == 2   # 450 kB of PNG at most
+    assert "images" not in c and all("pictures" not in x for x in (a, b, c))
+    config = {"hide": []}
+    results = script.gradescope_results(row, "Graded t.py.", 3.0, config)
+    json_size = len(json.dumps(results))
+    assert json_size < 700_000, json_size
+    tests = {t["name"][0]: t for t in results["tests"]}
+    assert tests["a"]["output_format"] == "html" and tests["a"]["output"].startswith("<pre>m &lt;b&gt;</pre>")
+    assert len(DATA_IMAGE.findall(tests["a"]["output"])) == 3
+    assert "2 more picture(s) not shown" in tests["b"]["output"]
+    assert "output_format" not in tests["c"]
+    assert_gradescope(results)
+    pl = script.prairielearn_results(row, "Graded t.py.", 3.0, config)
+    assert len(pl["images"]) == 4 and "2 more picture(s) not shown" in pl["tests"][1]["output"]
+    assert_prairielearn(dict(pl, message=pl["message"] or "x"))
+    assert script.prairielearn_results(row, "Graded t.py.", 3.0, {"hide": ["a"]})["images"] == pl["images"][3:]
