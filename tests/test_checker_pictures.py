@@ -16,7 +16,7 @@ import sys
 import pygame
 import pytest
 
-from checker import labs, pictures
+from checker import labs, pictures, report
 from checker.grade import Grader
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -146,3 +146,15 @@ def test_cli_writes_links_and_embeds_in_gradescope(tmp_path):
     pictured = [t for t in tests if t.get("output_format") == "html"]
     assert len(pictured) == 1 and 'src="data:image/png;base64,' in pictured[0]["output"]
     assert "<pre>" in pictured[0]["output"] and "still 5.9 px into it" in pictured[0]["output"]
+
+
+def test_json_lists_picture_paths_only_with_pictures(failing):
+    plain = report.to_json([failing])
+    assert all("pictures" not in c for c in plain["labs"][0]["criteria"])
+    shown = report.to_json([failing], pictures={failing.path: {"pushed_out_of_crate": ["p/x.png"]}})
+    criteria = {c["id"]: c for c in shown["labs"][0]["criteria"]}
+    assert criteria["pushed_out_of_crate"]["pictures"] == ["p/x.png"]
+    assert all(c["pictures"] == [] for i, c in criteria.items() if i != "pushed_out_of_crate")
+    for c in criteria.values():  # otherwise the schema is unchanged
+        del c["pictures"]
+    assert shown == plain
