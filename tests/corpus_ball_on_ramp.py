@@ -30,9 +30,8 @@ import textwrap
 from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import mutants  # noqa: E402
+from corpus_files import CorpusFiles  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
 
-from checker.handout import step_regions  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "ball_on_ramp_starter.py")
@@ -218,57 +217,7 @@ CORRECT = [
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 
+# ================================================================ building the files (tests/corpus_files.py)
 
-def regions(source, where="file"):
-    """{step: (start marker index, end marker index, indent)} for steps 2-7 (checker/handout.py's step_regions)."""
-    found = step_regions(source.split("\n"))
-    missing = [step for step in STEPS if step not in found]
-    if missing:
-        raise AssertionError(f"{where}: step {missing[0]} has no `# --- step {missing[0]}: ... ---` region")
-    return found
-
-
-def step_code(source, where="file"):
-    """{step: the dedented code strictly between the step's markers}."""
-    lines = source.split("\n")
-    return {step: textwrap.dedent("\n".join(lines[start + 1:end])).strip("\n")
-            for step, (start, end, _) in regions(source, where).items()}
-
-
-def fill(source, codes, where="file"):
-    """source with the inside of each step in codes replaced by that code, indented like the step's marker."""
-    lines = source.split("\n")
-    found = regions(source, where)
-    for step in sorted(codes, key=lambda s: -found[s][0]):
-        start, end, indent = found[step]
-        body = [indent + line if line.strip() else "" for line in codes[step].split("\n")] if codes[step] else []
-        lines[start + 1:end] = body
-    return "\n".join(lines)
-
-
-def _read(path):
-    with open(path, encoding="utf-8") as handle:
-        return handle.read()
-
-
-def build(name, starter=None, solution=None):
-    """The source of entry `name`: the starter, its steps filled (the entry's code, else the solution's), then edits."""
-    entry = BY_NAME[name]
-    starter = _read(STARTER) if starter is None else starter
-    solution = _read(SOLUTION) if solution is None else solution
-    codes = step_code(solution, "solutions/ball_on_ramp.py")
-    codes.update(entry.steps)
-    source = fill(starter, codes, "starters/ball_on_ramp_starter.py")
-    return mutants.apply_edits(source, entry.edits, name, "the built file", "tests/corpus_ball_on_ramp.py")
-
-
-def write_corpus(directory, names=None):
-    """Write NAME.py into directory for each entry (all by default); returns {name: path}."""
-    starter, solution = _read(STARTER), _read(SOLUTION)
-    paths = {}
-    for name in (BY_NAME if names is None else names):
-        path = os.path.join(str(directory), name + ".py")
-        with open(path, "w", encoding="utf-8") as handle:
-            handle.write(build(name, starter, solution))
-        paths[name] = path
-    return paths
+FILES = CorpusFiles(STARTER, SOLUTION, STEPS, BY_NAME, "tests/corpus_ball_on_ramp.py")
+regions, step_code, fill, build, write_corpus = FILES.regions, FILES.step_code, FILES.fill, FILES.build, FILES.write

@@ -20,21 +20,18 @@ Verdicts:
     write_corpus(directory, names=None) -> {name: path}
 """
 import os
-import re
 import sys
 import textwrap
 from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
+from corpus_files import CorpusFiles  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
 
 STEPS = (2, 3, 4)
-START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+): .*---[ \t]*$")
-END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---[ \t]*$")
 
 CHECK_STEP = {
     "loads": None, "handout_unchanged": None, "runtime_lines": None,
@@ -184,71 +181,7 @@ ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
 
+# ================================================================ building the files (tests/corpus_files.py)
 
-# ================================================================ building the files
-
-def regions(source, where="file"):
-    """{step: (start marker line index, end marker line index, indent)} for steps 2-4; each marker exactly once."""
-    lines = source.split("\n")
-    starts, ends = {}, {}
-    for index, line in enumerate(lines):
-        match = START.match(line)
-        if match:
-            assert int(match.group("step")) not in starts, f"{where}: step {match.group('step')} starts twice"
-            starts[int(match.group("step"))] = (index, match.group("indent"))
-        match = END.match(line)
-        if match:
-            assert int(match.group("step")) not in ends, f"{where}: step {match.group('step')} ends twice"
-            ends[int(match.group("step"))] = index
-    found = {}
-    for step in STEPS:
-        if step not in starts or step not in ends or ends[step] <= starts[step][0]:
-            raise AssertionError(f"{where}: step {step} has no `# --- step {step}: ... ---` ... "
-                                 f"`# --- end of step {step} ---` region")
-        found[step] = (starts[step][0], ends[step], starts[step][1])
-    return found
-
-
-def step_code(source, where="file"):
-    """{step: the dedented code strictly between the step's markers}."""
-    lines = source.split("\n")
-    return {step: textwrap.dedent("\n".join(lines[start + 1:end])).strip("\n")
-            for step, (start, end, _) in regions(source, where).items()}
-
-
-def fill(source, codes, where="file"):
-    """source with the interior of each step in codes replaced by that code, indented like the step's marker."""
-    lines = source.split("\n")
-    found = regions(source, where)
-    for step in sorted(codes, key=lambda s: -found[s][0]):
-        start, end, indent = found[step]
-        lines[start + 1:end] = [indent + line if line.strip() else "" for line in codes[step].split("\n")]
-    return "\n".join(lines)
-
-
-def _read(path):
-    with open(path, encoding="utf-8") as handle:
-        return handle.read()
-
-
-def build(name, starter=None, solution=None):
-    """The source of entry `name`: the starter, its steps filled (the entry's code, else the solution's), then edits."""
-    entry = BY_NAME[name]
-    starter = _read(STARTER) if starter is None else starter
-    solution = _read(SOLUTION) if solution is None else solution
-    codes = step_code(solution, "solutions/sleeping_crates.py")
-    codes.update(entry.steps)
-    source = fill(starter, codes, "starters/sleeping_crates_starter.py")
-    return mutants.apply_edits(source, entry.edits, name, "the built file", "tests/corpus_sleeping_crates.py")
-
-
-def write_corpus(directory, names=None):
-    """Write NAME.py into directory for each entry (all by default); returns {name: path}."""
-    starter, solution = _read(STARTER), _read(SOLUTION)
-    paths = {}
-    for name in (BY_NAME if names is None else names):
-        path = os.path.join(str(directory), name + ".py")
-        with open(path, "w", encoding="utf-8") as handle:
-            handle.write(build(name, starter, solution))
-        paths[name] = path
-    return paths
+FILES = CorpusFiles(STARTER, SOLUTION, STEPS, BY_NAME, "tests/corpus_sleeping_crates.py")
+regions, step_code, fill, build, write_corpus = FILES.regions, FILES.step_code, FILES.fill, FILES.build, FILES.write
