@@ -16,7 +16,7 @@ moves and wakes what an awake body touches (the hooks sleep_timer, moves, wake).
 import math
 from collections import namedtuple
 
-from . import collision, response
+from . import broadphase, collision, response
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
                       soft_constants)
 from .vectors import Vector2, finite_number, finite_vector
@@ -26,6 +26,7 @@ STEP = 1 / 120             # s, the course's fixed physics step
 EFFECTS = ("gravity", "rotation", "friction", "restitution", "correction", "ccd", "sleep")
 SOLVERS = ("lesson", "accumulated")
 ORDERS = ("move-first", "solve-first")
+BROAD_PHASES = ("sweep-and-prune", "all-pairs")
 LESSON_SUBSTEPS = 4        # the lesson solver's sub-steps in the solve-first order (see World.lesson_solve_first)
 CONTACT_RULES = ("corners", "clip")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
@@ -83,6 +84,7 @@ def _one_of(choices, sentence):
 
 _check_contact_rule = _one_of(CONTACT_RULES, "contact_rule must be 'corners' or 'clip', got {value!r}")
 _check_solver = _one_of(SOLVERS, f"solver must be one of {list(SOLVERS)}, got {{value!r}}")
+_check_broad_phase = _one_of(BROAD_PHASES, f"broad_phase must be one of {list(BROAD_PHASES)}, got {{value!r}}")
 _check_order = _one_of(ORDERS, f"order must be one of {list(ORDERS)}, got {{value!r}}")
 
 
@@ -168,8 +170,20 @@ class World:
       halfway into the overlap). Each hook must be a function (or None: the library's);
       anything else is a one-line ValueError. Like sat, the two circle hooks serve the
       lesson solver; the accumulated solver's speculative contacts use the library's.
+      broad_phase    "sweep-and-prune" (default; broadphase.py: boxes sorted along x and swept)
+                     or "all-pairs" (the reference: every pair box against box); the same pairs
+                     in the same order, so the same results to the last bit
     After each step: `contacts` (list of Contact the impulses used) and
-    `counters` (how many steps, pair tests, narrow tests, contacts, swept tests ran in all).
+    `counters`, totals since the world was made, each added once per contact search:
+      steps          fixed steps run
+      pair_tests     pairs whose bounding boxes the broad phase compared: with sweep-and-prune,
+                     the pairs with a moving body whose boxes (grown by the margins) overlap
+                     along x, i.e. the pairs the sweep met (a wide pile: a few per body);
+                     with all-pairs every pair with a moving body, N (N - 1) / 2 at most.
+                     A wake that sets new bodies moving runs the search again and counts again.
+      narrow_tests   pairs handed to the narrow phase (collision.collide): boxes overlap
+      contacts       contact points of the manifolds found (speculative ones included)
+      swept_tests    "ccd": bodies a bullet was swept against
     Changing solver or contact_rule between steps is safe: the accumulated
     solver's kept contacts (`arbiters`) are dropped.
     """
@@ -192,6 +206,7 @@ class World:
     solver = _setting("solver", _check_solver, forget_arbiters=True)
     effects = _setting("effects", _check_effects)
     order = _setting("order", _check_order)
+    broad_phase = _setting("broad_phase", _check_broad_phase)
     warm_starting = _setting("warm_starting", _check_bool("warm_starting"))
     circle_polygon = _setting("circle_polygon", _check_hook("circle_polygon"))
     circle_point = _setting("circle_point", _check_hook("circle_point"))
@@ -207,7 +222,8 @@ class World:
                  max_frame=0.25, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
                  warm_starting=True, order="solve-first", sat=None, resolve=None, separate=None,
                  circle_polygon=None, circle_point=None, sleep_speed=SLEEP_SPEED, sleep_spin=SLEEP_SPIN,
-                 sleep_after=SLEEP_AFTER, sleep_timer=None, moves=None, wake=None):
+                 sleep_after=SLEEP_AFTER, sleep_timer=None, moves=None, wake=None,
+                 broad_phase="sweep-and-prune"):
         self.arbiters = {}
         self.touched = set()  # "sleep": pairs (id(a), id(b)) that touched during this step
         self.gravity = gravity
@@ -223,6 +239,7 @@ class World:
         self.solver = solver
         self.warm_starting = warm_starting
         self.order = order
+        self.broad_phase = broad_phase
         self.sat = sat or collision.sat
         self.resolve = resolve or self.lesson_resolve
         self.separate = separate or self.lesson_separate
@@ -584,78 +601,91 @@ class World:
     def manifolds(self, speculative=None):
         """Every touching pair now: yields (a, b, Manifold) (collision.collide with this world's rule and sat).
 
-        Broad phase first: pairs of static bodies and pairs whose bounding boxes
-        are apart are skipped; the rest go to the narrow phase. With "sleep", a
-        pair in which neither body moves (moves(body) False: static or asleep) is
-        never visited, and each touching pair may wake bodies (wake(a, b)). speculative=dt
-        (s) also yields pairs that could touch within dt: closer than
-        SPECULATIVE_MARGIN plus both bodies' reach, with negative depths.
+        Broad phase first (broadphase.py, `broad_phase`): only pairs in which a
+        body moves and whose bounding boxes overlap go to the narrow phase, in
+        the order (i, j) of the bodies' indices. A body moves if it is dynamic,
+        or with "sleep" if moves(body) is True (not static, not asleep); a pair
+        in which neither moves is never visited. With "sleep", each touching
+        pair may wake bodies (wake(a, b)); the pairs after it are then searched
+        with the woken bodies moving. speculative=dt (s) also yields pairs that
+        could touch within dt: closer than SPECULATIVE_MARGIN plus both bodies'
+        reach, with negative depths (each box grown by its body's share).
+        World points and boxes are computed once per body per search: up front
+        for the bodies that move (and every body without "sleep"), on first use
+        for the others, so a sleeping pile next to one moving crate costs only
+        the crates near it (its sweep uses pos ± the bounding radius).
         """
         bodies = self.bodies
         sleep = "sleep" in self.effects
-        if sleep:
-            yield from self.manifolds_sleeping(speculative)
-            return
-        shapes = self.world_shapes()
-        boxes = [body.aabb(points) for body, points in zip(bodies, shapes)]
-        reach = [self.reach(body, speculative) if speculative else 0.0 for body in bodies]
-        for i in range(len(bodies)):
-            for j in range(i + 1, len(bodies)):
-                a, b = bodies[i], bodies[j]
-                if a.inv_mass == 0 and b.inv_mass == 0:
-                    continue
-                self.counters["pair_tests"] += 1
-                margin = SPECULATIVE_MARGIN + reach[i] + reach[j] if speculative else 0.0
-                box_a, box_b = boxes[i], boxes[j]
-                if box_a[2] + margin < box_b[0] or box_b[2] + margin < box_a[0] or \
-                        box_a[3] + margin < box_b[1] or box_b[3] + margin < box_a[1]:
-                    continue  # broad phase: bounding boxes apart
-                self.counters["narrow_tests"] += 1
-                manifold = collision.collide(a, b, shapes[i], shapes[j], self.contact_rule, self.sat, margin,
-                                             self.circle_polygon, self.circle_point)
-                if manifold is not None:
-                    self.counters["contacts"] += len(manifold.points)
-                    yield a, b, manifold
-
-    def manifolds_sleeping(self, speculative=None):
-        """manifolds() with the "sleep" effect: only pairs in which a body moves are visited.
-
-        World points and bounding boxes are computed only for the bodies of
-        visited pairs, so a sleeping pile costs neither. Each touching pair is
-        handed to wake(a, b) and every body it returns is woken (World.wake)
-        before the pair is yielded; the pair is remembered for the islands of
-        update_sleep.
-        """
-        bodies = self.bodies
-        moving = [self.moves(body) for body in bodies]
+        moving = [self.moves(body) for body in bodies] if sleep else [body.inv_mass != 0 for body in bodies]
         if not any(moving):
             return
-        shapes, boxes = {}, {}
-
-        def shape_box(k):
-            if k not in shapes:
-                shapes[k] = bodies[k].world_points()
-                boxes[k] = bodies[k].aabb(shapes[k])
-            return shapes[k], boxes[k]
-        for i in range(len(bodies)):
-            for j in range(i + 1, len(bodies)):
-                if not moving[i] and not moving[j]:
-                    continue
+        geometry = _Geometry(bodies)
+        bounds = [geometry[k] if moving[k] or not sleep else _circle_box(body) for k, body in enumerate(bodies)]
+        reach = [self.reach(body, speculative) for body in bodies] if speculative else None
+        base = SPECULATIVE_MARGIN if speculative else 0.0
+        search = broadphase.all_pairs if self.broad_phase == "all-pairs" else broadphase.sweep_and_prune
+        pairs, tested = search(geometry, moving, reach, base, bounds)
+        self.counters["pair_tests"] += tested
+        narrow = contacts = 0
+        try:
+            index = 0
+            while index < len(pairs):
+                i, j = pairs[index]
+                index += 1
                 a, b = bodies[i], bodies[j]
-                self.counters["pair_tests"] += 1
-                (shape_a, box_a), (shape_b, box_b) = shape_box(i), shape_box(j)
-                margin = SPECULATIVE_MARGIN + self.reach(a, speculative) + self.reach(b, speculative) \
-                    if speculative else 0.0
-                if box_a[2] + margin < box_b[0] or box_b[2] + margin < box_a[0] or \
-                        box_a[3] + margin < box_b[1] or box_b[3] + margin < box_a[1]:
-                    continue  # broad phase: bounding boxes apart
-                self.counters["narrow_tests"] += 1
-                manifold = collision.collide(a, b, shape_a, shape_b, self.contact_rule, self.sat, margin,
+                narrow += 1
+                manifold = collision.collide(a, b, geometry.points(i), geometry.points(j), self.contact_rule,
+                                             self.sat, broadphase.pair_margin(i, j, reach, base),
                                              self.circle_polygon, self.circle_point)
-                if manifold is not None:
-                    self.counters["contacts"] += len(manifold.points)
+                if manifold is None:
+                    continue
+                contacts += len(manifold.points)
+                if sleep:
+                    woken = False
                     for body in self.wake_pair(a, b) or ():
                         self.wake(body)
-                        moving = [self.moves(other) for other in bodies]
+                        woken = True
+                    if woken:
+                        now = [self.moves(other) for other in bodies]
+                        if now != moving:
+                            # woken bodies move from here on: search again, keep the pairs after (i, j)
+                            moving = now
+                            more, tested = search(geometry, moving, reach, base, bounds)
+                            self.counters["pair_tests"] += tested
+                            pairs, index = [pair for pair in more if pair > (i, j)], 0
                     self.touched.add((id(a), id(b)))
-                    yield a, b, manifold
+                yield a, b, manifold
+        finally:
+            self.counters["narrow_tests"] += narrow
+            self.counters["contacts"] += contacts
+
+
+def _circle_box(body):
+    """A box (left, top, right, bottom) px sure to hold the body: pos ± its bounding radius."""
+    r = body.shape.radius
+    return (body.pos.x - r, body.pos.y - r, body.pos.x + r, body.pos.y + r)
+
+
+class _Geometry:
+    """World points and bounding boxes of a world's bodies, each computed at most once (one contact search).
+
+    geometry[k] is body k's box (left, top, right, bottom) px, geometry.points(k)
+    its world points; both are computed on first use.
+    """
+
+    def __init__(self, bodies):
+        self.bodies = bodies
+        self.shapes = {}
+        self.boxes = {}
+
+    def points(self, k):
+        """Body k's world points (px), computed once."""
+        if k not in self.shapes:
+            self.shapes[k] = self.bodies[k].world_points()
+        return self.shapes[k]
+
+    def __getitem__(self, k):
+        if k not in self.boxes:
+            self.boxes[k] = self.bodies[k].aabb(self.points(k))
+        return self.boxes[k]
