@@ -2,12 +2,15 @@
 import math
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from lesson11.physics2d import (Body, Circle, EFFECTS, LESSON_EFFECTS, Polygon, Vector2, World, apply_impulse,
                                 box_points, circle_circle, circle_polygon, circle_toi, clip_contact_points,
                                 closest_on_segment, contact_points, convex_polygon, cross, edge_normals, inside,
                                 polygon_inertia, project, regular_polygon, resolve, sat, separate,
                                 spin_velocity)
+from lesson11.physics2d.collision import inside_edges, polygon_edges
 
 
 def placed_box(w, h, centre, angle_deg=0.0):
@@ -344,3 +347,25 @@ def test_world_settings_are_checked_when_set_later_and_switching_is_safe():
     assert not world.arbiters
     world.step()
     assert world.step_seconds == pytest.approx(1 / 120)
+
+
+# ---------------------------------------------------------------- work done once, not twice (issue 13)
+
+def test_world_points_keep_their_edge_normals_and_hand_out_copies():
+    box = Body(box_points(40, 20), (100, 50), 1, angle=0.3)
+    points = box.world_points()
+    plain = [Vector2(p) for p in points]             # a plain list: normals computed every call
+    first = edge_normals(points)
+    assert points.normals is not None and first == edge_normals(plain)
+    first[0] *= -1                                    # the caller changes its copy in place...
+    assert edge_normals(points) == edge_normals(plain)  # ...the kept normals are unchanged
+    assert edge_normals(points)[0] is not edge_normals(points)[0]
+
+
+@given(st.floats(-300, 300), st.floats(-300, 300), st.floats(-7, 7))
+def test_inside_edges_is_inside_with_edges_worked_out_once(x, y, angle):
+    shape = Body(Polygon([(0, 0), (60, 10), (50, 70), (-10, 40)], recentre=False), (20, 30), 1, angle=angle)
+    points = shape.world_points()
+    edges = polygon_edges(points)
+    for corner in points + [Vector2(x, y), Vector2(20, 30)]:
+        assert inside_edges(corner, edges) == inside(corner, points)

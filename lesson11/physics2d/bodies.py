@@ -5,7 +5,7 @@ static: inv_mass = inv_inertia = 0, so no impulse or push can move or turn it.
 """
 import math
 
-from .shapes import Circle, Polygon
+from .shapes import Circle, Polygon, WorldPoints
 from .vectors import Vector2, finite_number, finite_vector, spin_velocity
 
 
@@ -95,8 +95,11 @@ class Body:
         return self.inv_mass == 0
 
     def world_points(self):
-        """Corners in world space (px): pos + p rotated by angle, for each local corner p."""
-        return [self.pos + p.rotate_rad(self.angle) for p in self.local]
+        """Corners in world space (px): pos + p rotated by angle, for each local corner p.
+
+        A WorldPoints list (shapes.py): a list that remembers its edge normals once computed.
+        """
+        return WorldPoints([self.pos + p.rotate_rad(self.angle) for p in self.local])
 
     def point_velocity(self, point):
         """Velocity (px/s) of the world point on this body: vel + omega × (point - pos)."""

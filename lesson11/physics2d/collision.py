@@ -11,6 +11,7 @@ despite rounding.
 import math
 from collections import namedtuple
 
+from .shapes import WorldPoints
 from .vectors import Vector2
 
 TOUCH_TOLERANCE = 1e-6  # px: overlaps this small are "touching", i.e. apart
@@ -18,13 +19,22 @@ CORNER_MERGE = 0.5      # px: corners closer than this are one contact point (co
 
 
 def edge_normals(points):
-    """Unit normals (-e.y, e.x) / |e| of each edge e = p[i+1] - p[i]; zero-length edges are skipped."""
-    normals = []
-    for i, a in enumerate(points):
-        edge = points[(i + 1) % len(points)] - a
-        if edge.length_squared() > 0:
-            normals.append(Vector2(-edge.y, edge.x).normalize())
-    return normals
+    """Unit normals (-e.y, e.x) / |e| of each edge e = p[i+1] - p[i]; zero-length edges are skipped.
+
+    For a body's WorldPoints (Body.world_points()) the normals are worked out
+    once and kept with the points; each call returns fresh copies, so a caller
+    that changes a normal in place changes only its own.
+    """
+    known = getattr(points, "normals", None) if isinstance(points, WorldPoints) else None
+    if known is None:
+        known = []
+        for i, a in enumerate(points):
+            edge = points[(i + 1) % len(points)] - a
+            if edge.length_squared() > 0:
+                known.append(Vector2(-edge.y, edge.x).normalize())
+        if isinstance(points, WorldPoints):
+            points.normals = known
+    return [Vector2(normal) for normal in known]
 
 
 def project(points, axis):
@@ -97,11 +107,23 @@ def inside(point, points):
     must have the same sign for every edge; distances within TOUCH_TOLERANCE px
     of an edge count as on it.
     """
-    left = right = False
+    return inside_edges(point, polygon_edges(points))
+
+
+def polygon_edges(points):
+    """Each edge of the outline once, for inside_edges: [(a, b - a, TOUCH_TOLERANCE |b - a|), ...] (px, px, px²)."""
+    edges = []
     for i, a in enumerate(points):
         edge = points[(i + 1) % len(points)] - a
+        edges.append((a, edge, TOUCH_TOLERANCE * edge.length()))
+    return edges
+
+
+def inside_edges(point, edges):
+    """inside() with the polygon's edges worked out already (polygon_edges): test many points, edges computed once."""
+    left = right = False
+    for a, edge, limit in edges:
         side = edge.cross(point - a)  # Vector2.cross is the same 2D cross product as cross()
-        limit = TOUCH_TOLERANCE * edge.length()
         if side > limit:
             left = True
         elif side < -limit:
@@ -177,7 +199,8 @@ def contact_points(pa, pb, normal):
     normal (smallest p·normal) stands in.
     """
     corners = []
-    for p in [p for p in pa if inside(p, pb)] + [p for p in pb if inside(p, pa)]:
+    edges_a, edges_b = polygon_edges(pa), polygon_edges(pb)
+    for p in [p for p in pa if inside_edges(p, edges_b)] + [p for p in pb if inside_edges(p, edges_a)]:
         if p not in corners:  # a repeated corner is one contact, not two
             corners.append(p)
     if not corners:
@@ -305,8 +328,17 @@ def separation(point, points):
     Negative inside (minus the distance to the nearest edge line), positive
     outside (at most the true distance, which it equals in front of an edge).
     """
+    return separation_faces(point, outward_faces(points))
+
+
+def outward_faces(points):
+    """Each edge's first corner v and outward unit normal n_out, for separation_faces: [(v, n_out), ...].
+
+    n = (-e.y, e.x) / |e| for the edge e from v to the next corner, turned
+    round if it points towards the polygon's centre; zero-length edges are skipped.
+    """
     middle = centre_of(points)
-    worst = -math.inf
+    faces = []
     for i, v in enumerate(points):
         edge = points[(i + 1) % len(points)] - v
         if edge.length_squared() == 0:
@@ -314,7 +346,17 @@ def separation(point, points):
         n = Vector2(-edge.y, edge.x).normalize()
         if (v - middle).dot(n) < 0:
             n = -n  # outward
-        worst = max(worst, (point - v).dot(n))
+        faces.append((v, n))
+    return faces
+
+
+def separation_faces(point, faces):
+    """separation() with the polygon's faces worked out already (outward_faces): many points, faces computed once."""
+    worst = -math.inf
+    for v, n in faces:
+        distance = (point - v).dot(n)
+        if distance > worst:
+            worst = distance
     return worst
 
 
@@ -340,8 +382,9 @@ def corner_manifold(pa, pb, normal, margin=0.0):
         face = Vector2(-(v2 - v1).y, (v2 - v1).x).normalize()
         if face.dot(towards) < 0:
             face = -face  # outward
+        faces = outward_faces(other)
         for p in corners:
-            if separation(p, other) < margin - TOUCH_TOLERANCE:
+            if separation_faces(p, faces) < margin - TOUCH_TOLERANCE:
                 found.append((p, -(p - v1).dot(face)))
     found.sort(key=lambda pd: -pd[1])  # stable: ties keep their order
     kept = found[:1]

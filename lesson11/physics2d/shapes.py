@@ -117,6 +117,22 @@ def convex_polygon(points, recentre=True):
     return [p - centre for p in distinct]
 
 
+class WorldPoints(list):
+    """A polygon's corners in world space (a list of Vector2, px), as Body.world_points() returns them.
+
+    A plain list that also keeps the edge normals once collision.edge_normals
+    has worked them out (attribute `normals`, None until then): a body tested
+    against several others in one contact search computes its normals once.
+    It is a snapshot: the world makes new ones after the bodies move, and the
+    normals describe the corners as they were when first asked for.
+    """
+    __slots__ = ("normals",)
+
+    def __init__(self, points=()):
+        super().__init__(points)
+        self.normals = None
+
+
 class Polygon:
     """A convex polygon shape: `points` (list of Vector2, px) centred on its centroid.
 
