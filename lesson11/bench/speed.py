@@ -82,7 +82,7 @@ class Settings:
 
 
 FULL = Settings(repeats=5, pile_steps=60, sizes=(14, 50, 100, 300, 1000),
-                scale_steps={14: 40, 50: 20, 100: 12, 300: 6, 1000: 4}, listing_max=300, scale_repeats=3)
+                scale_steps={14: 40, 50: 20, 100: 12, 300: 8, 1000: 4}, listing_max=1000, scale_repeats=3)
 QUICK = Settings(repeats=1, pile_steps=8, sizes=(14, 50, 100), scale_steps={14: 4, 50: 3, 100: 2}, listing_max=100,
                  scale_repeats=1, settle_seconds=0.25)
 
@@ -278,17 +278,18 @@ class Result:
         return 1000 * statistics.median(self.times)
 
 
-def engine_run(make, snapshot, steps, floor_top):
-    """Build an engine from the snapshot (untimed), step it `steps` times, yielding after each step; returns
-    (seconds per step, contacts, sunk px, moved px, all finite)."""
+def engine_run(make, snapshot, steps, floor_top, chunk=1):
+    """Build an engine from the snapshot (untimed), step it `steps` times, yielding after every `chunk` steps;
+    returns (seconds per step, contacts, sunk px, moved px, all finite)."""
     engine = make(snapshot)
     start = [(b["pos"][0], b["pos"][1]) for b in snapshot if b["mass"] > 0]
     spent = 0.0
-    for _ in range(steps):
+    for done in range(1, steps + 1):
         started = time.process_time()
         engine.step()
         spent += time.process_time() - started
-        yield
+        if done % chunk == 0:
+            yield
     crates = engine.crates()
     values = [v for pos, corners in crates for p in [pos] + corners for v in (p.x, p.y)]
     finite = all(math.isfinite(v) for v in values)
@@ -297,40 +298,65 @@ def engine_run(make, snapshot, steps, floor_top):
     return spent / steps, engine.contacts(), sunk, moved, finite
 
 
-def measure(makers, snapshot, steps, repeats, floor_top):
-    """Every engine `repeats` times from fresh copies of the snapshot, round-robin: {name: Result}.
+@dataclass
+class Case:
+    """One engine on one scene: how to build it, from what, for how many steps, yielding every `chunk` steps."""
+    make: object
+    snapshot: list
+    steps: int
+    floor_top: float
+    chunk: int = 1
 
-    `steps` is a number, or {name: steps} to give an engine fewer (its repeats still interleave)."""
-    per_engine = steps if isinstance(steps, dict) else {name: steps for name in makers}
-    runs = {name: [] for name in makers}
-    names = list(makers)
+
+def measure(cases, repeats, progress=None, label=""):
+    """Every case `repeats` times from fresh copies of its snapshot, round-robin: {key: Result}.
+
+    Within a repeat the cases advance in turn, one chunk of steps each
+    (accuracy_cost.lockstep), and the order rotates between repeats, so the
+    machine's slow moments hit every case alike.
+    """
+    keys = list(cases)
+    runs = {key: [] for key in keys}
     for repeat in range(repeats):
-        order = names[repeat % len(names):] + names[:repeat % len(names)]  # rotate who goes first
-        outcomes = lockstep([engine_run(makers[n], snapshot, per_engine[n], floor_top) for n in order])
-        for name, outcome in zip(order, outcomes):
-            runs[name].append(outcome)
+        if progress:
+            progress(f"{label}: repeat {repeat + 1}/{repeats}, {len(keys)} cases round-robin")
+        order = keys[repeat % len(keys):] + keys[:repeat % len(keys)]  # rotate who goes first
+        outcomes = lockstep([engine_run(cases[k].make, cases[k].snapshot, cases[k].steps, cases[k].floor_top,
+                                        cases[k].chunk) for k in order])
+        for key, outcome in zip(order, outcomes):
+            runs[key].append(outcome)
     results = {}
-    for name in names:
-        first = runs[name][0]
-        results[name] = Result(name, [r[0] for r in runs[name]], per_engine[name], first[1], first[2], first[3],
-                               all(r[4] for r in runs[name]))
+    for key in keys:
+        first = runs[key][0]
+        name = key[-1] if isinstance(key, tuple) else key
+        results[key] = Result(name, [r[0] for r in runs[key]], cases[key].steps, first[1], first[2], first[3],
+                              all(r[4] for r in runs[key]))
     return results
 
 
 def run(settings, progress=None):
-    """Both tables in one run: (pile results, scaling results {N: {name: Result}}, pile contacts note)."""
+    """Both tables in one run: (pile results {engine: Result}, scaling results {N: {engine: Result}}).
+
+    Table 2 runs every N and engine in the same round-robin, in ROUNDS chunks of
+    steps each (N = 14 steps ten at a time while N = 1000 steps one), so that the
+    growth ratio cost(N)/cost(14) also divides two figures measured side by side.
+    """
     makers = engine_makers()
     say = progress or (lambda text: None)
     say(f"settling the 14-crate lab pile for {settings.settle_seconds:g} s")
     snapshot, floor_top = lab_pile_snapshot(settings.settle_seconds)
-    say(f"table 1: {len(makers)} engines × {settings.repeats} repeats × {settings.pile_steps} steps")
-    pile = measure(makers, snapshot, settings.pile_steps, settings.repeats, floor_top)
-    scaling = {}
+    pile = measure({name: Case(make, snapshot, settings.pile_steps, floor_top) for name, make in makers.items()},
+                   settings.repeats, say, f"table 1, {settings.pile_steps} steps")
+    rounds = min(settings.scale_steps.values())
+    cases = {}
     for n in settings.sizes:
-        chosen = {name: make for name, make in makers.items() if name != "listing" or n <= settings.listing_max}
-        say(f"table 2: N = {n}, {len(chosen)} engines × {settings.scale_repeats} repeats × {settings.scale_steps[n]} steps")
         snap, top = wide_box_snapshot(n)
-        scaling[n] = measure(chosen, snap, settings.scale_steps[n], settings.scale_repeats, top)
+        steps = settings.scale_steps[n]
+        for name, make in makers.items():
+            if name != "listing" or n <= settings.listing_max:
+                cases[(n, name)] = Case(make, snap, steps, top, chunk=max(1, steps // rounds))
+    results = measure(cases, settings.scale_repeats, say, f"table 2, N = {', '.join(map(str, settings.sizes))}")
+    scaling = {n: {name: result for (size, name), result in results.items() if size == n} for n in settings.sizes}
     return pile, scaling
 
 
@@ -462,7 +488,9 @@ def report(pile, scaling, settings, elapsed, mode):
         "",
         f"N crates of {BOX:g} px in columns of two (so the pile is two crates deep at every N) on a floor as long "
         f"as the pile, walls at both ends; each crate starts {OVERLAP:g} px sunk into what it rests on. "
-        "Cost per body-step = median ms/step ÷ N crates, in µs. Steps per repeat: "
+        "Cost per body-step = median ms/step ÷ N crates, in µs. Every N and engine runs in the same "
+        f"round-robin, in {min(settings.scale_steps.values())} rounds a repeat, so the growth ratio compares "
+        "figures measured side by side. Steps per repeat: "
         + ", ".join(f"N = {n}: {settings.scale_steps[n]}" for n in settings.sizes) + ".",
         "",
         scaling_table(scaling, settings),
@@ -490,10 +518,14 @@ def plot(scaling, path, subtitle):
             continue
         costs = [1000 * scaling[n][name].ms / n for n in sizes]
         ratio, last = growth(scaling, name)
-        ax.plot(sizes, costs, marker=markers[name], label=f"{ENGINE_NAMES[name]}: ×{ratio:.2f} from "
+        label = ENGINE_NAMES[name].replace("`", "")
+        ax.plot(sizes, costs, marker=markers[name], label=f"{label}: ×{ratio:.2f} from "
                                                           f"{sizes[0]} to {last}")
     ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.set_xticks(list(scaling))
+    ax.set_xticklabels([str(n) for n in scaling])
+    ax.minorticks_off()
     ax.set_xlabel("crates in the wide box (log scale)")
     ax.set_ylabel("cost per body-step (µs, log scale)")
     ax.set_title("Cost per body-step against the number of bodies (flat = scales linearly)")
