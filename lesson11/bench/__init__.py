@@ -1,10 +1,12 @@
 """Benchmarks: what accuracy costs in time, measured side by side in one run.
 
     accuracy_cost  the study: tunnelling, solver iterations, contact rule, declared effects, pymunk
+    speed          speed side by side: the lesson's listing, the lab's World, the reference solver, pymunk
+    listing        the lesson's example solver (its listing's step_world), standalone, for speed
     scenes         the scenes it runs and the accuracy figures it measures on them
     pymunk_pile    the pile scenes rebuilt in pymunk (optional: needs the `compare` extra)
     plot           the figure (optional: needs matplotlib, from the `compare` extra)
 
 Run the study with `python -m lesson11.bench.accuracy_cost` (a few minutes) or
-add `--quick` for a small run in seconds.
+add `--quick` for a small run in seconds; the same for `python -m lesson11.bench.speed`.
 """
