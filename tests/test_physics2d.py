@@ -11,6 +11,7 @@ from lesson11.physics2d import (Body, Circle, EFFECTS, LESSON_EFFECTS, Polygon, 
                                 polygon_inertia, project, regular_polygon, resolve, sat, separate,
                                 spin_velocity)
 from lesson11.physics2d.collision import inside_edges, polygon_edges
+from lesson11.physics2d.vectors import cross_reference
 
 
 def placed_box(w, h, centre, angle_deg=0.0):
@@ -369,3 +370,16 @@ def test_inside_edges_is_inside_with_edges_worked_out_once(x, y, angle):
     edges = polygon_edges(points)
     for corner in points + [Vector2(x, y), Vector2(20, 30)]:
         assert inside_edges(corner, edges) == inside(corner, points)
+
+
+finite = st.floats(-1e6, 1e6, allow_nan=False)
+
+
+@given(finite, finite, finite, finite)
+def test_fast_cross_and_project_agree_with_their_readable_forms(ax, ay, bx, by):
+    """cross is pygame's Vector2.cross; cross_reference is the formula; project's loop is min/max of the dots."""
+    a, b = Vector2(ax, ay), Vector2(bx, by)
+    assert math.isclose(cross(a, b), cross_reference(a, b), rel_tol=1e-12, abs_tol=1e-6)  # exact on x86-64
+    points = [a, b, a + b, a - b]
+    axis = Vector2(1, 2).normalize()
+    assert project(points, axis) == (min(p.dot(axis) for p in points), max(p.dot(axis) for p in points))

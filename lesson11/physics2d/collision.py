@@ -39,8 +39,14 @@ def edge_normals(points):
 
 def project(points, axis):
     """The shadow of the points on a unit axis: (min p·axis, max p·axis), in px."""
-    dots = [p.dot(axis) for p in points]
-    return min(dots), max(dots)
+    lowest = highest = points[0].dot(axis)
+    for p in points:
+        d = p.dot(axis)
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+    return lowest, highest
 
 
 def centre_of(points):
