@@ -22,6 +22,11 @@ Two ways to find the pairs, with the same answer:
                    spread along x (a wide pile, a level) cost about N; a tall tower
                    (every box over the same x) is still N² / 2 - sweep along the
                    longer axis of the scene if that ever matters.
+                   The sort is Python's own: numpy does not pay here. For 1000
+                   boxes in pile order (nearly sorted already, which Python's sort
+                   handles in about linear time) sorted() took 75 µs against 192 µs
+                   for np.argsort with the conversions; in random order 510 against
+                   514 µs; either way under 0.1 % of a 1000-crate step (0.5-1.6 s).
 
 Both return (pairs, tested): the pairs (i, j), i < j, whose grown boxes overlap
 and in which a body moves, sorted by (i, j) - the order of the all-pairs loop,
