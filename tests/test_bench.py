@@ -123,12 +123,20 @@ def test_solvers_study_has_a_row_per_solver_and_shows_the_flat_bounce_turned_int
     assert len(table) == 2 + len(rows) and "1 (baseline" in table[2] and "lesson, solve-first" in table[2]
 
 
-def test_quick_run_writes_its_own_files_and_never_the_studys(tmp_path, monkeypatch):
+def test_quick_run_writes_its_own_files_and_never_the_studys(results, tmp_path, monkeypatch):
     """--quick --out-dir writes bench_accuracy_cost_quick.md/.png, labelled a smoke run; the full study's
-    bench_accuracy_cost.md/.png in the same folder stay as they were."""
+    bench_accuracy_cost.md/.png in the same folder stay as they were.
+
+    The figures are the module's TINY run (`results`): the quick settings are TINY, so the study is not run twice.
+    """
     pytest.importorskip("matplotlib")
-    smaller = ac.Settings(**{**TINY.__dict__, "shots": 3, "pile_seconds": 0.2, "effects_seconds": 0.2})
-    monkeypatch.setattr(ac, "QUICK", smaller)
+    monkeypatch.setattr(ac, "QUICK", TINY)
+
+    def run(settings, progress=None):
+        assert settings is TINY, "--quick runs the QUICK settings"
+        return results
+
+    monkeypatch.setattr(ac, "run", run)
     study = {"bench_accuracy_cost.md": b"the full study's table", "bench_accuracy_cost.png": b"the full study's plot"}
     for name, content in study.items():
         (tmp_path / name).write_bytes(content)
