@@ -219,6 +219,9 @@ def main(argv):
     importlib.import_module("checker.sandbox")
     for name in WARM_MODULES:
         importlib.import_module(name)
+    import gc
+    gc.collect()
+    gc.freeze()  # what is here now stays shared with the children: their collections never walk it
     serve(control)
 
 
