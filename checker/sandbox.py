@@ -180,7 +180,7 @@ class ZygoteClient:
         finally:
             theirs.close()
         self.control = ours
-        self.broken = False
+        self.broken = self.closed = False
         ours.settimeout(ZYGOTE_START_SECONDS)
         try:
             ready = json.loads(ours.recv(4096) or b"{}").get("ready")
@@ -226,13 +226,16 @@ class ZygoteClient:
             for fd in (out_read, err_read):
                 os.close(fd)
             ours.close()
-            self.close()  # a zygote that fails once is not asked again
+            self.broken = True  # a zygote that fails once is not asked again (runs it started go on; stop_zygote ends it)
             return None
         return _Forked(pid, out_read, err_read, ours)
 
     def close(self):
-        """Stop the zygote (closing our end ends it) and reap it."""
+        """Stop the zygote (closing our end ends it, and it kills the runs it still has) and reap it."""
         self.broken = True
+        if self.closed:
+            return
+        self.closed = True
         try:
             self.control.close()
         except OSError:
@@ -266,7 +269,7 @@ def stop_zygote():
     """Stop this process's zygote if it started one (also done at exit); the next run starts a new one."""
     global _zygote, _zygote_owner
     with _zygote_lock:
-        if _zygote and _zygote_owner == os.getpid():
+        if _zygote and _zygote_owner == os.getpid():  # broken or not
             _zygote.close()
         _zygote, _zygote_owner = None, None
 
