@@ -11,15 +11,24 @@ dummy video and audio drivers, in its own process group, with:
   - RLIMIT_FSIZE: no file the lab writes can grow past 64 MB;
   - an output cap (`max_output` bytes over stdout + stderr): the child raises at the print() that
     crosses it (so the report names the line); past FLOOD_SLACK more the parent kills the group.
+
+Where os.fork and Unix sockets are available the child is forked from a zygote (checker/zygote.py),
+a process started once per grading run that has already imported pygame, lesson11 and the probes,
+so each run saves starting Python and those imports. CHECKER_ZYGOTE=0 in the environment (or
+USE_ZYGOTE = False here) turns it off; whenever the zygote cannot be started or stops answering,
+children are started with subprocess as before. The run and its RunResult are the same either way.
 """
 import json
 import math
 import os
+import atexit
 import selectors
 import signal
+import socket
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from dataclasses import dataclass, field
 
@@ -28,6 +37,9 @@ FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
 RECORD_LIMIT = 48 * 1024 * 1024  # bytes: largest record the parent will read
 WALL_FACTOR, WALL_EXTRA = 3.0, 5.0   # the wall-clock limit: WALL_FACTOR × timeout + WALL_EXTRA s
 FLOOD_SLACK = 64 * 1024          # bytes past max_output before the parent kills a run (the child stops first)
+USE_ZYGOTE = True                # fork children from a warm zygote where possible (and CHECKER_ZYGOTE != "0")
+ZYGOTE_START_SECONDS = 60.0      # s the zygote may take to import its modules before we do without it
+ZYGOTE_REPLY_SECONDS = 10.0      # s the zygote may take to fork a child before we do without it
 
 
 @dataclass
@@ -51,6 +63,13 @@ class RunResult:
     timeout_trace: str = ""         # faulthandler's stack dump when the run timed out
 
 
+_CHILD_ENV = {
+    "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy", "PYGAME_HIDE_SUPPORT_PROMPT": "1",
+    "PYTHONDONTWRITEBYTECODE": "1", "PYTHONUNBUFFERED": "1", "PYTHONIOENCODING": "utf-8",
+    "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
+}
+
+
 def wall_limit(limits):
     """Wall-clock seconds a run may take before it is killed (its CPU time is limited to `timeout`)."""
     return WALL_FACTOR * limits.timeout + WALL_EXTRA
@@ -67,6 +86,195 @@ def _limit_child(limits):
         resource.setrlimit(resource.RLIMIT_FSIZE, (FILE_LIMIT, FILE_LIMIT))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
     return apply
+
+
+def _start(lab_path, task, settings_path, result_path, work, env, limits):
+    """Start the child: forked by the zygote if it is on and answers, else with subprocess."""
+    argv = ["checker.child", lab_path, task, settings_path, result_path]
+    if zygote_enabled():
+        client = _zygote_client()
+        if client is not None:
+            proc = client.spawn(argv, work, env, limits)
+            if proc is not None:
+                return proc
+    command = [sys.executable, "-X", "faulthandler", "-m"] + argv
+    return _Subprocess(subprocess.Popen(command, cwd=work, env=env, stdin=subprocess.DEVNULL,
+                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                        preexec_fn=_limit_child(limits)))
+
+
+class _Subprocess:
+    """A child started with subprocess: its pid, pipe fds, wait() and returncode."""
+
+    def __init__(self, popen):
+        self.popen = popen
+        self.pid = popen.pid
+        self.stdout_fd, self.stderr_fd = popen.stdout.fileno(), popen.stderr.fileno()
+
+    @property
+    def returncode(self):
+        return self.popen.returncode
+
+    def wait(self, timeout=None):
+        return self.popen.wait(timeout=timeout)
+
+    def close(self):
+        self.popen.stdout.close()
+        self.popen.stderr.close()
+
+
+class _Forked:
+    """A child forked by the zygote: like _Subprocess; its exit status comes over `reply` from the zygote."""
+
+    def __init__(self, pid, stdout_fd, stderr_fd, reply):
+        self.pid, self.stdout_fd, self.stderr_fd, self.reply = pid, stdout_fd, stderr_fd, reply
+        self.returncode = None
+        self._waited = False
+
+    def wait(self, timeout=None):
+        """The child's returncode (None if the zygote died first); raises subprocess.TimeoutExpired."""
+        if self._waited:
+            return self.returncode
+        self.reply.settimeout(timeout)
+        try:
+            data = self.reply.recv(4096)
+        except socket.timeout:
+            raise subprocess.TimeoutExpired("checker.child", timeout) from None
+        except OSError:
+            data = b""
+        self._waited = True
+        try:
+            self.returncode = json.loads(data)["returncode"] if data else None
+        except (ValueError, KeyError, TypeError):
+            self.returncode = None
+        if not data:
+            _kill_group(self)  # the zygote died under it: make sure nothing of the run is left
+        return self.returncode
+
+    def close(self):
+        for fd in (self.stdout_fd, self.stderr_fd):
+            os.close(fd)
+        self.reply.close()
+
+
+def zygote_enabled():
+    """True if children should be forked from the zygote: USE_ZYGOTE, CHECKER_ZYGOTE != "0", POSIX with fork."""
+    return (USE_ZYGOTE and os.environ.get("CHECKER_ZYGOTE", "1") != "0" and hasattr(os, "fork")
+            and hasattr(socket, "send_fds") and hasattr(socket, "AF_UNIX") and hasattr(socket, "SOCK_SEQPACKET"))
+
+
+class ZygoteClient:
+    """The grader's end of one zygote process (checker/zygote.py); shared by threads."""
+
+    def __init__(self):
+        self.lock = threading.Lock()
+        ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+        env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
+        env.update(_CHILD_ENV, PYTHONPATH=PROJECT_ROOT)
+        env.pop("CHECKER_FAULT_SECONDS", None)
+        try:
+            self.process = subprocess.Popen(
+                [sys.executable, "-m", "checker.zygote", str(theirs.fileno())], cwd=PROJECT_ROOT, env=env,
+                stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                pass_fds=(theirs.fileno(),), start_new_session=True)
+        finally:
+            theirs.close()
+        self.control = ours
+        self.broken = self.closed = False
+        ours.settimeout(ZYGOTE_START_SECONDS)
+        try:
+            ready = json.loads(ours.recv(4096) or b"{}").get("ready")
+        except (OSError, ValueError):
+            ready = False
+        ours.settimeout(None)
+        if not ready:
+            self.close()
+
+    def spawn(self, argv, cwd, env, limits):
+        """Have the zygote fork a child running `python -m argv...`; a _Forked, or None if it cannot."""
+        if self.broken:
+            return None
+        out_read, out_write = os.pipe()
+        err_read, err_write = os.pipe()
+        ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+        request = {"argv": argv, "cwd": cwd, "env": env,
+                   "limits": {"timeout": limits.timeout, "memory_mb": limits.memory_mb,
+                              "max_output": limits.max_output}}
+        try:
+            with self.lock:
+                socket.send_fds(self.control, [json.dumps(request).encode()],
+                                [out_write, err_write, theirs.fileno()])
+        except OSError:
+            data = None
+        else:
+            data = b""
+        finally:
+            os.close(out_write)
+            os.close(err_write)
+            theirs.close()
+        if data is not None:
+            ours.settimeout(ZYGOTE_REPLY_SECONDS)
+            try:
+                data = ours.recv(4096)
+            except OSError:
+                data = b""
+        try:
+            pid = json.loads(data)["pid"] if data else None
+        except (ValueError, KeyError, TypeError):
+            pid = None
+        if not isinstance(pid, int):
+            for fd in (out_read, err_read):
+                os.close(fd)
+            ours.close()
+            self.broken = True  # a zygote that fails once is not asked again (runs it started go on; stop_zygote ends it)
+            return None
+        return _Forked(pid, out_read, err_read, ours)
+
+    def close(self):
+        """Stop the zygote (closing our end ends it, and it kills the runs it still has) and reap it."""
+        self.broken = True
+        if self.closed:
+            return
+        self.closed = True
+        try:
+            self.control.close()
+        except OSError:
+            pass
+        try:
+            self.process.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
+
+
+_zygote = None          # this process's ZygoteClient, or False once it could not be started
+_zygote_owner = None    # the pid that started it (a forked grader starts its own)
+_zygote_lock = threading.Lock()
+
+
+def _zygote_client():
+    """The zygote of this process, started on first use; None if it could not be started or broke."""
+    global _zygote, _zygote_owner
+    with _zygote_lock:
+        if _zygote_owner != os.getpid():
+            _zygote_owner = os.getpid()
+            try:
+                _zygote = ZygoteClient()
+            except OSError:
+                _zygote = False
+        return _zygote if _zygote and not _zygote.broken else None
+
+
+def stop_zygote():
+    """Stop this process's zygote if it started one (also done at exit); the next run starts a new one."""
+    global _zygote, _zygote_owner
+    with _zygote_lock:
+        if _zygote and _zygote_owner == os.getpid():  # broken or not
+            _zygote.close()
+        _zygote, _zygote_owner = None, None
+
+
+atexit.register(stop_zygote)
 
 
 def _kill_group(proc):
@@ -98,25 +306,19 @@ def run_child(lab_path, task, settings, limits):
         with open(settings_path, "w", encoding="utf-8") as handle:
             json.dump(settings, handle)
         env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
+        env.update(_CHILD_ENV)
         env.update({
-            "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy", "PYGAME_HIDE_SUPPORT_PROMPT": "1",
-            "PYTHONDONTWRITEBYTECODE": "1", "PYTHONUNBUFFERED": "1", "PYTHONIOENCODING": "utf-8",
-            "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
             "PYTHONPATH": os.pathsep.join([PROJECT_ROOT, os.path.dirname(lab_path)]),
             "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
         })
-        command = [sys.executable, "-X", "faulthandler", "-m", "checker.child",
-                   lab_path, task, settings_path, result_path]
         start = time.monotonic()
-        proc = subprocess.Popen(command, cwd=work, env=env, stdin=subprocess.DEVNULL,
-                                stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                preexec_fn=_limit_child(limits))
+        proc = _start(lab_path, task, settings_path, result_path, work, env, limits)
         chunks = {"stdout": [], "stderr": []}
         total = 0
         status = None
         selector = selectors.DefaultSelector()
-        selector.register(proc.stdout, selectors.EVENT_READ, "stdout")
-        selector.register(proc.stderr, selectors.EVENT_READ, "stderr")
+        selector.register(proc.stdout_fd, selectors.EVENT_READ, "stdout")
+        selector.register(proc.stderr_fd, selectors.EVENT_READ, "stderr")
         open_streams = 2
         deadline = start + wall_limit(limits)
         while open_streams:
@@ -125,7 +327,7 @@ def run_child(lab_path, task, settings, limits):
                 status = "timeout"
                 break
             for key, _ in selector.select(timeout=min(remaining, 0.5)):
-                data = os.read(key.fileobj.fileno(), 65536)
+                data = os.read(key.fd, 65536)
                 if not data:
                     selector.unregister(key.fileobj)
                     open_streams -= 1
@@ -148,8 +350,7 @@ def run_child(lab_path, task, settings, limits):
             proc.wait()
         _kill_group(proc)  # anything the lab left running in its group
         selector.close()
-        proc.stdout.close()
-        proc.stderr.close()
+        proc.close()
         seconds = time.monotonic() - start
         result = _read_json(result_path, 1024 * 1024) or {}
         record = _read_json(settings["record"], RECORD_LIMIT) if task == "scenario" else None

@@ -1,0 +1,229 @@
+"""A fork server ("zygote") that starts the checker's child processes already warm.
+
+Every child the checker starts (checker/child.py) would spend its first ~0.3 CPU-s starting
+Python and importing pygame, lesson11 and the checker's probes before any lab code runs.
+The zygote does that work once per grading run: it imports those modules (and nothing else:
+it never calls pygame.init(), opens a window or configures lesson11.runtime), then serves
+requests from the grader over a Unix socket. For each request it forks; the forked process
+sets itself up the way `python -X faulthandler -m checker.child ...` under sandbox.run_child
+would be set up (its own session, the same resource limits, the working directory, the
+environment, sys.path as PYTHONPATH would make it, stdin from /dev/null, stdout and stderr on
+the grader's pipes, unbuffered utf-8 text streams, no bytecode written, faulthandler on) and
+runs checker/child.py as __main__. The zygote reaps its children and reports each exit status.
+
+Protocol (SOCK_SEQPACKET, one JSON message per packet):
+  grader -> zygote, on the control socket: {"argv", "cwd", "env", "limits"} with three file
+      descriptors: the write ends of the stdout and stderr pipes, and the zygote's end of a
+      fresh socket pair for this request;
+  zygote -> grader, on the request's socket: {"pid": n} once forked (or {"error": text}),
+      later {"returncode": n} (Popen's convention: -signal when killed by a signal).
+The zygote says {"ready": true} on the control socket once its imports are done, and leaves
+(killing the process groups of children still running) when the grader's end is closed.
+
+The grader side is checker.sandbox (ZygoteClient); the zygote is started with
+`python -m checker.zygote FD`.
+"""
+import json
+import os
+import selectors
+import signal
+import socket
+import sys
+
+WARM_MODULES = ("pygame", "lesson11.runtime", "lesson11.panel", "lesson11.physics2d", "lesson11.physics2d.draw",
+                "checker.child", "checker.crates_probes", "checker.shapes_probes", "checker.ball_probes",
+                "checker.bullets_probes", "checker.sleep_probes")
+MAX_MESSAGE = 1 << 20
+
+
+def _child(request, fds, base_path, close):
+    """In the forked process: become the child sandbox.run_child would have started, run it, exit."""
+    code = 1
+    try:
+        signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        for thing in close:
+            thing.close()  # the zygote's sockets (this request's among them) and its selector
+        out_fd, err_fd, _ = fds
+        from checker import sandbox
+        limits = sandbox.Limits(**request["limits"])
+        sandbox._limit_child(limits)()  # setsid and the rlimits, exactly as the preexec_fn does
+        null = os.open(os.devnull, os.O_RDONLY)
+        os.dup2(null, 0)
+        os.dup2(out_fd, 1)
+        os.dup2(err_fd, 2)
+        os.closerange(3, max(os.sysconf("SC_OPEN_MAX"), 256) if hasattr(os, "sysconf") else 4096)
+        os.chdir(request["cwd"])
+        os.environ.clear()
+        os.environ.update(request["env"])
+        _fresh_stdio()
+        import faulthandler
+        faulthandler.enable()  # -X faulthandler
+        sys.dont_write_bytecode = True  # PYTHONDONTWRITEBYTECODE
+        argv = request["argv"]
+        python_path = [p for p in request["env"].get("PYTHONPATH", "").split(os.pathsep) if p]
+        sys.path[:] = [os.getcwd()] + python_path + base_path
+        sys.argv[:] = argv
+        import runpy
+        sys.modules.pop(argv[0], None)  # run as __main__ afresh, as -m does (and without runpy's warning)
+        try:
+            runpy.run_module(argv[0], run_name="__main__", alter_sys=True)
+            code = 0
+        except SystemExit as exc:
+            code = _exit_code(exc.code)
+        except BaseException:  # noqa: BLE001 - what an uncaught exception does to python: a traceback, 1
+            import traceback
+            traceback.print_exc()
+            code = 1
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except BaseException:  # noqa: BLE001
+                pass
+    finally:
+        os._exit(code)
+
+
+def _exit_code(code):
+    """The exit status python gives `raise SystemExit(code)`."""
+    if code is None:
+        return 0
+    if isinstance(code, int):
+        return code & 0xFF
+    try:
+        print(code, file=sys.stderr)
+    except BaseException:  # noqa: BLE001
+        pass
+    return 1
+
+
+def _fresh_stdio():
+    """sys.stdin/stdout/stderr as python makes them with PYTHONUNBUFFERED=1 PYTHONIOENCODING=utf-8."""
+    import io
+
+    def stream(fd, mode, errors):
+        raw = io.FileIO(fd, mode, closefd=False)
+        raw.name = f"<{('stdin', 'stdout', 'stderr')[fd]}>"
+        if mode == "r":
+            text = io.TextIOWrapper(io.BufferedReader(raw), encoding="utf-8", errors=errors)
+        else:
+            text = io.TextIOWrapper(raw, encoding="utf-8", errors=errors, newline="\n", write_through=True)
+        text.mode = mode
+        return text
+
+    sys.stdin = sys.__stdin__ = stream(0, "r", "strict")
+    sys.stdout = sys.__stdout__ = stream(1, "w", "strict")
+    sys.stderr = sys.__stderr__ = stream(2, "w", "backslashreplace")
+
+
+def _returncode(status):
+    return os.waitstatus_to_exitcode(status)
+
+
+def serve(control):
+    """Answer requests on `control` until the grader closes its end."""
+    base_path = sys.path[1:]
+    project = os.environ.get("PYTHONPATH", "")
+    for entry in [p for p in project.split(os.pathsep) if p]:
+        if entry in base_path:
+            base_path.remove(entry)
+    wake_read, wake_write = os.pipe()
+    os.set_blocking(wake_read, False)
+    os.set_blocking(wake_write, False)
+    signal.signal(signal.SIGCHLD, lambda signum, frame: None)
+    signal.set_wakeup_fd(wake_write)
+    selector = selectors.DefaultSelector()
+    selector.register(control, selectors.EVENT_READ, "control")
+    selector.register(wake_read, selectors.EVENT_READ, "wake")
+    running = {}   # pid -> the request's socket
+    control.send(json.dumps({"ready": True}).encode())
+    try:
+        while True:
+            for key, _ in selector.select():
+                if key.data == "wake":
+                    try:
+                        while os.read(wake_read, 4096):
+                            pass
+                    except BlockingIOError:
+                        pass
+                    _reap(running)
+                    continue
+                try:
+                    data, fds, _flags, _addr = socket.recv_fds(control, MAX_MESSAGE, 3)
+                except OSError:
+                    return
+                if not data:
+                    return  # the grader is gone
+                if len(fds) != 3:
+                    for fd in fds:
+                        os.close(fd)
+                    continue
+                reply = socket.socket(fileno=fds[2])
+                try:
+                    request = json.loads(data)
+                    pid = os.fork()
+                except BaseException as exc:  # noqa: BLE001 - tell the grader, keep serving
+                    for fd in fds[:2]:
+                        os.close(fd)
+                    _send(reply, {"error": f"{type(exc).__name__}: {exc}"})
+                    reply.close()
+                    continue
+                if pid == 0:
+                    signal.set_wakeup_fd(-1)
+                    close = [selector, control, reply] + list(running.values())
+                    os.close(wake_read)
+                    os.close(wake_write)
+                    _child(request, fds, base_path, close)
+                for fd in fds[:2]:
+                    os.close(fd)
+                running[pid] = reply
+                _send(reply, {"pid": pid})
+                _reap(running)
+    finally:
+        for pid in running:
+            try:
+                os.killpg(pid, signal.SIGKILL)
+            except OSError:
+                pass
+        for pid in list(running):
+            try:
+                os.waitpid(pid, 0)
+            except OSError:
+                pass
+
+
+def _reap(running):
+    while running:
+        try:
+            pid, status = os.waitpid(-1, os.WNOHANG)
+        except ChildProcessError:
+            return
+        if pid == 0:
+            return
+        reply = running.pop(pid, None)
+        if reply is not None:
+            _send(reply, {"returncode": _returncode(status)})
+            reply.close()
+
+
+def _send(sock, message):
+    try:
+        sock.send(json.dumps(message).encode())
+    except OSError:
+        pass  # the grader stopped listening for this run
+
+
+def main(argv):
+    control = socket.socket(fileno=int(argv[0]))
+    import importlib
+    importlib.import_module("checker.sandbox")
+    for name in WARM_MODULES:
+        importlib.import_module(name)
+    import gc
+    gc.collect()
+    gc.freeze()  # what is here now stays shared with the children: their collections never walk it
+    serve(control)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

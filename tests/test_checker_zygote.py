@@ -1,0 +1,173 @@
+"""The zygote (checker/zygote.py) changes how children start, never what the checker reports.
+
+The same files are graded with CHECKER_ZYGOTE on and off and must get the same JSON (but for
+the seconds taken); limits (CPU time, output) still end runs the same way when the child was
+forked by the zygote; no zygote or child is left behind by a run.
+"""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+import uuid
+
+import pytest
+
+from checker import sandbox
+from checker.sandbox import Limits, run_child
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+FIXTURES = os.path.join(ROOT, "tests", "fixtures", "checker")
+SOLUTIONS = [os.path.join(ROOT, "solutions", name + ".py") for name in ("tumbling_crates", "more_shapes", "ball_on_ramp")]
+BROKEN = [os.path.join(FIXTURES, name + ".py") for name in
+          ("hostile_loop_at_import", "hostile_exception_at_import", "hostile_output_flood", "hostile_os_exit",
+           "hostile_sys_exit", "hostile_memory_hog")]
+
+pytestmark = pytest.mark.skipif(not sandbox.zygote_enabled() and os.environ.get("CHECKER_ZYGOTE", "1") != "0",
+                                reason="no os.fork / Unix sockets here: the zygote is never used")
+
+
+def processes_marked(mark):
+    """Pids of live processes whose environment holds CHECKER_TEST_MARK=mark."""
+    found = []
+    needle = f"CHECKER_TEST_MARK={mark}".encode()
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            with open(f"/proc/{pid}/environ", "rb") as handle:
+                if needle in handle.read().split(b"\0"):
+                    with open(f"/proc/{pid}/stat", "rb") as stat:
+                        if stat.read().rsplit(b")", 1)[1].split()[0] != b"Z":
+                            found.append(int(pid))
+        except OSError:
+            pass
+    return found
+
+
+def grade(paths, zygote, mark):
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+               CHECKER_ZYGOTE="1" if zygote else "0", CHECKER_TEST_MARK=mark)
+    proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--timeout", "8", "--memory", "512",
+                           *paths], cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
+    document = json.loads(proc.stdout)
+    return proc.returncode, without_seconds(document)
+
+
+def without_seconds(value):
+    if isinstance(value, dict):
+        return {key: without_seconds(item) for key, item in value.items() if key != "seconds"}
+    if isinstance(value, list):
+        return [without_seconds(item) for item in value]
+    return value
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc"), reason="looks for stray processes in /proc")
+def test_same_verdicts_with_and_without_the_zygote_and_nothing_left_behind():
+    mark = uuid.uuid4().hex
+    on_status, on = grade(SOLUTIONS + BROKEN, True, mark)
+    assert processes_marked(mark) == []  # the zygote and every child it forked are gone
+    off_status, off = grade(SOLUTIONS + BROKEN, False, mark)
+    assert processes_marked(mark) == []
+    assert on_status == off_status == 1
+    assert on == off
+    labs = {os.path.basename(lab["path"]): lab for lab in on["labs"]}
+    for path in SOLUTIONS:
+        lab = labs[os.path.basename(path)]
+        assert all(c["status"] == "pass" for c in lab["criteria"]), lab
+
+
+# ---------------------------------------------------------------- limits, through the zygote
+
+LOOP = "x = 0\nwhile True:\n    x += 1\n"
+PRINT_FLOOD = "while True:\n    print('crate ' * 40)\n"
+RAW_FLOOD = "import os\nwhile True:\n    os.write(1, b'crate ' * 1000)\n"
+PARENT = "import os\nprint('parent', os.getppid())\n"
+
+
+@pytest.fixture
+def lab(tmp_path):
+    def write(source):
+        path = tmp_path / "lab.py"
+        path.write_text(source, encoding="utf-8")
+        return str(path)
+    return write
+
+
+@pytest.fixture
+def zygote(monkeypatch):
+    """The zygote on, started afresh for the test and stopped after it."""
+    monkeypatch.setenv("CHECKER_ZYGOTE", "1")
+    monkeypatch.setattr(sandbox, "USE_ZYGOTE", True)
+    sandbox.stop_zygote()
+    client = sandbox._zygote_client()
+    assert client is not None, "the zygote did not start"
+    yield client
+    sandbox.stop_zygote()
+    assert client.process.poll() is not None
+
+
+def probe(path, limits):
+    return run_child(path, "probe", {"probes": "checker.crates_probes"}, limits)
+
+
+def test_the_child_is_forked_by_the_zygote(zygote, lab):
+    run = probe(lab(PARENT), Limits(timeout=5))
+    assert run.status == "done" and run.returncode == 0, run
+    assert run.stdout.strip() == f"parent {zygote.process.pid}"
+
+
+def test_cpu_time_limit_through_the_zygote(zygote, lab):
+    path = lab(LOOP)
+    run = probe(path, Limits(timeout=1))
+    assert run.status == "timeout", run
+    assert run.returncode == -signal.SIGKILL  # SIGXCPU dumped the stack, the hard limit a second later killed it
+    assert f'File "{path}", line 3' in run.timeout_trace, run.timeout_trace
+    assert run.seconds < sandbox.wall_limit(Limits(timeout=1))
+
+
+def test_print_flood_through_the_zygote(zygote, lab):
+    run = probe(lab(PRINT_FLOOD), Limits(timeout=5, max_output=64 * 1024))
+    assert run.status == "error", run
+    assert run.result["error"]["kind"] == "flood" and run.result["error"]["line"] == 2
+    assert len(run.stdout) <= 64 * 1024
+
+
+def test_raw_flood_is_killed_through_the_zygote(zygote, lab):
+    run = probe(lab(RAW_FLOOD), Limits(timeout=5, max_output=64 * 1024))
+    assert run.status == "flood", run
+    assert run.returncode == -signal.SIGKILL
+    assert len(run.stdout) <= 64 * 1024
+
+
+def test_a_dead_zygote_means_subprocess_again(zygote, lab):
+    zygote.process.kill()
+    zygote.process.wait()
+    run = probe(lab(PARENT), Limits(timeout=5))
+    assert run.status == "done" and run.returncode == 0, run
+    assert run.stdout.strip() == f"parent {os.getpid()}"  # started by subprocess from this process
+    assert sandbox._zygote_client() is None
+
+
+def test_checker_zygote_0_means_subprocess(monkeypatch, lab):
+    monkeypatch.setenv("CHECKER_ZYGOTE", "0")
+    sandbox.stop_zygote()
+    run = probe(lab(PARENT), Limits(timeout=5))
+    assert run.stdout.strip() == f"parent {os.getpid()}"
+    assert sandbox._zygote is None  # never started
+
+
+def test_the_zygote_leaves_when_its_grader_does(tmp_path):
+    """A grader killed outright (no atexit) still takes its zygote with it: EOF on the zygote's socket."""
+    mark = uuid.uuid4().hex
+    script = ("import os, signal\nfrom checker import sandbox\n"
+              "assert sandbox._zygote_client() is not None\nos.kill(os.getpid(), signal.SIGKILL)\n")
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+               CHECKER_ZYGOTE="1", CHECKER_TEST_MARK=mark)
+    subprocess.run([sys.executable, "-c", script], env=env, cwd=str(tmp_path), timeout=120)
+    for _ in range(100):
+        if not processes_marked(mark):
+            break
+        time.sleep(0.1)
+    assert processes_marked(mark) == []
