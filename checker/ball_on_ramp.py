@@ -124,6 +124,11 @@ def recognise(path, source):
     return "ball_on_ramp" in name or "ball on the ramp" in source.lower()
 
 
+# CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
+# grader starts the longest first, so a long scene does not start last and run alone.
+SCENE_SECONDS = {"knock": 0.8, "ramp": 0.3, "inside": 0.3}
+
+
 def scenarios():
     """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
     return {name: build() for name, build in scenes.SCENARIOS.items()}

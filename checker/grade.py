@@ -5,10 +5,14 @@ A lab file is graded in two stages, each in isolated child processes:
   2. if the checks that read the scenes can run (every check they depend on
      passed): one child per scenario.
 All children of all files share one pool of `jobs` worker slots, so a class
-folder keeps every core busy. A file's source is read once (the checker never
+folder keeps every core busy; a freed slot goes to the waiting run expected
+to take longest (probes first, then scenes by their lab's SCENE_SECONDS). A file's source is read once (the checker never
 writes to it); if the file changes while it is graded the result is an error.
 """
 import hashlib
+import heapq
+import itertools
+import math
 import os
 import threading
 import time
@@ -69,6 +73,40 @@ class LabReport:
         return "error" if any(r.status == ERROR for r in self.results) else "fail"
 
 
+class Slots:
+    """At most `jobs` child runs at once; a freed slot goes to the waiting run with the highest priority.
+
+    The priority is how long a run is expected to take (s), so the grader
+    schedules longest first (Graham's LPT rule): a long scene that starts
+    last runs alone at the end while the other cores idle; started first, the
+    short runs fill in around it. Equal priorities are served first come, first served.
+    """
+
+    def __init__(self, jobs):
+        self.free = jobs
+        self.waiting = []                 # heap of (-priority, ticket, event)
+        self.tickets = itertools.count()
+        self.lock = threading.Lock()
+
+    def acquire(self, priority):
+        """Wait for a slot; runs with a higher priority waiting at the same time get theirs first."""
+        with self.lock:
+            if self.free > 0 and not self.waiting:
+                self.free -= 1
+                return
+            ready = threading.Event()
+            heapq.heappush(self.waiting, (-priority, next(self.tickets), ready))
+        ready.wait()                      # release() handed this run its slot
+
+    def release(self):
+        """Give the slot to the waiting run with the highest priority, or free it."""
+        with self.lock:
+            if self.waiting:
+                heapq.heappop(self.waiting)[2].set()
+            else:
+                self.free += 1
+
+
 class Grader:
     """Runs child processes for many labs with at most `jobs` at a time and an overall deadline."""
 
@@ -77,16 +115,21 @@ class Grader:
         self.keep_records = keep_records
         self.options = dict(options or {})
         self.jobs = max(1, jobs or os.cpu_count() or 1)
-        self.slots = threading.Semaphore(self.jobs)
+        self.slots = Slots(self.jobs)
         self.deadline = None if not total_timeout else time.monotonic() + total_timeout
         self.total_timeout = total_timeout
 
     def _out_of_time(self):
         return self.deadline is not None and time.monotonic() >= self.deadline
 
-    def run(self, lab_path, task, settings):
-        """One child run, waiting for a free slot; None if the whole run's time limit has passed."""
-        with self.slots:
+    def run(self, lab_path, task, settings, priority=math.inf):
+        """One child run, waiting for a free slot; None if the whole run's time limit has passed.
+
+        priority: the seconds the run is expected to take (Slots: longest first);
+        probes keep the default, infinity, since a file's scenes wait for its probe.
+        """
+        self.slots.acquire(priority)
+        try:
             if self._out_of_time():
                 return None
             limits = self.limits
@@ -94,6 +137,8 @@ class Grader:
                 left = self.deadline - time.monotonic()
                 limits = Limits(min(limits.timeout, max(left, 0.5)), limits.memory_mb, limits.max_output)
             run = run_child(lab_path, task, settings, limits)
+        finally:
+            self.slots.release()
         run.lab_path = lab_path
         run.timeout = limits.timeout
         run.cut_short = limits.timeout < self.limits.timeout and run.status == "timeout"
@@ -118,7 +163,8 @@ class Grader:
         if lab.checks.wants_scenarios(state):
             wanted = lab.scenarios()
             with ThreadPoolExecutor(max_workers=len(wanted)) as pool:
-                futures = {name: pool.submit(self.run, path, "scenario", dict(settings, probes=lab.probes))
+                futures = {name: pool.submit(self.run, path, "scenario", dict(settings, probes=lab.probes),
+                                             lab.scene_seconds(name, settings))
                            for name, settings in wanted.items()}
                 for name, future in futures.items():
                     run = future.result()

@@ -4,7 +4,8 @@ To add a lab, write a module like checker/tumbling_crates.py (CHECKS, TITLE,
 PROBES (the module the child process imports to probe the lab's functions:
 REQUIRED names and PROBES {function name: probe}), recognise(path, source),
 scenarios(), and optionally PICTURE_SCENES {check id: scene names} for
---pictures) and add one row to LABS.
+--pictures and SCENE_SECONDS {scene name: CPU s of the solution's run}, so
+the grader starts the longest scenes first) and add one row to LABS.
 """
 from dataclasses import dataclass
 
@@ -27,6 +28,17 @@ class Lab:
 
     def scenarios(self):
         return self.module.scenarios()
+
+    def scene_seconds(self, name, settings):
+        """How long (CPU s) scene `name` is expected to run, for the grader's longest-first order.
+
+        The module's SCENE_SECONDS[name] (measured with the lab's solution), else
+        the scene's simulated time, frames / fps.
+        """
+        known = getattr(self.module, "SCENE_SECONDS", {})
+        if name in known:
+            return known[name]
+        return settings.get("frames", 0) / settings.get("fps", 60)
 
     @property
     def picture_scenes(self):

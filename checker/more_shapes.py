@@ -105,6 +105,11 @@ def recognise(path, source):
     return "more_shapes" in name or "more shapes" in source.lower()
 
 
+# CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
+# grader starts the longest first, so a long scene does not start last and run alone.
+SCENE_SECONDS = {"solo": 1.9, "pile": 1.8}
+
+
 def scenarios():
     """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
     return {name: build() for name, build in scenes.SCENARIOS.items()}

@@ -137,6 +137,11 @@ def recognise(path, source):
     return "tumbling_crates" in name or "tumbling crates" in source.lower()
 
 
+# CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
+# grader starts the longest first, so a long scene does not start last and run alone.
+SCENE_SECONDS = {"pile": 6.4, "own_scene": 4.0, "ramp": 1.5, "corner": 0.9}
+
+
 def scenarios():
     """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
     return {name: build() for name, build in scenes.SCENARIOS.items()}

@@ -159,3 +159,43 @@ def test_list_prints_every_check_of_every_lab_with_its_points(capsys):
         assert f"{lab.title} ({lab.id}): {len(lab.checks.checks)} checks, {lab.checks.max_score:g} points" in out
         for check in lab.checks.checks:
             assert f"{check.id}" in out and check.description in out
+
+
+# ---------------------------------------------------------------- the grader's slots: longest first
+
+def test_a_freed_slot_goes_to_the_longest_waiting_run_ties_first_come():
+    import threading
+    import time
+
+    from checker.grade import Slots
+    slots = Slots(1)
+    slots.acquire(0.0)                       # the one slot is busy
+    started = []
+
+    def wait_then_note(name, priority):
+        slots.acquire(priority)
+        started.append(name)
+        slots.release()
+    threads = []
+    for name, priority in (("short", 0.3), ("long", 6.4), ("tie-a", 1.5), ("tie-b", 1.5), ("probe", float("inf"))):
+        thread = threading.Thread(target=wait_then_note, args=(name, priority))
+        thread.start()
+        threads.append(thread)
+        while len(slots.waiting) < len(threads):  # queued in this order
+            time.sleep(0.001)
+    slots.release()
+    for thread in threads:
+        thread.join(5)
+    assert started == ["probe", "long", "tie-a", "tie-b", "short"]
+    assert slots.free == 1 and not slots.waiting
+
+
+def test_each_lab_declares_what_its_scenes_cost_and_an_unknown_scene_costs_its_simulated_time():
+    from checker.labs import LABS
+    for lab in LABS:
+        scenes = lab.scenarios()
+        assert set(lab.module.SCENE_SECONDS) == set(scenes), lab.id
+        assert all(lab.scene_seconds(name, settings) > 0 for name, settings in scenes.items())
+    tumbling = LABS[0]
+    assert max(tumbling.scenarios(), key=lambda n: tumbling.scene_seconds(n, {})) == "pile"
+    assert tumbling.scene_seconds("new scene", {"frames": 240, "fps": 60}) == 4.0
