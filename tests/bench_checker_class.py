@@ -5,7 +5,7 @@
 Writes N per-student folders (student_001/tumbling_crates.py, ...) into a
 temporary directory from the mistake corpus (tests/corpus_tumbling_crates.py):
 every other one a correct completion (in turn through the corpus's correct
-entries), the rest its wrong completions in turn (each fails one check). Half
+entries), the rest its wrong completions in turn (each fails, or errs on, one check). Half
 correct is a pessimistic class: a correct file runs all four scenes, a wrong
 one stops after the function checks. Then
 runs, from REPO (default: this repository),
@@ -88,8 +88,9 @@ def main(argv=None):
               f"cores: {os.cpu_count()}, load average before/after: {load_before[0]:.2f} / {load_after[0]:.2f}")
         print(f"wall time: {wall:.1f} s   files per second: {args.n / wall:.2f}   "
               f"seconds per file: {wall / args.n:.2f}")
-        print(f"passed: {counts['pass']} (expected {expected['pass']})   failed: {counts['fail']} "
-              f"(expected {expected['fail']})   error (timed out, crashed or not graded): {counts['error']}   exit status: {proc.returncode}")
+        print(f"passed: {counts['pass']} (expected {expected['pass']})   failed or error: "
+              f"{counts['fail'] + counts['error']} (expected {expected['fail']}; error = a check whose code raised, "
+              f"timed out or crashed: {counts['error']})   exit status: {proc.returncode}")
         if proc.stderr.strip():
             print("checker stderr (last lines):\n" + "\n".join(proc.stderr.strip().splitlines()[-5:]))
         if args.keep:
