@@ -6,6 +6,7 @@ forked by the zygote; no zygote or child is left behind by a run.
 """
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -19,7 +20,9 @@ from checker.sandbox import Limits, run_child
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FIXTURES = os.path.join(ROOT, "tests", "fixtures", "checker")
-SOLUTIONS = [os.path.join(ROOT, "solutions", name + ".py") for name in ("tumbling_crates", "more_shapes", "ball_on_ramp")]
+# the three labs whose scenes are cheapest (about 3 CPU s in all): every run kind goes through both paths;
+# the rest of the suite grades Tumbling Crates and More Shapes through the zygote (the default) anyway
+SOLUTIONS = [os.path.join(ROOT, "solutions", name + ".py") for name in ("ball_on_ramp", "bullets", "sleeping_crates")]
 BROKEN = [os.path.join(FIXTURES, name + ".py") for name in
           ("hostile_loop_at_import", "hostile_exception_at_import", "hostile_output_flood", "hostile_os_exit",
            "hostile_sys_exit", "hostile_memory_hog")]
@@ -56,10 +59,15 @@ def grade(paths, zygote, mark):
 
 
 def without_seconds(value):
+    """The document without what timing decides: "seconds" fields, the ms of physics Bullets' messages report,
+    and which line of an endless loop the CPU limit stopped it at."""
     if isinstance(value, dict):
         return {key: without_seconds(item) for key, item in value.items() if key != "seconds"}
     if isinstance(value, list):
         return [without_seconds(item) for item in value]
+    if isinstance(value, str):
+        value = re.sub(r"\d+ ms\b", "(timed) ms", value)
+        return re.sub(r"\(it was at [^)]*\)", "(it was at: the loop)", value)
     return value
 
 
