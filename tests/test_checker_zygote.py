@@ -79,7 +79,15 @@ def test_same_verdicts_with_and_without_the_zygote_and_nothing_left_behind():
     off_status, off = grade(SOLUTIONS + BROKEN, False, mark)
     assert processes_marked(mark) == []
     assert on_status == off_status == 1
-    assert on == off
+    # every verdict and score the same; every message the same for the solutions (a hostile file's message
+    # may name another line of its endless loop, or the other limit, when the machine is loaded)
+    differences = [(a["path"], ca["id"], ca["status"], ca["message"], cb["status"], cb["message"])
+                   for a, b in zip(on["labs"], off["labs"]) for ca, cb in zip(a["criteria"], b["criteria"])
+                   if (ca["status"], ca["score"]) != (cb["status"], cb["score"])
+                   or (a["path"].startswith("solutions") and ca != cb)]
+    assert differences == []
+    assert [(a["path"], a["status"], a["score"]) for a in on["labs"]] == \
+        [(b["path"], b["status"], b["score"]) for b in off["labs"]]
     labs = {os.path.basename(lab["path"]): lab for lab in on["labs"]}
     for path in SOLUTIONS:
         lab = labs[os.path.basename(path)]
