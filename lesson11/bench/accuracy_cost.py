@@ -711,17 +711,27 @@ def positive_int(text):
     return value
 
 
-def main(argv=None):
-    parser = argparse.ArgumentParser(prog="python -m lesson11.bench.accuracy_cost",
-                                     description="What accuracy costs in time: tunnelling, iterations, contact "
-                                                 "rule, declared effects, pymunk, solvers, measured side by side.")
+def bench_parser(module, description, files, sizes, unit):
+    """The command line every benchmark shares: --quick, --out-dir, --repeats, --no-plot.
+
+    module: the benchmark's module name; files: the name of its .md/.png (no suffix);
+    sizes: what --quick shrinks (words); unit: what one timing repeat is of (words).
+    """
+    parser = argparse.ArgumentParser(prog=f"python -m lesson11.bench.{module}", description=description)
     parser.add_argument("--quick", action="store_true",
-                        help="smoke run: tiny sizes, one repeat, figures not trustworthy; prints only, or with "
-                             "--out-dir writes bench_accuracy_cost_quick.md/.png (never the full run's files)")
+                        help=f"smoke run: {sizes}, one repeat, figures not trustworthy; prints only, or with "
+                             f"--out-dir writes {files}_quick.md/.png (never the full run's files)")
     parser.add_argument("--out-dir", type=Path, default=None,
-                        help="where bench_accuracy_cost.md/.png go (default: the repository's assets/)")
-    parser.add_argument("--repeats", type=positive_int, default=None, help="timing repeats per case (median kept)")
+                        help=f"where {files}.md/.png go (default: the repository's assets/)")
+    parser.add_argument("--repeats", type=positive_int, default=None, help=f"timing repeats per {unit} (median kept)")
     parser.add_argument("--no-plot", action="store_true", help="skip the matplotlib figure")
+    return parser
+
+
+def main(argv=None):
+    parser = bench_parser("accuracy_cost", "What accuracy costs in time: tunnelling, iterations, contact rule, "
+                                           "declared effects, pymunk, solvers, measured side by side.",
+                          "bench_accuracy_cost", "tiny sizes", "case")
     args = parser.parse_args(argv)
     settings = QUICK if args.quick else FULL
     if args.repeats:

@@ -35,7 +35,6 @@ the time the process waited for a core, which hits whichever step is running.
 show that everything runs. It never writes the full run's files: with
 --out-dir it writes bench_speed_quick.md and bench_speed_quick.png.
 """
-import argparse
 import importlib.util
 import math
 import statistics
@@ -47,7 +46,7 @@ from pathlib import Path
 from lesson11.physics2d import Body, World, box_points
 
 from . import listing
-from .accuracy_cost import default_out_dir, lockstep, machine_note, positive_int
+from .accuracy_cost import bench_parser, default_out_dir, lockstep, machine_note
 
 ROOT = Path(__file__).resolve().parents[2]
 SOLUTION = ROOT / "solutions" / "tumbling_crates.py"
@@ -539,16 +538,8 @@ def plot(scaling, path, subtitle):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="python -m lesson11.bench.speed",
-                                     description="Speed side by side: the lesson's listing, the lab's World, the "
-                                                 "reference solver and pymunk, on the lab's pile and at scale.")
-    parser.add_argument("--quick", action="store_true",
-                        help="smoke run: few steps, one repeat, figures not trustworthy; prints only, or with "
-                             "--out-dir writes bench_speed_quick.md/.png (never the full run's files)")
-    parser.add_argument("--out-dir", type=Path, default=None,
-                        help="where bench_speed.md/.png go (default: the repository's assets/)")
-    parser.add_argument("--repeats", type=positive_int, default=None, help="timing repeats per engine (median kept)")
-    parser.add_argument("--no-plot", action="store_true", help="skip the matplotlib figure")
+    parser = bench_parser("speed", "Speed side by side: the lesson's listing, the lab's World, the reference solver "
+                                   "and pymunk, on the lab's pile and at scale.", "bench_speed", "few steps", "engine")
     args = parser.parse_args(argv)
     settings = QUICK if args.quick else FULL
     if args.repeats:
