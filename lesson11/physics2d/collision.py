@@ -25,14 +25,15 @@ def edge_normals(points):
     once and kept with the points; each call returns fresh copies, so a caller
     that changes a normal in place changes only its own.
     """
-    known = getattr(points, "normals", None) if isinstance(points, WorldPoints) else None
+    kept = isinstance(points, WorldPoints)
+    known = points.normals if kept else None
     if known is None:
         known = []
         for i, a in enumerate(points):
             edge = points[(i + 1) % len(points)] - a
             if edge.length_squared() > 0:
                 known.append(Vector2(-edge.y, edge.x).normalize())
-        if isinstance(points, WorldPoints):
+        if kept:
             points.normals = known
     return [Vector2(normal) for normal in known]
 

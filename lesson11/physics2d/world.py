@@ -588,10 +588,6 @@ class World:
         self.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
         bullet.pos += bullet.vel * (dt - t)
 
-    def world_shapes(self):
-        """World points of every body (an empty list for circles), in body order."""
-        return [body.world_points() for body in self.bodies]
-
     def reach(self, body, dt):
         """How far (px) any point of the body can move in dt s: (|v| + |g| dt + |ω| r) dt; 0 for static bodies."""
         if body.inv_mass == 0:
