@@ -43,7 +43,14 @@ def ramp_scenario():
 
 
 def pile_scenario():
-    """A dozen 60 × 40 crates laid like bricks (rows of 4, 3, 3, 2) with 2 px gaps, on the floor (3.5 s)."""
+    """A dozen 60 × 40 crates laid like bricks (rows of 4, 3, 3, 2) with 2 px gaps, on the floor (3 s).
+
+    The crates land within 0.1 s; the checks read the last second. The solution
+    measures the same at 2.5, 3 and 3.5 s (top speed 4.0-4.7 px/s, drift 0.3 px,
+    deepest 0.6 px); the pile without its push-out sinks further the longer it
+    runs (1.5, 1.8, 2.1 px below the floor), so 3 s keeps a wide margin over the
+    1 px bound at 6/7 of the cost of 3.5 s.
+    """
     crates = []
     rows = ((4, 0.0), (3, 31.0), (3, 31.0), (2, 62.0))  # (crates in the row, shift right in px)
     y = FLOOR_TOP - 20 - 2
@@ -51,7 +58,7 @@ def pile_scenario():
         for k in range(count):
             crates.append({"w": 60, "h": 40, "pos": [520 + shift + 62 * k, y], "angle": 0.0})
         y -= 42
-    return {"frames": 210, "fps": FPS, "seed": SEED, "record_every": 1, "scenario": crates}
+    return {"frames": 180, "fps": FPS, "seed": SEED, "record_every": 1, "scenario": crates}
 
 
 DROPS = ((30, (180, 120)), (50, (620, 120)), (70, (720, 60)), (90, (300, 60)))

@@ -164,7 +164,10 @@ def zygote_enabled():
 
 
 class ZygoteClient:
-    """The grader's end of one zygote process (checker/zygote.py); shared by threads."""
+    """The grader's end of one zygote process (checker/zygote.py); shared by threads.
+
+    Creating one starts the zygote; wait_ready() waits for it to finish its imports.
+    """
 
     def __init__(self):
         self.lock = threading.Lock()
@@ -181,14 +184,22 @@ class ZygoteClient:
             theirs.close()
         self.control = ours
         self.broken = self.closed = False
-        ours.settimeout(ZYGOTE_START_SECONDS)
-        try:
-            ready = json.loads(ours.recv(4096) or b"{}").get("ready")
-        except (OSError, ValueError):
-            ready = False
-        ours.settimeout(None)
-        if not ready:
-            self.close()
+        self.ready = None                 # None until the zygote has answered (or failed to)
+
+    def wait_ready(self):
+        """Wait (the first time only) for the zygote's {"ready": true}; a zygote that does not send it in
+        ZYGOTE_START_SECONDS is closed (broken). Returns True if it is ready."""
+        if self.ready is None:
+            self.control.settimeout(ZYGOTE_START_SECONDS)
+            try:
+                ready = json.loads(self.control.recv(4096) or b"{}").get("ready")
+            except (OSError, ValueError):
+                ready = False
+            self.control.settimeout(None)
+            self.ready = bool(ready)
+            if not self.ready:
+                self.close()
+        return self.ready
 
     def spawn(self, argv, cwd, env, limits):
         """Have the zygote fork a child running `python -m argv...`; a _Forked, or None if it cannot."""
@@ -252,17 +263,35 @@ _zygote_owner = None    # the pid that started it (a forked grader starts its ow
 _zygote_lock = threading.Lock()
 
 
-def _zygote_client():
-    """The zygote of this process, started on first use; None if it could not be started or broke."""
+def _start_locked():
     global _zygote, _zygote_owner
+    if _zygote_owner != os.getpid():
+        _zygote_owner = os.getpid()
+        try:
+            _zygote = ZygoteClient()
+        except OSError:
+            _zygote = False
+
+
+def start_zygote():
+    """Start this process's zygote now without waiting for it (if zygote_enabled()).
+
+    `python -m checker` calls this before it imports the labs, so the zygote's
+    imports (about 0.3 s) run beside the grader's; otherwise the first child
+    run starts it. A zygote that is never used is stopped at exit.
+    """
+    if zygote_enabled():
+        with _zygote_lock:
+            _start_locked()
+
+
+def _zygote_client():
+    """The zygote of this process, started on first use and ready; None if it could not be started or broke."""
     with _zygote_lock:
-        if _zygote_owner != os.getpid():
-            _zygote_owner = os.getpid()
-            try:
-                _zygote = ZygoteClient()
-            except OSError:
-                _zygote = False
-        return _zygote if _zygote and not _zygote.broken else None
+        _start_locked()
+        if _zygote and not _zygote.broken and _zygote.wait_ready():
+            return _zygote
+        return None
 
 
 def stop_zygote():

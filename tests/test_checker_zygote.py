@@ -187,3 +187,42 @@ def test_the_zygote_leaves_when_its_grader_does(tmp_path):
             break
         time.sleep(0.1)
     assert processes_marked(mark) == []
+
+
+def test_started_early_the_zygote_serves_the_first_run(zygote_off_at_start, lab):
+    """start_zygote() (what `python -m checker` does before importing the labs) only starts the process;
+    the first run waits for it to be ready and is forked by it."""
+    sandbox.start_zygote()
+    client = sandbox._zygote
+    assert client and client.ready is None and client.process.poll() is None  # started, not waited for
+    run = probe(lab(PARENT), Limits(timeout=5))
+    assert client.ready is True
+    assert run.stdout.strip() == f"parent {client.process.pid}"
+    sandbox.start_zygote()
+    assert sandbox._zygote is client  # one zygote per grading process
+
+
+def test_a_usage_error_leaves_no_zygote_behind(tmp_path):
+    """A path that exists makes `python -m checker` start the zygote early; a wrong option then stops the
+    run with exit 2, and the zygote goes with it."""
+    mark = uuid.uuid4().hex
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+               CHECKER_ZYGOTE="1", CHECKER_TEST_MARK=mark)
+    proc = subprocess.run([sys.executable, "-m", "checker", "--no-such-option", os.path.join(ROOT, "solutions")],
+                          env=env, cwd=str(tmp_path), capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 2 and "--no-such-option" in proc.stderr, proc.stderr
+    for _ in range(100):
+        if not processes_marked(mark):
+            break
+        time.sleep(0.1)
+    assert processes_marked(mark) == []
+
+
+@pytest.fixture
+def zygote_off_at_start(monkeypatch):
+    """The zygote on but not started; stopped after the test."""
+    monkeypatch.setenv("CHECKER_ZYGOTE", "1")
+    monkeypatch.setattr(sandbox, "USE_ZYGOTE", True)
+    sandbox.stop_zygote()
+    yield
+    sandbox.stop_zygote()

@@ -363,6 +363,18 @@ def test_world_points_keep_their_edge_normals_and_hand_out_copies():
     assert edge_normals(points)[0] is not edge_normals(points)[0]
 
 
+def test_world_points_keep_their_edges_once_worked_out():
+    box = Body(box_points(40, 20), (100, 50), 1, angle=0.3)
+    points = box.world_points()
+    plain = [Vector2(p) for p in points]
+    assert points.edges is None
+    edges = polygon_edges(points)
+    assert points.edges is edges and polygon_edges(points) is edges  # worked out once per snapshot
+    assert edges == polygon_edges(plain)                              # the same as computed afresh
+    moved = box.world_points()                                        # a new snapshot starts empty
+    assert moved.edges is None and moved.normals is None
+
+
 @given(st.floats(-300, 300), st.floats(-300, 300), st.floats(-7, 7))
 def test_inside_edges_is_inside_with_edges_worked_out_once(x, y, angle):
     shape = Body(Polygon([(0, 0), (60, 10), (50, 70), (-10, 40)], recentre=False), (20, 30), 1, angle=angle)

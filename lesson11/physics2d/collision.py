@@ -35,7 +35,7 @@ def edge_normals(points):
                 known.append(Vector2(-edge.y, edge.x).normalize())
         if kept:
             points.normals = known
-    return [Vector2(normal) for normal in known]
+    return list(map(Vector2, known))  # fresh copies: Vector2(normal) of each
 
 
 def project(points, axis):
@@ -118,11 +118,20 @@ def inside(point, points):
 
 
 def polygon_edges(points):
-    """Each edge of the outline once, for inside_edges: [(a, b - a, TOUCH_TOLERANCE |b - a|), ...] (px, px, px²)."""
+    """Each edge of the outline once, for inside_edges: [(a, b - a, TOUCH_TOLERANCE |b - a|), ...] (px, px, px²).
+
+    For a body's WorldPoints the list is worked out once and kept with the
+    points (like edge_normals); it is read-only: inside_edges only reads it.
+    """
+    kept = isinstance(points, WorldPoints)
+    if kept and points.edges is not None:
+        return points.edges
     edges = []
     for i, a in enumerate(points):
         edge = points[(i + 1) % len(points)] - a
         edges.append((a, edge, TOUCH_TOLERANCE * edge.length()))
+    if kept:
+        points.edges = edges
     return edges
 
 

@@ -121,16 +121,18 @@ class WorldPoints(list):
     """A polygon's corners in world space (a list of Vector2, px), as Body.world_points() returns them.
 
     A plain list that also keeps the edge normals once collision.edge_normals
-    has worked them out (attribute `normals`, None until then): a body tested
-    against several others in one contact search computes its normals once.
+    has worked them out (attribute `normals`, None until then), and the edges
+    once collision.polygon_edges has (attribute `edges`): a body tested against
+    several others in one contact search computes them once.
     It is a snapshot: the world makes new ones after the bodies move, and the
-    normals describe the corners as they were when first asked for.
+    normals and edges describe the corners as they were when first asked for.
     """
-    __slots__ = ("normals",)
+    __slots__ = ("normals", "edges")
 
     def __init__(self, points=()):
         super().__init__(points)
         self.normals = None
+        self.edges = None
 
 
 class Polygon:

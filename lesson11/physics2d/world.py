@@ -517,9 +517,12 @@ class World:
         order (symmetric Gauss-Seidel) stops one corner of a resting crate, or
         one end of the pile, from always being first.
         """
-        for a, b, m in (found if index % 2 == 0 else found[::-1]):
-            for point in (m.points if index % 2 == 0 else m.points[::-1]):
-                self.resolve(a, b, m.normal, point)
+        resolve = self.resolve
+        forwards = index % 2 == 0
+        for a, b, m in (found if forwards else found[::-1]):
+            normal = m.normal
+            for point in (m.points if forwards else m.points[::-1]):
+                resolve(a, b, normal, point)
 
     def integrate_velocities(self, dt):
         """Gravity for every dynamic body: v += g dt (only if the scene declares "gravity")."""
