@@ -223,7 +223,7 @@ def test_allow_edits_turns_the_edit_into_a_warning_and_the_pile_sinks(edited):
     assert result["status"] == "fail" and result["step"] == 7 and "push-out" in result["hint"], result
     assert lab["ramp_holds"]["status"] == "pass"
     depth = float(result["message"].split("crates end ")[1].split(" px")[0])
-    assert depth > 1.5  # measured 1.8 px in the 3 s pile (3.5 s: 2.1 px; move-first: 41.8 px); the solution 0.57 px
+    assert depth > 1.25  # 1.49 px in the 2.5 s pile (3.5 s: 2.1 px; move-first: 41.8 px); bound 1, the solution 0.57 px
 
 
 def test_starter_fails_with_the_step_2_message(graded):

@@ -8,7 +8,7 @@ Rows (units px, s; targets from issue 10 §1):
   pile     the lab's 12-crate pile (tests/lab_run.pile_settings: a dozen clicks, 4 s of settling):
            top speed over the last second (px/s), target < 5; deepest corner below the floor over
            the last 2 s and over the whole run (px), targets <= 1 and < 2 (test_lab_criteria)
-  bricks   the checker's brick pile (pile_scenario, 3 s): top speed, drift over the last second, deepest corner
+  bricks   the checker's brick pile (pile_scenario, 2.5 s): top speed, drift over the last second, deepest corner
   own      the lab's own scene with the checker's four clicks: top speed over the last second
   e=1      a disc (r 10 px) dropped from 200 px on the floor, e = 1 (solver_probe.disc_bounce, as
            tests/test_stability_dynamics.py's bounce_figures): energy at each apex / at the start, worst of the first five (target within 1 %)
