@@ -728,6 +728,42 @@ def bench_parser(module, description, files, sizes, unit):
     return parser
 
 
+def output_folder(args):
+    """Where a benchmark's files go: --out-dir, else assets/ for a full run and nowhere for --quick.
+
+    Returns (folder or None, None), or (None, a one-line error) if --out-dir names a file.
+    """
+    out_dir = args.out_dir if args.out_dir is not None else (None if args.quick else default_out_dir())
+    if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
+        return None, f"--out-dir {out_dir} is a file, not a folder"
+    return out_dir, None
+
+
+def write_results(args, out_dir, files, text, draw, smoke_words):
+    """Write {files}.md (--quick: {files}_quick.md, never the full run's) into out_dir, then the figure.
+
+    draw(path, subtitle) draws the .png and returns its path; it is skipped with
+    --no-plot or without matplotlib. smoke_words open a --quick figure's subtitle.
+    Prints what was written; returns the exit status 0.
+    """
+    if out_dir is None:
+        return 0
+    out_dir.mkdir(parents=True, exist_ok=True)
+    stem = f"{files}_quick" if args.quick else files
+    (out_dir / f"{stem}.md").write_text(text, encoding="utf-8")
+    print(f"wrote {out_dir / f'{stem}.md'}")
+    if args.no_plot:
+        return 0
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        print("matplotlib is not installed: no plot (pip install -e \".[compare]\")")
+        return 0
+    subtitle = (f"SMOKE RUN (--quick): {smoke_words} · " if args.quick else "full run · ") + machine_note()
+    print(f"wrote {draw(out_dir / f'{stem}.png', subtitle)}")
+    return 0
+
+
 def main(argv=None):
     parser = bench_parser("accuracy_cost", "What accuracy costs in time: tunnelling, iterations, contact rule, "
                                            "declared effects, pymunk, solvers, measured side by side.",
@@ -737,9 +773,9 @@ def main(argv=None):
     if args.repeats:
         settings = Settings(**{**settings.__dict__, "repeats": args.repeats})
     mode = "quick" if args.quick else "full"
-    out_dir = args.out_dir if args.out_dir is not None else (None if args.quick else default_out_dir())
-    if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
-        print(f"--out-dir {out_dir} is a file, not a folder", file=sys.stderr)
+    out_dir, problem = output_folder(args)
+    if problem:
+        print(problem, file=sys.stderr)
         return 2
 
     print(f"Machine: {machine_note()}")
@@ -750,23 +786,12 @@ def main(argv=None):
     print(text)
     if args.quick:
         print("Smoke run: these figures only show that the studies run; see the full run for measurements.")
-    if out_dir is None:
-        return 0
-    out_dir.mkdir(parents=True, exist_ok=True)
-    stem = "bench_accuracy_cost_quick" if args.quick else "bench_accuracy_cost"  # quick never replaces the study
-    (out_dir / f"{stem}.md").write_text(text, encoding="utf-8")
-    print(f"wrote {out_dir / f'{stem}.md'}")
-    if args.no_plot:
-        return 0
-    try:
+
+    def draw(path, subtitle):
         from .plot import plot
-    except ImportError:
-        print("matplotlib is not installed: no plot (pip install -e \".[compare]\")")
-        return 0
-    subtitle = ("SMOKE RUN (--quick): times and ratios are not measurements · " if args.quick else "full run · ")
-    path = plot(rows, out_dir / f"{stem}.png", subtitle + machine_note())
-    print(f"wrote {path}")
-    return 0
+        return plot(rows, path, subtitle)
+
+    return write_results(args, out_dir, "bench_accuracy_cost", text, draw, "times and ratios are not measurements")
 
 
 if __name__ == "__main__":

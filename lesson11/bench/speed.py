@@ -46,7 +46,7 @@ from pathlib import Path
 from lesson11.physics2d import Body, World, box_points
 
 from . import listing
-from .accuracy_cost import bench_parser, default_out_dir, lockstep, machine_note
+from .accuracy_cost import bench_parser, lockstep, machine_note, output_folder, write_results
 
 ROOT = Path(__file__).resolve().parents[2]
 SOLUTION = ROOT / "solutions" / "tumbling_crates.py"
@@ -545,9 +545,9 @@ def main(argv=None):
     if args.repeats:
         settings = Settings(**{**settings.__dict__, "repeats": args.repeats, "scale_repeats": args.repeats})
     mode = "quick" if args.quick else "full"
-    out_dir = args.out_dir if args.out_dir is not None else (None if args.quick else default_out_dir())
-    if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
-        print(f"--out-dir {out_dir} is a file, not a folder", file=sys.stderr)
+    out_dir, problem = output_folder(args)
+    if problem:
+        print(problem, file=sys.stderr)
         return 2
     if not pymunk_available():
         print("pymunk is not installed: no pymunk rows (pip install -e \".[compare]\")", file=sys.stderr)
@@ -559,22 +559,8 @@ def main(argv=None):
     print(text)
     if args.quick:
         print("Smoke run: these figures only show that every engine runs; see the full run for measurements.")
-    if out_dir is None:
-        return 0
-    out_dir.mkdir(parents=True, exist_ok=True)
-    stem = "bench_speed_quick" if args.quick else "bench_speed"  # quick never replaces the full run's files
-    (out_dir / f"{stem}.md").write_text(text, encoding="utf-8")
-    print(f"wrote {out_dir / f'{stem}.md'}")
-    if args.no_plot:
-        return 0
-    try:
-        import matplotlib  # noqa: F401
-    except ImportError:
-        print("matplotlib is not installed: no plot (pip install -e \".[compare]\")")
-        return 0
-    subtitle = ("SMOKE RUN (--quick): not measurements · " if args.quick else "full run · ") + machine_note()
-    print(f"wrote {plot(scaling, out_dir / f'{stem}.png', subtitle)}")
-    return 0
+    return write_results(args, out_dir, "bench_speed", text, lambda path, subtitle: plot(scaling, path, subtitle),
+                         "not measurements")
 
 
 if __name__ == "__main__":
