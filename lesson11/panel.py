@@ -18,13 +18,19 @@ Keys (none of them is used by a lab: D = debug view, R = reset, left click = dro
   K            contact rule "corners" (the lesson's) / "clip" (edge clipping)
   0            back to the settings the World was built with
   P            pause / run;  O  one physics step (pauses first if running)
-  H            hide / show the panel
+  H            panel size: compact (the default, a small box) -> full -> hidden -> compact
 
-The HUD shows the settings, the physics time per frame (ms, measured around
-the world's advance() with time.perf_counter), the contacts, the deepest
-penetration (px) and the kinetic energy (mass·px²/s²), and a graph of the
-physics ms per frame over the last GRAPH_SECONDS s with the 60 fps frame
-budget (16.7 ms) as a dashed line.
+Both sizes show the solver settings, the cost of one fixed physics step (ms/step,
+measured around the world's advance() with time.perf_counter and divided by the
+steps run), how much of real time the simulation keeps ("1.0x real time": the
+World runs at most max_steps steps a frame and drops the rest, so a slow setting
+makes time slow down instead of spiralling), and the study line: what the
+accuracy study (python -m lesson11.bench.accuracy_cost --frontier, its table in
+lesson11/bench/frontier.json) measured for this setting, and whether it is on the
+front of the cheapest settings for their error. The full panel adds the keys of
+every setting, the contacts, the deepest penetration (px), the kinetic energy
+(mass·px²/s²) and a graph of the physics ms per frame over the last
+GRAPH_SECONDS s with the 60 fps frame budget (16.7 ms) as a dashed line.
 
 Nothing is set on a world until a key changes a setting. The panel keeps the
 changed settings only (as overrides) and applies them to every World it is
@@ -38,6 +44,8 @@ contact_rule, effects, contacts, bodies, step_seconds and advance(dt). A World
 that has no `substeps` or `warm_starting` yet still gets the attribute set;
 the HUD then says the setting has no effect in this World.
 """
+import json
+import os
 import time
 from collections import deque
 
@@ -55,6 +63,10 @@ REFRESH_FRAMES = 12     # the numbers are redrawn every 12 frames (0.2 s at 60 f
 SCALES_MS = (5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)  # the graph's possible top values (ms)
 
 PANEL_WIDTH, LINE_HEIGHT, GRAPH_HEIGHT, PADDING = 400, 19, 58, 10   # px
+COMPACT_WIDTH = 330     # px: the compact panel's width
+MODES = ("compact", "full", "hidden")   # H cycles through them, compact first
+RATE_FRAMES = 60        # frames (1 s at 60 fps) over which ms/step and the real-time share are averaged
+STUDY_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bench", "frontier.json")
 BACKGROUND = (12, 14, 20, 215)  # RGBA: see-through, so crates behind it stay visible
 TEXT = (230, 230, 230)
 DIM = (150, 155, 170)
@@ -69,6 +81,47 @@ SOLVERS = ("lesson", "accumulated")
 CONTACT_RULES = ("corners", "clip")
 SETTING_NAMES = ("solver", "iterations", "substeps", "warm_starting", "correction", "contact_rule")
 NEW_ATTRIBUTES = {"substeps": 1, "warm_starting": True}  # their defaults, for a World that lacks them
+_study = None           # the study's table, read once: {(solver, order, substeps, iterations): row}
+
+
+def study_rows():
+    """The accuracy study's measured settings, {(solver, order, substeps, iterations): row}; {} if it is missing.
+
+    Each row (lesson11/bench/frontier.json, written by the study) has "ms_per_step"
+    (CPU ms for one fixed step of the study's pile), "pile_speed" (px/s, the pile's
+    top speed after settling), "on_front" and, off the front, "better": a setting
+    that costs less and errs less.
+    """
+    global _study
+    if _study is None:
+        try:
+            with open(STUDY_FILE, encoding="utf-8") as handle:
+                rows = json.load(handle)["settings"]
+            _study = {(r["solver"], r["order"], r["substeps"], r["iterations"]): r for r in rows}
+        except (OSError, ValueError, KeyError, TypeError):
+            _study = {}
+    return _study
+
+
+def study_lines(world, settings):
+    """Two lines: what the accuracy study measured for these settings (cost, pile error) and whether they are
+    on its front, or that the study has no point for them."""
+    order = getattr(world, "order", "solve-first") if settings["solver"] == "lesson" else "-"
+    row = study_rows().get((settings["solver"], order, settings["substeps"], settings["iterations"]))
+    if row is None:
+        return ["study: this setting was not measured", ""]
+    where = "on the front: nothing cheaper errs less" if row["on_front"] \
+        else f"off the front: {row['better']} costs less, errs less"
+    return [f"study: {row['ms_per_step']:.2f} ms/step, pile {row['pile_speed']:.1f} px/s", where]
+
+
+def rate_text(m, paused):
+    """The measured cost as (left, right) text: ms per fixed step, and steps this frame or the real-time share."""
+    left = f"physics {m['ms_per_step']:.2f} ms/step"
+    if paused:
+        return left, "PAUSED"
+    share = "" if m["real_time"] is None else f", {m['real_time']:.1f}x real time"
+    return left, f"{m['steps']} step{'' if m['steps'] == 1 else 's'}/frame{share}"
 
 
 def read_setting(world, name):
@@ -108,15 +161,17 @@ class LabPanel:
     overrides   {setting: value} changed by keys; applied to every world handed to advance()
     paused      True while P holds the physics
     history     physics ms per frame, the last GRAPH_FRAMES frames
-    visible     False after H
+    rates       (physics ms, steps, frame s, simulated s) of the last RATE_FRAMES frames
+    mode        "compact", "full" or "hidden" (key H cycles)
     """
 
     def __init__(self):
         self.overrides = {}
         self.paused = False
         self.pending_steps = 0
-        self.visible = True
+        self.mode = MODES[0]
         self.history = deque(maxlen=GRAPH_FRAMES)
+        self.rates = deque(maxlen=RATE_FRAMES)
         self.world = None
         self.base = {}          # the current world's own settings, before any override
         self.supported = {}     # setting -> does this World have the attribute of its own
@@ -186,7 +241,7 @@ class LabPanel:
             self.pending_steps += 1
             return True
         if key == pygame.K_h:
-            self.visible = not self.visible
+            self.mode = MODES[(MODES.index(self.mode) + 1) % len(MODES)]
             return True
         if self.world is None:
             return key in (pygame.K_s, pygame.K_w, pygame.K_c, pygame.K_k, pygame.K_0,
@@ -220,7 +275,8 @@ class LabPanel:
 
         A world not seen before gets the overrides first (after R, the lab's new world).
         Paused: only the steps asked for with O run, each as world.advance(world.step_seconds),
-        which is exactly one fixed step. The time spent is added to the graph (ms).
+        which is exactly one fixed step. The time spent is added to the graph (ms), and
+        with the frame time and the time simulated to the rates (ms/step, share of real time).
         """
         self.adopt(world)
         start = time.perf_counter()
@@ -231,7 +287,10 @@ class LabPanel:
             for _ in range(self.pending_steps):
                 steps += world.advance(world.step_seconds)
             self.pending_steps = 0
-        self.history.append((time.perf_counter() - start) * 1000)
+        spent = (time.perf_counter() - start) * 1000
+        self.history.append(spent)
+        if not self.paused:
+            self.rates.append((spent, steps, dt, steps * world.step_seconds))
         self.last_steps = steps
         return steps
 
@@ -239,10 +298,15 @@ class LabPanel:
 
     def measure(self, world):
         """What the HUD shows: {"ms": mean physics ms per frame over the last refresh, "steps",
+        "ms_per_step": physics ms / steps run over the last RATE_FRAMES running frames (0 before any step),
+        "real_time": simulated s / frame s over those frames (1.0: keeping up; None before any frame time),
         "contacts", "deepest" (px, 0 without contacts), "energy" (mass·px²/s²)}."""
         recent = list(self.history)[-REFRESH_FRAMES:]
+        spent, steps, frame_s, simulated = (sum(column) for column in zip(*self.rates)) if self.rates else (0, 0, 0, 0)
         return {"ms": sum(recent) / len(recent) if recent else 0.0,
                 "steps": self.last_steps,
+                "ms_per_step": spent / steps if steps else 0.0,
+                "real_time": simulated / frame_s if frame_s > 0 else None,
                 "contacts": len(world.contacts),
                 "deepest": max([0.0] + [contact.depth for contact in world.contacts]),
                 "energy": sum(body.kinetic_energy() for body in world.bodies)}
@@ -311,7 +375,7 @@ class LabPanel:
         self.rendered.append((image.get_rect(topleft=pos).move(self.box.topleft), words))
 
     def draw(self, surface, world):
-        """Draw the panel in the window's top-right corner (below a lab's own HUD line).
+        """Draw the panel in the window's top-right corner (below a lab's own HUD line), at its current size.
 
         The panel's picture is redrawn every REFRESH_FRAMES frames or after a key, and blitted
         in between (so it costs a lab about one blit a frame); the contact count is drawn
@@ -324,7 +388,7 @@ class LabPanel:
             self.shown = self.measure(world)
         self.frames += 1
         right = surface.get_width() - 10
-        if not self.visible:
+        if self.mode == "hidden":
             label = "[H] show the solver panel"
             image = self.text(label, DIM)
             self.box = image.get_rect(topright=(right, 36))
@@ -339,20 +403,64 @@ class LabPanel:
         surface.blit(image, self.contacts_at)
         self.placed = self.rendered + [(image.get_rect(topleft=self.contacts_at), contacts)]
 
-    def render(self, world, right):
-        """Draw the panel's picture (all but the contact count) into self.image, its right edge at `right` px."""
+    def start_image(self, right, width, rows, extra=0):
+        """A fresh see-through picture for `rows` lines of text and `extra` px more, and self.box for it,
+        its right edge at `right` px."""
         self.dirty = False
         self.rendered = []
+        self.box = pygame.Rect(right - width, 36, width, PADDING * 2 + LINE_HEIGHT * rows + extra)
+        self.image = pygame.Surface(self.box.size, pygame.SRCALPHA)
+        self.image.fill(BACKGROUND)
+        return self.image
+
+    def render(self, world, right):
+        """Draw the panel's picture (all but the contact count) into self.image, its right edge at `right` px."""
+        if self.mode == "compact":
+            self.render_compact(world, right)
+        else:
+            self.render_full(world, right)
+
+    def render_compact(self, world, right):
+        """The compact panel: solver, iterations, sub-steps, the cost per step, the real-time share, the study."""
+        now = self.settings()
+        m = self.shown
+        study = study_lines(world, now)
+        rate = rate_text(m, self.paused)
+        image = self.start_image(right, COMPACT_WIDTH, 8 + bool(study[1]))
+        x, y = PADDING, PADDING
+        self.put(image, "SOLVER PANEL", KEY, (x, y))
+        self.put(image, "[H] more", DIM, (COMPACT_WIDTH - PADDING - self.text("[H] more", DIM).get_width(), y))
+        y += LINE_HEIGHT
+        reference = now["solver"] == "accumulated"
+        for key, name, value, changed in (
+                ("[S]", "solver", "reference" if reference else "lesson", "solver"),
+                ("[Up/Down]", "iterations", str(now["iterations"]), "iterations"),
+                ("[Left/Right]", "sub-steps", str(now["substeps"]), "substeps")):
+            self.put(image, key, KEY, (x, y))
+            self.put(image, name, DIM, (x + 100, y))
+            colour = WARNING if key == "[S]" and reference else (CHANGED if changed in self.overrides else TEXT)
+            self.put(image, value, colour, (x + 190, y))
+            y += LINE_HEIGHT
+        self.put(image, rate[0], TEXT, (x, y))
+        y += LINE_HEIGHT
+        self.put(image, rate[1], WARNING if rate[1] == "PAUSED" or (m["real_time"] or 1) < 0.95 else DIM, (x, y))
+        y += LINE_HEIGHT
+        for line in study:
+            if line:
+                self.put(image, line, DIM, (x, y))
+                y += LINE_HEIGHT
+        self.contacts_at = (self.box.x + x, self.box.y + y)
+
+    def render_full(self, world, right):
+        """The full panel: every setting with its key, the measurements, the study and the graph."""
         rows = self.lines(world)
         m = self.shown
-        state = "PAUSED" if self.paused else f"{m['steps']} step{'' if m['steps'] == 1 else 's'} this frame"
-        measured = [(f"physics {m['ms']:.1f} ms/frame", state),
-                    (None, f"deepest {m['deepest']:.2f} px"),   # None: the contact count, drawn every frame
-                    (f"kinetic energy {m['energy']:.3g}", "mass·px²/s²")]
-        height = PADDING * 2 + LINE_HEIGHT * (len(rows) + len(measured) + 3) + GRAPH_HEIGHT + 8
-        self.box = pygame.Rect(right - PANEL_WIDTH, 36, PANEL_WIDTH, height)
-        image = self.image = pygame.Surface(self.box.size, pygame.SRCALPHA)
-        image.fill(BACKGROUND)
+        rate = rate_text(m, self.paused)
+        study = [line for line in study_lines(world, self.settings()) if line]
+        measured = [(f"physics {m['ms']:.1f} ms/frame", rate[0][len("physics "):]),
+                    (None, rate[1]),   # None: the contact count, drawn every frame
+                    (f"deepest {m['deepest']:.2f} px", f"kinetic energy {m['energy']:.3g}")]
+        image = self.start_image(right, PANEL_WIDTH, len(rows) + len(measured) + len(study) + 3, GRAPH_HEIGHT + 8)
         x, y = PADDING, PADDING
         self.put(image, "SOLVER PANEL", KEY, (x, y))
         self.put(image, "[H] hide", DIM, (PANEL_WIDTH - PADDING - self.text("[H] hide", DIM).get_width(), y))
@@ -370,7 +478,10 @@ class LabPanel:
                 self.contacts_at = (self.box.x + x, self.box.y + y)
             else:
                 self.put(image, left, TEXT, (x, y))
-            self.put(image, right_text, WARNING if right_text == "PAUSED" else DIM, (x + 215, y))
+            self.put(image, right_text, WARNING if right_text == "PAUSED" else DIM, (x + 190, y))
+            y += LINE_HEIGHT
+        for line in study:
+            self.put(image, line, DIM, (x, y))
             y += LINE_HEIGHT
         top = self.draw_graph(image, pygame.Rect(x, y + 4, PANEL_WIDTH - 2 * PADDING, GRAPH_HEIGHT))
         y += GRAPH_HEIGHT + 8

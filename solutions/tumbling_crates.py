@@ -12,7 +12,9 @@ to 6 are the code between the lines `# --- step N: ... ---` and
 
 Controls: left click drops a crate, R resets, D shows contact points and normals.
 The solver panel (lesson11/panel.py, lines marked `# solver panel`) lists its
-own keys on screen: solver, iterations, sub-steps, P pause, O one step.
+own keys on screen: solver, iterations, sub-steps, P pause, O one step, and H
+for its size (compact, full with the graph, hidden). It shows what one physics
+step costs and whether the lab keeps up with real time.
 Lines marked `# lab runtime` let the checker run this file headless; they
 change nothing when you run it yourself.
 """

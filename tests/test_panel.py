@@ -10,6 +10,8 @@ import os
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 
+import json
+
 import pygame
 import pytest
 
@@ -185,8 +187,10 @@ def text_of(panel):
     return " | ".join(words for _, words in panel.placed)
 
 
-def test_hud_text_stays_inside_the_panel_and_no_two_lines_overlap():
+@pytest.mark.parametrize("mode", ["compact", "full"])
+def test_hud_text_stays_inside_the_panel_and_no_two_lines_overlap(mode):
     panel = lp.LabPanel()
+    panel.mode = mode
     world = small_world()
     for keys in ((), ("s", "w", "right", "right"), ("s", "up", "k", "c", "p")):
         for name in keys:
@@ -205,25 +209,32 @@ def test_hud_text_stays_inside_the_panel_and_no_two_lines_overlap():
                 assert not a.colliderect(b), f"{panel.placed[i][1]!r} overlaps another line"
 
 
-def test_hud_shows_the_settings_measurements_and_who_solves():
+def full_panel():
     panel = lp.LabPanel()
+    panel.handle(key("h"))  # compact -> full
+    assert panel.mode == "full"
+    return panel
+
+
+def test_hud_shows_the_settings_measurements_and_who_solves():
+    panel = full_panel()
     world = small_world()
     hud(panel, world)
     text = text_of(panel)
     for words in ("[S]", "[Up/Down]", "[Left/Right]", "[W]", "[C]", "[K]", "[P] pause", "[O] one step", "[H] hide",
-                  "solver | lesson", "iterations | 6", "contact rule | corners", "ms/frame", "contacts",
-                  "deepest", "kinetic energy", "60 fps budget"):
+                  "solver | lesson", "iterations | 6", "contact rule | corners", "ms/frame", "ms/step",
+                  "real time", "study:", "contacts", "deepest", "kinetic energy", "60 fps budget"):
         assert words in text, words
     assert "physics2d's sat() and resolve()" in text  # this World has no hooks of a lab
     panel.handle(key("s"))
     hud(panel, world, 1)
     assert "accumulated (reference)" in text_of(panel) and "NOT used" not in text_of(panel)
     resolve_only = small_world(resolve=lambda a, b, normal, point: None)
-    panel = lp.LabPanel()
+    panel = full_panel()
     hud(panel, resolve_only, 1)
     assert "runs physics2d's sat() and your resolve()" in text_of(panel)
     lab_world = small_world(sat=lambda pa, pb: None, resolve=lambda a, b, normal, point: None)  # Tumbling Crates
-    panel = lp.LabPanel()
+    panel = full_panel()
     hud(panel, lab_world, 1)
     assert "runs your sat() and resolve()" in text_of(panel)
     panel.handle(key("s"))
@@ -234,7 +245,7 @@ def test_hud_shows_the_settings_measurements_and_who_solves():
 def test_hud_says_when_this_world_has_no_substeps_yet():
     world = small_world()
     lacks = not hasattr(world, "substeps")
-    panel = lp.LabPanel()
+    panel = full_panel()
     hud(panel, world, 1)
     assert ("not in this World yet" in text_of(panel)) == lacks
 
@@ -249,10 +260,67 @@ def test_measurements_are_the_worlds():
     assert m["deepest"] == max(c.depth for c in world.contacts)
     assert m["energy"] == pytest.approx(sum(b.kinetic_energy() for b in world.bodies))
     assert m["ms"] > 0 and m["steps"] == 2
+    assert m["ms_per_step"] == pytest.approx(sum(r[0] for r in panel.rates) / sum(r[1] for r in panel.rates))
+    assert m["real_time"] == pytest.approx(1.0)
+
+
+def test_a_slow_setting_slows_time_down_instead_of_spiralling():
+    """Frames that take long (0.1 s each) run at most max_steps steps, and the panel says the lab fell behind."""
+    panel = lp.LabPanel()
+    world = small_world()
+    steps = [panel.advance(world, 0.1) for _ in range(20)]
+    assert max(steps) == world.max_steps == 4     # 12 steps' worth of time a frame, 4 run: no spiral
+    m = panel.measure(world)
+    assert m["real_time"] == pytest.approx(4 / 120 / 0.1)   # 0.33x real time
+    surface = hud(panel, world, 0)
+    panel.shown = None
+    for _ in range(2):
+        panel.advance(world, 0.1)
+        panel.draw(surface, world)
+    assert "0.3x real time" in text_of(panel)
+
+
+def test_compact_panel_is_the_default_small_and_h_cycles_the_sizes():
+    panel = lp.LabPanel()
+    world = small_world()
+    hud(panel, world)
+    assert panel.mode == "compact"
+    assert panel.box.width <= 340 and panel.box.height <= 175, panel.box   # the full one is 400 × 350
+    text = text_of(panel)
+    for words in ("[S]", "[Up/Down]", "[Left/Right]", "[H] more", "ms/step", "real time", "study:", "contacts"):
+        assert words in text, words
+    sizes = []
+    for _ in range(3):
+        panel.handle(key("h"))
+        hud(panel, world, 1)
+        sizes.append((panel.mode, panel.box.width * panel.box.height))
+    assert [mode for mode, _ in sizes] == ["full", "hidden", "compact"]
+    assert sizes[1][1] < sizes[2][1] < sizes[0][1]
+
+
+def test_study_line_reads_the_studys_table(monkeypatch, tmp_path):
+    table = tmp_path / "frontier.json"
+    table.write_text(json.dumps({"settings": [
+        {"solver": "lesson", "order": "solve-first", "substeps": 4, "iterations": 6, "ms_per_step": 1.5,
+         "pile_speed": 3.7, "on_front": True, "better": None},
+        {"solver": "lesson", "order": "solve-first", "substeps": 4, "iterations": 7, "ms_per_step": 1.7,
+         "pile_speed": 3.9, "on_front": False, "better": "4 x 6"}]}), encoding="utf-8")
+    monkeypatch.setattr(lp, "STUDY_FILE", str(table))
+    monkeypatch.setattr(lp, "_study", None)
+    world = small_world()
+    assert lp.study_lines(world, {"solver": "lesson", "substeps": 4, "iterations": 6}) == [
+        "study: 1.50 ms/step, pile 3.7 px/s", "on the front: nothing cheaper errs less"]
+    assert lp.study_lines(world, {"solver": "lesson", "substeps": 4, "iterations": 7})[1] == \
+        "off the front: 4 x 6 costs less, errs less"
+    assert lp.study_lines(world, {"solver": "lesson", "substeps": 3, "iterations": 7})[0] == \
+        "study: this setting was not measured"
+    monkeypatch.setattr(lp, "STUDY_FILE", str(tmp_path / "missing.json"))
+    monkeypatch.setattr(lp, "_study", None)
+    assert lp.study_rows() == {}
 
 
 def test_graph_shows_the_history_and_the_budget_line():
-    panel = lp.LabPanel()
+    panel = full_panel()
     surface = hud(panel, small_world(), 90)
     graph = [(x, y) for x in range(panel.box.left, panel.box.right) for y in range(panel.box.top, panel.box.bottom)
              if surface.get_at((x, y))[:3] == lp.GRAPH_LINE]
@@ -262,7 +330,7 @@ def test_graph_shows_the_history_and_the_budget_line():
 
 
 def test_h_hides_the_panel_but_leaves_a_hint():
-    panel = lp.LabPanel()
+    panel = full_panel()
     world = small_world()
     panel.handle(key("h"))
     hud(panel, world, 1)

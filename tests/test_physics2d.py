@@ -178,7 +178,24 @@ def test_world_accumulator_and_clamped_long_frame():
     world = World([Body(box_points(10, 10), (0, 0), 1)])
     assert world.advance(1 / 60) == 2
     assert world.advance(0.004) == 0 and world.advance(0.005) == 1  # remainder carried
+    world.max_steps = None
     assert world.advance(10.0) == 30  # clamped to 0.25 s = 30 steps of 1/120 s
+
+
+def test_world_caps_catch_up_steps_and_drops_the_backlog():
+    """A long frame runs at most max_steps steps; the backlog beyond one step is dropped, not carried into a spiral."""
+    world = World([Body(box_points(10, 10), (0, 0), 1)])
+    assert world.max_steps == 4
+    assert world.advance(0.1) == 4            # 12 steps' worth of time, 4 run
+    assert world.accumulator < world.step_seconds
+    assert world.dropped == pytest.approx(0.1 - 4 / 120 - world.accumulator)
+    assert world.advance(1 / 60) == 2         # the next ordinary frame is ordinary again
+    assert world.time == pytest.approx(6 / 120)
+    world.max_steps = 1
+    assert world.advance(1 / 60) == 1
+    for bad in (0, -1, 2.5, True, "4"):
+        with pytest.raises(ValueError, match="max_steps"):
+            world.max_steps = bad
 
 
 def test_world_runs_a_students_functions():
@@ -332,7 +349,7 @@ def test_world_settings_are_checked_when_set_later_and_switching_is_safe():
     """Settings set after World(...) go through the same validators; switching solver or rule drops kept contacts."""
     world = World()
     for name, bad in (("iterations", 0), ("substeps", 0), ("step_seconds", 0), ("slop", -1), ("percent", 2),
-                      ("resting_speed", -1), ("max_frame", 0), ("contact_rule", "magic"), ("solver", "magic"),
+                      ("resting_speed", -1), ("max_frame", 0), ("max_steps", 0), ("contact_rule", "magic"), ("solver", "magic"),
                       ("effects", "gravity"), ("warm_starting", 1), ("gravity", (math.nan, 0))):
         with pytest.raises(ValueError):
             setattr(world, name, bad)

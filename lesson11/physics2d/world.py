@@ -33,6 +33,7 @@ LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "c
 SLEEP_SPEED = 5.0          # px/s: "sleep" effect, a body slower than this (and spinning slower than SLEEP_SPIN) ...
 SLEEP_SPIN = 0.1           # rad/s
 SLEEP_AFTER = 0.5          # s ... for this long, with every body it touches, falls asleep
+MAX_STEPS = 4              # fixed steps per advance() at most: two 60 fps frames' worth of 1/120 s steps
 
 Contact = namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = "One contact: bodies a and b, the world point (px), the unit normal A→B, the depth (px)."
@@ -54,6 +55,12 @@ def _whole_number(name):
         if isinstance(value, bool) or not isinstance(value, int) or value < 1:
             raise ValueError(f"world {name} must be a whole number >= 1, got {value!r}")
         return value
+    return check
+
+
+def _whole_number_or_none(name):
+    def check(value):
+        return None if value is None else _whole_number(name)(value)
     return check
 
 
@@ -139,6 +146,10 @@ class World:
       percent        0.4, share of the remaining overlap pushed out per push-out pass
       resting_speed  30 px/s; slower impacts do not bounce
       max_frame      0.25 s; longer frames are clamped (window drags, breakpoints)
+      max_steps      MAX_STEPS = 4 fixed steps at most per advance(), int >= 1, or None (no cap);
+                     the frame time that does not fit is dropped, so a frame whose physics runs
+                     long makes the simulation run slower than the clock, instead of making the
+                     next frame longer still (the "spiral": 30 catch-up steps a frame, 3 fps)
       contact_rule   "corners" (the lesson's corners-inside rule) or "clip" (edge clipping)
       effects        which effects run, a subset of EFFECTS; LESSON_EFFECTS by default
                      (the push-out is the "correction" effect)
@@ -202,6 +213,7 @@ class World:
     percent = _setting("percent", _check_percent)
     resting_speed = _setting("resting_speed", _at_least_zero("resting_speed", "px/s"))
     max_frame = _setting("max_frame", _positive_seconds("max_frame"))
+    max_steps = _setting("max_steps", _whole_number_or_none("max_steps"))
     contact_rule = _setting("contact_rule", _check_contact_rule, forget_arbiters=True)
     solver = _setting("solver", _check_solver, forget_arbiters=True)
     effects = _setting("effects", _check_effects)
@@ -219,7 +231,7 @@ class World:
 
     def __init__(self, bodies=(), *, gravity=GRAVITY, step_seconds=STEP, iterations=6, substeps=None,
                  slop=response.SLOP, percent=response.PERCENT, resting_speed=response.RESTING_SPEED,
-                 max_frame=0.25, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
+                 max_frame=0.25, max_steps=MAX_STEPS, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
                  warm_starting=True, order="solve-first", sat=None, resolve=None, separate=None,
                  circle_polygon=None, circle_point=None, sleep_speed=SLEEP_SPEED, sleep_spin=SLEEP_SPIN,
                  sleep_after=SLEEP_AFTER, sleep_timer=None, moves=None, wake=None,
@@ -234,6 +246,8 @@ class World:
         self.percent = percent
         self.resting_speed = resting_speed
         self.max_frame = max_frame
+        self.max_steps = max_steps
+        self.dropped = 0.0    # s of frame time dropped by the max_steps cap, in all
         self.contact_rule = contact_rule
         self.effects = effects
         self.solver = solver
@@ -353,7 +367,9 @@ class World:
     def advance(self, frame_seconds):
         """Run as many fixed steps as fit in the frame's time (s), carrying the remainder.
 
-        Frames longer than max_frame are clamped first. Returns the number of steps run.
+        Frames longer than max_frame are clamped first; at most max_steps steps run, and
+        the time left beyond one step is dropped (added to `dropped`), so the simulation
+        falls behind the clock rather than spiral. Returns the number of steps run.
         """
         frame_seconds = finite_number(frame_seconds, "frame time")
         if frame_seconds < 0:
@@ -361,6 +377,12 @@ class World:
         self.accumulator += min(frame_seconds, self.max_frame)
         steps = 0
         while self.accumulator >= self.step_seconds:
+            if self.max_steps is not None and steps == self.max_steps:
+                # keep less than one step for the next frame; the rest of the backlog is dropped
+                kept = math.fmod(self.accumulator, self.step_seconds)
+                self.dropped += self.accumulator - kept
+                self.accumulator = kept
+                break
             self.step()
             self.accumulator -= self.step_seconds
             steps += 1
