@@ -15,6 +15,7 @@ LONGEST_FIRST = (
     "test_corpus_tumbling_crates.py",   # 73 files graded by one checker run (the checker's own 2 jobs)
     "test_stability_dynamics.py",       # the base-8 pyramid (slow), the resting pile, the 10-box stack
     "test_checker.py",                  # the solutions, mutants, hostile files
+    "test_stability_grid.py",           # 3 solvers × 7 settings × 5 scenes, energy books (~30 s)
     "test_bench.py",                    # the accuracy-cost study at tiny sizes
     "test_checker_package.py",          # the bundles' run_autograder end to end
     "test_lab_criteria.py",             # four runs of the solution's own scenes

@@ -121,10 +121,17 @@ class Pymunk:
 
 
 def make(engine, angle=0.0, offset=(0, 0), friction=0.6):
-    """The scene for one engine; `friction` is the floor's μ in ours (pymunk's floor has μ 1, see Pymunk)."""
+    """The scene for one engine; `friction` is the floor's μ in ours (pymunk's floor has μ 1, see Pymunk).
+
+    engine: a name in ENGINES, "pymunk", a dict of World settings, or {"pymunk": n} (pymunk, n iterations).
+    """
     if engine == "pymunk":
         return Pymunk(angle, offset)
-    return Ours(ENGINES[engine], angle, offset, friction)
+    if isinstance(engine, dict) and "pymunk" in engine:
+        scene = Pymunk(angle, offset)
+        scene.space.iterations = engine["pymunk"]
+        return scene
+    return Ours(ENGINES[engine] if isinstance(engine, str) else engine, angle, offset, friction)
 
 
 def to_end(run):
@@ -139,7 +146,7 @@ def to_end(run):
 def flat_bounce_run(engine, e):
     """Generator form of flat_bounce: yields the scene after each step."""
     scene = make(engine)
-    if engine != "pymunk":
+    if not isinstance(scene, Pymunk):
         scene.world.bodies[0].restitution = 1.0
     state = scene.box(40, (400, FLOOR - 120), e=e)
     for _ in range(240):
@@ -160,7 +167,7 @@ def flat_bounce(engine, e):
 def disc_bounce_run(engine, e, height=200.0, seconds=6.0):
     """Generator form of disc_bounce: yields the scene after each step."""
     scene = make(engine)
-    if engine != "pymunk":
+    if not isinstance(scene, Pymunk):
         scene.world.bodies[0].restitution = 1.0  # e of a pair is min(eA, eB) here; pymunk's floor has e 1 already
     state = scene.disc(10, (400, FLOOR - 10 - height), e=e)
     energy = lambda: 0.5 * state()[1].length_squared() + G * (FLOOR - 10 - state()[0].y)
