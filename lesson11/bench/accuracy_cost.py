@@ -2,6 +2,7 @@
 
     python -m lesson11.bench.accuracy_cost            # full run, a few minutes; writes the table and plot
     python -m lesson11.bench.accuracy_cost --quick    # smoke run: tiny sizes, seconds; prints only
+    python -m lesson11.bench.accuracy_cost --frontier # the frontier study (lesson11/bench/frontier.py)
                                                       # (--out-dir writes bench_accuracy_cost_quick.md/.png)
 
 1. tunnelling     a 3 px bullet against a 4 px wall: discrete steps, sub-steps ×2..×16, CCD
@@ -768,7 +769,13 @@ def main(argv=None):
     parser = bench_parser("accuracy_cost", "What accuracy costs in time: tunnelling, iterations, contact rule, "
                                            "declared effects, pymunk, solvers, measured side by side.",
                           "bench_accuracy_cost", "tiny sizes", "case")
+    parser.add_argument("--frontier", action="store_true",
+                        help="run the frontier study instead (lesson11/bench/frontier.py): every solver setting, "
+                             "CPU time per step against error, the Pareto front; writes bench_frontier.md/.png")
     args = parser.parse_args(argv)
+    if args.frontier:
+        from . import frontier
+        return frontier.main([a for a in (sys.argv[1:] if argv is None else argv) if a != "--frontier"])
     settings = QUICK if args.quick else FULL
     if args.repeats:
         settings = Settings(**{**settings.__dict__, "repeats": args.repeats})
