@@ -49,6 +49,11 @@ def check(outputs, paths, entries, graded_folders):
             problems.append(f"{where}: exists and is not a regular file")
         elif kind == "folder" and os.path.lexists(path) and not os.path.isdir(path):
             problems.append(f"{where}: exists and is not a folder")
+        elif kind == "folder" and os.path.isdir(path):
+            # an existing folder is written into, not created: its own permission is what counts (a grader
+            # hands the unprivileged user a folder of its own inside a root-owned one)
+            if not os.access(path, os.W_OK | os.X_OK):
+                problems.append(f"{where}: cannot write in this folder")
         else:
             parent = os.path.dirname(os.path.abspath(path))
             if not os.path.isdir(parent):

@@ -436,3 +436,24 @@ def test_help_names_the_output_options_and_exit_statuses():
     status, out, err = run_checker("--help")
     out = " ".join(out.split())  # argparse wraps the text to the terminal's width
     assert status == 0 and "--gradescope-dir DIR" in out and "Exit status: 0" in out and "No file is written" in out
+
+
+def test_an_existing_output_folder_needs_only_its_own_permission(tmp_path):
+    """A grader running as root hands the student user a writable pictures folder inside a folder only root may
+    write in (Gradescope, PrairieLearn): the folder's own permission decides, not its parent's."""
+    parent = tmp_path / "root-owned"
+    pictures = parent / "pictures"
+    pictures.mkdir(parents=True)
+    parent.chmod(0o555)
+    try:
+        assert outputs.check([("--pictures", str(pictures), "folder")], [], [], []) == []
+        if os.geteuid() != 0:   # root may write anywhere: only an unprivileged user can see the refusal
+            pictures.chmod(0o555)
+            assert outputs.check([("--pictures", str(pictures), "folder")], [], [], []) == \
+                [f"--pictures {pictures}: cannot write in this folder"]
+        missing = parent / "new"
+        problems = outputs.check([("--pictures", str(missing), "folder")], [], [], [])
+        assert problems == ([] if os.geteuid() == 0 else [f"--pictures {missing}: cannot write in the folder {parent}"])
+    finally:
+        pictures.chmod(0o755)
+        parent.chmod(0o755)
