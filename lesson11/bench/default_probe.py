@@ -147,7 +147,17 @@ def row(substeps, iterations):
 
 
 def main(argv=None):
-    cells = [tuple(int(v) for v in text.split("x")) for text in (sys.argv[1:] if argv is None else argv)] or SETTINGS
+    cells = []
+    for text in (sys.argv[1:] if argv is None else argv):
+        try:
+            substeps, iterations = (int(v) for v in text.split("x"))
+            if substeps < 1 or iterations < 1:
+                raise ValueError
+        except ValueError:
+            print(f"default_probe: {text!r} is not a setting: give SUBSTEPSxITERATIONS, e.g. 4x6", file=sys.stderr)
+            return 2
+        cells.append((substeps, iterations))
+    cells = cells or SETTINGS
     rows = []
     for substeps, iterations in cells:
         figures, margin = row(substeps, iterations)
