@@ -1,6 +1,7 @@
 """python -m checker package: each package against its platform's documented fields, and the Gradescope
-bundle run end to end (unzipped into a temporary AUTOGRADER_ROOT, its run_autograder run with this
-interpreter) on a passing, a failing, a missing, a misnamed, a hostile submission and a broken checker."""
+bundle run end to end by Gradescope's own procedure (grade_gradescope: unpacked into ROOT/source, a copy of
+run_autograder run from ROOT) on a passing, a failing, a missing, a misnamed, a hostile submission and a
+broken checker."""
 import base64
 import importlib.util
 import json
@@ -77,19 +78,44 @@ def bundle(tmp_path_factory):
     return out, source, modes
 
 
-def grade_gradescope(source, tmp_path, files, env=None):
-    """Run the bundle's run_autograder on a submission made of `files` {relative path: text}; its results."""
+def gradescope_setup_stand_in(source):
+    """What setup.sh leaves behind, made quickly: source/venv/bin/python. The real setup.sh makes a venv and
+    pip-installs the pinned pygame-ce and numpy into it (minutes, and the network); here venv/bin/python hands
+    over to this test's interpreter, which has them. The acceptance script runs the real setup.sh."""
+    python = source / "venv" / "bin" / "python"
+    python.parent.mkdir(parents=True, exist_ok=True)
+    python.write_text(f"#!/bin/sh\nexec {sys.executable} \"$@\"\n", encoding="utf-8")
+    python.chmod(0o755)
+
+
+def grade_gradescope(source, tmp_path, files, env=None, in_place=False):
+    """Grade a submission made of `files` {relative path: text} as Gradescope does; its results.json.
+
+    Gradescope's procedure, step by step: the package is unpacked into /autograder/source and setup.sh runs
+    there (here: a copy of the unpacked package, and gradescope_setup_stand_in); the submission goes to
+    /autograder/submission; run_autograder is copied to /autograder/run_autograder and that copy runs, from
+    /autograder, in a clean environment. What differs: the root is a temporary folder named by AUTOGRADER_ROOT
+    instead of /autograder, and AUTOGRADER_USER="" grades as the current user (Gradescope's grader is root and
+    grades as `student`; the acceptance script does that in a clean root file system). in_place=True runs
+    source/run_autograder itself, as an instructor trying the package by hand would.
+    """
     root = tmp_path / "autograder"
+    shutil.copytree(source, root / "source", symlinks=True)
+    if not (root / "source" / "venv").exists():
+        gradescope_setup_stand_in(root / "source")
     (root / "submission").mkdir(parents=True)
     for rel, text in files.items():
         target = root / "submission" / rel
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_text(text, encoding="utf-8")
-    environment = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "SDL_VIDEODRIVER")}
-    environment.update(AUTOGRADER_ROOT=str(root), AUTOGRADER_PYTHON=sys.executable, AUTOGRADER_USER="")
+    script = root / "source" / "run_autograder"
+    if not in_place:
+        script = shutil.copy2(script, root / "run_autograder")
+    environment = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "HOME": str(root),
+                   "AUTOGRADER_ROOT": str(root), "AUTOGRADER_USER": ""}
     environment.update(env or {})
-    done = subprocess.run([str(source / "run_autograder")], env=environment, capture_output=True, text=True,
-                          timeout=180)
+    done = subprocess.run([str(script)], cwd=root, env=environment, capture_output=True,
+                          text=True, timeout=180)
     assert done.returncode == 0, done.stderr
     with open(root / "results" / "results.json", encoding="utf-8") as handle:
         doc = json.load(handle)
@@ -132,6 +158,24 @@ def test_gradescope_passing_submission(bundle, tmp_path):
     assert all(t["status"] == "passed" for t in doc["tests"])
     assert "Graded tumbling_crates.py" in doc["output"] and "17/17" in doc["output"]
     assert not any("output_format" in t or "<img" in t["output"] for t in doc["tests"]), "no pictures"
+
+
+def test_gradescope_run_in_place_grades_the_same(bundle, tmp_path):
+    doc = grade_gradescope(bundle[1], tmp_path, {"tumbling_crates.py": read("solutions/tumbling_crates.py")},
+                           in_place=True)
+    assert doc["score"] == MAX["tumbling_crates"] and "17/17" in doc["output"]
+
+
+def test_gradescope_without_the_package_says_so(bundle, tmp_path):
+    """A copied run_autograder with no source/ beside it (a broken upload) still leaves a results file."""
+    root = tmp_path / "autograder"
+    (root / "submission").mkdir(parents=True)
+    shutil.copy2(bundle[1] / "run_autograder", root / "run_autograder")
+    done = subprocess.run([str(root / "run_autograder")], cwd=root, capture_output=True, text=True, timeout=60,
+                          env={"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "AUTOGRADER_ROOT": str(root)})
+    assert done.returncode == 0 and "no grade_submission.py" in done.stderr
+    doc = json.loads((root / "results" / "results.json").read_text(encoding="utf-8"))
+    assert doc["score"] == 0.0 and "tell your instructor" in doc["output"]
 
 
 def test_gradescope_failing_submission_in_a_folder(bundle, tmp_path):
