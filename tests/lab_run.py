@@ -97,8 +97,8 @@ def pile_settings(settle_frames=240, every=20):
 
 def screenshots():
     """Write assets/tumbling_crates.png (solution, settled pile, debug on), the starter's, and
-    assets/tumbling_crates_panel.png (the same pile; 1.5 s before the end the Up key is pressed 14 times,
-    so the solver panel shows 20 iterations and its graph the physics time rising)."""
+    assets/tumbling_crates_panel.png (the same pile; 1.5 s before the end H opens the full panel and the Up
+    key is pressed 14 times, so it shows 20 iterations and its graph the physics time rising)."""
     import tempfile
     with tempfile.TemporaryDirectory() as work:
         settings = pile_settings(settle_frames=300)
@@ -112,6 +112,7 @@ def screenshots():
         print(run.stdout.strip(), "->", starter["screenshot"])
         settings = pile_settings(settle_frames=300)
         settings["record_every"] = 60
+        settings["script"] += [{"frame": settings["frames"] - 90, "type": "key", "key": "h"}]   # the full panel
         settings["script"] += [{"frame": settings["frames"] - 90, "type": "key", "key": "up"}] * 14
         settings["screenshot"] = os.path.join(ROOT, "assets", "tumbling_crates_panel.png")
         run = run_lab(SOLUTION, settings, work)
