@@ -63,7 +63,8 @@ REFRESH_FRAMES = 12     # the numbers are redrawn every 12 frames (0.2 s at 60 f
 SCALES_MS = (5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)  # the graph's possible top values (ms)
 
 PANEL_WIDTH, LINE_HEIGHT, GRAPH_HEIGHT, PADDING = 400, 19, 58, 10   # px
-COMPACT_WIDTH = 330     # px: the compact panel's width
+COMPACT_WIDTH = 320     # px: the compact panel's width; with its 5 lines it stays in x 570-890, y 36-137 of a
+COMPACT_LINE, COMPACT_PADDING = 17, 8   # 900 px window, clear of Tumbling Crates' four starting crates (px)
 MODES = ("compact", "full", "hidden")   # H cycles through them, compact first
 RATE_FRAMES = 60        # frames (1 s at 60 fps) over which ms/step and the real-time share are averaged
 STUDY_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bench", "frontier.json")
@@ -113,6 +114,16 @@ def study_lines(world, settings):
     where = "on the front: nothing cheaper errs less" if row["on_front"] \
         else f"off the front: {row['better']} costs less, errs less"
     return [f"study: {row['ms_per_step']:.2f} ms/step, pile {row['pile_speed']:.1f} px/s", where]
+
+
+def study_short(world, settings):
+    """One line of the study for the compact panel: its cost and pile error, and "on front" or a better setting."""
+    order = getattr(world, "order", "solve-first") if settings["solver"] == "lesson" else "-"
+    row = study_rows().get((settings["solver"], order, settings["substeps"], settings["iterations"]))
+    if row is None:
+        return "study: this setting was not measured"
+    verdict = "on front" if row["on_front"] else f"{row['better']} beats it"
+    return f"study: {row['ms_per_step']:.2f} ms, pile {row['pile_speed']:.1f} px/s: {verdict}"
 
 
 def rate_text(m, paused):
@@ -398,17 +409,20 @@ class LabPanel:
         if refresh or self.dirty or self.image is None or self.box.right != right:
             self.render(world, right)
         surface.blit(self.image, self.box.topleft)
+        if self.mode == "compact":
+            self.placed = list(self.rendered)
+            return
         contacts = f"contacts {len(world.contacts)}"
         image = self.text(contacts, TEXT)
         surface.blit(image, self.contacts_at)
         self.placed = self.rendered + [(image.get_rect(topleft=self.contacts_at), contacts)]
 
-    def start_image(self, right, width, rows, extra=0):
-        """A fresh see-through picture for `rows` lines of text and `extra` px more, and self.box for it,
+    def start_image(self, right, width, rows, extra=0, line=LINE_HEIGHT, padding=PADDING):
+        """A fresh see-through picture for `rows` lines of `line` px and `extra` px more, and self.box for it,
         its right edge at `right` px."""
         self.dirty = False
         self.rendered = []
-        self.box = pygame.Rect(right - width, 36, width, PADDING * 2 + LINE_HEIGHT * rows + extra)
+        self.box = pygame.Rect(right - width, 36, width, padding * 2 + line * rows + extra)
         self.image = pygame.Surface(self.box.size, pygame.SRCALPHA)
         self.image.fill(BACKGROUND)
         return self.image
@@ -421,16 +435,14 @@ class LabPanel:
             self.render_full(world, right)
 
     def render_compact(self, world, right):
-        """The compact panel: solver, iterations, sub-steps, the cost per step, the real-time share, the study."""
+        """The compact panel, five short lines: solver, iterations, sub-steps, the cost per step and the share of
+        real time, and the study's figures for this setting (the contact count is in every lab's own HUD line)."""
         now = self.settings()
         m = self.shown
-        study = study_lines(world, now)
-        rate = rate_text(m, self.paused)
-        image = self.start_image(right, COMPACT_WIDTH, 8 + bool(study[1]))
-        x, y = PADDING, PADDING
-        self.put(image, "SOLVER PANEL", KEY, (x, y))
-        self.put(image, "[H] more", DIM, (COMPACT_WIDTH - PADDING - self.text("[H] more", DIM).get_width(), y))
-        y += LINE_HEIGHT
+        image = self.start_image(right, COMPACT_WIDTH, 5, line=COMPACT_LINE, padding=COMPACT_PADDING)
+        x, y = COMPACT_PADDING, COMPACT_PADDING
+        more = self.text("[H] more", DIM)
+        self.put(image, "[H] more", DIM, (COMPACT_WIDTH - x - more.get_width(), y + COMPACT_LINE))  # by iterations
         reference = now["solver"] == "accumulated"
         for key, name, value, changed in (
                 ("[S]", "solver", "reference" if reference else "lesson", "solver"),
@@ -439,17 +451,16 @@ class LabPanel:
             self.put(image, key, KEY, (x, y))
             self.put(image, name, DIM, (x + 100, y))
             colour = WARNING if key == "[S]" and reference else (CHANGED if changed in self.overrides else TEXT)
-            self.put(image, value, colour, (x + 190, y))
-            y += LINE_HEIGHT
-        self.put(image, rate[0], TEXT, (x, y))
-        y += LINE_HEIGHT
-        self.put(image, rate[1], WARNING if rate[1] == "PAUSED" or (m["real_time"] or 1) < 0.95 else DIM, (x, y))
-        y += LINE_HEIGHT
-        for line in study:
-            if line:
-                self.put(image, line, DIM, (x, y))
-                y += LINE_HEIGHT
-        self.contacts_at = (self.box.x + x, self.box.y + y)
+            self.put(image, value, colour, (x + 180, y))
+            y += COMPACT_LINE
+        if self.paused:
+            rate, behind = f"physics {m['ms_per_step']:.2f} ms/step, PAUSED", True
+        else:
+            share = "" if m["real_time"] is None else f", {m['real_time']:.1f}x real time"
+            rate, behind = f"physics {m['ms_per_step']:.2f} ms/step{share}", (m["real_time"] or 1) < 0.95
+        self.put(image, rate, WARNING if behind else TEXT, (x, y))
+        y += COMPACT_LINE
+        self.put(image, study_short(world, now), DIM, (x, y))
 
     def render_full(self, world, right):
         """The full panel: every setting with its key, the measurements, the study and the graph."""

@@ -285,9 +285,9 @@ def test_compact_panel_is_the_default_small_and_h_cycles_the_sizes():
     world = small_world()
     hud(panel, world)
     assert panel.mode == "compact"
-    assert panel.box.width <= 340 and panel.box.height <= 175, panel.box   # the full one is 400 × 350
+    assert panel.box.width <= 320 and panel.box.height <= 101, panel.box   # the full one is 400 × 350
     text = text_of(panel)
-    for words in ("[S]", "[Up/Down]", "[Left/Right]", "[H] more", "ms/step", "real time", "study:", "contacts"):
+    for words in ("[S]", "[Up/Down]", "[Left/Right]", "[H] more", "ms/step", "real time", "study:"):
         assert words in text, words
     sizes = []
     for _ in range(3):
@@ -296,6 +296,25 @@ def test_compact_panel_is_the_default_small_and_h_cycles_the_sizes():
         sizes.append((panel.mode, panel.box.width * panel.box.height))
     assert [mode for mode, _ in sizes] == ["full", "hidden", "compact"]
     assert sizes[1][1] < sizes[2][1] < sizes[0][1]
+
+
+def test_the_compact_panel_hides_no_starting_crate():
+    """Tumbling Crates drops four crates of up to 90 × 70 px from (150 + 180 i, 80 + 40 i): whatever their size
+    and angle (seeds 0-199), none starts under the compact panel, and the 22° ramp stays clear too."""
+    import importlib.util
+    import random
+    spec = importlib.util.spec_from_file_location("tumbling_crates_solution", SOLUTION)
+    lab = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(lab)
+    panel = lp.LabPanel()
+    hud(panel, small_world(), 1)
+    assert panel.mode == "compact"
+    for seed in range(200):
+        for body in lab.make_scene(random.Random(seed)):
+            if body.inv_mass == 0 and body.pos.y > 500:
+                continue   # the floor and the wall off the right edge
+            left, top, right, bottom = body.aabb()
+            assert not panel.box.colliderect(pygame.Rect(left, top, right - left, bottom - top)), (seed, body)
 
 
 def test_study_line_reads_the_studys_table(monkeypatch, tmp_path):
@@ -313,6 +332,12 @@ def test_study_line_reads_the_studys_table(monkeypatch, tmp_path):
     assert lp.study_lines(world, {"solver": "lesson", "substeps": 4, "iterations": 7})[1] == \
         "off the front: 4 x 6 costs less, errs less"
     assert lp.study_lines(world, {"solver": "lesson", "substeps": 3, "iterations": 7})[0] == \
+        "study: this setting was not measured"
+    assert lp.study_short(world, {"solver": "lesson", "substeps": 4, "iterations": 6}) == \
+        "study: 1.50 ms, pile 3.7 px/s: on front"
+    assert lp.study_short(world, {"solver": "lesson", "substeps": 4, "iterations": 7}) == \
+        "study: 1.70 ms, pile 3.9 px/s: 4 x 6 beats it"
+    assert lp.study_short(world, {"solver": "lesson", "substeps": 3, "iterations": 7}) == \
         "study: this setting was not measured"
     monkeypatch.setattr(lp, "STUDY_FILE", str(tmp_path / "missing.json"))
     monkeypatch.setattr(lp, "_study", None)
