@@ -31,6 +31,8 @@ PROJECT_DIRS = ("checker", "lesson11", "starters", "solutions")
 PROJECT_FILES = ("pyproject.toml", "README.md")
 SKIP = {"__pycache__", ".pytest_cache", ".hypothesis"}
 PLATFORMS = ("gradescope", "classroom", "prairielearn")
+TOTAL_TIMEOUT = 420.0       # s: one submission's grading, pictures and the retry without them included
+MAX_TOTAL_TIMEOUT = 540.0   # s: Gradescope stops a run at 600 s by default; this leaves time to write results
 
 
 class PackageError(Exception):
@@ -92,8 +94,9 @@ def config(labs, hide, args):
 
 def choose_labs(names):
     by_id = {lab.id: lab for lab in lab_registry.LABS}
-    if not names:
-        return list(lab_registry.LABS)
+    if not names:  # a package that graded every lab gave full marks for any lab's solution on any assignment
+        raise PackageError(f"--labs is required: name the lab(s) this assignment grades "
+                           f"(one of {', '.join(by_id)}); a file of another lab then scores 0")
     unknown = [n for n in names if n not in by_id]
     if unknown:
         raise PackageError(f"--labs: unknown lab {', '.join(unknown)} (known: {', '.join(by_id)})")
@@ -167,7 +170,9 @@ def write_folder(path, files):
 
 def gradescope(labs, hide, args):
     versions = installed_versions()
-    extra = {"setup.sh": (template("gradescope_setup.sh", PINS=pins(versions), PYTHON=python_version()), True),
+    pygame_pin = pins({"pygame-ce": versions.get("pygame-ce")})
+    extra = {"setup.sh": (template("gradescope_setup.sh", PINS=pins(versions), PYGAME_PIN=pygame_pin,
+                                   PYTHON=python_version()), True),
              "run_autograder": (template("gradescope_run_autograder"), True)}
     files = bundle(labs, hide, args, extra)
     write_zip(args.out, files)
@@ -259,13 +264,15 @@ def parse(argv):
                                      description="Package the checker for an autograding platform.")
     parser.add_argument("platform", choices=PLATFORMS)
     parser.add_argument("--out", required=True, help="the zip (gradescope) or folder (classroom, prairielearn)")
-    parser.add_argument("--labs", nargs="+", metavar="LAB", help="the labs graded (default: all five)")
+    parser.add_argument("--labs", nargs="+", metavar="LAB", help="the labs this assignment grades (required; usually one)")
     parser.add_argument("--hide", nargs="+", default=[], metavar="CHECK_ID",
                         help="checks whose result students do not see (Gradescope: visibility hidden)")
     parser.add_argument("--force", action="store_true", help="replace an existing --out")
     parser.add_argument("--timeout", type=float, default=20.0, help="CPU seconds per run of a lab (default 20)")
-    parser.add_argument("--total-timeout", type=float, default=600.0,
-                        help="wall-clock seconds to grade one submission (default 600)")
+    parser.add_argument("--total-timeout", type=float, default=TOTAL_TIMEOUT,
+                        help=f"wall-clock seconds to grade one submission, at most {MAX_TOTAL_TIMEOUT:g} so that a "
+                             f"results file is written inside Gradescope's default 10-minute limit "
+                             f"(default {TOTAL_TIMEOUT:g})")
     parser.add_argument("--source", help="classroom: a pip requirement to install the checker from instead of "
                                          "a copy in the repository")
     parser.add_argument("--image", default="yourname/lesson11-grader",
@@ -280,6 +287,9 @@ def main(argv):
     except SystemExit as exc:
         return 0 if exc.code == 0 else 2
     try:
+        if not 0 < args.total_timeout <= MAX_TOTAL_TIMEOUT or not 0 < args.timeout <= args.total_timeout:
+            raise PackageError(f"--total-timeout {args.total_timeout:g} / --timeout {args.timeout:g}: need "
+                               f"0 < timeout <= total-timeout <= {MAX_TOTAL_TIMEOUT:g} s")
         labs = choose_labs(args.labs)
         check_hide(labs, args.hide)
         check_out(args.out, "file" if args.platform == "gradescope" else "folder", args.force)

@@ -156,14 +156,16 @@ def test_gradescope_passing_submission(bundle, tmp_path):
     doc = grade_gradescope(bundle[1], tmp_path, {"tumbling_crates.py": read("solutions/tumbling_crates.py")})
     assert doc["score"] == MAX["tumbling_crates"] == sum(t["max_score"] for t in doc["tests"])
     assert all(t["status"] == "passed" for t in doc["tests"])
-    assert "Graded tumbling_crates.py" in doc["output"] and "17/17" in doc["output"]
+    visible = sum(t["max_score"] for t in doc["tests"] if t["visibility"] == "visible")
+    assert "Graded tumbling_crates.py" in doc["output"]
+    assert f"{visible:g}/{visible:g} on the visible checks, passes every visible check" in doc["output"]
     assert not any("output_format" in t or "<img" in t["output"] for t in doc["tests"]), "no pictures"
 
 
 def test_gradescope_run_in_place_grades_the_same(bundle, tmp_path):
     doc = grade_gradescope(bundle[1], tmp_path, {"tumbling_crates.py": read("solutions/tumbling_crates.py")},
                            in_place=True)
-    assert doc["score"] == MAX["tumbling_crates"] and "17/17" in doc["output"]
+    assert doc["score"] == MAX["tumbling_crates"] and "passes every visible check" in doc["output"]
 
 
 def test_gradescope_without_the_package_says_so(bundle, tmp_path):
@@ -270,7 +272,7 @@ def test_classroom_workflow(tmp_path):
     for step_id in ids:
         assert f"{step_id.upper()}_RESULTS: \"${{{{steps.{step_id}.outputs.result}}}}\"" in workflow
     assert "SDL_VIDEODRIVER: dummy" in workflow and "\t" not in workflow
-    done = run_package("classroom", "--out", str(tmp_path / "src"), "--source", "git+https://example.org/l11")
+    done = run_package("classroom", "--out", str(tmp_path / "src"), "--labs", "bullets", "--source", "git+https://example.org/l11")
     assert done.returncode == 0 and not (tmp_path / "src" / ".autograder").exists()
 
 
@@ -297,13 +299,18 @@ def test_refuses_existing_output_and_bad_options(tmp_path):
     assert zipfile.is_zipfile(out)
     folder = tmp_path / "pl"
     folder.mkdir()
-    assert run_package("prairielearn", "--out", str(folder)).returncode == 2
-    assert run_package("gradescope", "--out", os.path.join(ROOT, "starters", "x.zip")).returncode == 2
+    assert run_package("prairielearn", "--out", str(folder), "--labs", "bullets").returncode == 2
+    assert run_package("gradescope", "--out", os.path.join(ROOT, "starters", "x.zip"), "--labs", "bullets").returncode == 2
     assert not os.path.exists(os.path.join(ROOT, "starters", "x.zip"))
-    done = run_package("gradescope", "--out", str(tmp_path / "a.zip"), "--hide", "no_such_check")
+    done = run_package("gradescope", "--out", str(tmp_path / "a.zip"), "--labs", "bullets", "--hide", "no_such_check")
     assert done.returncode == 2 and "no_such_check" in done.stderr
     done = run_package("gradescope", "--out", str(tmp_path / "b.zip"), "--labs", "nope")
     assert done.returncode == 2 and "nope" in done.stderr
+    for platform, out in (("gradescope", tmp_path / "c.zip"), ("classroom", tmp_path / "c"),
+                          ("prairielearn", tmp_path / "d")):
+        done = run_package(platform, "--out", str(out))   # no --labs: a package names what it grades
+        assert done.returncode == 2 and not os.path.exists(out), platform
+        assert done.stderr.strip().count("\n") == 0 and "--labs is required" in done.stderr
 
 
 # ---------------------------------------------------------------- pictures of failed behaviour checks
@@ -353,6 +360,13 @@ def test_gradescope_failed_scene_has_a_picture(ramp_bundle, tmp_path):
     assert images and all(base64.b64decode(i).startswith(PNG) for i in images)
     passed = [t for t in doc["tests"] if t["status"] == "passed"]
     assert passed and not any("output_format" in t or "<img" in t["output"] for t in passed)
+
+
+def test_gradescope_another_labs_file_scores_zero(ramp_bundle, tmp_path):
+    """A Ball on the Ramp assignment given the Bullets solution: 0, and the message names both labs."""
+    doc = grade_gradescope(ramp_bundle, tmp_path, {"bullets.py": read("solutions/bullets.py")})
+    assert doc["score"] == 0
+    assert "Bullets" in doc["output"] and "ball_on_ramp.py" in doc["output"], doc["output"]
 
 
 def test_gradescope_pictures_that_cannot_be_drawn_cost_nothing(ramp_bundle, tmp_path):
@@ -436,3 +450,29 @@ def test_pictures_capped_and_read_only_from_the_folder(tmp_path):
     assert len(pl["images"]) == 4 and "2 more picture(s) not shown" in pl["tests"][1]["output"]
     assert_prairielearn(dict(pl, message=pl["message"] or "x"))
     assert script.prairielearn_results(row, "Graded t.py.", 3.0, {"hide": ["a"]})["images"] == pl["images"][3:]
+
+
+def test_the_summary_keeps_hidden_checks_hidden_and_names_the_students_error():
+    script = grading_script()
+
+    def check(id, status, score, message=""):
+        return {"id": id, "name": id, "status": status, "score": score, "max_score": 1.0, "message": message,
+                "hint": ""}
+    row = {"title": "Tumbling Crates", "status": "fail", "score": 2.0, "max_score": 3.0, "message": "",
+           "criteria": [check("a", "pass", 1.0), check("b", "pass", 1.0), check("secret", "fail", 0.0, "off")]}
+    shown = script.gradescope_results(row, "Graded t.py.", 3.0, {"hide": ["secret"]})
+    assert "2/2 on the visible checks, passes every visible check" in shown["output"]
+    assert "fail" not in shown["output"] and "3" not in shown["output"].replace("Graded t.py.", "")
+    assert script.prairielearn_results(row, "Graded t.py.", 3.0, {"hide": ["secret"]})["message"] == \
+        shown["output"]
+    assert "2/3, fails some checks" in script.gradescope_results(row, "Graded t.py.", 3.0, {"hide": []})["output"]
+    crash = "The file raised ZeroDivisionError: division by zero at bullets.py, line 4: return 1/0."
+    row = {"title": "Bullets", "status": "error", "score": 0.0, "max_score": 2.0, "message": "",
+           "criteria": [check("loads", "error", 0.0, crash),
+                        check("broad", "skip", 0.0, "skipped: needs 'loads' to pass first")]}
+    shown = script.gradescope_results(row, "Graded bullets.py.", 2.0, {"hide": []})
+    assert f"your code stopped with an error in loads: {crash}" in shown["output"]
+    assert "could not" not in shown["output"]
+    skipped = shown["tests"][1]
+    assert skipped["status"] == "failed" and skipped["score"] == 0   # Gradescope has no skipped status
+    assert skipped["output"] == "not run: needs 'loads' to pass first (it scores 0 until then)"

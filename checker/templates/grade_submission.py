@@ -17,6 +17,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 import traceback
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -130,11 +131,13 @@ def attach_pictures(document, folder):
                 check["images_left_out"] = left_out
 
 
-def checker_command(copy, config, pictures=None):
+def checker_command(copy, config, pictures=None, seconds=None):
+    """The checker's command line for the copy; `seconds` (wall clock) caps its --total-timeout."""
+    total = config.get("total_timeout", 420) if seconds is None else min(seconds, config.get("total_timeout", 420))
     command = [sys.executable, "-m", "checker", copy, "--json", "--quiet",
                "--jobs", str(config.get("jobs", os.cpu_count() or 1)),
                "--timeout", str(config.get("timeout", 20)),
-               "--total-timeout", str(config.get("total_timeout", 600))]
+               "--total-timeout", f"{max(total, 1):.0f}"]
     if config.get("allow_edits"):
         command.append("--allow-edits")
     if pictures:
@@ -146,6 +149,7 @@ def run_checker(path, config):
     """The checker's --json document for path (a dict), or raises RuntimeError saying what went wrong.
     Failed behaviour checks get "images" (base64 PNGs, see attach_pictures) unless config's "pictures" is false;
     when the run with pictures gives no result, the file is graded again without them."""
+    deadline = time.monotonic() + config.get("total_timeout", 420) + 30   # the whole grading, retry included
     work = tempfile.mkdtemp(prefix="autograde-")
     try:
         os.chmod(work, 0o755)
@@ -168,11 +172,14 @@ def run_checker(path, config):
                 pictures = None
         attempts = [pictures, None] if pictures else [None]
         for attempt in attempts:
-            command = checker_command(copy, config, attempt)
+            left = deadline - time.monotonic()
+            if left < 5:
+                raise RuntimeError("the checker ran out of time on this submission")
+            command = checker_command(copy, config, attempt, left - 5)
             if user:
                 command = ["runuser", "-u", user, "--"] + command
             proc = subprocess.run(command, cwd=work, env=env, stdin=subprocess.DEVNULL, capture_output=True,
-                                  timeout=config.get("total_timeout", 600) + 60)
+                                  timeout=left)
             try:
                 document = json.loads(proc.stdout.decode("utf-8", "replace"))
                 document["labs"][0]
@@ -217,17 +224,39 @@ def grade(submission_folder, config):
 
 
 def check_output(check):
-    parts = [check.get("message") or "", ("Hint " + check["hint"]) if check.get("hint") else ""]
-    text = "\n".join(p for p in parts if p)
-    return text or ("skipped: an earlier check must pass first" if check.get("status") == "skip" else "")
+    """A check's text for the student: its message and hint; a skipped check says it was not run and why."""
+    message = check.get("message") or ""
+    if check.get("status") == "skip":
+        reason = message[len("skipped: "):] if message.startswith("skipped: ") else "an earlier check must pass first"
+        return f"not run: {reason} (it scores 0 until then)"
+    parts = [message, ("Hint " + check["hint"]) if check.get("hint") else ""]
+    return "\n".join(p for p in parts if p)
 
 
-def summary(row, note):
+def summary(row, note, hidden=()):
+    """The one paragraph every student sees. With hidden checks it speaks of the visible ones only, so that it
+    never tells whether a hidden check passed; an error in the student's code is named as theirs, with its line."""
     if row is None:
         return note
-    status = {"pass": "passes every check", "fail": "fails some checks", "error": "could not be fully graded"}
-    line = f"{note} {row.get('title') or 'The file'}: {row['score']:g}/{row['max_score']:g}, " \
-           f"{status.get(row['status'], row['status'])}."
+    criteria = [c for c in row.get("criteria") or [] if isinstance(c, dict)]
+    visible = [c for c in criteria if c.get("id") not in hidden]
+    if hidden and criteria:
+        figures = f"{sum(c['score'] for c in visible):g}/{sum(c['max_score'] for c in visible):g} " \
+                  f"on the visible checks"
+        every = "passes every visible check"
+    else:
+        figures, every = f"{row['score']:g}/{row['max_score']:g}", "passes every check"
+    errors = [c for c in visible if c.get("status") == "error"]
+    if errors:
+        state = f"your code stopped with an error in {errors[0]['id']}: {errors[0].get('message') or 'see that check'}"
+    elif criteria and all(c.get("status") == "pass" for c in visible):
+        state = every
+    elif not criteria:
+        state = {"pass": every, "fail": "fails some checks"}.get(row.get("status"), "was not graded")
+    else:
+        state = "fails some checks"
+    line = f"{note} {row.get('title') or 'The file'}: {figures}, {state}"
+    line += "" if line.endswith(".") else "."
     if row.get("message"):
         line += f" {row['message']}"
     return line
@@ -265,19 +294,19 @@ def prairielearn_images(row, hidden):
 def gradescope_results(row, note, max_score, config):
     hidden = set(config.get("hide", []))
     if row is None or not row.get("criteria"):
-        reason = summary(row, note)
+        reason = summary(row, note, hidden)
         return {"score": 0.0, "output": reason, "visibility": "visible", "stdout_visibility": "hidden",
                 "tests": [{"name": "Submission graded", "score": 0.0, "max_score": max_score, "status": "failed",
                            "output": reason, "visibility": "visible"}]}
     tests = [gradescope_test(c, hidden) for c in row["criteria"]]
-    return {"score": row["score"], "output": summary(row, note), "visibility": "visible",
+    return {"score": row["score"], "output": summary(row, note, hidden), "visibility": "visible",
             "stdout_visibility": "hidden", "tests": tests}
 
 
 def prairielearn_results(row, note, max_score, config):
     hidden = set(config.get("hide", []))
     if row is None or not row.get("criteria"):
-        reason = summary(row, note)
+        reason = summary(row, note, hidden)
         return {"gradable": True, "score": 0.0, "message": reason, "output": reason, "images": [],
                 "tests": [{"name": "Submission graded", "points": 0.0, "max_points": max_score,
                            "output": reason, "message": reason}]}
@@ -285,8 +314,8 @@ def prairielearn_results(row, note, max_score, config):
               "message": c["status"], "output": "\n".join(p for p in (check_output(c), left_out_note(c)) if p)}
              for c in row["criteria"] if c["id"] not in hidden]
     total = row["max_score"] or 1.0
-    return {"gradable": True, "score": round(row["score"] / total, 6), "message": summary(row, note),
-            "output": summary(row, note), "images": prairielearn_images(row, hidden), "tests": tests}
+    return {"gradable": True, "score": round(row["score"] / total, 6), "message": summary(row, note, hidden),
+            "output": summary(row, note, hidden), "images": prairielearn_images(row, hidden), "tests": tests}
 
 
 def fallback(platform, message):
