@@ -235,12 +235,19 @@ def test_prairielearn_package_and_entrypoint(tmp_path):
         assert f"{name}=={version}" in dockerfile
     assert os.stat(out / "run_prairielearn").st_mode & stat.S_IXUSR
     assert 'file-names="bullets.py"' in (out / "question.html").read_text()
+    # PrairieLearn's procedure: the image is the Dockerfile's (COPY . /grader, its ENV), the submission goes to
+    # /grade/student and the entrypoint info.json names runs. Here /grader is the package folder, GRADE_ROOT
+    # moves /grade, the image's python is this test's (first on PATH), and AUTOGRADER_USER="" grades as the
+    # current user; tests/platform_acceptance.py follows the Dockerfile in a Debian root and grades as student.
     grade = tmp_path / "grade"
     (grade / "student").mkdir(parents=True)
     (grade / "student" / "bullets.py").write_text(read("starters/bullets_starter.py"), encoding="utf-8")
-    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
-    env.update(GRADE_ROOT=str(grade), GRADER_PYTHON=sys.executable, AUTOGRADER_USER="")
-    done = subprocess.run([str(out / "run_prairielearn")], env=env, capture_output=True, text=True, timeout=120)
+    image_env = dict(pair.split("=", 1) for line in dockerfile.splitlines() if line.startswith("ENV ")
+                     for pair in line[4:].split())
+    env = dict(image_env, PATH=os.path.dirname(sys.executable) + os.pathsep + os.environ.get("PATH", ""),
+               HOME=str(tmp_path), GRADE_ROOT=str(grade), AUTOGRADER_USER="")
+    entrypoint = out / os.path.relpath(options["entrypoint"], "/grader")
+    done = subprocess.run([str(entrypoint)], env=env, cwd=grade, capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     doc = json.loads((grade / "results" / "results.json").read_text())
     assert_prairielearn(doc)
@@ -248,7 +255,7 @@ def test_prairielearn_package_and_entrypoint(tmp_path):
     assert doc["score"] == pytest.approx(3.0 / MAX["bullets"])
     assert sum(t["max_points"] for t in doc["tests"]) == MAX["bullets"]
     shutil.rmtree(grade / "student")  # nothing submitted: still a valid result
-    subprocess.run([str(out / "run_prairielearn")], env=env, capture_output=True, timeout=60)
+    subprocess.run([str(entrypoint)], env=env, cwd=grade, capture_output=True, timeout=60)
     doc = json.loads((grade / "results" / "results.json").read_text())
     assert_prairielearn(doc)
     assert doc["score"] == 0 and "nothing was submitted" in doc["message"]
@@ -274,6 +281,43 @@ def test_classroom_workflow(tmp_path):
     assert "SDL_VIDEODRIVER: dummy" in workflow and "\t" not in workflow
     done = run_package("classroom", "--out", str(tmp_path / "src"), "--labs", "bullets", "--source", "git+https://example.org/l11")
     assert done.returncode == 0 and not (tmp_path / "src" / ".autograder").exists()
+
+
+def test_classroom_workflow_steps_grade_as_the_command_grader_runs_them(tmp_path):
+    """GitHub Classroom's procedure: the template repository (the package's files) holds the student's file; the
+    workflow's "Grade" step runs with its env, then each autograding-command-grader step's command runs with the
+    environment reset to PATH, HOME and FORCE_COLOR, and earns its max-score if it exits 0. Not run here: the
+    checkout, setup-python and "Install" steps (this test's interpreter already has the checker, first on
+    PATH); tests/platform_acceptance.py runs those in an Ubuntu root."""
+    import platform_acceptance
+    out = tmp_path / "template"
+    assert run_package("classroom", "--out", str(out), "--labs", "tumbling_crates").returncode == 0
+    steps = platform_acceptance.workflow(out / ".github" / "workflows" / "classroom.yml")
+    assert [name for name, _, _ in steps["runs"]] == ["Install the checker", "Grade tumbling_crates.py"]
+    assert steps["env"] == {"CHECKER_SOURCE": ".autograder/project"}
+    path = os.path.dirname(sys.executable) + os.pathsep + os.environ.get("PATH", "")
+    scores = {}
+    for case, files in (("solution", {"tumbling_crates.py": read("solutions/tumbling_crates.py")}),
+                        ("starter", {"tumbling_crates.py": read("starters/tumbling_crates_starter.py")}),
+                        ("missing", {})):
+        repo = tmp_path / case
+        shutil.copytree(out, repo)
+        for rel, text in files.items():
+            (repo / rel).write_text(text, encoding="utf-8")
+        for name, script, env in steps["runs"]:
+            if name.startswith("Grade"):
+                subprocess.run(["bash", "-c", script], cwd=repo, capture_output=True, timeout=300,
+                               env=dict(env, PATH=path, HOME=str(tmp_path), **steps["env"]))
+        earned = 0.0
+        for name, command, points in steps["graders"]:
+            done = subprocess.run(["bash", "-c", command], cwd=repo, capture_output=True, text=True, timeout=60,
+                                  env={"PATH": path, "HOME": str(tmp_path), "FORCE_COLOR": "true"})
+            earned += points if done.returncode == 0 else 0.0
+            assert done.stdout.strip(), f"{case}: {name} says nothing"
+        scores[case] = (earned, sum(points for _, _, points in steps["graders"]))
+    assert scores["solution"] == (MAX["tumbling_crates"], MAX["tumbling_crates"])
+    assert 0 < scores["starter"][0] < MAX["tumbling_crates"]
+    assert scores["missing"][0] == 0
 
 
 def test_classroom_verdict(tmp_path, capsys):
