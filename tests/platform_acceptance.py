@@ -293,7 +293,7 @@ class Gradescope:
             doc = read_json(layer.path("/autograder/results/results.json"))
             score = doc.get("score", 0.0) if doc else None
             top = sum(t.get("max_score", 0) for t in doc.get("tests", [])) if doc else None
-            self.ran_as = "root" if "runs as root" in done.stderr else "student"
+            self.ran_as = ran_as(done.stderr, (doc or {}).get("output", ""))
             return score, top, seconds, (doc or {}).get("output", done.stderr[-200:]), doc
 
 
@@ -312,6 +312,8 @@ class PrairieLearn(Gradescope):
                             ignore=shutil.ignore_patterns("__pycache__", "test", "tests", "idlelib", "site-packages"))
             os.makedirs(layer.path(f"{HOST_PYTHON}/lib/python{sys.version_info.major}.{sys.version_info.minor}"
                                    f"/site-packages"), exist_ok=True)
+            os.chmod(layer.path("/root"), 0o711)   # the copy sits at this machine's path, under /root: let
+            # every user reach it, as every user reaches the image's /usr/local/bin/python
             for name in ("python", "python3", "pip", "pip3"):
                 link = layer.path(f"/usr/local/bin/{name}")
                 os.makedirs(os.path.dirname(link), exist_ok=True)
@@ -332,7 +334,12 @@ class PrairieLearn(Gradescope):
                 elif instruction == "RUN":
                     done, _ = layer.shell(argument, env)
                     if done.returncode:
-                        raise CannotRun(f"prairielearn: RUN {argument[:60]} failed: {done.stderr[-300:]}")
+                        log = os.path.join(self.work, "dockerfile-run.log")
+                        with open(log, "w", encoding="utf-8") as handle:
+                            handle.write(done.stdout + "\n" + done.stderr)
+                        errors = [line for line in (done.stdout + done.stderr).splitlines() if "rror" in line]
+                        raise CannotRun(f"prairielearn: RUN {argument[:60]} failed: {' / '.join(errors[:4])} "
+                                        f"(the whole output: {log}, kept with --keep)")
             self.image_env = env
             version = layer.shell("python --version", env)[0].stdout.strip()
             return f"Dockerfile {time.monotonic() - started:.0f} s, {version}"
@@ -346,7 +353,7 @@ class PrairieLearn(Gradescope):
                                         cwd="/grade", timeout=900)
             doc = read_json(layer.path("/grade/results/results.json"))
             top = sum(t.get("max_points", 0) for t in doc.get("tests", [])) if doc else None
-            self.ran_as = "root" if "runs as root" in done.stderr else "student"
+            self.ran_as = ran_as(done.stderr, (doc or {}).get("message", ""))
             score = None if doc is None else round(doc.get("score", 0.0) * (self.max_score or 0), 3)
             return score, top, seconds, (doc or {}).get("message", done.stderr[-200:]), doc
 
@@ -386,9 +393,18 @@ class Classroom(Gradescope):
                 total += points
                 score += points if done.returncode == 0 else 0
                 if done.returncode and not messages:
-                    messages.append(f"{name}: {done.stdout.strip().splitlines()[0] if done.stdout.strip() else ''}")
+                    said = [line for line in done.stdout.strip().splitlines() if line.strip()]
+                    messages.append(f"{name}: " + " ".join(said[-2:] if len(said) > 1 else said))
             self.ran_as = "runner"   # the Actions runner's user: the student's own repository
             return score, total, time.monotonic() - started, "; ".join(messages) or "every step passed", None
+
+
+def ran_as(stderr, message):
+    """Who ran the student's code: grade_submission says on stderr when it falls back to root; "-" if nothing
+    was run (no file to grade)."""
+    if "runs as root" in stderr:
+        return "root"
+    return "student" if message.startswith("Graded") else "-"
 
 
 def dockerfile(path):
