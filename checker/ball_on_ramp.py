@@ -187,9 +187,14 @@ def closest_point(sub, functions):
     cases = _function(sub, functions, "closest_on_segment", "closest_on_segment", 2)
     for case in cases:
         got, want = case["got"], case["want"]
+        where = f"for {case['case']} (p = {_vec(case['p'])}, edge {_vec(case['a'])} to {_vec(case['b'])})"
+        for name, now in (case.get("changed") or {}).items():
+            raise Fail(f"{where}, closest_on_segment() changed its argument {name} from {_vec(case[name])} to "
+                       f"{_vec(now)}. It must leave p, a and b as they are and return a new point (a + ab t): "
+                       "`a += ...` moves the caller's own corner, so circle_polygon()'s later edges and inside() "
+                       "see a different polygon.", HINTS["closest"])
         if _same_point(got, want):
             continue
-        where = f"for {case['case']} (p = {_vec(case['p'])}, edge {_vec(case['a'])} to {_vec(case['b'])})"
         if _bad(got):
             placeholder = " (the handout's placeholder: write step 2)" if "inf" in got["bad"] else ""
             raise Fail(f"{where}, closest_on_segment() returned {got['bad']}{placeholder}; expected the point "

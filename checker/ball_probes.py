@@ -120,12 +120,15 @@ def probe_closest(module, lab_path):
     """The student's closest_on_segment(p, a, b) on each case beside the lesson's and the unclamped answer."""
     cases = []
     for name, p, a, b in segment_cases():
-        got = module.closest_on_segment(Vector2(p), Vector2(a), Vector2(b))
+        given = {"p": Vector2(p), "a": Vector2(a), "b": Vector2(b)}   # copies: a change shows, and stays here
+        got = module.closest_on_segment(given["p"], given["a"], given["b"])
+        changed = {key: list(value) for key, value in given.items() if value != {"p": p, "a": a, "b": b}[key]}
         ab = b - a
         line = a + ab * ((p - a).dot(ab) / ab.dot(ab))
         cases.append({"case": name, "p": list(p), "a": list(a), "b": list(b), "got": answer_point(got),
                       "want": list(reference_closest(p, a, b)), "line": list(line),
-                      "unsquared": list(a + ab * max(0.0, min(1.0, (p - a).dot(ab) / ab.length())))})
+                      "unsquared": list(a + ab * max(0.0, min(1.0, (p - a).dot(ab) / ab.length()))),
+                      "changed": changed})
     return cases
 
 

@@ -280,6 +280,8 @@ SWEPT_TEXT = {
     "old_velocity": "the bullet spent the step with its velocity from before the hit (it went on through)",
     "no_resolve": "the bullet moved on through without a resolve() at the impact",
     "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
+    "far_side": "the impulse was applied on the far side of the bullet; the contact point is on the bullet's "
+                "surface towards the crate, bullet.pos + normal * radius, and its lever arm sets the crate's spin",
 }
 
 
@@ -292,6 +294,7 @@ def swept_move_resolves(sub, functions):
         ok = _same_point(got["bullet"]["pos"], want["bullet"]["pos"]) and \
             _same_point(got["bullet"]["vel"], want["bullet"]["vel"]) and \
             all(_same_point(g["vel"], w["vel"]) and _same_point(g["pos"], w["pos"])
+                and _close(g.get("omega", 0.0), w.get("omega", 0.0))
                 for g, w in zip(got["others"], want["others"]))
         if ok:
             continue
@@ -300,6 +303,10 @@ def swept_move_resolves(sub, functions):
         text = (f"{where}, after swept_move() the bullet is at {_vec(got['bullet']['pos'])} moving "
                 f"{_vec(got['bullet']['vel'])} px/s; expected {_vec(want['bullet']['pos'])} moving "
                 f"{_vec(want['bullet']['vel'])} px/s")
+        spins = [(g.get("omega", 0.0), w.get("omega", 0.0)) for g, w in zip(got["others"], want["others"])
+                 if not _close(g.get("omega", 0.0), w.get("omega", 0.0))]
+        if spins:
+            text += f"; the crate spins at {spins[0][0]:.3f} rad/s, expected {spins[0][1]:.3f}"
         if named:
             text += f": {SWEPT_TEXT[named]}"
         raise Fail(text + ".", HINTS["swept"])

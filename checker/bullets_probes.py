@@ -188,6 +188,10 @@ def impact_cases():
          _bullet((518, 470), (4000, 0)), _crate(36, 100, (540, 510)), STEP, True),
         ("a bullet crossing a tall crate's bounding circle 2 px above the crate",
          _bullet((500, 455), (4000, 0)), _crate(36, 100, (540, 510)), STEP, True),
+        # its centre passes 29.5 px from the centre, 1.2 px outside the 28.3 px bounding circle: only the
+        # bullet's own 3 px radius reaches the corner (a broad test without it lets the bullet tunnel)
+        ("a bullet at 12000 px/s grazing the top corner of a 40 x 40 crate turned 45°",
+         _bullet((300, 540 - 29.5), (12000, 0)), _crate(40, 40, (380, 540), 45), STEP, True),
     ]
 
 
@@ -269,6 +273,12 @@ def swept_cases(module):
         bullet = _bullet((300, 300), (9000, 0))
         return module.BulletWorld([crate, bullet], effects={"ccd", "restitution"}, substeps=1), bullet
 
+    def slanted():   # off-centre and at a slant, with friction and spin: the contact point's lever arm counts
+        crate = _crate(40, 40, (380, 300))
+        bullet = _bullet((300, 290), (9000, 3000))
+        return module.BulletWorld([crate, bullet], effects={"ccd", "restitution", "friction", "rotation"},
+                                  substeps=1), bullet
+
     def nothing():
         bullet = _bullet((100, 100), (5000, 700))
         return module.BulletWorld([bullet], effects={"ccd"}, substeps=1), bullet
@@ -276,11 +286,19 @@ def swept_cases(module):
     return [("a bullet at 12000 px/s hitting the wall 60 px ahead", wall_world(12000.0)),
             ("a bullet at 9000 px/s hitting the wall at a slant", wall_world(9000.0, 200.0, 3000.0)),
             ("a bullet at 9000 px/s hitting a free crate head-on", crate_world),
+            ("a bullet at 9000 px/s striking a free crate 10 px off-centre at a slant (friction, spin)", slanted),
             ("a bullet with nothing in its way", nothing)]
 
 
 def _state(body):
-    return {"pos": [body.pos.x, body.pos.y], "vel": [body.vel.x, body.vel.y]}
+    return {"pos": [body.pos.x, body.pos.y], "vel": [body.vel.x, body.vel.y], "omega": body.omega}
+
+
+def first_hit(world, bullet):
+    """(t, normal, other) of the bullet's first impact this step by the lesson's time_of_impact, or None."""
+    return min((h + (o,) for o in world.bodies if o is not bullet
+                for h in [reference_time_of_impact(bullet, o, STEP)] if h is not None),
+               key=lambda h: h[0], default=None)
 
 
 def probe_swept(module, lab_path):
@@ -303,9 +321,7 @@ def probe_swept(module, lab_path):
             reference_swept_move(world, bullet, STEP)
             want = {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
             world, bullet = make()
-            hit = min((h + (o,) for o in world.bodies if o is not bullet
-                       for h in [reference_time_of_impact(bullet, o, STEP)] if h is not None),
-                      key=lambda h: h[0], default=None)
+            hit = first_hit(world, bullet)
             variants = {}
             if hit is not None:
                 t = hit[0]
@@ -314,6 +330,13 @@ def probe_swept(module, lab_path):
                 variants = {"stops": list(start + velocity * t), "old_velocity": list(start + velocity * STEP),
                             "whole_step": list(start + velocity * t + after * STEP),
                             "no_resolve": list(start + velocity * STEP)}
+                world, bullet = make()   # the contact point on the far side of the bullet: pos - normal * r
+                _, normal, other = first_hit(world, bullet)
+                bullet.pos += bullet.vel * t
+                world.resolve(bullet, other, normal, bullet.pos - normal * bullet.radius)
+                bullet.pos += bullet.vel * (STEP - t)
+                if (bullet.pos - Vector2(want["bullet"]["pos"])).length() > 1e-6:
+                    variants["far_side"] = [bullet.pos.x, bullet.pos.y]
             cases.append({"case": name, "got": got, "want": want, "variants": variants,
                           "t": None if hit is None else hit[0]})
         return cases

@@ -90,6 +90,14 @@ WRONG = [
         t = max(0.0, min(1.0, t))
         return a + ab * t
     """}, why="t is 1 less than it should be: every point beside the edge maps to a"),
+    wrong("closest_moves_the_corner", "`a += ab * t; return a`: the right point, but the caller's corner moves",
+          "closest_point", {2: """
+        t = (p - a).dot(ab) / ab.dot(ab)
+        t = max(0.0, min(1.0, t))
+        a += ab * t
+        return a
+    """}, why="every answer is right, but a (a corner of the caller's polygon) is moved in place: circle_polygon's "
+              "later edges and inside() see a different polygon"),
     # ---- step 3: the center inside
     wrong("inside_not_flipped", "centre inside: keeps the normal towards the nearest edge", "inside_case", {3: """
         if inside(center, points):
@@ -189,6 +197,13 @@ CORRECT = [
             """, 5: """
                 return mass * radius * radius / 2
             """}, why="along = t |ab|, clamped to [0, |ab|]: the same point"),
+    correct("correct_copy_moved_in_place", "copies a (a.copy()), then moves the copy with += (the caller's a is untouched)",
+            {2: """
+                t = max(0.0, min(1.0, (p - a).dot(ab) / ab.dot(ab)))
+                point = a.copy()
+                point += ab * t
+                return point
+            """}, why="an in-place += on a new Vector2 changes nothing the caller holds"),
     correct("correct_named_parts", "inside case with a named normal; push-out with named shares; halfway contact point",
             {3: """
                 if inside(center, points):

@@ -173,7 +173,21 @@ WRONG = [
                       bounding_radius(points, other.pos), dt) is not None:
             return None
     """}, why="every crate that could be hit is skipped"),
+    wrong("broad_without_bullet_radius", "the broad test treats the bullet as a point (radius 0)", "broad_test",
+          {4: """
+        if circle_toi(bullet.pos, bullet.vel, 0, other.pos, Vector2(), bounding_radius(points, other.pos),
+                      dt) is None:
+            return None
+    """}, why="a bullet whose centre passes 1.2 px outside a turned crate's bounding circle grazes its corner: "
+              "the solution finds the hit, this broad test lets it tunnel"),
     # ---- step 5: the swept move
+    wrong("swept_contact_far_side", "resolves at the far side of the bullet, bullet.pos - normal * radius",
+          "swept_move_resolves", {5: """
+        bullet.pos += bullet.vel * t
+        world.resolve(bullet, other, normal, bullet.pos - normal * bullet.radius)
+        bullet.pos += bullet.vel * (dt - t)
+    """}, why="an off-centre, slanted hit with friction: the impulse's lever arm is wrong, so the crate's spin and "
+              "the bullet's bounce differ from the lesson's"),
     wrong("swept_stops_at_impact", "moves to the impact and resolves, but never spends the rest of the step",
           "swept_move_resolves", {5: """
         bullet.pos += bullet.vel * t
