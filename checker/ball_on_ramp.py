@@ -276,6 +276,11 @@ def push_out_split(sub, functions):
     """Step 4: separate() splits the push-out by inverse mass (a static body never moves)."""
     cases = _function(sub, functions, "separate", "separate", 4)
     for case in cases:
+        if case.get("normal_after") is not None:
+            raise Fail(f"in '{case['case']}', separate() changed its argument normal from {_vec(case['normal'])} to "
+                       f"{_vec(case['normal_after'])}. Scale a new vector (normal * share) instead of the caller's "
+                       "normal (normal *= ...): the World goes on using that normal for the contact's impulses.",
+                       HINTS["split"])
         for body in ("a", "b"):
             got, want, before = case["after"][body], case["want"][body], case["before"][body]
             if _same_point(got, want):

@@ -236,8 +236,10 @@ def probe_separate(module, lab_path):
         push = max(depth - slop, 0.0) * percent
         want = {"a": list(a.pos - normal * (push * a.inv_mass / total)),
                 "b": list(b.pos + normal * (push * b.inv_mass / total))}
-        module.separate(a, b, Vector2(normal), depth)
+        given = Vector2(normal)   # a copy: a change to it shows
+        module.separate(a, b, given, depth)
         cases.append({"case": name, "normal": list(normal), "depth": depth, "push": push,
+                      "normal_after": None if given == normal else list(given),
                       "inv": {"a": a.inv_mass, "b": b.inv_mass}, "mass": {"a": a.mass, "b": b.mass},
                       "before": before, "after": {"a": answer_point(a.pos), "b": answer_point(b.pos)},
                       "want": want})

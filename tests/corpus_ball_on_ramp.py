@@ -120,6 +120,12 @@ WRONG = [
         a.pos -= normal * (push * b.inv_mass / total)
         b.pos += normal * (push * a.inv_mass / total)
     """}, why="against a static ramp the ball stays and the ramp moves"),
+    wrong("split_scales_the_normal", "`normal *= push / total`, then moves A and B by it", "push_out_split", {4: """
+        normal *= push / total
+        a.pos -= normal * a.inv_mass
+        b.pos += normal * b.inv_mass
+    """}, why="the positions are right, but the caller's normal is scaled in place: the impulses that follow use "
+              "a normal that is no longer a unit vector"),
     # ---- step 5: the inertia
     wrong("inertia_ring", "I = m r² (a ring's)", "ball_inertia", {5: """
         return mass * radius ** 2
