@@ -238,8 +238,10 @@ def centroid(sub, functions):
             named = (" That is the average of the corners, which is the centre of mass only for triangles and "
                      "symmetric shapes: weight by area.")
         elif _close(got[0], -want[0], scale) and _close(got[1], -want[1], scale):
-            named = (" That is the centroid with its sign flipped: divide by the signed area A (polygon_area), not "
-                     "by -A or |A|, so that either winding works.")
+            named = (" That is the centroid with its sign flipped: the weights a × b and the area A must carry the "
+                     "same sign, both signed (a × b over the signed A from polygon_area) or both without it "
+                     "(|a × b| over |A|); here one of them lost its sign, which shows when the points wind the "
+                     "other way.")
         elif _close_point(got, _without_closing_edge(case), scale):
             named = (" The edge from the last point back to the first is missing: the loop must run over every "
                      "edge, (i + 1) % len(points) wrapping round.")

@@ -103,6 +103,13 @@ WRONG = [
             total += (a + b) * cross(a, b)
         return total / (6 * abs(area))
     """}, why="the reversed outlines give -C"),
+    wrong("centroid_abs_cross", "weights each edge by |a × b| but divides by the signed A", "centroid", {3: """
+        total = Vector2()
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            total += (a + b) * abs(cross(a, b))
+        return total / (6 * area)
+    """}, why="the reversed outlines give -C; the message must not tell it to use the signed A, which it does"),
     wrong("centroid_missing_factor", "divides by 2A (the factor 3 of the 6A is missing)", "centroid", {3: """
         total = Vector2()
         for i, a in enumerate(points):
