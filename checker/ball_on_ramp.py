@@ -304,6 +304,9 @@ def push_out_split(sub, functions):
                 total = case["inv"]["a"] + case["inv"]["b"]
                 if total and _close(moved, case["push"] * case["inv"][other] / total):
                     text += f": {letter} got {other.upper()}'s share (the shares are swapped)"
+                elif total and not _close(total, 1.0) and _close(moved, case["push"] * case["inv"][body]):
+                    text += (f": that is push × 1/m without dividing by the total 1/mA + 1/mB = {total:.3g}, "
+                             "so the two shares do not add up to the push")
                 elif should and _close(moved, should):
                     text += ": the right distance but the wrong way (A moves back along the normal, B forward)"
             raise Fail(text + ".", HINTS["split"])

@@ -120,6 +120,10 @@ WRONG = [
         a.pos -= normal * (push * b.inv_mass / total)
         b.pos += normal * (push * a.inv_mass / total)
     """}, why="against a static ramp the ball stays and the ramp moves"),
+    wrong("push_missing_total", "each share is push × 1/m, never divided by the total", "push_out_split", {4: """
+        a.pos -= normal * (push * a.inv_mass)
+        b.pos += normal * (push * b.inv_mass)
+    """}, why="a crate (1/m 0.21) and a ball (1/m 2.2): the ball moves 2.2 times the push, not 0.91 of it"),
     wrong("split_scales_the_normal", "`normal *= push / total`, then moves A and B by it", "push_out_split", {4: """
         normal *= push / total
         a.pos -= normal * a.inv_mass
