@@ -335,6 +335,8 @@ def ball_inertia(sub, functions):
         named = next((text for f, text in INERTIA_MISTAKES.items() if _close(factor, f)), None)
         if named is None and _close(got, 0.5 * case["mass"] * case["radius"]):
             named = "½ m r: the radius is not squared"
+        if named is None and not _close(case["mass"], 1.0) and _close(got, 0.5 * case["radius"] ** 2):
+            named = "½ r²: the mass is left out"
         raise Fail(f"{where}, disc_inertia() returned {got:.4g}; expected ½ m r² = {want:.4g}"
                    + (f" (yours is {named})" if named else "") + ".", HINTS["inertia"])
     return Passed(f"I = ½ m r² in all {len(cases)} cases", value=cases)

@@ -134,6 +134,9 @@ WRONG = [
     wrong("inertia_ring", "I = m r² (a ring's)", "ball_inertia", {5: """
         return mass * radius ** 2
     """}, why="twice ½ m r² for every mass and radius"),
+    wrong("inertia_ignores_mass", "I = ½ r²: the mass left out", "ball_inertia", {5: """
+        return 0.5 * radius ** 2
+    """}, why="right only for a mass of 1"),
     wrong("inertia_sphere", "I = 2/5 m r² (a solid sphere's)", "ball_inertia", {5: """
         return 2 / 5 * mass * radius ** 2
     """}, why="0.4 m r² instead of 0.5 m r²"),

@@ -135,6 +135,15 @@ WRONG = [
             den += area2
         return mass * num / den
     """}, why="6 times the lesson's value everywhere"),
+    wrong("inertia_ignores_mass", "leaves out the mass: returns the inertia per unit mass", "inertia_sum", {4: """
+        num = den = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            area2 = abs(cross(a, b))
+            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
+            den += area2
+        return num / (6 * den)
+    """}, why="right only for a mass of 1; the probe's masses run from 0.4 to 4.2"),
     wrong("inertia_dot_weight", "wrong operand: weighs each triangle by |a · b| instead of |a × b|", "inertia_sum", {4: """
         num = den = 0.0
         for i, a in enumerate(points):
