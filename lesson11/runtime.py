@@ -39,6 +39,10 @@ import pygame
 
 from .physics2d import Body, box_points
 
+# The labs play no sound: without a sound card SDL's audio prints 9 ALSA lines at pygame.init(). A driver set
+# in the environment is kept.
+os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
+
 ENV_VAR = "LESSON11_LAB_SETTINGS"
 SETTINGS = {"frames": int, "fps": (int, float), "seed": (int, float, str), "script": list, "scenario": list,
             "record": str, "record_every": int, "screenshot": str}

@@ -213,3 +213,17 @@ def test_solution_with_the_same_seed_runs_the_same(tmp_path):
     first, second, other = runs
     assert first.frames[-1]["bodies"] == second.frames[-1]["bodies"]
     assert other.frames[0]["bodies"] != first.frames[0]["bodies"]
+
+
+def test_a_lab_window_prints_no_sound_errors_on_a_machine_without_sound(tmp_path):
+    """The labs play no sound: with SDL_AUDIODRIVER unset, pygame.init() in a lab must not try the sound card
+    (on this machine, which has none, SDL's ALSA backend printed 9 'ALSA lib ...' lines)."""
+    settings = tmp_path / "settings.json"
+    settings.write_text(json.dumps({"frames": 3, "fps": 60, "seed": 11}), encoding="utf-8")
+    env = {k: v for k, v in os.environ.items() if k != "SDL_AUDIODRIVER"}
+    env.update(SDL_VIDEODRIVER="dummy", LESSON11_LAB_SETTINGS=str(settings))
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    done = subprocess.run([sys.executable, os.path.join(root, "solutions", "tumbling_crates.py")], cwd=tmp_path,
+                          env=env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "ALSA" not in done.stderr and "Simulated" in done.stdout
