@@ -210,7 +210,8 @@ def main():
     debug = True
     running = True
     panel = LabPanel()  # solver panel
-    # Step 8: click to drop balls (left) and crates (right) on the ramp; watch a ball roll and knock crates over.
+    # Step 8: left-click to drop a ball and right-click to drop a crate on the ramp; watch a ball roll and knock
+    # crates over.
     while running and lab.frame_budget():  # lab runtime: frame_budget()
         dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)
         for event in lab.events():  # lab runtime: pygame.event.get()
