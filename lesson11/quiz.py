@@ -1,6 +1,6 @@
 """The lesson's quick quiz in the terminal: python -m lesson11.quiz
 
-Five multiple-choice questions (A-D). After each answer the quiz says whether
+Five multiple-choice questions (A-D), folded to the terminal's width. After each answer the quiz says whether
 it was right and gives a one-line explanation; at the end it prints the score.
 An answer that is not A, B, C or D is asked again; end of input (Ctrl-D, or a
 closed pipe) stops the quiz cleanly with the score so far, and so does Ctrl-C
@@ -15,7 +15,9 @@ The questions live in lesson11/quiz_questions.json: a list of objects with
 import argparse
 import json
 import os
+import shutil
 import sys
+import textwrap
 
 QUESTIONS_FILE = os.path.join(os.path.dirname(__file__), "quiz_questions.json")
 LETTERS = ("A", "B", "C", "D")
@@ -69,6 +71,12 @@ def read_answer(ask):
         print(f"  Please answer with one letter, A, B, C or D (you typed {reply.strip()!r}).")
 
 
+def wrap(text, indent=""):
+    """`text` folded to the terminal's width (80 columns when it is not a terminal); later lines get `indent`."""
+    width = max(40, shutil.get_terminal_size((80, 24)).columns - 1)
+    return textwrap.fill(text, width=width, subsequent_indent=indent, break_on_hyphens=False)
+
+
 def score_line(right, asked, total):
     """The score out of all `total` questions, e.g. "4 of 5 (1 not answered)"."""
     return f"{right} of {total}" + (f" ({total - asked} not answered)" if asked < total else "")
@@ -83,9 +91,9 @@ def run_quiz(questions, ask=input):
     right = asked = 0
     try:
         for number, item in enumerate(questions, start=1):
-            print(f"\nQuestion {number} of {len(questions)}: {item['question']}")
+            print("\n" + wrap(f"Question {number} of {len(questions)}: {item['question']}"))
             for letter in LETTERS:
-                print(f"  {letter}) {item['choices'][letter]}")
+                print(wrap(f"  {letter}) {item['choices'][letter]}", indent="     "))
             letter = read_answer(ask)
             if letter is None:
                 print("\n(end of input: stopping here)")
@@ -93,9 +101,9 @@ def run_quiz(questions, ask=input):
             asked += 1
             if letter == item["answer"]:
                 right += 1
-                print(f"  Right! {item['explanation']}")
+                print(wrap(f"  Right! {item['explanation']}", indent="  "))
             else:
-                print(f"  Not quite: the answer is {item['answer']}. {item['explanation']}")
+                print(wrap(f"  Not quite: the answer is {item['answer']}. {item['explanation']}", indent="  "))
     except KeyboardInterrupt:
         print(f"\nStopped (Ctrl-C). Score so far: {score_line(right, asked, len(questions))}.")
         raise
@@ -122,6 +130,9 @@ def main(argv=None):
         run_quiz(questions)
     except KeyboardInterrupt:
         return 130  # the usual status after Ctrl-C; run_quiz has printed the score so far
+    except BrokenPipeError:   # the reader went away (e.g. | head): stop quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
     return 0
 
 

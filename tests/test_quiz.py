@@ -37,11 +37,33 @@ def test_the_lessons_five_questions_with_answers_and_one_line_explanations():
         assert len(set(item["choices"].values())) == 4
     assert len(set(KEY)) >= 3  # the right answers are not all in one place
     # the right choices say what the lesson says
-    assert "not touching" in QUESTIONS[0]["choices"][KEY[0]]
+    assert "separating axis" in QUESTIONS[0]["choices"][KEY[0]]
     assert "from A to B" in QUESTIONS[1]["choices"][KEY[1]]
-    assert "turns body A" in QUESTIONS[2]["choices"][KEY[2]]
-    assert "never larger than mu times the normal impulse" in QUESTIONS[3]["choices"][KEY[3]]
-    assert "time of impact" in QUESTIONS[4]["choices"][KEY[4]]
+    assert "turns A instead of moving it" in QUESTIONS[2]["choices"][KEY[2]]
+    assert "at most mu times the normal impulse" in QUESTIONS[3]["choices"][KEY[3]]
+    assert "swept paths first touch" in QUESTIONS[4]["choices"][KEY[4]]
+
+
+def test_the_answer_cannot_be_told_by_its_length():
+    """Distractors as long as the answer: the right choice is never more than 10 % longer than the longest
+    wrong one, and it is the longest choice in at most one question (it was in 4 of 5, 138 characters
+    against at most 78)."""
+    longest = 0
+    for item in QUESTIONS:
+        right = len(item["choices"][item["answer"]])
+        wrong_lengths = [len(text) for letter, text in item["choices"].items() if letter != item["answer"]]
+        assert right <= 1.1 * max(wrong_lengths), item["question"]
+        assert min(wrong_lengths) >= 0.8 * right, item["question"]
+        longest += right > max(wrong_lengths)
+    assert longest <= 1
+
+
+def test_long_lines_fold_to_the_terminal(monkeypatch, capsys):
+    monkeypatch.setattr(quiz.shutil, "get_terminal_size", lambda fallback=None: os.terminal_size((60, 24)))
+    quiz.run_quiz(QUESTIONS[:1], ask=lambda prompt: KEY[0])
+    lines = capsys.readouterr().out.splitlines()
+    assert max(len(line) for line in lines) <= 59
+    assert any(line.startswith("     ") for line in lines)   # a choice's second line, under its text
 
 
 def test_all_right_scores_five():
@@ -56,7 +78,8 @@ def test_wrong_answers_are_corrected_with_the_explanation():
     result = run_quiz("\n".join(answers) + "\n")
     assert result.returncode == 0
     for item in QUESTIONS:
-        assert f"Not quite: the answer is {item['answer']}. {item['explanation']}" in result.stdout
+        said = " ".join(result.stdout.split())   # the text folded to the terminal's width, joined again
+        assert f"Not quite: the answer is {item['answer']}. {item['explanation']}" in said
     assert "Right!" not in result.stdout
     assert "Score: 0 of 5." in result.stdout
 
