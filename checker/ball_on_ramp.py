@@ -54,20 +54,20 @@ INSIDE_DEPTH = 1.0     # px of overlap left after 0.5 s; solution: 0.41 (the pus
 HINTS = {
     "clamp": Hint(2, "clamp t to the segment",
                   "The closest point of an EDGE is not the closest point of its infinite line: compute "
-                  "t = (p - a)·ab / (ab·ab), clamp it with max(0.0, min(1.0, t)), and return a + ab * t. Without "
-                  "the clamp a ball near a corner touches the edge's line far beyond the polygon."),
+                  "t = (p - a)·ab / (ab·ab), then keep t within [0, 1] before you build the point a + ab t. "
+                  "Without the clamp a ball near a corner touches the edge's line far beyond the polygon."),
     "closest": Hint(2, "the closest point on one edge",
                     "Project p onto the edge: t = (p - a)·ab / (ab·ab) (divide by the squared length, so t runs "
-                    "from 0 at a to 1 at b), clamp t to [0, 1], and return a + ab * t."),
+                    "from 0 at a to 1 at b), clamp t to [0, 1]; the point is a + ab t."),
     "inside": Hint(3, "the center inside: push out the other way",
                    "When the ball's center is already inside the polygon, the nearest edge is its way out, and "
                    "the normal (from the ball into the polygon) must point away from that edge: return "
                    "-offset / dist (flipped) and the depth radius + dist. Unflipped, the push drives the ball on "
                    "through the polygon."),
     "split": Hint(4, "split the push-out by inverse mass",
-                  "The push is shared by inverse mass: A moves back by push * a.inv_mass / total, B forward by "
-                  "push * b.inv_mass / total (total = a.inv_mass + b.inv_mass). A static floor (inv_mass 0) "
-                  "never moves, and a light ball moves more than a heavy crate."),
+                  "The push is shared by inverse mass: each body's share is its own 1/m over the total "
+                  "1/m_A + 1/m_B, A moving back along the normal and B forward, so the shares add up to the "
+                  "push. A static floor (1/m = 0) never moves, and a light ball moves more than a heavy crate."),
     "inertia": Hint(5, "a solid disc's moment of inertia",
                     "A solid disc (the ball) has I = ½ m r², half of a ring's m r²: mass near the center is easy "
                     "to spin. The wrong I changes how fast the ball rolls down the ramp (a = g sin θ / (1 + I / m r²))."),
@@ -76,9 +76,10 @@ HINTS = {
                     "normal points out of the ball). At the center, friction has no lever arm and the ball slides "
                     "without ever turning; on the wrong side it spins backwards."),
     "friction_missing": Hint(7, "friction makes it roll",
-                             "Without a friction impulse the ball slides down the ramp like an ice cube. Compute "
-                             "kt (with both spin terms), jt = -rel·t / kt, clamp it to [-mu * j, mu * j] and apply "
-                             "t * jt at the contact with apply_impulse(a, b, t * jt, ra, rb)."),
+                             "Without a friction impulse the ball slides down the ramp like an ice cube. Find kt "
+                             "along the tangent (with both spin terms), the impulse -(rel · t) / kt that would stop "
+                             "the slip, clamp it to [-μ j, μ j], and apply it along the tangent at the contact, with "
+                             "the same lever arms as the normal impulse."),
     "friction_sign": Hint(7, "the sign of the friction impulse",
                           "Friction opposes the slip: jt = -rel·t / kt, and the clamp keeps its sign. With the sign "
                           "flipped the ball spins up the wrong way and speeds up its slide."),
@@ -91,9 +92,9 @@ HINTS = {
                         "(rb × t)² / I_B. Without them friction stops the slip three times too hard for a ball "
                         "and the contact point overshoots back and forth."),
     "friction_centre": Hint(7, "friction acts at the contact point",
-                            "Apply the friction impulse at the contact, with the same ra and rb as the normal "
-                            "impulse: apply_impulse(a, b, t * jt, ra, rb). At the centres (zero offsets) it cannot "
-                            "turn the ball, so it never rolls."),
+                            "Apply the friction impulse at the contact, with the same lever arms ra and rb as the "
+                            "normal impulse. At the centres (zero lever arms) it cannot turn the ball, so it never "
+                            "rolls."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
                     "everything else (the constants, the scene, make_ball, build, the World and its hooks, the "

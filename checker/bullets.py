@@ -65,17 +65,17 @@ HINTS = {
                      "centre.distance_to(p) over the points. Half the width or the nearest corner leaves corners "
                      "outside, and a bullet aimed at a corner is skipped by the broad test."),
     "broad": Hint(4, "the broad test before the exact test",
-                  "Call circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(), "
-                  "bounding_radius(points, other.pos), dt); only when it returns None (is None: 0.0 is a hit "
+                  "First test the bullet, with its own radius, against the crate's bounding circle (the crate "
+                  "held still) with circle_toi(). Only when that finds no contact this step (None; 0.0 is a hit "
                   "that happens now) return None at once. Otherwise go on to the exact swept test."),
     "broad_missing": Hint(4, "skip what the bullet cannot reach",
                           "Your time_of_impact() ran the exact swept test on a crate the bullet cannot reach this "
                           "step. The broad test is the point of step 4: one circle_toi() against the bounding "
                           "circle, and return None when it finds no contact."),
     "swept": Hint(5, "move to the impact, resolve, spend the rest",
-                  "Move the bullet to its time of impact (bullet.pos += bullet.vel * t), resolve there with "
-                  "world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius), then move it for the "
-                  "rest of the step, dt - t, with its NEW velocity."),
+                  "Move the bullet along its velocity to where it is at the time of impact t; resolve there, at "
+                  "the point of the bullet's surface that touches the other body (one radius from its centre "
+                  "along the normal); then move it for the rest of the step, dt - t, with its NEW velocity."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
                     "everything else (the constants, the wall, the modes, BulletWorld, the `# lab runtime` lines) "

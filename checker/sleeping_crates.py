@@ -47,8 +47,9 @@ THROW_HEIGHT = 60.0    # px the thrown crate must rise (it did leave the floor);
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
     "timer": Hint(2, "the sleep timer",
-                  "While the crate is calm, speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN (spin has a sign: use "
-                  "abs), return timer + dt, the seconds it has been calm. As soon as either is at or above its "
+                  "While the crate is calm, its speed below SLEEP_SPEED and the size of its spin below SLEEP_SPIN "
+                  "(spin has a sign), the timer grows by dt: the seconds it has been calm. As soon as either is at "
+                  "or above its "
                   "threshold return 0.0: the timer starts again, so a crate that is slow for one instant (at the "
                   "top of a throw) never reaches SLEEP_AFTER. dt is in seconds, not frames."),
     "moves": Hint(3, "skip sleeping bodies",

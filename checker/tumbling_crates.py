@@ -68,9 +68,9 @@ HINTS = {
                      "on every edge normal of BOTH shapes, return None only when one axis shows a gap, and "
                      "otherwise return (normal, depth) for the axis with the smallest overlap."),
     "sat_depth": Hint(2, "the SAT loop",
-                      "Keep the smallest overlap min(max_a, max_b) - max(min_a, min_b) over the edge normals of "
-                      "both shapes (edge_normals(pa) + edge_normals(pb)); that axis and overlap are the normal and "
-                      "depth (the minimum translation vector)."),
+                      "Test the edge normals of BOTH shapes. On each axis the overlap is the lower of the two "
+                      "shadows' ends minus the higher of their starts; keep the axis with the smallest overlap: "
+                      "that axis and overlap are the normal and the depth (the minimum translation vector)."),
     "sat_apart": Hint(2, "one gap means apart",
                       "A single axis with a gap means 'not touching': return None as soon as an overlap is <= 0, "
                       "and test the edge normals of both shapes (the diamond's diagonal axis shows the gap)."),
@@ -80,29 +80,30 @@ HINTS = {
                       "best_depth)."),
     "normal_flipped": Hint(3, "the normal must point from A to B",
                            "Crates are shot apart (or pulled into each other) because the normal points the wrong "
-                           "way about half the time. Flip the axis (not the depth) when "
-                           "(centre_of(pb) - centre_of(pa)) · axis < 0."),
+                           "way about half the time. Check the dot product of the axis with center_b - center_a: "
+                           "when it is negative, turn the axis round (the axis, not the depth)."),
     "k_spin": Hint(4, "the spin terms of the effective mass",
-                   "A corner hit should feel lighter: add (ra × n)² / I_A + (rb × n)² / I_B to k, that is "
-                   "ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia, or the impulse is the wrong size and "
-                   "corners bounce and crates slide off the ramp."),
+                   "A corner hit should feel lighter: k needs both spin terms, (ra × n)² / I_A and (rb × n)² / "
+                   "I_B, beside the two inverse masses, or the impulse is the wrong size and corners bounce and "
+                   "crates slide off the ramp."),
     "friction_clamp": Hint(5, "Coulomb's clamp on friction",
                            "If a glancing touch stops a crate dead, the friction impulse isn't clamped: friction may "
-                           "never be bigger than mu times the normal impulse j, so keep jt between -mu * j and "
-                           "mu * j: jt = max(-mu * j, min(mu * j, jt)). Inside that range, leave jt as it is."),
+                           "never be bigger than μ times the normal impulse j (Coulomb's law), so keep jt within "
+                           "[-μ j, μ j]. Inside that range, leave jt as it is."),
     "friction_sign": Hint(5, "the sign of the friction impulse",
                           "If sliding crates spin up instead of slowing down, a sign in the friction or spin update "
                           "is flipped: jt = -rel·t / kt opposes the slip, and the clamp must keep its sign."),
     "spin_missing": Hint(6, "the two spin updates in apply_impulse",
-                         "If crates land but never tip over, the spin lines in apply_impulse are missing: "
-                         "a.omega -= cross(ra, impulse) * a.inv_inertia and b.omega += cross(rb, impulse) * b.inv_inertia."),
+                         "If crates land but never tip over, the spin lines in apply_impulse are missing: each "
+                         "body's spin changes by its lever arm crossed with the impulse (r × P), times its inverse "
+                         "inertia; A uses -=, B uses +=, exactly like the velocity lines."),
     "spin_swapped": Hint(6, "the signs of the spin updates",
                          "The spin lines in apply_impulse have swapped signs: A uses -=, B uses +=, exactly like the "
                          "velocity lines. With the wrong signs corners spin the wrong way and crates fly off."),
     "spin_terms": Hint(6, "the two spin updates in apply_impulse",
-                       "Each body's spin changes by its own lever arm crossed with the impulse, times its own inverse "
-                       "inertia: a.omega -= cross(ra, impulse) * a.inv_inertia, b.omega += cross(rb, impulse) * "
-                       "b.inv_inertia."),
+                       "Each body's spin changes by its own lever arm crossed with the impulse (ra × P for A, "
+                       "rb × P for B), times its own inverse inertia; A uses -=, B uses +=, exactly like the "
+                       "velocity lines."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
                     "else (gravity, MAX_CRATES, the scene, the World, the `# lab runtime` lines, the final print) "
@@ -241,8 +242,8 @@ def sat_axes(sub, functions):
     hits = [case for case in cases if case["lesson"] is not None]
     if all(case["got"] is None for case in hits):
         line = _placeholder_line(sub.source)
-        placeholder = (f" Line {line} of {sub.name} is the handout's placeholder `return None`, still there after "
-                       "your loop: delete it.") if line else ""
+        placeholder = (f" Line {line} of {sub.name} is the handout's placeholder `return None`, still there at "
+                       "the end of step 2: replace it with your code.") if line else ""
         raise Fail(f"sat() returned None for every pair, even the {len(hits)} that overlap (e.g. "
                    f"{_label(hits[0])}, {hits[0]['lesson']['depth']:.2f} px).{placeholder}", HINTS["sat_none"])
     for case in cases:
