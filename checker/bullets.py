@@ -185,8 +185,8 @@ def _toi_ok(got, want):
 
 @CHECKS.check(depends=["loads"], max_score=2)
 def toi_matches_root(sub, functions):
-    """Step 2 (criterion 3): circle_toi() equals the analytic first-contact time within 1e-9 s (head-on, glancing,
-    already touching, moving apart, parallel paths, missing)."""
+    """Step 2: circle_toi() equals the analytic first-contact time within 1e-9 s (head-on, glancing, already
+    touching, moving apart, parallel paths, missing), the lab's done-criterion 3."""
     cases = _function(sub, functions, "circle_toi", "circle_toi", 2)
     worst = 0.0
     for case in cases:

@@ -24,6 +24,7 @@ grader runs the scenes only if such a check has every dependency passed
 probe run, not five.
 """
 import inspect
+import re
 from dataclasses import dataclass, field
 
 PASS, FAIL, SKIP, ERROR = "pass", "fail", "skip", "error"
@@ -114,6 +115,10 @@ class Registry:
     def max_score(self):
         return sum(c.max_score for c in self.checks)
 
+    def by_id(self, check_id):
+        """The registered check with this id."""
+        return next(c for c in self.checks if c.id == check_id)
+
     def run(self, submission, stop_at_scenarios=False, state=None):
         """Run the checks in order; returns a RunState (results so far, values handed on).
 
@@ -128,8 +133,8 @@ class Registry:
                 break
             blocked = [d for d in chk.depends if state.results[d].status != PASS]
             if blocked:
-                state.add(Result(chk.id, chk.description, SKIP, message=f"skipped: needs '{blocked[0]}' to pass first",
-                                 max_score=chk.max_score))
+                state.add(Result(chk.id, chk.description, SKIP, max_score=chk.max_score,
+                                 message=f"skipped: needs {needed(self.by_id(blocked[0]))} to pass first"))
                 continue
             try:
                 returned = chk.func(submission, *(state.values[d] for d in chk.depends))
@@ -183,8 +188,15 @@ class RunState:
         return [self.results[c.id] for c in registry.checks if c.id in self.results]
 
 
+def needed(check):
+    """How a skipped check names the one it waits for: "step 5 (resolve_friction)" when that check grades a lesson
+    step (its description starts "Step N:"), else its id in quotes."""
+    step = re.match(r"Step (\d+)\b", check.description)
+    return f"step {step.group(1)} ({check.id})" if step else f"'{check.id}'"
+
+
 def skipped_all(registry, message):
     """Every check of a lab marked as an error with one message (e.g. the run's time limit ran out)."""
     return [Result(c.id, c.description, ERROR if i == 0 else SKIP, message=message if i == 0 else
-                   f"skipped: needs '{registry.checks[0].id}' to pass first", max_score=c.max_score)
+                   f"skipped: needs {needed(registry.checks[0])} to pass first", max_score=c.max_score)
             for i, c in enumerate(registry.checks)]

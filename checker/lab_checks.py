@@ -48,9 +48,8 @@ def handout_unchanged(sub, starter_path, hint):
         comparison = handout.compare(sub.source, starter, sub.name, "the handout")
     except handout.MarkerError as exc:
         raise Fail(f"{exc}.", hint)
-    added = f" (added imports: {'; '.join(comparison.added_imports)})" if comparison.added_imports else ""
-    if comparison.same:
-        return "the code outside the steps is the handout's" + added
+    if comparison.same:   # the check's own title says the rest: only the imports the file adds are news
+        return f"added imports: {'; '.join(comparison.added_imports)}" if comparison.added_imports else ""
     listed = "; ".join(comparison.problems[:handout.MAX_PROBLEMS])
     more = len(comparison.problems) - handout.MAX_PROBLEMS
     text = f"code outside the steps differs from the handout: {listed}" + (f"; and {more} more" if more > 0 else "")
