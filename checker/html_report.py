@@ -10,7 +10,7 @@ messages, hints and pictures (checker/pictures.py).
 import html
 
 from .outputs import submission_names
-from .report import SYMBOL, NotGraded, _summary_line, message_of, write_atomic
+from .report import SYMBOL, NotGraded, _summary_line, check_label, lab_means, message_of, write_atomic
 
 STATUS_ORDER = ("pass", "fail", "error", "skip")
 COLOURS = {"pass": "#3a9a5b", "fail": "#d0453a", "error": "#7d1d17", "skip": "#b9bcc4"}
@@ -71,7 +71,7 @@ def _first_problem(row):
     if isinstance(row, NotGraded):
         return f"not graded: {row.message}"
     first = next((c for c in row.results if c.status != "pass"), None)
-    return f"{first.id} ({first.status})" if first else ""
+    return f"{check_label(first)}: {first.status}" if first else ""
 
 
 def _check_ids(rows):
@@ -79,7 +79,7 @@ def _check_ids(rows):
     ids = []
     for row in rows:
         for result in row.results:
-            key = (row.lab.id if row.lab is not None else "", result.id)
+            key = (row.lab.id if row.lab is not None else "", result.id, check_label(result))
             if key not in ids:
                 ids.append(key)
     return ids
@@ -92,7 +92,7 @@ def histogram(rows):
     out = ['<p class="legend">' + "".join(f'<span style="background:{COLOURS[s]}"></span>{s}' for s in STATUS_ORDER)
            + "</p>", '<table id="histogram"><thead><tr><th>check</th><th>files by result</th><th>passed</th>'
            '<th>mean points</th></tr></thead><tbody>']
-    for lab_id, check_id in _check_ids(rows):
+    for lab_id, check_id, shown in _check_ids(rows):
         results = [r for row in rows if row.lab is not None and row.lab.id == lab_id
                    for r in row.results if r.id == check_id]
         counts = {s: sum(1 for r in results if r.status == s) for s in STATUS_ORDER}
@@ -101,7 +101,7 @@ def histogram(rows):
                       f'title="{counts[s]} {s}"></span>' for s in STATUS_ORDER if counts[s])
         mean = sum(r.score for r in results) / total
         top = max((r.max_score for r in results), default=0)
-        label = f"{labs.get(lab_id, lab_id)}: {check_id}" if several else check_id
+        label = f"{labs.get(lab_id, lab_id)}: {shown}" if several else shown
         out.append(f'<tr data-check="{_e(check_id)}"><td>{_e(label)}</td><td><div class="bar">{bar}</div></td>'
                    f'<td class="num">{counts["pass"]}/{len(results)}</td><td class="num">{mean:.2g}/{top:g}</td></tr>')
     out.append("</tbody></table>")
@@ -154,13 +154,15 @@ def html_text(rows, pictures=None, title="Lesson 11 lab checker: class report"):
     pictures = pictures or {}
     names = submission_names([r.path for r in rows])
     graded = [r for r in rows if not isinstance(r, NotGraded)]
-    mean = sum(r.score for r in rows) / len(rows) if rows else 0.0
+    means = "; ".join(f"{title}: {files} file(s), mean {100 * fraction:.0f} % of its points"
+                      for title, (files, fraction) in lab_means(rows).items())
     parts = [
         "<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
         '<meta name="viewport" content="width=device-width,initial-scale=1">',
         f"<title>{_e(title)}</title><style>{CSS}</style></head><body>",
         f"<h1>{_e(title)}</h1>",
-        f"<p>{len(rows)} file(s), {len(graded)} graded; mean score {mean:.3g}. {_e(_summary_line(rows))}</p>",
+        f"<p>{len(rows)} file(s), {len(graded)} graded. {_e(_summary_line(rows))}</p>",
+        f"<p>{_e(means or 'No lab files.')}</p>",
         "<h2>Where the class struggled: results per check</h2>", histogram(rows),
         "<h2>Files</h2><p>Click a heading to sort; click a file to see its checks.</p>", summary_table(rows, names),
         "<h2>Checks of each file</h2>",

@@ -31,8 +31,11 @@ import html
 import io
 import json
 import os
+import re
 import tempfile
 from dataclasses import dataclass
+
+from .outputs import submission_names
 
 SYMBOL = {"pass": ":)", "fail": ":(", "skip": ":|", "error": ":("}
 
@@ -146,12 +149,39 @@ def gradescope(reports, root=None, pictures=None):
 
 
 def _summary_line(reports):
-    passed = sum(1 for r in reports if r.passed)
-    line = f"{passed} of {len(reports)} lab file(s) pass every check."
-    lost = sum(1 for r in reports if isinstance(r, NotGraded))
+    """"3 of 9 lab files pass every check." Files that are no lab at all are counted apart, not as lab files."""
+    lab_rows = [r for r in reports if r.lab is not None]
+    passed = sum(1 for r in lab_rows if r.passed)
+    line = f"{passed} of {len(lab_rows)} lab file(s) pass every check."
+    lost = sum(1 for r in lab_rows if isinstance(r, NotGraded))
     if lost:
         line += f" {lost} could not be graded."
+    others = len(reports) - len(lab_rows)
+    if others:
+        line += f" {others} other file(s) could not be graded as a lab (not counted; see their rows)."
     return line
+
+
+def lab_means(reports):
+    """{lab title: (files, mean fraction of the lab's points)} over the lab files; a score out of its own lab's
+    total, so labs out of 15, 17 and 18 points are not averaged together."""
+    by_lab = {}
+    for r in reports:
+        if r.lab is not None and r.max_score:
+            by_lab.setdefault(r.lab.title, []).append(r.score / r.max_score)
+    return {title: (len(fractions), sum(fractions) / len(fractions)) for title, fractions in by_lab.items()}
+
+
+def check_label(result):
+    """A check as an instructor reads it: "Step 2 (sat_axes)" for a lesson step's check, else its id."""
+    step = re.match(r"Step (\d+)\b", result.name or "")
+    return f"Step {step.group(1)} ({result.id})" if step else result.id
+
+
+def student_of(name):
+    """The student a submission belongs to: the folder of its name below the class folder ("alice" for
+    alice/tumbling_crates), or the file's name when it lies in the class folder itself."""
+    return name.replace("\\", "/").split("/")[0]
 
 
 def summary_table(reports, stream, root=None):
@@ -163,25 +193,33 @@ def summary_table(reports, stream, root=None):
             problem = f"not graded: {r.message}"
         else:
             first = next((c for c in r.results if c.status != "pass"), None)
-            problem = f"{first.id} ({first.status})" if first else ""
+            problem = f"{check_label(first)}: {first.status}" if first else ""
         stream.write(f"{_rel(r.path, root):<{width}}  {r.score:>2g}/{r.max_score:<3g} {r.status:<7} {problem}\n")
     stream.write(_summary_line(reports) + "\n")
 
 
 def csv_text(reports, root=None):
-    """One row per entry: path, lab, status, score, max_score, each check's status in order, then message."""
-    ids = []
+    """One row per entry: student (the submission's folder), path, lab, status, score, max_score, fraction (of
+    its own lab's points), each check's status, then message. With several labs a check's column is
+    "lab:check", so no column mixes two labs' checks."""
+    several = len({r.lab.id for r in reports if r.lab is not None}) > 1
+    columns = []
     for r in reports:
         for c in r.results:
-            if c.id not in ids:
-                ids.append(c.id)
+            key = (r.lab.id if r.lab is not None else "", c.id)
+            if key not in columns:
+                columns.append(key)
+    names = submission_names([r.path for r in reports])
     out = io.StringIO(newline="")
     writer = csv.writer(out)
-    writer.writerow(["path", "lab", "status", "score", "max_score", *ids, "message"])
+    writer.writerow(["student", "path", "lab", "status", "score", "max_score", "fraction",
+                     *[f"{lab}:{check}" if several else check for lab, check in columns], "message"])
     for r in reports:
-        by_id = {c.id: c.status for c in r.results}
-        writer.writerow([_rel(r.path, root), r.lab.id if r.lab is not None else "", r.status, f"{r.score:g}",
-                         f"{r.max_score:g}", *[by_id.get(i, "") for i in ids], message_of(r)])
+        lab = r.lab.id if r.lab is not None else ""
+        by_id = {(lab, c.id): c.status for c in r.results}
+        fraction = f"{r.score / r.max_score:.3f}" if r.max_score else ""
+        writer.writerow([student_of(names[r.path]), _rel(r.path, root), lab, r.status, f"{r.score:g}",
+                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns], message_of(r)])
     return out.getvalue()
 
 

@@ -163,7 +163,8 @@ def test_an_edit_that_no_longer_fits_the_solution_fails_loudly():
 
 def test_csv_has_one_row_per_file(graded):
     rows = graded["csv"].read_text().strip().splitlines()
-    assert rows[0].startswith("path,lab,status,score,max_score,loads,")
+    assert rows[0].startswith("student,path,lab,status,score,max_score,fraction,")
+    assert ",tumbling_crates:loads," in rows[0] or ",loads," in rows[0]   # lab:check when several labs
     assert len(rows) == 1 + len(graded["doc"]["labs"])
 
 
@@ -262,7 +263,9 @@ def test_hostile_file_is_reported_once_at_import(hostile, name, words):
                                         ("hostile_sys_exit", 4)])
 def test_hostile_message_names_file_and_line(hostile, name, line):
     message = hostile["files"][name + ".py"]["loads"]["message"]
-    assert f"{name}.py, line {line}" in message, message
+    # the endless loop is stopped wherever the CPU limit finds it: its body (line 6) or its test (line 5)
+    lines = (5, 6) if name == "hostile_loop_at_import" else (line,)
+    assert any(f"{name}.py, line {n}" in message for n in lines), message
 
 
 def test_deleted_runtime_line_is_named(hostile):
