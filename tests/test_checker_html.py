@@ -138,3 +138,39 @@ def test_a_file_not_graded_is_a_row_too():
     from checker.report import NotGraded
     text = html_report.html_text([NotGraded("/x/notes/readme.py", None, "not a lab file <b>")])
     assert "readme" in text and "not a lab file &lt;b&gt;" in text and 'class="error"' in text
+
+
+def test_the_class_figures_are_per_lab_and_name_the_steps(produced):
+    """The mean is each lab's own share of its points; the first problem names the lesson step beside the id."""
+    report, data, _ = produced
+    text = report.read_text(encoding="utf-8")
+    scores = [lab["score"] / lab["max_score"] for lab in data["labs"]]
+    mean = 100 * sum(scores) / len(scores)
+    assert f"Ball on the Ramp: 3 file(s), mean {mean:.0f} % of its points" in text
+    assert "mean score" not in text
+    assert "Step 2 (closest_point): fail" in text        # carol's starter fails step 2 first
+
+
+def test_the_csv_has_a_student_column_and_fractions(tmp_path):
+    """One row per file with the student's folder, the lab, and the score as a share of that lab's points; a
+    check column per lab when several labs are graded, and a file that is not a lab counted apart."""
+    import csv
+    from checker import labs, report
+    from checker.checks import Result
+    from checker.grade import LabReport
+    by_id = {lab.id: lab for lab in labs.LABS}
+    crates, bullets = by_id["tumbling_crates"], by_id["bullets"]
+
+    def graded(path, lab, score):
+        results = [Result(c.id, c.description, "pass" if k < score else "fail", score=c.max_score if k < score else 0.0,
+                          max_score=c.max_score) for k, c in enumerate(lab.checks.checks)]
+        return LabReport(path, lab, results, 0.1)
+    rows = [graded("/class/alice/tumbling_crates.py", crates, 3), graded("/class/bob/bullets.py", bullets, 15),
+            report.NotGraded("/class/carol/notes.py", None, "not a lab file")]
+    table = list(csv.DictReader(report.csv_text(rows).splitlines()))
+    assert [r["student"] for r in table] == ["alice", "bob", "carol"]
+    assert [r["lab"] for r in table] == ["tumbling_crates", "bullets", ""]
+    assert table[1]["fraction"] == "1.000" and table[0]["tumbling_crates:loads"] == "pass"
+    assert table[0]["bullets:loads"] == "" and table[1]["bullets:loads"] == "pass"
+    assert report._summary_line(rows) == ("1 of 2 lab file(s) pass every check. 1 other file(s) could not be "
+                                          "graded as a lab (not counted; see their rows).")
