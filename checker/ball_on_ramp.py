@@ -145,8 +145,7 @@ def _same_point(got, want):
     return isinstance(got, list) and all(_close(g, w) for g, w in zip(got, want))
 
 
-def _vec(v):
-    return f"({v[0]:.2f}, {v[1]:.2f})"
+_vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 
 
 def _function(sub, functions, probe, function, step):

@@ -148,8 +148,7 @@ def _time(value):
     return f"{value:.9g} s"
 
 
-def _vec(v):
-    return f"({v[0]:.2f}, {v[1]:.2f})"
+_vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 
 
 # ---------------------------------------------------------------- loading and the handout

@@ -19,6 +19,17 @@ RUNTIME_HINT = Hint(None, "the lines marked # lab runtime",
                     "checker needs them to run it headless.")
 
 
+def number_text(value, digits=2):
+    """A number for a message with `digits` decimals; a tiny negative never reads "-0.00"."""
+    text = f"{value:.{digits}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0 else text
+
+
+def vec_text(v):
+    """A vector (x, y) for a message, two decimals each: "(1.00, 0.00)", never "(1.00, -0.00)"."""
+    return f"({number_text(v[0])}, {number_text(v[1])})"
+
+
 def loaded(sub, crash_hint, names_hint):
     """The probe's {probe name: data} when the file imported and defines every required function.
 

@@ -121,8 +121,7 @@ def _close(got, want, scale=1.0):
     return abs(got - want) <= ABS * max(scale, 1.0) + REL * abs(want)
 
 
-def _vec(v):
-    return f"({v[0]:.2f}, {v[1]:.2f})"
+_vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 
 
 def _function(sub, functions, probe, function, step):

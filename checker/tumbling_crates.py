@@ -154,8 +154,7 @@ def _close(got, want):
     return abs(got - want) <= ABS + REL * abs(want)
 
 
-def _vec(v):
-    return f"({v[0]:.2f}, {v[1]:.2f})"
+_vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 
 
 def _function(sub, functions, probe, function, step):

@@ -199,3 +199,10 @@ def test_each_lab_declares_what_its_scenes_cost_and_an_unknown_scene_costs_its_s
     tumbling = LABS[0]
     assert max(tumbling.scenarios(), key=lambda n: tumbling.scene_seconds(n, {})) == "pile"
     assert tumbling.scene_seconds("new scene", {"frames": 240, "fps": 60}) == 4.0
+
+
+def test_messages_never_show_a_negative_zero():
+    from checker import lab_checks
+    assert lab_checks.vec_text((1.0, -0.0001)) == "(1.00, 0.00)"     # was "(1.00, -0.00)"
+    assert lab_checks.vec_text((-0.0, -2.5)) == "(0.00, -2.50)"
+    assert lab_checks.number_text(-0.006) == "-0.01" and lab_checks.number_text(-0.004, 2) == "0.00"
