@@ -53,6 +53,7 @@ class LabReport:
     results: list
     seconds: float
     records: dict = field(default_factory=dict)
+    preview: str = ""   # the scene run ungraded for a picture when the graded scenes never ran (--pictures)
 
     @property
     def score(self):
@@ -180,7 +181,24 @@ class Grader:
             wanted = {scene for r in results if r.status in (FAIL, ERROR) for scene in scenes.get(r.id, ())}
             records = {name: run.record for name, run in sub.scenarios.items()
                        if name in wanted and getattr(run, "record", None)}
-        return LabReport(path, lab, results, time.monotonic() - start, records)
+        preview = ""
+        if self.keep_records and not sub.scenarios and self._wants_preview(results):
+            # a function check failed, so no scene ran: run the lab's own scene anyway, for a picture only
+            # (not graded), so the file that needs a picture most gets one beside the solution's
+            name = lab.preview_scene
+            settings = lab.scenarios().get(name) if name else None
+            run = self.run(path, "scenario", dict(settings, probes=lab.probes), lab.scene_seconds(name, settings)) \
+                if settings is not None else None
+            if run is not None and getattr(run, "record", None) and run.record.get("records"):
+                records[name], preview = run.record, name
+        return LabReport(path, lab, results, time.monotonic() - start, records, preview)
+
+    @staticmethod
+    def _wants_preview(results):
+        """True when the file loaded and kept the handout but failed (or erred in) a function check."""
+        by_id = {r.id: r for r in results}
+        loaded = by_id.get("loads") is None or by_id["loads"].status == PASS
+        return loaded and any(r.status in (FAIL, ERROR) for r in results)
 
     def _late_message(self):
         return f"not graded: the time limit for the whole run ({self.total_timeout:g} s) ran out first."

@@ -46,6 +46,12 @@ class Lab:
         return getattr(self.module, "PICTURE_SCENES", {})
 
     @property
+    def preview_scene(self):
+        """The scene drawn, ungraded, for a file that failed a function check (its scenes never ran): the first
+        scene the 'runs' check reads, else the lab's first scene."""
+        return (self.picture_scenes.get("runs") or tuple(self.scenarios()) or (None,))[0]
+
+    @property
     def solution(self):
         """Path of the lab's reference solution (its module's SOLUTION), or None."""
         return getattr(self.module, "SOLUTION", None)

@@ -257,12 +257,26 @@ def marked_frame(result):
 
 
 def pictured_results(report):
-    """The results of a report that get a picture: failed behaviour checks whose scenes were recorded."""
+    """The results of a report that get a picture: failed behaviour checks whose scenes were recorded, and,
+    when the report ran its lab's scene ungraded (report.preview), the first failed check."""
     lab = getattr(report, "lab", None)
     scenes = getattr(lab, "picture_scenes", None) or {}
     records = getattr(report, "records", None) or {}
-    return [r for r in getattr(report, "results", ())
-            if r.status in FAILED and any(s in records for s in scenes.get(r.id, ()))]
+    results = getattr(report, "results", ())
+    found = [r for r in results if r.status in FAILED and any(s in records for s in scenes.get(r.id, ()))]
+    first = next((r for r in results if r.status in FAILED), None)
+    if getattr(report, "preview", "") in records and first is not None and first not in found:
+        found.insert(0, first)
+    return found
+
+
+def _scenes_of(report, check_id):
+    """The recorded scenes to draw for a check: those it reads, else the ungraded preview scene."""
+    scenes = report.lab.picture_scenes.get(check_id, ())
+    if any(scene in report.records for scene in scenes):
+        return scenes, False
+    preview = getattr(report, "preview", "")
+    return ((preview,), True) if preview else ((), False)
 
 
 def pictures_for(report, check_id, with_reference=True):
@@ -271,12 +285,16 @@ def pictures_for(report, check_id, with_reference=True):
     if result is None:
         return []
     pictures = []
-    for scene in report.lab.picture_scenes.get(check_id, ()):
+    scenes, ungraded = _scenes_of(report, check_id)
+    for scene in scenes:
         record = report.records.get(scene)
         if not record or not record.get("records"):
             continue
         reference = reference_record(report.lab, scene) if with_reference else None
         title = f"{check_id}: scene '{scene}' ({report.lab.title}); top: this file, bottom: the solution"
+        if ungraded:
+            title = (f"not graded, to show what {check_id} means: scene '{scene}' ({report.lab.title}); top: this "
+                     f"file, bottom: the solution")
         surface = filmstrip(record, reference, marked_frame(result), title)
         pictures.append(Picture(check_id, scene, png_bytes(surface)))
     return pictures

@@ -61,9 +61,11 @@ def test_every_submission_and_check_is_there(produced):
     assert text.count('<tr data-check="') == len(data["labs"][0]["criteria"])
     row = re.search(r'<tr data-check="pushed_out_of_crate">.*?</tr>', text).group(0)
     assert 'title="1 fail"' in row and "1/3" in row
-    # bob's failed scene is pictured inline, once; the others have no picture
-    assert text.count('src="data:image/png;base64,') == 1
+    # bob's failed scene is pictured inline, once; carol's starter, which fails step 2 so its scenes never ran,
+    # gets the lab's first scene run ungraded for its first failed check; alice's passing file has none
+    assert text.count('src="data:image/png;base64,') == 2
     assert re.search(r'alt="pushed_out_of_crate: scene inside" src="data:image/png;base64,', text)
+    assert re.search(r'alt="closest_point: scene ramp" src="data:image/png;base64,', text)
 
 
 def test_summary_rows_carry_sort_keys(produced):

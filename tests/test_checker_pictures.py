@@ -11,6 +11,7 @@ before anything is graded.
 import io
 import os
 import subprocess
+import tempfile
 import sys
 
 import pygame
@@ -158,3 +159,37 @@ def test_json_lists_picture_paths_only_with_pictures(failing):
     for c in criteria.values():  # otherwise the schema is unchanged
         del c["pictures"]
     assert shown == plain
+
+
+def test_a_file_failing_a_function_check_gets_its_labs_scene_ungraded():
+    """Scenes run only when every function check passes, so the files that need a picture most had none. With
+    pictures asked for, a file that loads but fails a step gets the lab's first scene, run for the picture only:
+    its crates beside the solution's, titled "not graded"; its score is the same as without pictures."""
+    import corpus_tumbling_crates as corpus
+    crates = next(lab for lab in labs.LABS if lab.id == "tumbling_crates")
+    starter = open(os.path.join(ROOT, "starters", "tumbling_crates_starter.py"), encoding="utf-8").read()
+    codes = corpus.step_code(open(crates.solution, encoding="utf-8").read())
+    with tempfile.TemporaryDirectory() as work:
+        path = os.path.join(work, "tumbling_crates.py")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(corpus.fill(starter, {2: codes[2]}))    # step 2 done: step 3's normal still unflipped
+        with_pictures = Grader(keep_records=True).grade(path, crates)
+        without = Grader().grade(path, crates)
+    assert [(r.id, r.status, r.score) for r in with_pictures.results] == \
+        [(r.id, r.status, r.score) for r in without.results]      # the picture's run grades nothing
+    assert with_pictures.preview == crates.preview_scene == "corner" and not without.preview
+    found = pictures.all_pictures([with_pictures])[with_pictures.path]
+    assert list(found) == ["sat_normal"]                          # the first failed check, one picture
+    picture = found["sat_normal"][0]
+    assert picture.scene == "corner" and picture.png.startswith(b"\x89PNG")
+    frames = with_pictures.records["corner"]["records"]
+    assert all(body["pos"][1] > 600 for body in frames[-1]["bodies"] if not body["static"])   # fell through
+
+
+def test_a_file_that_does_not_load_gets_no_picture():
+    with tempfile.TemporaryDirectory() as work:
+        path = os.path.join(work, "ball_on_ramp.py")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write("raise RuntimeError('boom')\n")
+        report = Grader(keep_records=True).grade(path, LAB)
+    assert report.preview == "" and pictures.all_pictures([report]) == {}
