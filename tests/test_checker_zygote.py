@@ -139,7 +139,8 @@ def test_cpu_time_limit_through_the_zygote(zygote, lab):
     run = probe(path, Limits(timeout=1))
     assert run.status == "timeout", run
     assert run.returncode == -signal.SIGKILL  # SIGXCPU dumped the stack, the hard limit a second later killed it
-    assert f'File "{path}", line 3' in run.timeout_trace, run.timeout_trace
+    # the stack shows the loop wherever the CPU limit caught it: its test (line 2) or its body (line 3)
+    assert any(f'File "{path}", line {n}' in run.timeout_trace for n in (2, 3)), run.timeout_trace
     assert run.seconds < sandbox.wall_limit(Limits(timeout=1))
 
 
