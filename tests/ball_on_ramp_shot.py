@@ -7,9 +7,8 @@ after the first; the runtime's `screenshot` setting saves the window 70 frames a
 both roll (debug view on: contact points in red, the spokes show each ball turning).
 """
 import os
-import tempfile
 
-from lab_run import FPS, ROOT, clicks, run_lab
+from lab_run import ROOT, clicks, save_screenshot
 
 SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")
 DROPS = [(80, 230), (80, 230)]
@@ -17,11 +16,7 @@ DROPS = [(80, 230), (80, 230)]
 
 def screenshot(path=os.path.join(ROOT, "assets", "ball_on_ramp.png")):
     script = clicks(DROPS, 20, 40)
-    settings = {"frames": script[-1]["frame"] + 70, "fps": FPS, "seed": 11, "record_every": 30,
-                "script": script, "screenshot": path}
-    with tempfile.TemporaryDirectory() as work:
-        run = run_lab(SOLUTION, settings, work)
-    print(run.stdout.strip(), "->", path)
+    save_screenshot(SOLUTION, script, script[-1]["frame"] + 70, path, record_every=30)
 
 
 if __name__ == "__main__":

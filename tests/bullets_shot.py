@@ -8,9 +8,8 @@ more (none tunnels), two at the crates; the window is saved one frame after the
 last shot, so its streak (the bullet's path in that frame) is on the picture.
 """
 import os
-import tempfile
 
-from lab_run import FPS, ROOT, run_lab
+from lab_run import FPS, ROOT, save_screenshot
 
 SOLUTION = os.path.join(ROOT, "solutions", "bullets.py")
 WALL_AIMS = [(600, 60 + 30 * i) for i in range(12)]
@@ -28,11 +27,7 @@ def script():
 
 def screenshot(path=os.path.join(ROOT, "assets", "bullets.png")):
     items = script()
-    settings = {"frames": items[-1]["frame"] + 1, "fps": FPS, "seed": 11, "record_every": 60,
-                "script": items, "screenshot": path}
-    with tempfile.TemporaryDirectory() as work:
-        run = run_lab(SOLUTION, settings, work)
-    print(run.stdout.strip(), "->", path)
+    save_screenshot(SOLUTION, items, items[-1]["frame"] + 1, path)
 
 
 if __name__ == "__main__":

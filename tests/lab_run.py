@@ -95,6 +95,17 @@ def pile_settings(settle_frames=240, every=20):
     return {"frames": last_drop + settle_frames, "fps": FPS, "seed": 11, "scenario": [], "script": script}
 
 
+def save_screenshot(lab_path, script, frames, path, record_every=60):
+    """Run lab_path (seed 11, FPS) for `frames` frames with the scripted events, save the window's last frame
+    to `path` (the runtime's screenshot setting) and print what the lab printed."""
+    import tempfile
+    settings = {"frames": frames, "fps": FPS, "seed": 11, "record_every": record_every, "script": script,
+                "screenshot": path}
+    with tempfile.TemporaryDirectory() as work:
+        run = run_lab(lab_path, settings, work)
+    print(run.stdout.strip(), "->", path)
+
+
 def screenshots():
     """Write assets/tumbling_crates.png (solution, settled pile, debug on), the starter's, and
     assets/tumbling_crates_panel.png (the same pile; 1.5 s before the end H opens the full panel and the Up

@@ -9,9 +9,8 @@ asleep as one (about 4 s after the last drop) and is drawn dimmed; the HUD shows
 The runtime's `screenshot` setting saves the window after the last frame.
 """
 import os
-import tempfile
 
-from lab_run import FPS, ROOT, clicks, run_lab
+from lab_run import FPS, ROOT, clicks, save_screenshot
 
 SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
 DROPS = [(120 + 85 * (k % 8) + 20 * (k // 8 % 2), 60 + 30 * (k // 8)) for k in range(32)]
@@ -19,11 +18,7 @@ DROPS = [(120 + 85 * (k % 8) + 20 * (k // 8 % 2), 60 + 30 * (k // 8)) for k in r
 
 def screenshot(path=os.path.join(ROOT, "assets", "sleeping_crates.png")):
     script = clicks(DROPS, 20, 12)
-    settings = {"frames": script[-1]["frame"] + 5 * FPS, "fps": FPS, "seed": 11, "record_every": 60,
-                "script": script, "screenshot": path}
-    with tempfile.TemporaryDirectory() as work:
-        run = run_lab(SOLUTION, settings, work)
-    print(run.stdout.strip(), "->", path)
+    save_screenshot(SOLUTION, script, script[-1]["frame"] + 5 * FPS, path)
 
 
 if __name__ == "__main__":
