@@ -188,11 +188,17 @@ class RunState:
         return [self.results[c.id] for c in registry.checks if c.id in self.results]
 
 
+def step_of(description):
+    """The lesson step a check grades, from its description ("Step 5: ..." gives 5), else None."""
+    found = re.match(r"Step (\d+)\b", description or "")
+    return int(found.group(1)) if found else None
+
+
 def needed(check):
     """How a skipped check names the one it waits for: "step 5 (resolve_friction)" when that check grades a lesson
-    step (its description starts "Step N:"), else its id in quotes."""
-    step = re.match(r"Step (\d+)\b", check.description)
-    return f"step {step.group(1)} ({check.id})" if step else f"'{check.id}'"
+    step, else its id in quotes."""
+    step = step_of(check.description)
+    return f"step {step} ({check.id})" if step else f"'{check.id}'"
 
 
 def skipped_all(registry, message):

@@ -31,10 +31,10 @@ import html
 import io
 import json
 import os
-import re
 import tempfile
 from dataclasses import dataclass
 
+from .checks import step_of
 from .outputs import submission_names
 
 SYMBOL = {"pass": ":)", "fail": ":(", "skip": ":|", "error": ":("}
@@ -174,8 +174,8 @@ def lab_means(reports):
 
 def check_label(result):
     """A check as an instructor reads it: "Step 2 (sat_axes)" for a lesson step's check, else its id."""
-    step = re.match(r"Step (\d+)\b", result.name or "")
-    return f"Step {step.group(1)} ({result.id})" if step else result.id
+    step = step_of(result.name)
+    return f"Step {step} ({result.id})" if step else result.id
 
 
 def student_of(name):

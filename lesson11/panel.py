@@ -104,11 +104,16 @@ def study_rows():
     return _study
 
 
+def study_row(world, settings):
+    """The study's row for the world's solver (and order) at these settings, or None if it was not measured."""
+    order = getattr(world, "order", "solve-first") if settings["solver"] == "lesson" else "-"
+    return study_rows().get((settings["solver"], order, settings["substeps"], settings["iterations"]))
+
+
 def study_lines(world, settings):
     """Two lines: what the accuracy study measured for these settings (cost, pile error) and whether they are
     on its front, or that the study has no point for them."""
-    order = getattr(world, "order", "solve-first") if settings["solver"] == "lesson" else "-"
-    row = study_rows().get((settings["solver"], order, settings["substeps"], settings["iterations"]))
+    row = study_row(world, settings)
     if row is None:
         return ["study: this setting was not measured", ""]
     where = "on the front: nothing cheaper errs less" if row["on_front"] \
@@ -118,8 +123,7 @@ def study_lines(world, settings):
 
 def study_short(world, settings):
     """One line of the study for the compact panel: its cost and pile error, and "on front" or a better setting."""
-    order = getattr(world, "order", "solve-first") if settings["solver"] == "lesson" else "-"
-    row = study_rows().get((settings["solver"], order, settings["substeps"], settings["iterations"]))
+    row = study_row(world, settings)
     if row is None:
         return "study: this setting was not measured"
     verdict = "on front" if row["on_front"] else f"{row['better']} beats it"
