@@ -28,6 +28,7 @@ from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, insid
 from lesson11.physics2d import apply_impulse as reference_apply_impulse
 
 from .crates_probes import box, ngon, with_reference_steps
+from .tape import run_rng
 
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
 RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
@@ -116,10 +117,22 @@ def segment_cases():
     ]
 
 
+def drawn_segment_cases(rng, count=3):
+    """`count` cases drawn for this run: an edge 30-150 px long and a point off it, before, beside or beyond."""
+    cases = []
+    for k in range(count):
+        a = Vector2(rng.uniform(-100, 100), rng.uniform(-100, 100))
+        b = a + Vector2(rng.uniform(30, 150), 0).rotate(rng.uniform(0, 360))
+        t = rng.choice((rng.uniform(-0.8, -0.2), rng.uniform(0.15, 0.85), rng.uniform(1.2, 1.8)))
+        side = (b - a).normalize().rotate(90) * rng.choice((-1, 1)) * rng.uniform(8, 60)
+        cases.append((f"a point near an edge drawn for this run ({k + 1} of {count})", a + (b - a) * t + side, a, b))
+    return cases
+
+
 def probe_closest(module, lab_path):
     """The student's closest_on_segment(p, a, b) on each case beside the lesson's and the unclamped answer."""
     cases = []
-    for name, p, a, b in segment_cases():
+    for name, p, a, b in segment_cases() + drawn_segment_cases(run_rng(module, "closest_on_segment")):
         given = {"p": Vector2(p), "a": Vector2(a), "b": Vector2(b)}   # copies: a change shows, and stays here
         got = module.closest_on_segment(given["p"], given["a"], given["b"])
         changed = {key: list(value) for key, value in given.items() if value != {"p": p, "a": a, "b": b}[key]}
@@ -252,7 +265,9 @@ def probe_separate(module, lab_path):
 def probe_inertia(module, lab_path):
     """The student's disc_inertia(mass, radius) beside ½ m r², for masses and radii far from 1."""
     cases = []
-    for mass, radius in ((math.pi * 400 / 1000, 20), (2.0, 12.0), (0.35, 37.5), (12.5, 3.0)):
+    rng = run_rng(module, "disc_inertia")   # and one ball drawn for this run
+    for mass, radius in ((math.pi * 400 / 1000, 20), (2.0, 12.0), (0.35, 37.5), (12.5, 3.0),
+                         (rng.uniform(2.5, 9.0), rng.uniform(5.0, 40.0))):
         got = module.disc_inertia(mass, radius)
         try:
             got = float(got)
@@ -398,6 +413,9 @@ def probe_resolve(module, lab_path):
                       "ra": list(ra), "rb": list(rb)})
     return cases
 
+
+# the spliced functions the probes use: (function, the solution's steps put in it, the solution)
+SPLICES = (("circle_polygon", (3,), SOLUTION),)
 
 # probe name -> (the lab function it needs, the probe)
 PROBES = {

@@ -20,13 +20,13 @@ and names the first case that differs).
 Units: px, s, mass in the lab's units (area / 1000).
 """
 import math
-import time
 
 from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
 from .crates_probes import box, ngon
+from .tape import clock, run_rng
 
 REQUIRED = ("circle_toi", "bounding_radius", "time_of_impact", "swept_move", "apply_mode", "make_wall", "make_bullet",
             "BulletWorld", "main")
@@ -106,10 +106,27 @@ def toi_cases():
     ]
 
 
+def drawn_toi_cases(rng, count=3):
+    """`count` cases drawn for this run: a circle heading for another, hitting within the step or passing by."""
+    cases = []
+    for k in range(count):
+        r1, r2 = rng.uniform(2, 8), rng.uniform(5, 20)
+        p1 = Vector2(rng.uniform(-50, 50), rng.uniform(-50, 50))
+        direction = Vector2(1, 0).rotate(rng.uniform(0, 360))
+        gap = rng.uniform(20, 150)                 # px between the surfaces along the path
+        aim = rng.choice((rng.uniform(0, 0.7), rng.uniform(1.3, 2.0))) * (r1 + r2)   # miss distance: hit or pass
+        p2 = p1 + direction * (gap + r1 + r2) + direction.rotate(90) * aim
+        speed = rng.uniform(300, 3000)
+        dt = (gap + r1 + r2) / speed * rng.uniform(1.3, 3.0)
+        cases.append((f"a path drawn for this run ({k + 1} of {count})", p1, direction * speed, r1, p2,
+                       Vector2(), r2, dt))
+    return cases
+
+
 def probe_toi(module, lab_path):
     """The student's circle_toi on each case beside the analytic time and the usual wrong answers."""
     cases = []
-    for name, p1, v1, r1, p2, v2, r2, dt in toi_cases():
+    for name, p1, v1, r1, p2, v2, r2, dt in toi_cases() + drawn_toi_cases(run_rng(module, "circle_toi")):
         got = module.circle_toi(Vector2(p1), Vector2(v1), r1, Vector2(p2), Vector2(v2), r2, dt)
         dp, dv = p2 - p1, v2 - v1
         a, b, c = dv.dot(dv), 2 * dp.dot(dv), dp.dot(dp) - (r1 + r2) ** 2
@@ -140,8 +157,13 @@ def bounding_cases():
 
 
 def probe_bounding(module, lab_path):
+    """The student's bounding_radius on each outline (and one crate drawn for this run) beside the farthest corner."""
+    rng = run_rng(module, "bounding_radius")
+    centre = Vector2(rng.uniform(100, 700), rng.uniform(100, 500))
+    drawn = [("a crate drawn for this run", box(rng.uniform(20, 90), rng.uniform(20, 90), centre, rng.uniform(0, 90)),
+              centre)]
     cases = []
-    for name, points, centre in bounding_cases():
+    for name, points, centre in bounding_cases() + drawn:
         got = module.bounding_radius([Vector2(p) for p in points], Vector2(centre))
         half_sides = [abs(p.x - centre.x) for p in points] + [abs(p.y - centre.y) for p in points]
         cases.append({"case": name, "got": answer_time(got), "want": reference_bounding_radius(points, centre),
@@ -367,10 +389,10 @@ def shoot(module, mode, speed, shots):
         bullet = module.make_bullet((start_x, (wall.pos.y)), (speed, 0))
         world = module.BulletWorld([wall, bullet], effects={"restitution", "correction"})
         module.apply_mode(world, mode)
-        begin = time.process_time()
+        begin = clock(module)
         for _ in range(steps):
             world.step()
-        spent += time.process_time() - begin
+        spent += clock(module) - begin
         tunnelled += bullet.pos.x > wall_x
     return tunnelled, spent
 

@@ -141,27 +141,44 @@ def call_limited(func, seconds, *args):
         signal.signal(signal.SIGPROF, previous)
 
 
-def run_probe(module, lab_path, probes, seconds):
-    """Each of the lab's probes in turn; a failing one gets its own error.
+def run_probe(module, lab_path, probes, seconds, settings):
+    """Each of the lab's probes in turn, recorded on a tape (checker/tape.py); a failing one gets its own error.
 
     `probes.PROBES` maps a probe's name to (the lab function it needs, probe(module, lab_path)).
-    Returns {"missing": [...], "functions": {probe name: {"ok": True, "data": ...} or
-    {"ok": False, "error": ...}}}. A probe that runs longer than `seconds` of CPU is stopped
-    and reported with the line it was at.
+    The probe sees the lab through a tape.Recorder, which records every call of a step function
+    (settings["steps"]). Returns {"missing": [...], "constants": {name: value}, "tapes": {probe name:
+    {"tape": [...]} or {"tape": [...], "error": ...}}}: what the student's functions did, and no
+    verdict or reference value; the parent replays each tape through the same probe and judges.
+    A probe that runs longer than `seconds` of CPU is stopped and reported with the line it was at.
     """
-    result = {"functions": {}, "missing": [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]}
+    from checker import tape
+    result = {"tapes": {}, "constants": constants_of(module),
+              "missing": [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]}
+    recorder = tape.Recorder(module, settings.get("steps") or (), settings.get("splices"), lab_path,
+                             settings.get("seed", 0))
     for name, (function, probe) in probes.PROBES.items():
         if not callable(getattr(module, function, None)):
             continue
         try:
-            result["functions"][name] = {"ok": True, "data": call_limited(probe, seconds, module, lab_path)}
+            call_limited(probe, seconds, recorder, lab_path)
+            result["tapes"][name] = {"tape": recorder.take()}
         except FunctionTimeout as exc:
             error = describe(exc, lab_path)
             error.update(kind="timeout", message=f"{function}() was still running after {seconds:g} s of CPU time")
-            result["functions"][name] = {"ok": False, "error": error}
+            result["tapes"][name] = {"tape": recorder.take(), "error": error}
         except Exception as exc:  # the student's function raised: report it with file and line
-            result["functions"][name] = {"ok": False, "error": describe(exc, lab_path)}
+            result["tapes"][name] = {"tape": recorder.take(), "error": describe(exc, lab_path)}
     return result
+
+
+def constants_of(module, limit=200):
+    """The lab's top-level numbers, text and tuples of them (its constants), JSON-ready, for the replay."""
+    from checker import tape
+    out = {}
+    for name, value in list(vars(module).items())[:5000]:
+        if not name.startswith("_") and tape._plain(value) and len(out) < limit:
+            out[name] = tape.encode(value, tape.Seen())
+    return out
 
 
 # ---------------------------------------------------------------- scenario: the lab's main() under the runtime
@@ -207,7 +224,7 @@ def main(argv):
         result["phase"] = "run"
         save()
         if task == "probe":
-            result["probe"] = run_probe(module, lab_path, probes, PROBE_SECONDS)
+            result["probe"] = run_probe(module, lab_path, probes, PROBE_SECONDS, settings)
         else:
             missing = [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]
             if missing:

@@ -66,6 +66,9 @@ def parse_args(argv):
     parser.add_argument("--memory", type=int, default=768, help="address-space limit per run in MB (default 768)")
     parser.add_argument("--max-output", type=int, default=256,
                         help="KB of stdout + stderr a run may print before it is stopped (default 256)")
+    parser.add_argument("--seed", type=int, default=None, metavar="N",
+                        help="draw the probes' per-run inputs with seed N (default: a fresh seed per file, shown in "
+                             "--json as each file's \"seed\"; give it here to grade a file again with the same inputs)")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     parser.add_argument("--allow-edits", action="store_true",
                         help="code changed outside the steps is a warning, not a failure (the scenes still run)")
@@ -206,7 +209,8 @@ def main(argv=None):
             print(f"checker: error: {line}", file=sys.stderr)
         return USAGE
     grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024), args.jobs, args.total_timeout,
-                    options={"allow_edits": args.allow_edits}, keep_records=bool(args.pictures or args.html))
+                    options={"allow_edits": args.allow_edits}, keep_records=bool(args.pictures or args.html),
+                    seed=args.seed)
     rows = grade_all(entries, grader, args.jobs, progress=not args.quiet and len(entries) > 1)
     problems, written, links = write_outputs(args, rows)
     if args.json:

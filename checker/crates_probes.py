@@ -19,7 +19,6 @@ the first configuration that differs.
 
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
-import ast
 import math
 import os
 
@@ -29,6 +28,8 @@ from lesson11.physics2d import (Body, box_points, centre_of, cross, edge_normals
                                 relative_velocity)
 from lesson11.physics2d import apply_impulse as reference_apply_impulse
 
+from .tape import run_rng, splice_name
+
 REQUIRED = ("sat", "apply_impulse", "resolve", "main")
 RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
 SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "solutions",
@@ -36,41 +37,15 @@ SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__
 
 
 def with_reference_steps(module, lab_path, function, steps, solution=SOLUTION):
-    """The lab's `function` rebuilt with the inside of each step in `steps` taken from the solution
-    (Tumbling Crates' by default; another lab passes the path of its own as `solution`).
+    """The lab's `function` with the inside of each step in `steps` taken from the solution, or None.
 
     Grading step 2 with the solution's step 3 (and so on) tells a mistake in one step from a
-    mistake in the next: e.g. a step 3 that negates the depth instead of the axis. The rest of
-    the function is the student's, compiled under the lab's file name at its own line numbers
-    and run in a copy of the lab's globals. Returns None if the steps' markers cannot be found.
+    mistake in the next: e.g. a step 3 that negates the depth instead of the axis. The grading
+    parent builds the spliced source (checker/probing.py, from the probe module's SPLICES, so
+    the child never opens the solution); `module` (a tape.Recorder or tape.Replayer) compiles and
+    records it in the child, or replays it in the parent. None when the markers cannot be found.
     """
-    from .handout import MarkerError, step_regions
-    try:
-        with open(lab_path, encoding="utf-8") as handle:
-            mine = handle.read().splitlines()
-        with open(solution, encoding="utf-8") as handle:
-            theirs = handle.read().splitlines()
-        my_regions, their_regions = step_regions(mine), step_regions(theirs)
-        tree = ast.parse("\n".join(mine))
-    except (OSError, MarkerError, SyntaxError, ValueError):
-        return None
-    node = next((n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == function), None)
-    if node is None or any(step not in my_regions or step not in their_regions for step in steps):
-        return None
-    first, last = node.lineno - 1, node.end_lineno
-    lines = list(mine)
-    for step in sorted(steps, reverse=True):
-        start, end, indent = my_regions[step]
-        their_start, their_end, their_indent = their_regions[step]
-        if not first < start < end < last + 1:
-            return None
-        body = [indent + line[len(their_indent):] if line.startswith(their_indent) else line
-                for line in theirs[their_start + 1:their_end]]
-        last += len(body) - (end - start - 1)
-        lines[start + 1:end] = body
-    namespace = dict(module.__dict__)
-    exec(compile("\n" * first + "\n".join(lines[first:last]) + "\n", lab_path, "exec"), namespace)
-    return namespace[function]
+    return module.spliced(splice_name(function, steps), function)
 
 
 def _placed(points, centre, angle_deg=0.0):
@@ -110,6 +85,42 @@ def sat_pairs():
         ("two crates exactly touching edge to edge", box(40, 40, (0, 0)), box(40, 40, (40, 7))),
         ("two crates far apart", box(40, 40, (0, 0)), box(30, 60, (300, -50), 25)),
     ]
+
+
+DRAWN_PAIRS = 4   # pairs drawn at random per grading run, beside the fixed ones
+
+
+def random_shape(rng, centre):
+    """A box or a regular polygon of a random size and angle around `centre` (world points, px)."""
+    angle = rng.uniform(0, 360)
+    if rng.random() < 0.5:
+        return box(rng.uniform(24, 90), rng.uniform(24, 90), centre, angle)
+    return ngon(rng.randint(3, 7), rng.uniform(15, 45), centre, angle)
+
+
+def _clear_winner(pa, pb, margin=0.5):
+    """True when no overlap is within `margin` px of 0 and the smallest overlap (both rules) has no rival
+    along another direction within `margin` px: a pair with one right answer."""
+    overlaps = axis_overlaps(pa, pb)
+    if any(abs(lesson) < margin for _, lesson, _ in overlaps):
+        return False
+    for rule in (1, 2):
+        ranked = sorted(overlaps, key=lambda item: item[rule])
+        best = ranked[0]
+        if any(item[rule] - best[rule] < margin and abs(cross(item[0], best[0])) > 1e-6 for item in ranked[1:]):
+            return False
+    return True
+
+
+def drawn_sat_pairs(rng, count=DRAWN_PAIRS):
+    """`count` pairs drawn for this grading run, overlapping or apart, each with one right answer."""
+    pairs = []
+    while len(pairs) < count:
+        pa = random_shape(rng, (0, 0))
+        pb = random_shape(rng, Vector2(rng.uniform(10, 80), 0).rotate(rng.uniform(0, 360)))
+        if _clear_winner(pa, pb):
+            pairs.append((f"pair {len(pairs) + 1} drawn for this run", pa, pb))
+    return pairs
 
 
 def axis_overlaps(pa, pb):
@@ -175,7 +186,7 @@ def _short_repr(value):
 
 def probe_sat(module, lab_path):
     """The student's sat() on every pair, both orders, beside the lesson's answer and the shorter-way-out one."""
-    return _sat_cases(module.sat)
+    return _sat_cases(module.sat, drawn_sat_pairs(run_rng(module, "sat")))
 
 
 def probe_sat_step2(module, lab_path):
@@ -184,12 +195,12 @@ def probe_sat_step2(module, lab_path):
     None when the step markers cannot be found (the checks then use probe_sat's cases).
     """
     spliced = with_reference_steps(module, lab_path, "sat", (3,))
-    return _sat_cases(spliced) if spliced else None
+    return _sat_cases(spliced, drawn_sat_pairs(run_rng(module, "sat"))) if spliced else None
 
 
-def _sat_cases(sat):
+def _sat_cases(sat, drawn=()):
     cases = []
-    for name, pa, pb in sat_pairs():
+    for name, pa, pb in sat_pairs() + list(drawn):
         for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
             got = sat([Vector2(p) for p in first], [Vector2(p) for p in second])
             cases.append({
@@ -239,13 +250,33 @@ def impulse_cases():
     ]
 
 
+def drawn_impulse_cases(rng, count=2):
+    """`count` apply_impulse cases drawn for this run: two moving, spinning crates, masses far from 1."""
+    def mass():
+        return rng.uniform(0.2, 0.6) if rng.random() < 0.5 else rng.uniform(2.5, 9.0)
+
+    def spin():
+        return rng.choice((-1, 1)) * rng.uniform(0.3, 2.5)
+
+    def vector(low, high):
+        return Vector2(rng.uniform(low, high), 0).rotate(rng.uniform(0, 360))
+
+    cases = []
+    for k in range(count):
+        a = crate(rng.uniform(30, 90), rng.uniform(20, 60), (0, 0), mass(), vel=vector(5, 120), omega=spin())
+        b = crate(rng.uniform(20, 60), rng.uniform(20, 60), vector(30, 60), mass(), vel=vector(5, 120), omega=spin())
+        cases.append((f"two moving crates drawn for this run ({k + 1} of {count})", a, b, vector(60, 400),
+                      vector(10, 35), vector(10, 35)))
+    return cases
+
+
 def probe_apply_impulse(module, lab_path):
     """The student's apply_impulse() on each case: each body's velocity and spin before, after and expected.
 
     Expected (the lesson): vA -= P/mA, ωA -= (ra × P)/IA, vB += P/mB, ωB += (rb × P)/IB.
     """
     cases = []
-    for name, a, b, impulse, ra, rb in impulse_cases():
+    for name, a, b, impulse, ra, rb in impulse_cases() + drawn_impulse_cases(run_rng(module, "apply_impulse")):
         before = {"a": _state(a), "b": _state(b)}
         inv = {"a": [a.inv_mass, a.inv_inertia], "b": [b.inv_mass, b.inv_inertia]}
         ref_a, ref_b = crate(1, 1, a.pos, 0), crate(1, 1, b.pos, 0)
@@ -392,6 +423,9 @@ def _resolve_case(name, a, b, normal, ra, rb, vn, e, calls):
                                 "rel_length": rel.length(), "vn_now": rel.dot(normal), "missing": True}
     return case
 
+
+# the spliced functions the probes use: (function, the solution's steps put in it, the solution)
+SPLICES = (("sat", (3,), SOLUTION),)
 
 # probe name -> (the lab function it needs, the probe)
 PROBES = {"sat_step2": ("sat", probe_sat_step2), "sat": ("sat", probe_sat),

@@ -19,6 +19,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 
+from . import probing
 from .checks import ERROR, FAIL, PASS, skipped_all
 from .sandbox import Limits, run_child
 
@@ -54,6 +55,7 @@ class LabReport:
     seconds: float
     records: dict = field(default_factory=dict)
     preview: str = ""   # the scene run ungraded for a picture when the graded scenes never ran (--pictures)
+    seed: int | None = None   # the seed of the probe inputs drawn for this run (--seed N grades with the same)
 
     @property
     def score(self):
@@ -111,8 +113,9 @@ class Slots:
 class Grader:
     """Runs child processes for many labs with at most `jobs` at a time and an overall deadline."""
 
-    def __init__(self, limits=None, jobs=None, total_timeout=None, options=None, keep_records=False):
+    def __init__(self, limits=None, jobs=None, total_timeout=None, options=None, keep_records=False, seed=None):
         self.limits = limits or Limits()
+        self.seed = seed   # None: each file's probe inputs drawn with a fresh seed
         self.keep_records = keep_records
         self.options = dict(options or {})
         self.jobs = max(1, jobs or os.cpu_count() or 1)
@@ -157,9 +160,13 @@ class Grader:
         digest = hashlib.sha256(raw).hexdigest()
         sub = Submission(path=path, name=os.path.basename(path), source=raw.decode("utf-8", "replace"),
                          options=dict(self.options))
-        sub.probe = self.run(path, "probe", {"probes": lab.probes})
+        settings = probing.settings_for(lab, sub.source, self.seed)
+        sub.probe = self.run(path, "probe", settings)
         if sub.probe is None:
-            return LabReport(path, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start)
+            return LabReport(path, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start,
+                             seed=settings["seed"])
+        if sub.probe.status == "done":   # the verdicts' data: the child's tapes replayed and judged here
+            sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
         state = lab.checks.run(sub, stop_at_scenarios=True)
         if lab.checks.wants_scenarios(state):
             wanted = lab.scenarios()
@@ -191,7 +198,7 @@ class Grader:
                 if settings is not None else None
             if run is not None and getattr(run, "record", None) and run.record.get("records"):
                 records[name], preview = run.record, name
-        return LabReport(path, lab, results, time.monotonic() - start, records, preview)
+        return LabReport(path, lab, results, time.monotonic() - start, records, preview, settings["seed"])
 
     @staticmethod
     def _wants_preview(results):

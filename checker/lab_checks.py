@@ -6,6 +6,7 @@ work: each returns what the check passes on, or raises Fail / Error with the
 hint it is given.
 """
 import ast
+import math
 
 from . import handout
 from .checks import Error, Fail, Hint
@@ -102,8 +103,71 @@ def function_data(sub, functions, probe, function, step, crash_hint):
     return entry["data"]
 
 
+RIGID_TOLERANCE = 0.01   # px: how far a corner's distance from its body's position may drift between frames
+
+
+def _finite(value):
+    """A number (NaN and infinity included: a lab whose physics blows up records them honestly)."""
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _pair(value):
+    return isinstance(value, list) and len(value) == 2 and all(_finite(v) for v in value)
+
+
+def record_problem(record, settings):
+    """Why a scene's record cannot be what lesson11.runtime wrote for these settings, or "".
+
+    The record comes from the child, where the student's code runs, so the parent checks it
+    against what it knows: frames numbered in order and within the scene's length, numbers where
+    numbers belong, no more bodies than the scene's start plus its scripted clicks, and each body rigid
+    (its corners keep their distances from its position from one frame to the next while no
+    key is pressed). A record that passes can still be forged (see checker/README.md).
+    """
+    frames = record.get("records") if isinstance(record, dict) else None
+    if not isinstance(frames, list):
+        return "the record has no list of frames"
+    limit = settings.get("frames", 600)
+    script = settings.get("script") or []
+    clicks = sorted(item["frame"] for item in script if item.get("type") == "click")
+    keys = sorted(item["frame"] for item in script if item.get("type") == "key")
+    last, start_count, previous = 0, None, None
+    for item in frames:
+        number = item.get("frame") if isinstance(item, dict) else None
+        if not isinstance(number, int) or isinstance(number, bool) or not last < number <= limit:
+            return f"its frames are not numbered in order within the scene's {limit} frames (frame {number!r} " \
+                   f"after frame {last})"
+        bodies = item.get("bodies")
+        if not isinstance(bodies, list) or not all(isinstance(b, dict) for b in bodies):
+            return f"frame {number} has no list of bodies"
+        for body in bodies:
+            points = body.get("points")
+            if not (_pair(body.get("pos")) and _pair(body.get("vel")) and _finite(body.get("angle"))
+                    and _finite(body.get("omega")) and isinstance(points, list) and all(_pair(p) for p in points)):
+                return f"frame {number} holds a body whose position, velocity, angle, spin or corners are not " \
+                       "numbers"
+        if start_count is None:
+            start_count = len(bodies)
+        if len(bodies) > start_count + sum(1 for frame in clicks if frame <= number):
+            return f"frame {number} has {len(bodies)} bodies, more than the scene's {start_count} and its clicks add"
+        if previous is not None and len(previous[1]) == len(bodies) and \
+                not any(previous[0] < frame <= number for frame in keys):
+            for index, (before, now) in enumerate(zip(previous[1], bodies)):
+                if len(before["points"]) != len(now["points"]):
+                    continue
+                if any(abs(math.dist(p, before["pos"]) - math.dist(q, now["pos"])) > RIGID_TOLERANCE
+                       for p, q in zip(before["points"], now["points"])):
+                    return f"body {index} changes shape between frames {previous[0]} and {number}"
+        previous, last = (number, bodies), number
+    return ""
+
+
 def scene_records(sub, names, crash_hint, runtime_hint=RUNTIME_HINT):
-    """{scene name: its run} when every named scene ran to the end and recorded frames; Error / Fail otherwise."""
+    """{scene name: its run} when every named scene ran to the end and recorded frames; Error / Fail otherwise.
+
+    `names`: the lab's scenes (a dict name -> settings builder, or just names). A record that
+    cannot be what the runtime wrote (record_problem) is an Error naming why.
+    """
     records = {}
     for name in names:
         run = sub.scenarios.get(name)
@@ -115,5 +179,10 @@ def scene_records(sub, names, crash_hint, runtime_hint=RUNTIME_HINT):
         if not frames:
             raise Fail(f"the '{name}' scene recorded no frames: main() returned before its loop ran, or the loop "
                        "does not call lab.record(...).", runtime_hint)
+        build = names.get(name) if isinstance(names, dict) else None
+        problem = record_problem(run.record, build() if callable(build) else {})
+        if problem:
+            raise Error(f"the '{name}' scene's record cannot be what the lab runtime wrote: {problem}. The checker "
+                        "does not grade it.", runtime_hint)
         records[name] = run
     return records

@@ -1,8 +1,11 @@
 """The lab registry: which labs the checker knows, and how it tells which lab a file is.
 
 To add a lab, write a module like checker/tumbling_crates.py (CHECKS, TITLE,
+STARTER (the handout: its functions holding a step region are the student's,
+and the grading parent replays the probes' calls of them through its code),
 PROBES (the module the child process imports to probe the lab's functions:
-REQUIRED names and PROBES {function name: probe}), recognise(path, source),
+REQUIRED names and PROBES {function name: probe}; probes run in the child to
+record a tape and again in the parent to judge it, checker/tape.py), recognise(path, source),
 scenarios(), and optionally PICTURE_SCENES {check id: scene names} for
 --pictures and SCENE_SECONDS {scene name: CPU s of the solution's run}, so
 the grader starts the longest scenes first) and add one row to LABS.

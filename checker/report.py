@@ -14,6 +14,7 @@ JSON schema (`--json`, version 1):
       "path": str, "lab": str | null (lab id), "title": str | null,
       "status": "pass" | "fail" | "error",
       "score": float, "max_score": float, "seconds": float,
+      "seed": int | null,               # the seed of the inputs the probes drew (checker --seed N repeats them)
       "message": str,                   # why the entry could not be graded ("" when it was)
       "criteria": [{                     # in the lab's fixed order ([] when not graded)
           "id": str,                     # stable check id, e.g. "corner_tips"
@@ -104,7 +105,7 @@ def to_json(reports, errors=(), root=None, pictures=None):
         "labs": [{"path": _rel(r.path, root), "lab": r.lab.id if r.lab is not None else None,
                   "title": r.lab.title if r.lab is not None else None, "status": r.status,
                   "score": r.score, "max_score": r.max_score, "seconds": round(r.seconds, 2),
-                  "message": message_of(r), "criteria": [_criterion_json(c, r, pictures) for c in r.results]}
+                  "seed": getattr(r, "seed", None), "message": message_of(r), "criteria": [_criterion_json(c, r, pictures) for c in r.results]}
                  for r in reports],
         "errors": [{"path": p, "message": m} for p, m in all_errors],
     }

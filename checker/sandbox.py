@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 PROJECT_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
 RECORD_LIMIT = 48 * 1024 * 1024  # bytes: largest record the parent will read
+RESULT_LIMIT = 32 * 1024 * 1024  # bytes: largest result (a probe's tapes) the parent will read
 WALL_FACTOR, WALL_EXTRA = 3.0, 5.0   # the wall-clock limit: WALL_FACTOR × timeout + WALL_EXTRA s
 FLOOD_SLACK = 64 * 1024          # bytes past max_output before the parent kills a run (the child stops first)
 USE_ZYGOTE = True                # fork children from a warm zygote where possible (and CHECKER_ZYGOTE != "0")
@@ -381,7 +382,7 @@ def run_child(lab_path, task, settings, limits):
         selector.close()
         proc.close()
         seconds = time.monotonic() - start
-        result = _read_json(result_path, 1024 * 1024) or {}
+        result = _read_json(result_path, RESULT_LIMIT) or {}
         record = _read_json(settings["record"], RECORD_LIMIT) if task == "scenario" else None
         trace = ""
         try:

@@ -28,6 +28,7 @@ from lesson11.physics2d import polygon_inertia as reference_inertia
 from lesson11.physics2d import regular_polygon as reference_regular_polygon
 
 from . import crates_probes
+from .tape import run_rng
 
 REQUIRED = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes", "sat", "build", "main")
 PARALLEL = 1e-6   # |sin| below which two axes are parallel (the handout's PARALLEL)
@@ -71,8 +72,10 @@ POLYGONS = ((3, 34.0), (4, 20.0), (5, 30.5), (6, 28.0), (7, 12.0), (8, 40.0), (1
 
 def probe_regular_polygon(module, lab_path):
     """The student's regular_polygon(sides, radius) beside the lesson's corners radius (cos θk, sin θk), θk = 2πk/n."""
+    rng = run_rng(module, "regular_polygon")   # and one polygon drawn for this run
+    drawn = ((rng.randint(3, 11), round(rng.uniform(6, 60), 1)),)
     return [{"sides": sides, "radius": radius, "got": _points(module.regular_polygon(sides, radius)),
-             "want": _plain(reference_regular_polygon(sides, radius))} for sides, radius in POLYGONS]
+             "want": _plain(reference_regular_polygon(sides, radius))} for sides, radius in POLYGONS + drawn]
 
 
 # ---------------------------------------------------------------- step 3: polygon_centroid
@@ -94,10 +97,24 @@ def centroid_cases():
     ]
 
 
+def drawn_outline(rng):
+    """A convex outline drawn for this run: 5-8 corners on a stretched circle, far from (0, 0)."""
+    sides = rng.randint(5, 8)
+    angles = sorted(rng.uniform(0, 360) for _ in range(sides))
+    if any(b - a < 20 for a, b in zip(angles, angles[1:] + [angles[0] + 360])):   # keep corners apart
+        angles = [k * 360 / sides + rng.uniform(-8, 8) for k in range(sides)]
+    stretch, turn = rng.uniform(1.2, 2.2), rng.uniform(0, 180)
+    centre = Vector2(rng.uniform(-300, 300), rng.uniform(-300, 300))
+    radius = rng.uniform(20, 60)
+    return [centre + Vector2(radius * stretch * math.cos(math.radians(a)), radius * math.sin(math.radians(a)))
+            .rotate(turn) for a in angles]
+
+
 def probe_polygon_centroid(module, lab_path):
     """The student's polygon_centroid on each outline, both windings, beside the area-weighted centroid."""
     cases = []
-    for name, corners in centroid_cases():
+    drawn = [("an outline drawn for this run", drawn_outline(run_rng(module, "polygon_centroid")))]
+    for name, corners in centroid_cases() + drawn:
         for order, points in (("", corners), (" (the other way round)", list(reversed(corners)))):
             pts = [Vector2(p) for p in points]
             average = sum(pts, Vector2()) / len(pts)
@@ -162,7 +179,11 @@ def inertia_cases():
 def probe_polygon_inertia(module, lab_path):
     """The student's polygon_inertia beside the lesson's triangle-fan sum, the analytic value and the mistakes' values."""
     cases = []
-    for name, points, mass, analytic in inertia_cases():
+    rng = run_rng(module, "polygon_inertia")
+    mass = rng.uniform(2.5, 9.0)
+    drawn = [(f"an outline drawn for this run, centred, mass {mass:.3g}", convex_polygon(drawn_outline(rng)), mass,
+              None)]
+    for name, points, mass, analytic in inertia_cases() + drawn:
         got = module.polygon_inertia([Vector2(p) for p in points], mass)
         cases.append({"case": name, "points": _plain(points), "mass": mass, "got": _number(got),
                       "want": reference_inertia([Vector2(p) for p in points], mass), "analytic": analytic,

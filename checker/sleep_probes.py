@@ -14,9 +14,10 @@ compare them in the grading process.
 
 Units: px, s, rad.
 """
-import time
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
+
+from .tape import clock, run_rng
 
 REQUIRED = ("sleep_timer", "moves", "wake_on_contact", "build", "main")
 SLEEP_SPEED = 5.0   # px/s, the handout's thresholds
@@ -63,7 +64,12 @@ def reference_timer(timer, speed, spin, dt):
 def probe_sleep_timer(module, lab_path):
     """The student's sleep_timer on each case (dt = 1/120 s) beside the rule, and with dt = 1/60 s once."""
     cases = []
-    for what, timer, speed, spin in TIMER_CASES:
+    rng = run_rng(module, "sleep_timer")   # two crates drawn for this run: one calm, one not
+    drawn = (("a calm crate drawn for this run", round(rng.uniform(0.05, 0.45), 3), rng.uniform(0, 0.8 * SLEEP_SPEED),
+              rng.uniform(-0.8, 0.8) * SLEEP_SPIN),
+             ("a moving crate drawn for this run", round(rng.uniform(0.05, 0.45), 3),
+              rng.uniform(1.3 * SLEEP_SPEED, 200), rng.uniform(-0.8, 0.8) * SLEEP_SPIN))
+    for what, timer, speed, spin in TIMER_CASES + drawn:
         for dt in (DT,) if what != "a calm crate, 0.25 s into its timer" else (DT, 1 / 60):
             cases.append({"case": what, "timer": timer, "speed": speed, "spin": spin, "dt": dt,
                           "got": _number(module.sleep_timer(timer, speed, spin, dt)),
@@ -143,9 +149,9 @@ def probe_narrow_work(module, lab_path):
     out = {}
     for name, asleep in (("awake", False), ("asleep", True)):
         world = grid_world(module, asleep)
-        start = time.process_time()
+        start = clock(module)
         world.step()
-        out[name] = dict(world.counters, ms=(time.process_time() - start) * 1000,
+        out[name] = dict(world.counters, ms=(clock(module) - start) * 1000,
                          still_asleep=sum(1 for body in world.bodies if body.asleep))
     return out
 

@@ -456,6 +456,10 @@ def runs(sub, functions, handout_note, runtime, sat_cases, resolve_cases, fricti
         if not frames:
             raise Fail(f"the '{name}' scene recorded no frames: main() returned before its loop ran, or the loop "
                        "does not call lab.record(...).", HINTS["runtime"])
+        problem = lab_checks.record_problem(run.record, scenes.SCENARIOS[name]())
+        if problem:
+            raise Error(f"the '{name}' scene's record cannot be what the lab runtime wrote: {problem}. The checker "
+                        "does not grade it.", HINTS["runtime"])
         if not metrics.finite(frames):
             raise Fail(f"in the '{name}' scene a crate's position or speed became infinite or NaN.", HINTS["settle"])
         records[name] = run

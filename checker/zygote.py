@@ -31,7 +31,7 @@ import socket
 import sys
 
 WARM_MODULES = ("pygame", "lesson11.runtime", "lesson11.panel", "lesson11.physics2d", "lesson11.physics2d.draw",
-                "checker.child", "checker.crates_probes", "checker.shapes_probes", "checker.ball_probes",
+                "checker.child", "checker.tape", "checker.crates_probes", "checker.shapes_probes", "checker.ball_probes",
                 "checker.bullets_probes", "checker.sleep_probes")
 MAX_MESSAGE = 1 << 20
 

@@ -212,7 +212,9 @@ WRONG = [
               "                vel=item.get(\"vel\", (0, 0)), omega=item.get(\"omega\", 0.0), "
               "inertia=polygon_inertia(local, mass),\n",
               "                vel=item.get(\"vel\", (0, 0)), omega=item.get(\"omega\", 0.0),\n")],
-          why="the handout's build() line changed"),
+          also=("bodies_inertia",),
+          why="the handout's build() line changed; the checker replays build() with the handout's code, which "
+              "calls polygon_inertia where this file's does not, so bodies_inertia cannot be judged (an error)"),
     wrong("outside_sat_no_flip", "deleted the handout's A-to-B flip in sat()", "handout_unchanged", edits=[(
         "    if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:\n        best_axis = -best_axis  # always from A to B\n",
         "")], also=("parallel_axes",), why="sat() changed outside the steps; half its normals point B to A"),

@@ -1,6 +1,7 @@
 """A lab is one module: a new lab is graded without touching child.py, grade.py, cli.py or report.py.
 
-The test writes a toy lab (a student file), its checks module and its probe module into a
+The test writes a toy lab (a student file), its checks module, its probe module and its starter
+(the handout: the parent replays the probe's calls of the step functions through it) into a
 temporary folder, adds one row to checker.labs.LABS for this process only, and grades the
 toy file with the command line in-process: the probe runs in the child (which imports the
 lab's probe module by the name the lab gives), a scene runs under the lab runtime, and the
@@ -21,7 +22,9 @@ from lesson11 import runtime as lab
 
 
 def double(x):
+    # --- step 1: double x ---
     return 2 * x
+    # --- end of step 1 ---
 
 
 def main():
@@ -44,12 +47,17 @@ def probe_double(module, lab_path):
 PROBES = {"double": ("double", probe_double)}
 '''
 
+STARTER = STUDENT.replace("    return 2 * x\n", "    return None\n")
+
 CHECKS = '''
 """The toy lab's checks."""
+import os
+
 from checker.checks import Fail, Passed, Registry
 
 TITLE = "Toy Lab"
 PROBES = "toy_lab_probes"
+STARTER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "toy_starter.py")  # the handout: its step functions
 CHECKS = Registry()
 
 
@@ -95,6 +103,7 @@ def toy_lab(tmp_path, monkeypatch):
     # child process has on its path too, so the child can import the probe module by its name
     (tmp_path / "toy_lab_probes.py").write_text(textwrap.dedent(PROBES), encoding="utf-8")
     (tmp_path / "toy_lab_checks.py").write_text(textwrap.dedent(CHECKS), encoding="utf-8")
+    (tmp_path / "toy_starter.py").write_text(STARTER, encoding="utf-8")
     student = tmp_path / "toy.py"
     student.write_text(STUDENT, encoding="utf-8")
     monkeypatch.syspath_prepend(str(tmp_path))

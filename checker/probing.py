@@ -1,0 +1,147 @@
+"""The grading parent's half of a probe: what the child is told, and the replay that judges its tape.
+
+Before the probe run the parent works out, from the lab's starter and solution
+(files the child never opens): which functions are the student's step
+functions (those holding a step region in the starter), the spliced sources
+some probes use (the student's function with the solution's other step in it,
+checker/crates_probes.py `with_reference_steps`), and a fresh random seed for
+the inputs the probes draw per run. After the run, `judge` replays the child's
+tapes (checker/tape.py) through the same probes, with the starter as the
+module, and returns what the lab's checks read: {"missing": [...],
+"functions": {probe name: {"ok": True, "data": ...} or {"ok": False, "error": ...}}}.
+"""
+import ast
+import importlib
+import secrets
+
+from . import tape
+from .handout import MarkerError, step_regions
+
+_STARTERS = {}   # starter path -> (its compiled code, its step functions)
+
+
+def step_functions(source):
+    """Names of the top-level functions of `source` that hold a step region."""
+    lines = source.splitlines()
+    regions = step_regions(lines)
+    body = ast.parse(source).body
+    names = []
+    for index, node in enumerate(body):
+        # a region of comments only (a starter's TODO) may lie after the function's last statement
+        end = body[index + 1].lineno - 1 if index + 1 < len(body) else len(lines)
+        if isinstance(node, ast.FunctionDef) and any(node.lineno <= start + 1 <= end
+                                                     for start, _, _ in regions.values()):
+            names.append(node.name)
+    return names
+
+
+def _starter(path):
+    """(compiled starter, its step functions), read once per process."""
+    if path not in _STARTERS:
+        with open(path, encoding="utf-8") as handle:
+            source = handle.read()
+        _STARTERS[path] = (compile(source, path, "exec"), step_functions(source))
+    return _STARTERS[path]
+
+
+def splice_source(mine, theirs, function, steps):
+    """The student's `function` with the inside of each step in `steps` taken from the solution.
+
+    mine, theirs: the lab's and the solution's source text. Returns {"first": the function's first
+    line index, "text": its source} (compiled in the child at the lab's own line numbers), or None
+    when the function or the steps' markers cannot be found.
+    """
+    try:
+        mine, theirs = mine.splitlines(), theirs.splitlines()
+        my_regions, their_regions = step_regions(mine), step_regions(theirs)
+        tree = ast.parse("\n".join(mine))
+    except (MarkerError, SyntaxError, ValueError):
+        return None
+    node = next((n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == function), None)
+    if node is None or any(step not in my_regions or step not in their_regions for step in steps):
+        return None
+    first, last = node.lineno - 1, node.end_lineno
+    lines = list(mine)
+    for step in sorted(steps, reverse=True):
+        start, end, indent = my_regions[step]
+        their_start, their_end, their_indent = their_regions[step]
+        if not first < start < end < last + 1:
+            return None
+        body = [indent + line[len(their_indent):] if line.startswith(their_indent) else line
+                for line in theirs[their_start + 1:their_end]]
+        last += len(body) - (end - start - 1)
+        lines[start + 1:end] = body
+    return {"first": first, "text": "\n".join(lines[first:last]) + "\n"}
+
+
+def settings_for(lab, source, seed=None):
+    """The probe run's settings: the probe module, the step functions, the splices and the run's seed."""
+    probes = importlib.import_module(lab.probes)
+    starter = getattr(lab.module, "STARTER", None)
+    steps = _starter(starter)[1] if starter else list(getattr(probes, "STEP_FUNCTIONS", ()))
+    splices = {}
+    for function, wanted, solution in getattr(probes, "SPLICES", ()):
+        try:
+            with open(solution, encoding="utf-8") as handle:
+                theirs = handle.read()
+        except OSError:
+            continue
+        spliced = splice_source(source, theirs, function, wanted)
+        if spliced:
+            splices[tape.splice_name(function, wanted)] = spliced
+    return {"probes": lab.probes, "steps": steps, "splices": splices,
+            "seed": secrets.randbelow(2 ** 31) if seed is None else seed}
+
+
+def _error(message):
+    return {"kind": "exception", "message": message, "line": None, "text": None, "traceback": ""}
+
+
+def judge(lab, path, settings, child):
+    """Replay the child's probe result (`child`: run_probe's output) through the lab's probes here.
+
+    Returns {"missing", "functions"} as the checks read it. A probe whose tape ends where the
+    child's probe stopped with an error gets that error (the student's line); a tape that does not
+    fit the parent's own inputs is an error naming that, never data.
+    """
+    probes = importlib.import_module(lab.probes)
+    starter = getattr(lab.module, "STARTER", None)
+    tapes = child.get("tapes") if isinstance(child, dict) else None
+    missing = child.get("missing") if isinstance(child, dict) else None
+    if not isinstance(tapes, dict) or not isinstance(missing, list):
+        return {"missing": [], "functions": {name: {"ok": False, "error": _error(
+            "the probe's result is not in the checker's format (the file's code changed what the child reports)")}
+            for name in probes.PROBES}}
+    steps = settings["steps"]
+    namespace = {"__name__": "lab_handout", "__builtins__": __builtins__}
+    if starter:
+        exec(_starter(starter)[0], namespace)
+    functions = {}
+    for name, (function, probe) in probes.PROBES.items():
+        record = tapes.get(name)
+        if not isinstance(record, dict) or not isinstance(record.get("tape"), list):
+            continue
+        child_error = record.get("error") if isinstance(record.get("error"), dict) else None
+        replay = tape.Replayer(namespace, steps, record["tape"], child.get("constants"), settings.get("seed", 0))
+        try:
+            data = probe(replay, path)
+        except (tape.StudentRaised, tape.TapeEnded) as exc:
+            functions[name] = {"ok": False, "error": child_error or _error(
+                f"{function}() stopped in the child, but the child gave no account of the error ({exc})")}
+            continue
+        except tape.TapeMismatch as exc:
+            functions[name] = {"ok": False, "error": _error(
+                f"the checker could not replay what {function}() did ({exc}): the code outside the steps "
+                "does not behave like the handout's, or the child's report was changed")}
+            continue
+        except Exception as exc:  # noqa: BLE001 - the probe's own code failed on what the function returned
+            functions[name] = {"ok": False, "error": child_error or _error(f"{type(exc).__name__}: {exc}")}
+            continue
+        if child_error is not None:
+            functions[name] = {"ok": False, "error": child_error}
+        elif not replay.finished():
+            functions[name] = {"ok": False, "error": _error(
+                f"the child reported more calls of {function}() than the checker's probe makes")}
+        else:
+            functions[name] = {"ok": True, "data": data}
+    return {"missing": [str(m) for m in missing], "functions": functions}

@@ -1,0 +1,119 @@
+"""The probe's tape (checker/tape.py): the parent's replay judges, and the inputs drawn per run are fair.
+
+Each lab's solution is probed in this process the way checker/child.py does it
+(a tape.Recorder over the loaded file), the tape goes through JSON, and
+checker/probing.judge replays it with the starter as the module, as the
+grading parent does. Then:
+  - every function check passes for 40 seeds (the inputs drawn per run never
+    make a correct file fail: a false fail is as bad as a false pass);
+  - a tape recorded with one seed does not fit a replay with another (outputs
+    cannot be prepared for inputs the parent has not yet drawn);
+  - a tape whose reported arguments were changed, or that claims calls the
+    probe never made, is an error, never data.
+The real procedure runs the Recorder in a sandboxed child process and reads its
+result from the run's work folder (tests/test_checker*.py do that end to end).
+"""
+import copy
+import json
+import os
+
+import pytest
+
+os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
+
+from checker import child, labs, probing, tape  # noqa: E402
+from checker.checks import PASS  # noqa: E402
+from checker.grade import Submission  # noqa: E402
+from checker.sandbox import RunResult  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SEEDS = range(40)
+LOADED = {}
+
+
+def lab_by_id(lab_id):
+    return next(lab for lab in labs.LABS if lab.id == lab_id)
+
+
+def recorded(lab, path, seed, tmp_path):
+    """The child's probe result for `path` at `seed`, through JSON as the child writes it."""
+    import importlib
+    with open(path, encoding="utf-8") as handle:
+        source = handle.read()
+    settings = probing.settings_for(lab, source, seed)
+    module = child.load_lab(path, str(tmp_path / os.path.basename(path)))
+    result = child.run_probe(module, path, importlib.import_module(lab.probes), 10.0, settings)
+    return settings, json.loads(json.dumps(result)), source
+
+
+def function_results(lab, path, source, settings, result):
+    """{check id: status} of the lab's checks that read only the probe."""
+    sub = Submission(path=path, name=os.path.basename(path), source=source)
+    sub.probe = RunResult(status="done", result={"probe": probing.judge(lab, path, settings, result)})
+    results = lab.checks.run(sub, stop_at_scenarios=True)
+    return {r.id: (r.status, r.message if hasattr(r, "message") else "") for r in results.ordered(lab.checks)
+            if r.status != "skip"}, sub.probe.result["probe"]
+
+
+@pytest.mark.parametrize("lab_id", [lab.id for lab in labs.LABS])
+def test_the_solution_passes_every_function_check_for_every_seed(lab_id, tmp_path):
+    lab = lab_by_id(lab_id)
+    path = os.path.join(ROOT, "solutions", f"{lab_id}.py")
+    failures = []
+    for seed in SEEDS:
+        settings, result, source = recorded(lab, path, seed, tmp_path)
+        statuses, _ = function_results(lab, path, source, settings, result)
+        bad = {cid: status for cid, status in statuses.items() if status[0] != PASS and cid != "handout_unchanged"}
+        if bad:
+            failures.append((seed, bad))
+    assert not failures, f"{lab_id}: a correct file fails with drawn inputs: {failures[:3]}"
+
+
+@pytest.mark.parametrize("lab_id", [lab.id for lab in labs.LABS])
+def test_a_tape_made_for_other_inputs_does_not_fit(lab_id, tmp_path):
+    lab = lab_by_id(lab_id)
+    path = os.path.join(ROOT, "solutions", f"{lab_id}.py")
+    settings, result, source = recorded(lab, path, 1, tmp_path)
+    other = dict(settings, seed=2)
+    judged = probing.judge(lab, path, other, result)
+    drawn = [name for name, entry in judged["functions"].items() if not entry["ok"]]
+    assert drawn, f"{lab_id}: every probe accepted a tape recorded for another seed"
+    for name in drawn:
+        assert "could not replay" in judged["functions"][name]["error"]["message"]
+    same = probing.judge(lab, path, settings, result)
+    assert all(entry["ok"] for entry in same["functions"].values())
+
+
+def test_a_forged_argument_or_an_extra_call_is_an_error_not_data(tmp_path):
+    lab = lab_by_id("tumbling_crates")
+    path = os.path.join(ROOT, "solutions", "tumbling_crates.py")
+    settings, result, source = recorded(lab, path, 3, tmp_path)
+    forged = copy.deepcopy(result)
+    forged["tapes"]["sat"]["tape"][0]["args"] = "0" * 24   # a call the parent's probe never made
+    judged = probing.judge(lab, path, settings, forged)
+    assert not judged["functions"]["sat"]["ok"]
+    assert "other arguments" in judged["functions"]["sat"]["error"]["message"]
+    longer = copy.deepcopy(result)
+    longer["tapes"]["apply_impulse"]["tape"].append(longer["tapes"]["apply_impulse"]["tape"][-1])
+    judged = probing.judge(lab, path, settings, longer)
+    assert not judged["functions"]["apply_impulse"]["ok"]
+    assert "more calls" in judged["functions"]["apply_impulse"]["error"]["message"]
+    broken = {"tapes": "nothing", "missing": []}
+    judged = probing.judge(lab, path, settings, broken)
+    assert all(not entry["ok"] for entry in judged["functions"].values())
+
+
+def test_the_child_never_sends_a_reference_value(tmp_path):
+    """The child's result holds tapes (what the functions did), not the probes' data with the lesson's answers."""
+    lab = lab_by_id("tumbling_crates")
+    path = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
+    settings, result, _ = recorded(lab, path, 4, tmp_path)
+    text = json.dumps(result)
+    assert "lesson" not in text and "expected" not in text and "want" not in text
+    assert set(result) == {"tapes", "constants", "missing"}
+    # the starter's sat() returns None: its tape says so, and the parent's data has the lesson's answer beside it
+    judged = probing.judge(lab, path, settings, result)
+    cases = judged["functions"]["sat"]["data"]
+    assert all(case["got"] is None for case in cases)
+    assert sum(case["lesson"] is not None for case in cases) >= 10
