@@ -1,11 +1,12 @@
 """The child process that runs one lab file for the checker, isolated from the grader.
 
-    python -m checker.child LAB_PATH TASK SETTINGS_JSON RESULT_JSON
+    python -m checker.child LAB_PATH TASK SETTINGS_JSON fd:N
 
 TASK is "probe" (import the lab and test its own functions on the lesson's
 cases) or "scenario" (configure the lab runtime with SETTINGS_JSON and run the
-lab's main()). The child writes what happened to RESULT_JSON; the parent (the
-grader) reads it and decides. The lab is compiled from its source under its own
+lab's main()). The child writes what happened, one JSON line per phase, to file
+descriptor N, the write end of a pipe the parent (the grader) opened and reads;
+the parent decides. The lab sees sys.argv as [its own path], as when run itself. The lab is compiled from its source under its own
 file name (so tracebacks name the student's file and line) and imported under
 the module name "lab_under_test", so its `if __name__ == "__main__":` guard does
 not run main(). No bytecode is written next to the submitted file.
@@ -193,7 +194,9 @@ def run_scenario(module, settings):
 
 
 def main(argv):
-    lab_path, task, settings_path, result_path = argv
+    lab_path, task, settings_path, channel = argv
+    result_pipe = os.fdopen(int(channel.split(":", 1)[1]), "w", encoding="utf-8")
+    sys.argv[:] = [lab_path]
     faulthandler.enable()
     budget = float(os.environ.get("CHECKER_FAULT_SECONDS", "0") or 0)
     trace = open("timeout_traceback.txt", "w")
@@ -214,9 +217,8 @@ def main(argv):
     result = {"task": task, "phase": "import"}
 
     def save():
-        with open(result_path + ".tmp", "w", encoding="utf-8") as handle:
-            json.dump(result, handle)
-        os.replace(result_path + ".tmp", result_path)
+        result_pipe.write(json.dumps(result) + "\n")
+        result_pipe.flush()
 
     save()
     try:

@@ -89,18 +89,21 @@ def _limit_child(limits):
     return apply
 
 
-def _start(lab_path, task, settings_path, result_path, work, env, limits):
-    """Start the child: forked by the zygote if it is on and answers, else with subprocess."""
-    argv = ["checker.child", lab_path, task, settings_path, result_path]
+def _start(lab_path, task, settings_path, result_fd, work, env, limits):
+    """Start the child: forked by the zygote if it is on and answers, else with subprocess.
+
+    result_fd: the write end of the pipe the child writes its result to (the parent reads the other end).
+    """
     if zygote_enabled():
         client = _zygote_client()
         if client is not None:
-            proc = client.spawn(argv, work, env, limits)
+            proc = client.spawn(["checker.child", lab_path, task, settings_path, "fd:3"], work, env, limits, result_fd)
             if proc is not None:
                 return proc
-    command = [sys.executable, "-X", "faulthandler", "-m"] + argv
+    command = [sys.executable, "-X", "faulthandler", "-m", "checker.child", lab_path, task, settings_path,
+               f"fd:{result_fd}"]
     return _Subprocess(subprocess.Popen(command, cwd=work, env=env, stdin=subprocess.DEVNULL,
-                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, pass_fds=(result_fd,),
                                         preexec_fn=_limit_child(limits)))
 
 
@@ -202,8 +205,8 @@ class ZygoteClient:
                 self.close()
         return self.ready
 
-    def spawn(self, argv, cwd, env, limits):
-        """Have the zygote fork a child running `python -m argv...`; a _Forked, or None if it cannot."""
+    def spawn(self, argv, cwd, env, limits, result_fd):
+        """Have the zygote fork a child running `python -m argv...` (result_fd becomes its fd 3); a _Forked or None."""
         if self.broken:
             return None
         out_read, out_write = os.pipe()
@@ -215,7 +218,7 @@ class ZygoteClient:
         try:
             with self.lock:
                 socket.send_fds(self.control, [json.dumps(request).encode()],
-                                [out_write, err_write, theirs.fileno()])
+                                [out_write, err_write, theirs.fileno(), result_fd])
         except OSError:
             data = None
         else:
@@ -324,6 +327,17 @@ def _read_json(path, limit):
         return None
 
 
+def _last_result(data):
+    """The last complete JSON line the child wrote on its result pipe (it writes one per phase), or {}."""
+    for line in reversed(data.split(b"\n")[:-1]):
+        try:
+            value = json.loads(line)
+        except ValueError:
+            continue
+        return value if isinstance(value, dict) else {}
+    return {}
+
+
 def run_child(lab_path, task, settings, limits):
     """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour."""
     lab_path = os.path.abspath(lab_path)
@@ -332,7 +346,6 @@ def run_child(lab_path, task, settings, limits):
         if task == "scenario":
             settings["record"] = os.path.join(work, "record.json")
         settings_path = os.path.join(work, "settings.json")
-        result_path = os.path.join(work, "result.json")
         with open(settings_path, "w", encoding="utf-8") as handle:
             json.dump(settings, handle)
         env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
@@ -342,14 +355,20 @@ def run_child(lab_path, task, settings, limits):
             "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
         })
         start = time.monotonic()
-        proc = _start(lab_path, task, settings_path, result_path, work, env, limits)
+        result_read, result_write = os.pipe()   # the child's result comes over a pipe we opened, not a file
+        try:
+            proc = _start(lab_path, task, settings_path, result_write, work, env, limits)
+        finally:
+            os.close(result_write)
         chunks = {"stdout": [], "stderr": []}
+        result_chunks, result_size = [], 0
         total = 0
         status = None
         selector = selectors.DefaultSelector()
         selector.register(proc.stdout_fd, selectors.EVENT_READ, "stdout")
         selector.register(proc.stderr_fd, selectors.EVENT_READ, "stderr")
-        open_streams = 2
+        selector.register(result_read, selectors.EVENT_READ, "result")
+        open_streams = 3
         deadline = start + wall_limit(limits)
         while open_streams:
             remaining = deadline - time.monotonic()
@@ -361,6 +380,11 @@ def run_child(lab_path, task, settings, limits):
                 if not data:
                     selector.unregister(key.fileobj)
                     open_streams -= 1
+                    continue
+                if key.data == "result":
+                    result_size += len(data)
+                    if result_size <= RESULT_LIMIT:
+                        result_chunks.append(data)
                     continue
                 room = limits.max_output - total
                 chunks[key.data].append(data[:max(room, 0)])
@@ -380,9 +404,10 @@ def run_child(lab_path, task, settings, limits):
             proc.wait()
         _kill_group(proc)  # anything the lab left running in its group
         selector.close()
+        os.close(result_read)
         proc.close()
         seconds = time.monotonic() - start
-        result = _read_json(result_path, RESULT_LIMIT) or {}
+        result = _last_result(b"".join(result_chunks)) if result_size <= RESULT_LIMIT else {}
         record = _read_json(settings["record"], RECORD_LIMIT) if task == "scenario" else None
         trace = ""
         try:

@@ -12,9 +12,9 @@ the grader's pipes, unbuffered utf-8 text streams, no bytecode written, faulthan
 runs checker/child.py as __main__. The zygote reaps its children and reports each exit status.
 
 Protocol (SOCK_SEQPACKET, one JSON message per packet):
-  grader -> zygote, on the control socket: {"argv", "cwd", "env", "limits"} with three file
-      descriptors: the write ends of the stdout and stderr pipes, and the zygote's end of a
-      fresh socket pair for this request;
+  grader -> zygote, on the control socket: {"argv", "cwd", "env", "limits"} with four file
+      descriptors: the write ends of the stdout and stderr pipes, the zygote's end of a
+      fresh socket pair for this request, and the write end of the result pipe (fd 3 in the child);
   zygote -> grader, on the request's socket: {"pid": n} once forked (or {"error": text}),
       later {"returncode": n} (Popen's convention: -signal when killed by a signal).
 The zygote says {"ready": true} on the control socket once its imports are done, and leaves
@@ -44,7 +44,7 @@ def _child(request, fds, base_path, close):
         signal.signal(signal.SIGINT, signal.default_int_handler)
         for thing in close:
             thing.close()  # the zygote's sockets (this request's among them) and its selector
-        out_fd, err_fd, _ = fds
+        out_fd, err_fd, _, result_fd = fds
         from checker import sandbox
         limits = sandbox.Limits(**request["limits"])
         sandbox._limit_child(limits)()  # setsid and the rlimits, exactly as the preexec_fn does
@@ -52,7 +52,8 @@ def _child(request, fds, base_path, close):
         os.dup2(null, 0)
         os.dup2(out_fd, 1)
         os.dup2(err_fd, 2)
-        os.closerange(3, max(os.sysconf("SC_OPEN_MAX"), 256) if hasattr(os, "sysconf") else 4096)
+        os.dup2(result_fd, 3)   # the result pipe: the child's argv names fd 3
+        os.closerange(4, max(os.sysconf("SC_OPEN_MAX"), 256) if hasattr(os, "sysconf") else 4096)
         os.chdir(request["cwd"])
         os.environ.clear()
         os.environ.update(request["env"])
@@ -149,12 +150,12 @@ def serve(control):
                     _reap(running)
                     continue
                 try:
-                    data, fds, _flags, _addr = socket.recv_fds(control, MAX_MESSAGE, 3)
+                    data, fds, _flags, _addr = socket.recv_fds(control, MAX_MESSAGE, 4)
                 except OSError:
                     return
                 if not data:
                     return  # the grader is gone
-                if len(fds) != 3:
+                if len(fds) != 4:
                     for fd in fds:
                         os.close(fd)
                     continue
@@ -163,7 +164,7 @@ def serve(control):
                     request = json.loads(data)
                     pid = os.fork()
                 except BaseException as exc:  # noqa: BLE001 - tell the grader, keep serving
-                    for fd in fds[:2]:
+                    for fd in (fds[0], fds[1], fds[3]):
                         os.close(fd)
                     _send(reply, {"error": f"{type(exc).__name__}: {exc}"})
                     reply.close()
@@ -174,7 +175,7 @@ def serve(control):
                     os.close(wake_read)
                     os.close(wake_write)
                     _child(request, fds, base_path, close)
-                for fd in fds[:2]:
+                for fd in (fds[0], fds[1], fds[3]):
                     os.close(fd)
                 running[pid] = reply
                 _send(reply, {"pid": pid})
