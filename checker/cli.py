@@ -69,6 +69,9 @@ def parse_args(argv):
     parser.add_argument("--seed", type=int, default=None, metavar="N",
                         help="draw the probes' per-run inputs with seed N (default: a fresh seed per file, shown in "
                              "--json as each file's \"seed\"; give it here to grade a file again with the same inputs)")
+    parser.add_argument("--child-user", metavar="NAME", default=None,
+                        help="run the student's code (the child processes) as this user; the grader itself must "
+                             "run as root and keeps what only it may read, such as the solutions")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     parser.add_argument("--allow-edits", action="store_true",
                         help="code changed outside the steps is a warning, not a failure (the scenes still run)")
@@ -84,6 +87,15 @@ def parse_args(argv):
         parser.error(f"--memory must be >= 64 MB, got {args.memory}")
     if args.max_output < 1:
         parser.error(f"--max-output must be >= 1 KB, got {args.max_output}")
+    if args.child_user is not None:
+        try:
+            import pwd
+            pwd.getpwnam(args.child_user)
+        except (ImportError, KeyError):
+            parser.error(f"--child-user {args.child_user}: no such user on this machine")
+        if os.geteuid() != 0:
+            parser.error(f"--child-user {args.child_user}: only a grader running as root can run the student's code "
+                         "as another user")
     if args.csv is not None and args.csv.lower() == "none":
         args.csv = None  # `--csv none` from older scripts: no CSV (which is now the default)
     for option in ("csv", "gradescope", "gradescope_dir", "pictures", "html"):
@@ -208,7 +220,8 @@ def main(argv=None):
         for line in str(exc).splitlines():
             print(f"checker: error: {line}", file=sys.stderr)
         return USAGE
-    grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024), args.jobs, args.total_timeout,
+    grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024, args.child_user), args.jobs,
+                    args.total_timeout,
                     options={"allow_edits": args.allow_edits}, keep_records=bool(args.pictures or args.html),
                     seed=args.seed)
     rows = grade_all(entries, grader, args.jobs, progress=not args.quiet and len(entries) > 1)

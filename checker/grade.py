@@ -139,7 +139,7 @@ class Grader:
             limits = self.limits
             if self.deadline is not None:
                 left = self.deadline - time.monotonic()
-                limits = Limits(min(limits.timeout, max(left, 0.5)), limits.memory_mb, limits.max_output)
+                limits = Limits(min(limits.timeout, max(left, 0.5)), limits.memory_mb, limits.max_output, limits.user)
             run = run_child(lab_path, task, settings, limits)
         finally:
             self.slots.release()

@@ -45,10 +45,15 @@ ZYGOTE_REPLY_SECONDS = 10.0      # s the zygote may take to fork a child before 
 
 @dataclass
 class Limits:
-    """Per-run limits: wall-clock seconds, address-space MB, output bytes (stdout + stderr)."""
+    """Per-run limits: CPU seconds, address-space MB, output bytes (stdout + stderr), and the user it runs as.
+
+    user: None runs the child as the grader's own user; a user name (the grader must be root) runs
+    only the child as that user, so files the grader keeps to itself (the solutions) stay unreadable.
+    """
     timeout: float = 20.0
     memory_mb: int = 768
     max_output: int = 256 * 1024
+    user: str | None = None
 
 
 @dataclass
@@ -86,6 +91,12 @@ def _limit_child(limits):
         resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
         resource.setrlimit(resource.RLIMIT_FSIZE, (FILE_LIMIT, FILE_LIMIT))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+        if limits.user:   # last: drop root for the student's user (groups first, then group, then user)
+            import pwd
+            entry = pwd.getpwnam(limits.user)
+            os.setgroups([])
+            os.setgid(entry.pw_gid)
+            os.setuid(entry.pw_uid)
     return apply
 
 
@@ -213,7 +224,7 @@ class ZygoteClient:
         err_read, err_write = os.pipe()
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
         request = {"argv": argv, "cwd": cwd, "env": env,
-                   "limits": {"timeout": limits.timeout, "memory_mb": limits.memory_mb,
+                   "limits": {"timeout": limits.timeout, "memory_mb": limits.memory_mb, "user": limits.user,
                               "max_output": limits.max_output}}
         try:
             with self.lock:
@@ -350,6 +361,11 @@ def run_child(lab_path, task, settings, limits):
             json.dump(settings, handle)
         env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
         env.update(_CHILD_ENV)
+        if limits.user:   # the child's own user owns its work folder (its record, its traceback) and nothing else
+            import pwd
+            entry = pwd.getpwnam(limits.user)
+            os.chown(work, entry.pw_uid, entry.pw_gid)
+            env["HOME"] = work
         env.update({
             "PYTHONPATH": os.pathsep.join([PROJECT_ROOT, os.path.dirname(lab_path)]),
             "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),

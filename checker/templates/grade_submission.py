@@ -176,8 +176,8 @@ def run_checker(path, config):
             if left < 5:
                 raise RuntimeError("the checker ran out of time on this submission")
             command = checker_command(copy, config, attempt, left - 5)
-            if user:
-                command = ["runuser", "-u", user, "--"] + command
+            if user:   # the grader stays root (it alone reads the solutions); only the student's code runs as user
+                command += ["--child-user", user]
             proc = subprocess.run(command, cwd=work, env=env, stdin=subprocess.DEVNULL, capture_output=True,
                                   timeout=left)
             try:

@@ -32,3 +32,5 @@ fi
 # the student's code runs as this user, not as root
 id student >/dev/null 2>&1 || useradd --create-home --shell /usr/sbin/nologin student
 chmod -R a+rX "$HERE"
+# the answers stay with the grader: it runs as root, the student's code (as student) cannot read them
+chmod -R go-rwx "$HERE/project/solutions"
