@@ -35,6 +35,15 @@ REQUIRED = probes.REQUIRED
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "ball_on_ramp_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")
+# the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
+STEP_LIBRARY = {2: ("closest_on_segment",), 3: ("circle_polygon",), 4: ("separate", "lesson_separate"),
+                5: ("inertia",), 6: ("circle_contact_point",), 7: ("resolve", "lesson_resolve")}
+STEP_ADVICE = {2: "clamp t to [0, 1] on the edge yourself",
+               3: "handle the centre inside the polygon yourself",
+               4: "split the push-out by inverse mass yourself",
+               5: "write ½ m r² yourself",
+               6: "put the contact point on the ball's surface yourself",
+               7: "write the friction impulse at the contact point yourself"}
 
 # ---------------------------------------------------------------- tolerances of the function checks
 REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)

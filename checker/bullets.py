@@ -35,6 +35,13 @@ REQUIRED = probes.REQUIRED
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "bullets_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "bullets.py")
+# the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
+STEP_LIBRARY = {2: ("circle_toi",), 3: ("bounding_radius",), 4: ("time_of_impact", "circle_toi"),
+                5: ("swept_move", "time_of_impact")}
+STEP_ADVICE = {2: "solve the quadratic for the earlier root yourself",
+               3: "take the farthest corner from the centre yourself",
+               4: "write the broad test against the bounding circle yourself",
+               5: "move to the impact, resolve there and spend the rest of the step yourself"}
 
 # ---------------------------------------------------------------- tolerances and bounds
 TOI_TOLERANCE = 1e-9   # s (the issue); solution: at most 5e-16 s off the geometric answer

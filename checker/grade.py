@@ -17,9 +17,9 @@ import os
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 
-from . import probing
+from . import probing, step_rules
 from .checks import ERROR, FAIL, PASS, skipped_all
 from .sandbox import Limits, run_child
 
@@ -36,6 +36,7 @@ class Submission:
     name: str
     source: str
     probe: object = None
+    flags: list = field(default_factory=list)   # what the step rules flagged (checker/step_rules.py Breach)
     scenarios: dict = field(default_factory=dict)
     options: dict = field(default_factory=dict)
 
@@ -56,6 +57,7 @@ class LabReport:
     records: dict = field(default_factory=dict)
     preview: str = ""   # the scene run ungraded for a picture when the graded scenes never ran (--pictures)
     seed: int | None = None   # the seed of the probe inputs drawn for this run (--seed N grades with the same)
+    flags: list = field(default_factory=list)   # step_rules breaches as dicts (step, line, rule, what, text)
 
     @property
     def score(self):
@@ -160,11 +162,12 @@ class Grader:
         digest = hashlib.sha256(raw).hexdigest()
         sub = Submission(path=path, name=os.path.basename(path), source=raw.decode("utf-8", "replace"),
                          options=dict(self.options))
+        sub.flags = step_rules.scan_lab(sub.source, lab.module)   # the steps' code, read before any of it runs
         settings = probing.settings_for(lab, sub.source, self.seed)
         sub.probe = self.run(path, "probe", settings)
         if sub.probe is None:
             return LabReport(path, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start,
-                             seed=settings["seed"])
+                             seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
         if sub.probe.status == "done":   # the verdicts' data: the child's tapes replayed and judged here
             sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
         state = lab.checks.run(sub, stop_at_scenarios=True)
@@ -198,7 +201,8 @@ class Grader:
                 if settings is not None else None
             if run is not None and getattr(run, "record", None) and run.record.get("records"):
                 records[name], preview = run.record, name
-        return LabReport(path, lab, results, time.monotonic() - start, records, preview, settings["seed"])
+        return LabReport(path, lab, results, time.monotonic() - start, records, preview, settings["seed"],
+                         [asdict(b) for b in sub.flags])
 
     @staticmethod
     def _wants_preview(results):

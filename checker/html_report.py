@@ -112,13 +112,14 @@ def summary_table(rows, names):
     """HTML: the sortable table, one row per file (the file name links to its checks below)."""
     out = ['<table id="summary"><thead><tr><th data-type="text">file</th><th data-type="text">lab</th>'
            '<th data-type="number">score</th><th data-type="text">status</th><th data-type="text">first problem</th>'
-           '</tr></thead><tbody>']
+           '<th data-type="number">flagged</th></tr></thead><tbody>']
     for k, row in enumerate(rows):
         name = names[row.path]
         title = row.lab.title if row.lab is not None else ""
         out.append(f'<tr data-index="{k}"><td><a href="#file-{k}">{_e(name)}</a></td><td>{_e(title)}</td>'
                    f'<td class="num" data-sort="{row.score:g}">{row.score:g}/{row.max_score:g}</td>'
-                   f'<td class="{row.status}">{row.status}</td><td>{_e(_first_problem(row))}</td></tr>')
+                   f'<td class="{row.status}">{row.status}</td><td>{_e(_first_problem(row))}</td>'
+                   f'<td class="num">{len(getattr(row, "flags", ()) or ())}</td></tr>')
     out.append("</tbody></table>")
     return "\n".join(out)
 
@@ -131,6 +132,11 @@ def submission(row, index, pictures, name):
            f'<span class="{row.status}">{row.score:g}/{row.max_score:g} {row.status}</span></summary>']
     if isinstance(row, NotGraded):
         out.append(f'<div class="check error">:( could not be graded: {_e(message_of(row))}</div>')
+    flags = getattr(row, "flags", ()) or ()
+    if flags:   # what the step rules flagged: for the instructor to read (checker/README.md, threat model)
+        out.append('<div class="check flags"><b>flagged in the steps</b> (constructs that reach around the '
+                   'exercise):<ul>' + "".join(f'<li>line {f["line"]} (step {f["step"]}): {_e(f["what"])}: '
+                                              f'<code>{_e(f["text"])}</code></li>' for f in flags) + '</ul></div>')
     for r in row.results:
         out.append(f'<div class="check" data-check="{_e(r.id)}"><span class="{r.status}">{_e(SYMBOL[r.status])}</span> '
                    f'<b>{_e(r.id)}</b> {_e(r.name)} <span class="num">({r.score:g}/{r.max_score:g})</span>')

@@ -92,7 +92,18 @@ def runtime_lines(sub, crash_hint, hint=RUNTIME_HINT, hooks=RUNTIME_HOOKS):
 
 
 def function_data(sub, functions, probe, function, step, crash_hint):
-    """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped."""
+    """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped.
+
+    Fail first when the step rules flagged the step's code (sub.flags, checker/step_rules.py): a
+    step that reaches around the exercise earns nothing, whatever its function returns.
+    """
+    breach = next((b for b in getattr(sub, "flags", ()) or () if b.step == step), None)
+    if breach is not None:
+        raise Fail(breach.message, Hint(step, f"write step {step} yourself",
+                                        "Inside a step use only the lesson's own tools: the names the handout "
+                                        "gives you, math, and the functions you write. No import, no dunder "
+                                        "names, nothing reached through World, the runtime or a module, and "
+                                        "not the library's own version of the function the step asks for."))
     entry = functions.get(probe)
     if entry is None:
         raise Error(f"{sub.name} defines no {function}().", crash_hint)

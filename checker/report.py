@@ -15,6 +15,8 @@ JSON schema (`--json`, version 1):
       "status": "pass" | "fail" | "error",
       "score": float, "max_score": float, "seconds": float,
       "seed": int | null,               # the seed of the inputs the probes drew (checker --seed N repeats them)
+      "flags": [{"step": int, "line": int, "rule": str, "what": str, "text": str}],   # constructs in the
+                                        # step regions the step rules flagged (checker/step_rules.py), [] if none
       "message": str,                   # why the entry could not be graded ("" when it was)
       "criteria": [{                     # in the lab's fixed order ([] when not graded)
           "id": str,                     # stable check id, e.g. "corner_tips"
@@ -105,7 +107,8 @@ def to_json(reports, errors=(), root=None, pictures=None):
         "labs": [{"path": _rel(r.path, root), "lab": r.lab.id if r.lab is not None else None,
                   "title": r.lab.title if r.lab is not None else None, "status": r.status,
                   "score": r.score, "max_score": r.max_score, "seconds": round(r.seconds, 2),
-                  "seed": getattr(r, "seed", None), "message": message_of(r), "criteria": [_criterion_json(c, r, pictures) for c in r.results]}
+                  "seed": getattr(r, "seed", None), "message": message_of(r),
+                  "flags": list(getattr(r, "flags", ()) or ()), "criteria": [_criterion_json(c, r, pictures) for c in r.results]}
                  for r in reports],
         "errors": [{"path": p, "message": m} for p, m in all_errors],
     }

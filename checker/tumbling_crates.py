@@ -36,6 +36,14 @@ REQUIRED = probes.REQUIRED
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
+# the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
+STEP_LIBRARY = {2: ("sat",), 3: ("sat",), 4: ("resolve", "lesson_resolve", "effective_mass_inverse"),
+                5: ("resolve", "lesson_resolve"), 6: ("apply_impulse",)}
+STEP_ADVICE = {2: "write the loop over both shapes' edge normals yourself (project, overlap, keep the smallest)",
+               3: "turn the axis round yourself when it points from B to A",
+               4: "add the spin terms (ra × n)² / I_A and (rb × n)² / I_B to k yourself",
+               5: "clamp jt to [-μ j, μ j] yourself",
+               6: "write the two spin lines yourself, like the velocity lines"}
 RUNTIME_HOOKS = lab_checks.RUNTIME_HOOKS
 
 # ---------------------------------------------------------------- tolerances of the function checks

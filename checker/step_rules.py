@@ -1,0 +1,168 @@
+"""The lab's rules for the code inside the step regions, checked in the grader from the source.
+
+A step is the student's own work: it may use the names the handout gives,
+`math`, and the functions the student writes. The grader reads each step's
+syntax tree (never running it) and flags what reaches around the exercise:
+
+  import    an import inside a step, or a name the file imported itself (other than from math)
+  dunder    a dunder name or attribute (__import__, __globals__, __class__, ...)
+  builtin   exec, eval, compile, open, getattr, setattr, delattr, globals, vars, locals,
+            __import__, breakpoint, input
+  frame     a frame or traceback attribute (f_back, f_locals, gi_frame, tb_frame, ...)
+  reach     World, the lab runtime (`lab`) or the panel (`LabPanel`)
+  module    an attribute of a module other than math (pygame.Vector2 aside)
+  library   a call of the library function the step asks the student to write (the lab's
+            STEP_LIBRARY: {step: names}), by its name or as an attribute (`world.sat(...)`)
+
+These forbid reaching around the exercise, not ways of writing it: every
+correct completion in the corpora passes (tests/test_step_rules.py).
+"""
+import ast
+from dataclasses import dataclass
+
+from .handout import MarkerError, step_regions
+
+BUILTINS = frozenset({"exec", "eval", "compile", "open", "getattr", "setattr", "delattr", "globals", "vars",
+                      "locals", "__import__", "breakpoint", "input"})
+FRAME_ATTRIBUTES = frozenset({"f_back", "f_globals", "f_locals", "f_builtins", "f_code", "gi_frame", "gi_code",
+                              "cr_frame", "ag_frame", "tb_frame", "tb_next", "func_globals"})
+REACH = ("World", "lab", "LabPanel", "runtime", "panel")
+FREE_MODULES = frozenset({"math"})                # a step may use any attribute of these
+FREE_ATTRIBUTES = {"pygame": frozenset({"Vector2", "math"})}   # and these attributes of these
+
+
+@dataclass(frozen=True)
+class Breach:
+    """One construct inside a step region that the rules forbid."""
+    step: int        # the step region it is in
+    line: int        # 1-based line in the file
+    rule: str        # import, dunder, builtin, frame, reach, module, library
+    what: str        # what it does, for a student: "calls the library's sat()"
+    text: str        # the line, stripped
+    message: str = ""   # the whole sentence the step's check shows (scan_lab fills it in)
+
+
+def _is_dunder(name):
+    return len(name) > 4 and name.startswith("__") and name.endswith("__")
+
+
+def _imports(tree):
+    """{bound name: (module it comes from, is it a module itself)} for the top-level imports of a tree."""
+    bound = {}
+    for node in tree.body:
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                name = alias.asname or alias.name.split(".")[0]
+                bound[name] = (alias.name if alias.asname else alias.name.split(".")[0], True)
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            for alias in node.names:
+                # `from lesson11 import runtime as lab`: a module; `from x.y import name`: a module if x.y is a
+                # package whose attribute is lower case and known to be one (runtime, panel, draw, physics2d)
+                is_module = alias.name in ("runtime", "panel", "draw", "physics2d", "math", "collision", "world")
+                bound[alias.asname or alias.name] = (f"{node.module}.{alias.name}", is_module)
+    return bound
+
+
+def _bound_by_code(tree):
+    """Names the file binds itself other than by import: defs, classes, assignments, parameters, loop targets."""
+    names = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            names.add(node.name)
+        elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+            names.add(node.id)
+        elif isinstance(node, ast.arg):
+            names.add(node.arg)
+    return names
+
+
+def scan(source, library=None, starter=None, reach=REACH):
+    """Every Breach inside the step regions of `source` (a lab file's text), in line order.
+
+    library: {step: names of library functions the step asks the student to write}.
+    starter: the handout's source; a name the file imports that the handout does not is the
+    file's own import (rule "import" when a step uses it). [] when the file does not parse or
+    its markers are broken (other checks say so).
+    """
+    library = library or {}
+    try:
+        regions = step_regions(source.splitlines())
+        tree = ast.parse(source)
+    except (MarkerError, SyntaxError, ValueError, RecursionError, MemoryError):
+        return []
+    lines = source.splitlines()
+    spans = [(step, start + 1, end + 1) for step, (start, end, _) in regions.items()]
+
+    def step_of(line):
+        return next((step for step, first, last in spans if first < line < last), None)
+
+    imported = _imports(tree)
+    handed = set(_imports(ast.parse(starter))) if starter else set(imported)
+    own = _bound_by_code(tree)
+    found = {}
+
+    def flag(node, rule, what):
+        line = node.lineno
+        step = step_of(line)
+        if step is not None and (line, rule) not in found:
+            found[(line, rule)] = Breach(step, line, rule, what, lines[line - 1].strip())
+
+    for node in ast.walk(tree):
+        if getattr(node, "lineno", None) is None or step_of(node.lineno) is None:
+            continue
+        step = step_of(node.lineno)
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            names = ", ".join(alias.name for alias in node.names)
+            flag(node, "import", f"imports {names}" + (f" from {node.module}" if getattr(node, "module", None)
+                                                       else ""))
+        elif isinstance(node, ast.Name):
+            if _is_dunder(node.id):
+                flag(node, "dunder", f"uses the dunder name {node.id}")
+            elif node.id in BUILTINS and node.id not in own:
+                flag(node, "builtin", f"uses {node.id}()")
+            elif node.id in reach:
+                flag(node, "reach", f"reaches {node.id}")
+            elif node.id in imported and node.id not in handed and imported[node.id][0].split(".")[0] \
+                    not in FREE_MODULES and node.id not in own:
+                flag(node, "import", f"uses {node.id}, which the file imports itself")
+        elif isinstance(node, ast.Attribute):
+            if _is_dunder(node.attr):
+                flag(node, "dunder", f"uses the dunder attribute .{node.attr}")
+            elif node.attr in FRAME_ATTRIBUTES:
+                flag(node, "frame", f"reaches into a frame (.{node.attr})")
+            elif isinstance(node.value, ast.Name) and node.value.id in imported and imported[node.value.id][1] \
+                    and node.value.id not in own:
+                module = imported[node.value.id][0].split(".")[0]
+                if module not in FREE_MODULES and node.attr not in FREE_ATTRIBUTES.get(module, ()):
+                    flag(node, "module", f"reaches into the module {node.value.id} (.{node.attr})")
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and _is_dunder(node.name):
+            flag(node, "dunder", f"defines the dunder name {node.name}")
+        if isinstance(node, ast.Call):
+            names = library.get(step, ())
+            func = node.func
+            if isinstance(func, ast.Name) and func.id in names and (func.id not in own or func.id in imported):
+                flag(node, "library", f"calls the library's {func.id}()")
+            elif isinstance(func, ast.Attribute) and func.attr in names:
+                flag(node, "library", f"calls the library's {func.attr}() (as .{func.attr})")
+    return sorted(found.values(), key=lambda breach: (breach.line, breach.rule))
+
+
+def describe(breach, advice=""):
+    """The one-line message a step's check shows: "line 57 (step 2) calls the library's sat(): write ... yourself"."""
+    tail = advice or f"write step {breach.step} with the lesson's own tools (the handout's names, math, your functions)"
+    return f"line {breach.line} (step {breach.step}) {breach.what} (`{breach.text}`): {tail}."
+
+
+def scan_lab(source, lab_module):
+    """scan() with the lab's own rules (its STEP_LIBRARY, STARTER and STEP_ADVICE), messages filled in."""
+    starter = None
+    path = getattr(lab_module, "STARTER", None)
+    if path:
+        try:
+            with open(path, encoding="utf-8") as handle:
+                starter = handle.read()
+        except OSError:
+            starter = None
+    advice = getattr(lab_module, "STEP_ADVICE", {})
+    return [Breach(b.step, b.line, b.rule, b.what, b.text, describe(b, advice.get(b.step, "")))
+            for b in scan(source, getattr(lab_module, "STEP_LIBRARY", {}), starter)]
