@@ -10,12 +10,14 @@ A lab's starter marks what the student writes with lines
 placeholder statement, parses both files and compares their syntax trees, so
 formatting, comments, blank lines and docstrings do not matter but any change
 to the code the student was handed does (gravity, a constant, the scene, the
-World's settings, the lab-runtime lines, the final print). Top-level imports
+World's settings, the lab-runtime lines, the final print); an added print(...)
+that calls nothing (a debug print) is a warning instead. Top-level imports
 the student added that bind new names are allowed (they change nothing the
 handout runs) and listed.
 
 It returns a Comparison: `same` (bool), `problems` (one line each, naming the
-submission's line and, where there is one, the handout's) and `added_imports`.
+submission's line and, where there is one, the handout's), `added_imports` and
+`warnings` (the debug prints added).
 """
 import ast
 import difflib
@@ -37,6 +39,26 @@ class Comparison:
     same: bool
     problems: list = field(default_factory=list)
     added_imports: list = field(default_factory=list)
+    warnings: list = field(default_factory=list)   # debug prints added outside the steps (allowed)
+
+
+HARMLESS_CALLS = frozenset({"str", "repr", "format", "len", "round", "abs", "int", "float", "type"})
+
+
+def is_debug_print(node):
+    """True for a statement that only prints: print(...) whose arguments call nothing but str(), repr(),
+    len(), round(), abs(), int(), float() or type() and read no attribute that could run code (a property)."""
+    if not (isinstance(node, ast.Expr) and isinstance(node.value, ast.Call)
+            and isinstance(node.value.func, ast.Name) and node.value.func.id == "print"):
+        return False
+    for part in ast.walk(node.value):
+        if part is node.value:
+            continue
+        if isinstance(part, ast.Call) and not (isinstance(part.func, ast.Name) and part.func.id in HARMLESS_CALLS):
+            return False
+        if isinstance(part, (ast.NamedExpr, ast.Lambda, ast.Await, ast.Yield, ast.YieldFrom)):
+            return False
+    return True
 
 
 def step_regions(lines):
@@ -225,8 +247,13 @@ def compare(submission, starter, submission_name="the file", starter_name="the h
     sub_lines, start_lines = submission.splitlines(), starter.splitlines()
     differences = []
     _diff(mine.body, theirs.body, differences)
-    problems = []
+    problems, warnings = [], []
     for x, y in differences:
+        if x is not None and y is None and is_debug_print(x):
+            line = my_origin[x.lineno - 1]
+            warnings.append(f"line {line}: `{_text(sub_lines, line)}` added outside the steps (a debug print is "
+                            "allowed; remove it before you hand in)")
+            continue
         line = my_origin[x.lineno - 1] if x is not None else None
         hand = their_origin[y.lineno - 1] if y is not None else None
         if x is not None and y is not None:
@@ -236,6 +263,8 @@ def compare(submission, starter, submission_name="the file", starter_name="the h
             problems.append(f"line {line} `{_text(sub_lines, line)}` was added")
         else:
             problems.append(f"the handout's line `{_text(start_lines, hand)}` was removed")
+    if not problems and warnings:
+        return Comparison(True, [], added, warnings)
     if not problems:
         problems.append("the code outside the steps differs from the handout")
-    return Comparison(False, problems, added)
+    return Comparison(False, problems, added, warnings)

@@ -60,8 +60,10 @@ def handout_unchanged(sub, starter_path, hint):
         comparison = handout.compare(sub.source, starter, sub.name, "the handout")
     except handout.MarkerError as exc:
         raise Fail(f"{exc}.", hint)
-    if comparison.same:   # the check's own title says the rest: only the imports the file adds are news
-        return f"added imports: {'; '.join(comparison.added_imports)}" if comparison.added_imports else ""
+    if comparison.same:   # the check's own title says the rest: only added imports and debug prints are news
+        notes = ([f"added imports: {'; '.join(comparison.added_imports)}"] if comparison.added_imports else []) + \
+            [f"warning: {w}" for w in comparison.warnings]
+        return "; ".join(notes)
     listed = "; ".join(comparison.problems[:handout.MAX_PROBLEMS])
     more = len(comparison.problems) - handout.MAX_PROBLEMS
     text = f"code outside the steps differs from the handout: {listed}" + (f"; and {more} more" if more > 0 else "")

@@ -38,6 +38,22 @@ def test_an_added_import_is_allowed_and_listed():
     assert result.same and result.added_imports == ["line 1: import numpy as np"]
 
 
+def test_a_debug_print_outside_the_steps_is_a_warning_naming_its_line():
+    source = edited(SOLUTION, "def main():\n", "def main():\n    print('starting', len(WIDTH_LIST) if 0 else 0)\n"
+                    .replace("WIDTH_LIST", "str(WIDTH)"))
+    result = handout.compare(source, STARTER)
+    line = source.splitlines().index("    print('starting', len(str(WIDTH)) if 0 else 0)") + 1
+    assert result.same and result.problems == []
+    assert len(result.warnings) == 1 and result.warnings[0].startswith(f"line {line}: ")
+
+
+@pytest.mark.parametrize("added", ["    print(sat([], []))\n", "    print(random.random())\n",
+                                   "    x = 1\n", "    print((lambda: 0)())\n"])
+def test_a_print_that_calls_code_or_any_other_added_line_still_fails(added):
+    result = handout.compare(edited(SOLUTION, "def main():\n", "def main():\n" + added), STARTER)
+    assert not result.same and "was added" in result.problems[0]
+
+
 def test_an_import_that_rebinds_a_handout_name_is_an_edit():
     result = handout.compare(edited(SOLUTION, "import random\n", "import random\nfrom math import cos as cross\n"),
                              STARTER)
