@@ -1,6 +1,6 @@
 """The parts of a lab's checks that every lab shares: loading, the handout comparison, the runtime lines.
 
-A lab's module (checker/tumbling_crates.py, checker/more_shapes.py) registers
+A lab's module (checker/labs/tumbling_crates/checks.py, checker/labs/more_shapes/checks.py) registers
 its own checks, with its own docstrings and hints, and calls these for the
 work: each returns what the check passes on, or raises Fail / Error with the
 hint it is given.

@@ -4,7 +4,7 @@ Before the probe run the parent works out, from the lab's starter and solution
 (files the child never opens): which functions are the student's step
 functions (those holding a step region in the starter), the spliced sources
 some probes use (the student's function with the solution's other step in it,
-checker/crates_probes.py `with_reference_steps`), and a fresh random seed for
+checker/labs/tumbling_crates/probes.py `with_reference_steps`), and a fresh random seed for
 the inputs the probes draw per run. After the run, `judge` replays the child's
 tapes (checker/tape.py) through the same probes, with the starter as the
 module, and returns what the lab's checks read: {"missing": [...],

@@ -31,8 +31,9 @@ import socket
 import sys
 
 WARM_MODULES = ("pygame", "lesson11.runtime", "lesson11.panel", "lesson11.physics2d", "lesson11.physics2d.draw",
-                "checker.child", "checker.tape", "checker.crates_probes", "checker.shapes_probes", "checker.ball_probes",
-                "checker.bullets_probes", "checker.sleep_probes")
+                "checker.child", "checker.tape", "checker.labs.tumbling_crates.probes",
+                "checker.labs.more_shapes.probes", "checker.labs.ball_on_ramp.probes", "checker.labs.bullets.probes",
+                "checker.labs.sleeping_crates.probes")
 MAX_MESSAGE = 1 << 20
 
 

@@ -1,5 +1,5 @@
 """`python -m checker` on the Ball on the Ramp lab: the solution passes every check, cheaply; the starter fails
-at its first step with that step's hint; the lab is one row of checker/labs.py."""
+at its first step with that step's hint; the lab is one row of checker/labs/__init__.py."""
 import json
 import os
 import resource
@@ -8,7 +8,8 @@ import sys
 
 import pytest
 
-from checker import ball_on_ramp, labs
+from checker import labs
+from checker.labs.ball_on_ramp import checks as ball_on_ramp
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")

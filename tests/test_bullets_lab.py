@@ -9,7 +9,7 @@ import os
 
 from lab_run import ROOT, run_lab
 
-from checker.bullets_probes import shoot
+from checker.labs.bullets.probes import shoot
 
 SOLUTION = os.path.join(ROOT, "solutions", "bullets.py")
 STARTER = os.path.join(ROOT, "starters", "bullets_starter.py")

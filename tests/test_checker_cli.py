@@ -19,7 +19,7 @@ import pytest
 
 from checker import cli, entries, outputs, report
 from checker.report import NotGraded
-from checker.tumbling_crates import CHECKS
+from checker.labs.tumbling_crates.checks import CHECKS
 
 MAX = CHECKS.max_score  # Tumbling Crates' points
 

@@ -125,7 +125,7 @@ def zygote(monkeypatch):
 
 
 def probe(path, limits):
-    return run_child(path, "probe", {"probes": "checker.crates_probes"}, limits)
+    return run_child(path, "probe", {"probes": "checker.labs.tumbling_crates.probes"}, limits)
 
 
 def test_the_child_is_forked_by_the_zygote(zygote, lab):

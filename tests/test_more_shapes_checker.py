@@ -1,7 +1,7 @@
 """The checker grades More Shapes: the solution passes every check, the starter fails at step 2 with its hint.
 
 Both files are graded in one `python -m checker --json` run. The lab is one
-module (checker/more_shapes.py) and one row of checker/labs.py; a file is a
+module (checker/labs/more_shapes/checks.py) and one row of checker/labs/__init__.py; a file is a
 More Shapes lab by its name or its text.
 """
 import json
@@ -11,7 +11,8 @@ import sys
 
 import pytest
 
-from checker import labs, more_shapes
+from checker import labs
+from checker.labs.more_shapes import checks as more_shapes
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOLUTION = os.path.join("solutions", "more_shapes.py")
@@ -30,7 +31,7 @@ def graded():
 
 def test_the_lab_is_registered_and_recognised():
     (row,) = [lab for lab in labs.LABS if lab.id == "more_shapes"]
-    assert row.title == "More Shapes" and row.probes == "checker.shapes_probes"
+    assert row.title == "More Shapes" and row.probes == "checker.labs.more_shapes.probes"
     with open(os.path.join(ROOT, SOLUTION), encoding="utf-8") as handle:
         source = handle.read()
     assert labs.identify("student.py", source).id == "more_shapes"

@@ -1,7 +1,7 @@
 """The checker grades Sleeping Crates: the solution passes every check, the starter fails at steps 2-4 with hints.
 
 Both files are graded in one `python -m checker --json` run. The lab is one
-module (checker/sleeping_crates.py) and one row of checker/labs.py; a file is
+module (checker/labs/sleeping_crates/checks.py) and one row of checker/labs/__init__.py; a file is
 a Sleeping Crates lab by its name or its text.
 """
 import json
@@ -11,7 +11,8 @@ import sys
 
 import pytest
 
-from checker import labs, sleeping_crates
+from checker import labs
+from checker.labs.sleeping_crates import checks as sleeping_crates
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOLUTION = os.path.join("solutions", "sleeping_crates.py")
@@ -30,7 +31,7 @@ def graded():
 
 def test_the_lab_is_registered_and_recognised():
     (row,) = [lab for lab in labs.LABS if lab.id == "sleeping_crates"]
-    assert row.title == "Sleeping Crates" and row.probes == "checker.sleep_probes"
+    assert row.title == "Sleeping Crates" and row.probes == "checker.labs.sleeping_crates.probes"
     with open(os.path.join(ROOT, SOLUTION), encoding="utf-8") as handle:
         source = handle.read()
     assert labs.identify("student.py", source).id == "sleeping_crates"

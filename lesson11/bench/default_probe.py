@@ -5,7 +5,7 @@
 For each setting, World's default sub-steps and iterations are swapped for the
 run (solve-first, the lab's order) and the Tumbling Crates solution runs in
 this process under the lab runtime, as the checker runs it, in:
-  corner, ramp, bricks, own    the checker's four scenes (checker/crates_scenarios.py)
+  corner, ramp, bricks, own    the checker's four scenes (checker/labs/tumbling_crates/scenes.py)
   pile 12                      the lab's 12-crate clicked pile (tests/lab_run.pile_settings)
   pile 14                      the same with 14 clicks: a denser pile
 Each figure is shown against its checker bound as value (bound/value, the
@@ -26,9 +26,9 @@ os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
-from checker import crates_scenarios as scenes  # noqa: E402
+from checker.labs.tumbling_crates import scenes  # noqa: E402
 from checker import records as metrics  # noqa: E402
-from checker import tumbling_crates as lab  # noqa: E402
+from checker.labs.tumbling_crates import checks as lab  # noqa: E402
 from lesson11 import runtime  # noqa: E402
 from lesson11.physics2d import World  # noqa: E402
 

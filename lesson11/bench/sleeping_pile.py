@@ -2,7 +2,7 @@
 
     python -m lesson11.bench.sleeping_pile [--steps N]
 
-The pile is checker/sleep_probes.py's grid: 4 rows of 10 crates (50 × 36 px),
+The pile is checker/labs/sleeping_crates/probes.py's grid: 4 rows of 10 crates (50 × 36 px),
 each row resting on the one below with 0.2 px of overlap, on the floor, with the
 "sleep" effect and the library's sleep rules (the same as the lab's solution).
 It prints, per step, CPU ms (time.process_time, mean of N steps, after one

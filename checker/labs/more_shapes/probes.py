@@ -4,7 +4,7 @@ Each probe calls one of the student's functions on configurations chosen to
 show the mistakes a student makes, and returns plain data: what the student's
 function gave, what the lesson's formula gives on the same inputs, and (where
 it helps name a mistake) what the usual wrong formulas give. The checks in
-checker/more_shapes.py compare them in the grading process.
+checker/labs/more_shapes/checks.py compare them in the grading process.
 
     regular_polygon    (step 2) 3 to 12 sides, radii from 5 to 40 px
     polygon_centroid   (step 3) right triangles, a house, a trapezoid, irregular hexagons far from
@@ -27,8 +27,8 @@ from lesson11.physics2d import polygon_centroid as reference_centroid
 from lesson11.physics2d import polygon_inertia as reference_inertia
 from lesson11.physics2d import regular_polygon as reference_regular_polygon
 
-from . import crates_probes
-from .tape import run_rng
+from ... import probe_kit
+from ...tape import run_rng
 
 REQUIRED = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes", "sat", "build", "main")
 PARALLEL = 1e-6   # |sin| below which two axes are parallel (the handout's PARALLEL)
@@ -195,7 +195,7 @@ def probe_polygon_inertia(module, lab_path):
 
 def axis_pairs():
     """(name, A's world points, B's world points): aligned shapes share edge directions, turned ones do not."""
-    box, ngon = crates_probes.box, crates_probes.ngon
+    box, ngon = probe_kit.box, probe_kit.ngon
     return [
         ("two aligned boxes", box(60, 40, (0, 0)), box(50, 30, (45, 20))),
         ("a box and a turned box", box(60, 40, (0, 0)), box(50, 30, (45, 20), 30)),
@@ -237,12 +237,12 @@ def probe_separating_axes(module, lab_path):
 def probe_sat(module, lab_path):
     """The lab's sat() (the handout's loop over the student's axes) on the axis pairs and Tumbling Crates' pairs."""
     cases = []
-    pairs = axis_pairs() + crates_probes.sat_pairs()
+    pairs = axis_pairs() + probe_kit.sat_pairs()
     for name, pa, pb in pairs:
         for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
             got = module.sat([Vector2(p) for p in first], [Vector2(p) for p in second])
-            want = crates_probes.reference_sat(first, second, "lesson")
-            cases.append({"pair": name, "order": order, "got": crates_probes.sat_answer(got),
+            want = probe_kit.reference_sat(first, second, "lesson")
+            cases.append({"pair": name, "order": order, "got": probe_kit.sat_answer(got),
                           "want": None if want is None else {"normal": list(want[0]), "depth": want[1]},
                           "ties": [] if want is None else _tied_normals(first, second, want[1])})
     return cases
@@ -254,9 +254,9 @@ def _tied_normals(pa, pb, depth):
     When two directions tie, the axis sat() keeps depends on the order of the axes, and either
     is a right answer; the check accepts any of them.
     """
-    towards_b = crates_probes.centre_of(pb) - crates_probes.centre_of(pa)
+    towards_b = probe_kit.centre_of(pb) - probe_kit.centre_of(pa)
     tied = []
-    for axis, overlap, _ in crates_probes.axis_overlaps(pa, pb):
+    for axis, overlap, _ in probe_kit.axis_overlaps(pa, pb):
         if abs(overlap - depth) <= 1e-9 * max(1.0, depth):
             tied.append(list(axis if towards_b.dot(axis) >= 0 else -axis))
     return tied

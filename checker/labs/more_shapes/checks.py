@@ -9,9 +9,9 @@ Checks are worth 1 point, the five criteria 2 points each.
 
 The function checks compare the student's regular_polygon, polygon_centroid,
 polygon_inertia and separating_axes (and the handout's sat() running on the
-student's axes) with the lesson's formulas on checker/shapes_probes.py's
+student's axes) with the lesson's formulas on checker/labs/more_shapes/probes.py's
 configurations and name the first that differs, and the mistake when it is
-a usual one. The scenes (checker/shapes_scenarios.py) run only when every
+a usual one. The scenes (checker/labs/more_shapes/scenes.py) run only when every
 function check passes. The lab's build() makes every scene body with the
 student's functions, so the scenes exercise them.
 
@@ -21,15 +21,15 @@ measures in the same scene, with the measured value noted next to it.
 import math
 import os
 
-from . import lab_checks
-from . import records as metrics
-from . import shapes_scenarios as scenes
-from .checks import Fail, Hint, Passed, Registry
-from .common import shown
+from ... import lab_checks
+from ... import records as metrics
+from . import scenes
+from ...checks import Fail, Hint, Passed, Registry
+from ...common import shown
 
 TITLE = "More Shapes"
-PROBES = "checker.shapes_probes"
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PROBES = "checker.labs.more_shapes.probes"
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 STARTER = os.path.join(ROOT, "starters", "more_shapes_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "more_shapes.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)

@@ -8,14 +8,14 @@ Order of checks (stable), one per lesson step where a step is the student's:
 Checks are worth 1 point, the four criteria 2 points each.
 
 The function checks compare the student's sat, resolve and apply_impulse with
-the lesson's formulas on the configurations of checker/crates_probes.py and
+the lesson's formulas on the configurations of checker/labs/tumbling_crates/probes.py and
 name the first configuration that differs. resolve is probed with the
 library's apply_impulse, so steps 4 and 5 can be confirmed before step 6 is
 written. The scenes run only when every function check passes (the criteria
 depend on them), so a mistake is reported once, under its own step.
 
 Every bound of the criteria was set from what solutions/tumbling_crates.py
-measures in the same scenario (checker/crates_scenarios.py has the scenes),
+measures in the same scenario (checker/labs/tumbling_crates/scenes.py has the scenes),
 with the measured value noted next to it.
 """
 import ast
@@ -23,17 +23,17 @@ import math
 import os
 import re
 
-from . import crates_probes as probes
-from . import crates_scenarios as scenes
-from . import lab_checks
-from . import records as metrics
-from .checks import Error, Fail, Hint, Passed, Registry
-from .common import describe_run_failure, shown
+from . import probes
+from . import scenes
+from ... import lab_checks
+from ... import records as metrics
+from ...checks import Error, Fail, Hint, Passed, Registry
+from ...common import describe_run_failure, shown
 
 TITLE = "Tumbling Crates"
-PROBES = "checker.crates_probes"
+PROBES = "checker.labs.tumbling_crates.probes"
 REQUIRED = probes.REQUIRED
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)

@@ -9,13 +9,13 @@ Each scenario is a settings dict for lesson11.runtime.configure(); the
 runtime replaces the lab's crates with the scenario's and records every
 body's state each frame. checker/records.py's metrics (measure_ramp,
 measure_pile, summary, ...) and measure_corner here turn a record into numbers
-(px, px/s, rad); checker/tumbling_crates.py compares them with the bounds.
+(px, px/s, rad); checker/labs/tumbling_crates/checks.py compares them with the bounds.
 """
 import math
 
 from pygame import Vector2
 
-from .records import (FLOOR_TOP, FPS, RAMP_ANGLE, RAMP_CENTRE, RAMP_THICKNESS, SEED, dynamic, flat_error,
+from ...records import (FLOOR_TOP, FPS, RAMP_ANGLE, RAMP_CENTRE, RAMP_THICKNESS, SEED, dynamic, flat_error,
                       floor_penetration, speed)
 
 

@@ -1,18 +1,25 @@
 """The lab registry: which labs the checker knows, and how it tells which lab a file is.
 
-To add a lab, write a module like checker/tumbling_crates.py (CHECKS, TITLE,
-STARTER (the handout: its functions holding a step region are the student's,
-and the grading parent replays the probes' calls of them through its code),
-PROBES (the module the child process imports to probe the lab's functions:
-REQUIRED names and PROBES {function name: probe}; probes run in the child to
-record a tape and again in the parent to judge it, checker/tape.py), recognise(path, source),
-scenarios(), and optionally PICTURE_SCENES {check id: scene names} for
---pictures and SCENE_SECONDS {scene name: CPU s of the solution's run}, so
-the grader starts the longest scenes first) and add one row to LABS.
+Each lab is one folder, checker/labs/<lab>/:
+  checks.py  its checks (CHECKS, TITLE, STARTER, SOLUTION, PROBES, STEP_LIBRARY, STEP_ADVICE,
+             recognise(path, source), scenarios(), and optionally PICTURE_SCENES {check id: scene
+             names} for --pictures and SCENE_SECONDS {scene name: CPU s of the solution's run}, so
+             the grader starts the longest scenes first);
+  probes.py  the inputs and references of its probes (REQUIRED, PROBES {name: (function, probe)},
+             SPLICES): they run in the child to record a tape and again in the grader to judge it
+             (checker/tape.py, checker/probing.py);
+  scenes.py  its scenes' settings.
+STARTER is the handout: its functions holding a step region are the student's, and the grader
+replays the probes' calls of them through its code. Helpers several labs share are in
+checker/probe_kit.py and checker/lab_checks.py. To add a lab, add its folder and one row to LABS.
 """
 from dataclasses import dataclass
 
-from . import ball_on_ramp, bullets, more_shapes, sleeping_crates, tumbling_crates
+from .ball_on_ramp import checks as ball_on_ramp
+from .bullets import checks as bullets
+from .more_shapes import checks as more_shapes
+from .sleeping_crates import checks as sleeping_crates
+from .tumbling_crates import checks as tumbling_crates
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,7 @@
 Each probe calls one of the student's functions on configurations chosen so
 that together they exercise every term of the lesson's formula, and returns
 plain data: the student's answer beside the lesson's on the same inputs
-(checker/ball_on_ramp.py compares them and names the first that differs).
+(checker/labs/ball_on_ramp/checks.py compares them and names the first that differs).
 
     closest_on_segment  (step 2) points beside an edge, beyond either end, slanted and reversed edges
     circle_outside      (step 2) circle_polygon() on circles outside or touching a polygon (near a
@@ -27,13 +27,13 @@ from pygame import Vector2
 from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
 from lesson11.physics2d import apply_impulse as reference_apply_impulse
 
-from .crates_probes import box, ngon, with_reference_steps
-from .tape import run_rng
+from ...probe_kit import box, ngon, with_reference_steps
+from ...tape import run_rng
 
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
 RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
 SLOP, PERCENT = 0.5, 0.4   # px, share: the handout's push-out constants
-SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "solutions", "ball_on_ramp.py")
+SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))), "solutions", "ball_on_ramp.py")
 RAMP_ANGLE = 22.0      # degrees
 
 

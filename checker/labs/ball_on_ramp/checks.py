@@ -9,9 +9,9 @@ Order of checks (stable), one per lesson step where a step is the student's:
 Checks are worth 1 point, the four criteria 2 points each.
 
 The function checks compare the student's functions with the lesson's
-formulas on the configurations of checker/ball_probes.py and name the first
+formulas on the configurations of checker/labs/ball_on_ramp/probes.py and name the first
 configuration that differs (and the mistake, when it is a known one). The
-scenes (checker/ball_scenarios.py) run only when every function check passes,
+scenes (checker/labs/ball_on_ramp/scenes.py) run only when every function check passes,
 so a mistake is reported once, under its own step. handout_unchanged and
 runtime_lines are the bodies every lab shares (checker/common.py).
 
@@ -22,17 +22,17 @@ solutions/ball_on_ramp.py measures in the same scene, noted beside it.
 import math
 import os
 
-from . import ball_probes as probes
-from . import ball_scenarios as scenes
-from . import lab_checks
-from .checks import Fail, Hint, Passed, Registry
-from .common import shown
-from .records import finite
+from . import probes
+from . import scenes
+from ... import lab_checks
+from ...checks import Fail, Hint, Passed, Registry
+from ...common import shown
+from ...records import finite
 
 TITLE = "Ball on the Ramp"
-PROBES = "checker.ball_probes"
+PROBES = "checker.labs.ball_on_ramp.probes"
 REQUIRED = probes.REQUIRED
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 STARTER = os.path.join(ROOT, "starters", "ball_on_ramp_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)

@@ -8,7 +8,7 @@ Order of checks (stable), one per lesson step where a step is the student's:
 Checks are worth 1 point, the criteria (toi_matches_root among them) 2 points each.
 
 The function checks compare the student's functions with analytic answers on
-the cases of checker/bullets_probes.py and name the first case that differs
+the cases of checker/labs/bullets/probes.py and name the first case that differs
 (and the mistake, when it is a known one). A step is graded with the lesson's
 code standing in for the steps it calls (time_of_impact with the lesson's
 circle_toi and bounding_radius, swept_move with the lesson's time_of_impact),
@@ -24,15 +24,15 @@ solutions/bullets.py measures is noted beside each.
 import math
 import os
 
-from . import bullets_probes as probes
-from . import lab_checks
-from .checks import Fail, Hint, Passed, Registry
-from .records import FPS, SEED, finite
+from . import probes
+from ... import lab_checks
+from ...checks import Fail, Hint, Passed, Registry
+from ...records import FPS, SEED, finite
 
 TITLE = "Bullets"
-PROBES = "checker.bullets_probes"
+PROBES = "checker.labs.bullets.probes"
 REQUIRED = probes.REQUIRED
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 STARTER = os.path.join(ROOT, "starters", "bullets_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "bullets.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)

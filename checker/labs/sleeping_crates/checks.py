@@ -8,10 +8,10 @@ Order of checks (stable), one per lesson step where a step is the student's:
 Checks are worth 1 point, the four criteria 2 points each.
 
 The function checks call the student's sleep_timer, moves and wake_on_contact
-on checker/sleep_probes.py's cases and name the first that differs, and the
+on checker/labs/sleeping_crates/probes.py's cases and name the first that differs, and the
 mistake when it is a usual one. narrow_work counts World.counters' narrow-phase
 tests in one step of the same 40-crate pile awake and asleep (deterministic,
-unlike a time). The scene (checker/sleep_scenarios.py) runs only when every
+unlike a time). The scene (checker/labs/sleeping_crates/scenes.py) runs only when every
 function check passes.
 
 Every bound of the criteria was set from what solutions/sleeping_crates.py
@@ -19,15 +19,15 @@ measures in the same scene, with the measured value noted next to it.
 """
 import os
 
-from . import lab_checks
-from . import records as metrics
-from . import sleep_scenarios as scenes
-from .checks import Fail, Hint, Passed, Registry
-from .common import shown
+from ... import lab_checks
+from ... import records as metrics
+from . import scenes
+from ...checks import Fail, Hint, Passed, Registry
+from ...common import shown
 
 TITLE = "Sleeping Crates"
-PROBES = "checker.sleep_probes"
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PROBES = "checker.labs.sleeping_crates.probes"
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)

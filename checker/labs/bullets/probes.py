@@ -1,7 +1,7 @@
 """Probes of a Bullets file's own functions, run inside the checker's child process.
 
 Each probe calls the student's functions and returns plain data: the
-student's answer beside the analytic one (checker/bullets.py compares them
+student's answer beside the analytic one (checker/labs/bullets/checks.py compares them
 and names the first case that differs).
 
     circle_toi      (step 2) head-on, glancing, both moving, already touching, moving apart,
@@ -25,8 +25,8 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
-from .crates_probes import box, ngon
-from .tape import clock, run_rng
+from ...probe_kit import box, ngon
+from ...tape import clock, run_rng
 
 REQUIRED = ("circle_toi", "bounding_radius", "time_of_impact", "swept_move", "apply_mode", "make_wall", "make_bullet",
             "BulletWorld", "main")

@@ -2,7 +2,7 @@
 
 Each probe calls one of the student's functions on cases chosen to show the
 usual mistakes and returns plain data: what the student's function gave and
-what the lesson's rule gives. The checks in checker/sleeping_crates.py
+what the lesson's rule gives. The checks in checker/labs/sleeping_crates/checks.py
 compare them in the grading process.
 
     sleep_timer      (step 2) calm and not calm crates: fast, spinning either way, both
@@ -17,7 +17,7 @@ Units: px, s, rad.
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
 
-from .tape import clock, run_rng
+from ...tape import clock, run_rng
 
 REQUIRED = ("sleep_timer", "moves", "wake_on_contact", "build", "main")
 SLEEP_SPEED = 5.0   # px/s, the handout's thresholds

@@ -1,0 +1,1 @@
+"""The Ball On Ramp lab: checks.py (its checks), probes.py (its probes' inputs and references), scenes.py (its scenes)."""

@@ -1,0 +1,1 @@
+"""The Bullets lab: checks.py (its checks), probes.py (its probes' inputs and references)."""

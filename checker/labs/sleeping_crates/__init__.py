@@ -1,0 +1,1 @@
+"""The Sleeping Crates lab: checks.py (its checks), probes.py (its probes' inputs and references), scenes.py (its scenes)."""
