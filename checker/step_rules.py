@@ -14,6 +14,14 @@ syntax tree (never running it) and flags what reaches around the exercise:
   library   a call of the library function the step asks the student to write (the lab's
             STEP_LIBRARY: {step: names}), by its name or as an attribute (`world.sat(...)`)
 
+Outside the steps the code must be the handout's (handout_unchanged), but an
+edit there could replace a step's function after the fact, so two things are
+flagged under every step of the function they touch (rule "outside"): a
+second top-level binding of a step function's name (`sat = other_sat`,
+another `def sat`, an import as `sat`), and a line the handout does not have
+that uses exec, eval, compile, globals, vars, setattr, getattr, __import__,
+a dunder name or `sys.modules` (which can rebind any name).
+
 These forbid reaching around the exercise, not ways of writing it: every
 correct completion in the corpora passes (tests/test_step_rules.py).
 """
@@ -104,8 +112,8 @@ def scan(source, library=None, starter=None, reach=REACH):
     def flag(node, rule, what):
         line = node.lineno
         step = step_of(line)
-        if step is not None and (line, rule) not in found:
-            found[(line, rule)] = Breach(step, line, rule, what, lines[line - 1].strip())
+        if step is not None and (line, rule, step) not in found:
+            found[(line, rule, step)] = Breach(step, line, rule, what, lines[line - 1].strip())
 
     for node in ast.walk(tree):
         if getattr(node, "lineno", None) is None or step_of(node.lineno) is None:
@@ -144,12 +152,69 @@ def scan(source, library=None, starter=None, reach=REACH):
                 flag(node, "library", f"calls the library's {func.id}()")
             elif isinstance(func, ast.Attribute) and func.attr in names:
                 flag(node, "library", f"calls the library's {func.attr}() (as .{func.attr})")
-    return sorted(found.values(), key=lambda breach: (breach.line, breach.rule))
+    _outside(tree, lines, spans, starter, found, step_of)
+    return sorted(found.values(), key=lambda breach: (breach.line, breach.rule, breach.step))
+
+
+def _outside(tree, lines, spans, starter, found, step_of):
+    """Flag edits outside the steps that can replace a step function (see the module docstring)."""
+    steps_of = {}   # step function name -> its steps
+    for index, node in enumerate(tree.body):
+        if isinstance(node, ast.FunctionDef):
+            end = tree.body[index + 1].lineno - 1 if index + 1 < len(tree.body) else len(lines)
+            inside = [step for step, first, last in spans if node.lineno <= first <= end]
+            if inside:
+                steps_of.setdefault(node.name, []).extend(inside)
+    if not steps_of:
+        return
+    every = sorted({step for steps in steps_of.values() for step in steps})
+    handed = {line.strip() for line in (starter or "").splitlines()}
+
+    def flag_all(node, steps, what):
+        for step in steps:
+            if (node.lineno, "outside", step) not in found:
+                found[(node.lineno, "outside", step)] = Breach(step, node.lineno, "outside", what,
+                                                               lines[node.lineno - 1].strip())
+
+    seen_defs = set()
+    for node in tree.body:
+        if step_of(node.lineno) is not None:
+            continue
+        names = []
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            if node.name in steps_of and node.name not in seen_defs and isinstance(node, ast.FunctionDef) and \
+                    any(node.lineno <= first for _, first, _ in spans):
+                seen_defs.add(node.name)   # the handout's own def holding the step
+                continue
+            names = [node.name]
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            names = [(alias.asname or alias.name).split(".")[0] for alias in node.names]
+        elif isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign, ast.For, ast.With)):
+            names = [n.id for n in ast.walk(node) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)]
+        for name in names:
+            if name in steps_of:
+                flag_all(node, steps_of[name], f"binds {name} again outside the steps, in place of the one you "
+                                                "write")
+    for node in ast.walk(tree):
+        line = getattr(node, "lineno", None)
+        if line is None or step_of(line) is not None or lines[line - 1].strip() in handed:
+            continue
+        what = None
+        if isinstance(node, ast.Name) and (node.id in BUILTINS or _is_dunder(node.id)) and node.id != "__name__":
+            what = f"uses {node.id} outside the steps"
+        elif isinstance(node, ast.Attribute) and (_is_dunder(node.attr) or node.attr in FRAME_ATTRIBUTES
+                                                  or node.attr == "modules"):
+            what = f"uses .{node.attr} outside the steps"
+        if what:
+            flag_all(node, every, what + " (code that can replace your functions)")
 
 
 def describe(breach, advice=""):
     """The one-line message a step's check shows: "line 57 (step 2) calls the library's sat(): write ... yourself"."""
     tail = advice or f"write step {breach.step} with the lesson's own tools (the handout's names, math, your functions)"
+    if breach.rule == "outside":
+        return (f"line {breach.line} {breach.what} (`{breach.text}`): step {breach.step} is graded only as you "
+                "write it inside its markers; keep the handout's code around the steps as it was.")
     return f"line {breach.line} (step {breach.step}) {breach.what} (`{breach.text}`): {tail}."
 
 

@@ -121,3 +121,26 @@ def test_a_flagged_step_fails_its_check_through_the_command_line(tmp_path):
     assert checks["handout_unchanged"]["status"] == "pass"
     assert {(f["line"], f["rule"]) for f in row["flags"]} == {(first, "library"), (first, "reach")}
     assert row["score"] < row["max_score"]
+
+
+@pytest.mark.parametrize("added, steps", [
+    ("from lesson11.physics2d import sat as _ref\nsat = _ref\n", {2, 3}),
+    ("def sat(pa, pb):\n    return None\n", {2, 3}),
+    ("from lesson11.physics2d import apply_impulse\n", {6}),
+    ("globals()['sat'] = None\n", {2, 3, 4, 5, 6}),
+    ("import sys\nsys.modules[__name__].resolve = None\n", {2, 3, 4, 5, 6}),
+])
+def test_code_outside_the_steps_that_can_replace_a_step_function_fails_those_steps(added, steps):
+    """Delegation outside the steps: rebinding a step function (or anything that can) after the handout's def."""
+    lab = lab_by_id("tumbling_crates")
+    found = step_rules.scan_lab(read("solutions/tumbling_crates.py") + "\n" + added, lab.module)
+    assert {b.step for b in found if b.rule == "outside"} == steps
+    assert all("keep the handout's code around the steps" in b.message for b in found)
+
+
+def test_the_main_guard_in_another_style_is_not_flagged():
+    lab = lab_by_id("tumbling_crates")
+    solution = read("solutions/tumbling_crates.py")
+    assert solution.count('if __name__ == "__main__":') == 1
+    source = solution.replace('if __name__ == "__main__":', "if __name__ == '__main__':")
+    assert step_rules.scan_lab(source, lab.module) == []
