@@ -36,6 +36,11 @@ FRAME_ATTRIBUTES = frozenset({"f_back", "f_globals", "f_locals", "f_builtins", "
                               "cr_frame", "ag_frame", "tb_frame", "tb_next", "func_globals"})
 REACH = ("World", "lab", "LabPanel", "runtime", "panel")
 FREE_MODULES = frozenset({"math"})                # a step may use any attribute of these
+# modules a file may not import outside the steps either: they reach the checker, the library's answers,
+# the interpreter's own machinery, files or other processes
+CLOSED_MODULES = frozenset({"checker", "lesson11", "sys", "importlib", "inspect", "gc", "ctypes", "builtins",
+                            "types", "json", "pickle", "marshal", "os", "subprocess", "io", "runpy", "threading",
+                            "signal", "shutil", "pathlib", "socket", "traceback", "faulthandler", "atexit"})
 FREE_ATTRIBUTES = {"pygame": frozenset({"Vector2", "math"})}   # and these attributes of these
 
 
@@ -176,6 +181,8 @@ def _outside(tree, lines, spans, starter, found, step_of):
                 found[(node.lineno, "outside", step)] = Breach(step, node.lineno, "outside", what,
                                                                lines[node.lineno - 1].strip())
 
+    handed_imports = set(_imports(ast.parse(starter))) if starter else set()
+    imported = _imports(tree)
     seen_defs = set()
     for node in tree.body:
         if step_of(node.lineno) is not None:
@@ -189,8 +196,21 @@ def _outside(tree, lines, spans, starter, found, step_of):
             names = [node.name]
         elif isinstance(node, (ast.Import, ast.ImportFrom)):
             names = [(alias.asname or alias.name).split(".")[0] for alias in node.names]
+            module = (node.module or "") if isinstance(node, ast.ImportFrom) else node.names[0].name
+            if lines[node.lineno - 1].strip() not in handed and module.split(".")[0] in CLOSED_MODULES and \
+                    not set(names) <= handed_imports:
+                flag_all(node, every, f"imports {module} outside the steps (it reaches the checker, the library "
+                                      "or the interpreter)")
         elif isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign, ast.For, ast.With)):
             names = [n.id for n in ast.walk(node) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)]
+            targets = node.targets if isinstance(node, ast.Assign) else [getattr(node, "target", None)]
+            for target in targets:
+                base = target
+                while isinstance(base, (ast.Attribute, ast.Subscript)):
+                    base = base.value
+                if target is not base and isinstance(base, ast.Name) and base.id in imported and \
+                        lines[node.lineno - 1].strip() not in handed:
+                    flag_all(node, every, f"changes the module {base.id} outside the steps")
         for name in names:
             if name in steps_of:
                 flag_all(node, steps_of[name], f"binds {name} again outside the steps, in place of the one you "
