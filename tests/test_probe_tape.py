@@ -22,7 +22,7 @@ import pytest
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 
-from checker import child, labs, probing, tape  # noqa: E402
+from checker import child, labs, probing  # noqa: E402
 from checker.checks import PASS  # noqa: E402
 from checker.grade import Submission  # noqa: E402
 from checker.sandbox import RunResult  # noqa: E402
