@@ -113,6 +113,12 @@ def function_data(sub, functions, probe, function, step, crash_hint):
         hint = Hint(step, f"the error in {function}()", f"Your code in {function}() stopped with the error above; "
                     "fix it at the line shown, then run the checker again.")
         raise Error(describe_function_error(function, entry["error"], sub.name), hint)
+    if function in (entry.get("changed_arguments") or ()):
+        raise Fail(f"{function}() changes the arguments it is given in place (a corner, a Vector2 or a list of "
+                   "them): whoever called it sees its own shapes or vectors change. Work on new values instead "
+                   "(a + ab * t makes a new vector; a += ... changes a).",
+                   Hint(step, f"the arguments of {function}()", "A function that answers a question must not "
+                        "change what it was asked about: build new vectors and lists, leave the arguments alone."))
     return entry["data"]
 
 

@@ -113,6 +113,7 @@ def judge(lab, path, settings, child):
             "the probe's result is not in the checker's format (the file's code changed what the child reports)")}
             for name in probes.PROBES}}
     steps = settings["steps"]
+    pure = set(getattr(probes, "PURE", ()))   # step functions that must leave their arguments as they got them
     namespace = {"__name__": "lab_handout", "__builtins__": __builtins__}
     if starter:
         exec(_starter(starter)[0], namespace)
@@ -143,5 +144,5 @@ def judge(lab, path, settings, child):
             functions[name] = {"ok": False, "error": _error(
                 f"the child reported more calls of {function}() than the checker's probe makes")}
         else:
-            functions[name] = {"ok": True, "data": data}
+            functions[name] = {"ok": True, "data": data, "changed_arguments": replay.changed(pure)}
     return {"missing": [str(m) for m in missing], "functions": functions}

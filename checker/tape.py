@@ -469,6 +469,12 @@ class Replayer:
         value = self._next("clock").get("t")
         return float(value) if isinstance(value, (int, float)) and math.isfinite(value) else 0.0
 
+    def changed(self, names):
+        """The functions among `names` that changed an argument in place in some replayed call (sorted)."""
+        return sorted({entry.get("fn") for entry in self._tape[:self._at[0]]
+                       if isinstance(entry, dict) and entry.get("k") == "call" and entry.get("fn") in names
+                       and entry.get("post") is not None})
+
     def finished(self):
         """True when the probe used the whole tape (a longer tape was made for other inputs)."""
         return self._at[0] == len(self._tape)

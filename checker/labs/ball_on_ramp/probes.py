@@ -417,6 +417,10 @@ def probe_resolve(module, lab_path):
 # the spliced functions the probes use: (function, the solution's steps put in it, the solution)
 SPLICES = (("circle_polygon", (3,), SOLUTION),)
 
+# the step functions that answer a question and must leave their arguments as they got them (the grader
+# fails one that changes them in place, whatever it returns: checker/lab_checks.function_data)
+PURE = ("closest_on_segment", "circle_polygon", "disc_inertia", "contact_point")
+
 # probe name -> (the lab function it needs, the probe)
 PROBES = {
     "closest_on_segment": ("closest_on_segment", probe_closest),

@@ -295,6 +295,10 @@ def probe_bodies(module, lab_path):
     return cases
 
 
+# the step functions that answer a question and must leave their arguments as they got them (the grader
+# fails one that changes them in place, whatever it returns: checker/lab_checks.function_data)
+PURE = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes")
+
 # probe name -> (the lab function it needs, the probe)
 PROBES = {"regular_polygon": ("regular_polygon", probe_regular_polygon),
           "polygon_centroid": ("polygon_centroid", probe_polygon_centroid),

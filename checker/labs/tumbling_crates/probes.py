@@ -280,6 +280,10 @@ def _resolve_case(name, a, b, normal, ra, rb, vn, e, calls):
 # the spliced functions the probes use: (function, the solution's steps put in it, the solution)
 SPLICES = (("sat", (3,), SOLUTION),)
 
+# the step functions that answer a question and must leave their arguments as they got them (the grader
+# fails one that changes them in place, whatever it returns: checker/lab_checks.function_data)
+PURE = ("sat",)
+
 # probe name -> (the lab function it needs, the probe)
 PROBES = {"sat_step2": ("sat", probe_sat_step2), "sat": ("sat", probe_sat),
           "apply_impulse": ("apply_impulse", probe_apply_impulse), "resolve": ("resolve", probe_resolve)}
