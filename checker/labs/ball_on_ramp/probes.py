@@ -244,7 +244,13 @@ def probe_separate(module, lab_path):
     cases = []
     slop = float(getattr(module, "SLOP", SLOP))   # the lab's own constants: a changed one is the handout's business
     percent = float(getattr(module, "PERCENT", PERCENT))
-    for name, a, b, normal, depth in separate_cases():
+    rng = run_rng(module, "separate")   # and one pair drawn for this run: a crate (mass far from 1) and a ball
+    crate_pos = Vector2(rng.uniform(200, 700), rng.uniform(200, 500))
+    push_dir = Vector2(1, 0).rotate(rng.uniform(0, 360))
+    drawn = [("a crate (A) and a ball (B) drawn for this run",
+              Body(box_points(rng.uniform(30, 90), rng.uniform(30, 90)), crate_pos, rng.uniform(2.5, 9.0)),
+              _ball(rng.uniform(6, 30), crate_pos + push_dir * 40), push_dir, rng.uniform(2.0, 12.0))]
+    for name, a, b, normal, depth in separate_cases() + drawn:
         before = {"a": list(a.pos), "b": list(b.pos)}
         total = a.inv_mass + b.inv_mass
         push = max(depth - slop, 0.0) * percent
@@ -293,7 +299,10 @@ def contact_cases():
 def probe_contact(module, lab_path):
     """The student's contact_point(center, radius, normal, depth) beside the point on the surface."""
     cases = []
-    for name, center, radius, normal, depth in contact_cases():
+    rng = run_rng(module, "contact_point")   # and one contact drawn for this run
+    drawn = [("a ball touching something drawn for this run", Vector2(rng.uniform(50, 800), rng.uniform(50, 550)),
+              rng.uniform(6, 45), Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(0.5, 5.0))]
+    for name, center, radius, normal, depth in contact_cases() + drawn:
         got = module.contact_point(Vector2(center), radius, Vector2(normal), depth)
         cases.append({"case": name, "center": list(center), "radius": radius, "normal": list(normal),
                       "depth": depth, "got": answer_point(got), "want": list(center + normal * radius),

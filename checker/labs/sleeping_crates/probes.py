@@ -92,7 +92,10 @@ MOVES_CASES = (("the floor (static)", 0.0, False), ("an awake crate", 1.8, False
 def probe_moves(module, lab_path):
     """The student's moves(body) for static, awake and sleeping bodies."""
     cases = []
-    for what, mass, asleep in MOVES_CASES:
+    rng = run_rng(module, "moves")   # and the four kinds again, in an order and with masses drawn for this run
+    drawn = [(f"{what}, drawn for this run", 0.0 if mass == 0 else round(rng.uniform(0.3, 9.0), 3), asleep)
+             for what, mass, asleep in rng.sample(MOVES_CASES, len(MOVES_CASES))]
+    for what, mass, asleep in MOVES_CASES + tuple(drawn):
         got = module.moves(_crate(mass, asleep))
         cases.append({"case": what, "got": bool(got) if isinstance(got, (bool, int)) else _text(got),
                       "want": mass != 0 and not asleep})
