@@ -100,6 +100,12 @@ def function_data(sub, functions, probe, function, step, crash_hint):
     step that reaches around the exercise earns nothing, whatever its function returns.
     """
     breach = next((b for b in getattr(sub, "flags", ()) or () if b.step == step), None)
+    if breach is not None and breach.rule == "outside":
+        raise Fail(breach.message, Hint(step, "keep the code around the steps",
+                                        "Your functions are graded as you write them inside their step markers. "
+                                        "Code outside the steps that imports the library, the checker or the "
+                                        "interpreter's machinery, or that binds a step's function again, replaces "
+                                        "that work: take it out and start from the starter if unsure."))
     if breach is not None:
         raise Fail(breach.message, Hint(step, f"write step {step} yourself",
                                         "Inside a step use only the lesson's own tools: the names the handout "
