@@ -80,6 +80,25 @@ for _path in ("/autograder/source/project/solutions/tumbling_crates.py",
 '''
 
 
+def answer_opener():
+    """The solution, with one more line at the top that opens the shipped solutions where a package put them.
+
+    Where the student's code runs as `student` and solutions/ is root's alone (Gradescope, PrairieLearn) the
+    open raises PermissionError and the file scores 0 with that error named; on Classroom (the student's own
+    repository) the open works and the step rules fail the steps (`open` outside the steps)."""
+    return '''import os as _os
+for _path in ("/autograder/source/project/solutions/tumbling_crates.py",
+              "/grader/project/solutions/tumbling_crates.py", ".autograder/project/solutions/tumbling_crates.py"):
+    if _os.path.exists(_path):
+        _answers = open(_path).read()
+''' + read("solutions/tumbling_crates.py")
+
+
+def denied(score, top, starter, platform, doc):
+    """No more than the starter, and where the grader keeps the answers, the student reads 'Permission denied'."""
+    return score <= starter and (platform == "classroom" or "Permission denied" in json.dumps(doc))
+
+
 def slop_six():
     """Ball on the Ramp with SLOP = 6: the function checks pass, the ball stays 6 px in a crate (a failed scene)."""
     text = read("solutions/ball_on_ramp.py")
@@ -106,6 +125,7 @@ def submissions():
         ("sys.exit", {"tumbling_crates.py": "import sys\nsys.exit(0)\n" + solution}, zero),
         ("another lab", {"bullets.py": read("solutions/bullets.py")}, zero),
         ("reads the answers", {"tumbling_crates.py": answer_reader()}, lambda s, m, st, p, d: s <= st),
+        ("opens the answers", {"tumbling_crates.py": answer_opener()}, denied),
     ]
 
 
