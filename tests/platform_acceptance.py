@@ -86,11 +86,12 @@ def answer_opener():
     Where the student's code runs as `student` and solutions/ is root's alone (Gradescope, PrairieLearn) the
     open raises PermissionError and the file scores 0 with that error named; on Classroom (the student's own
     repository) the open works and the step rules fail the steps (`open` outside the steps)."""
-    return '''import os as _os
-for _path in ("/autograder/source/project/solutions/tumbling_crates.py",
+    return '''for _path in ("/autograder/source/project/solutions/tumbling_crates.py",
               "/grader/project/solutions/tumbling_crates.py", ".autograder/project/solutions/tumbling_crates.py"):
-    if _os.path.exists(_path):
+    try:
         _answers = open(_path).read()
+    except FileNotFoundError:
+        pass
 ''' + read("solutions/tumbling_crates.py")
 
 
