@@ -120,7 +120,7 @@ def test_table_sorts_in_a_real_browser(produced, tmp_path):
     a, b, c = (f"{n}/ball_on_ramp" for n in NAMES)
     assert by_score_up == f"{c},{b},{a}"
     assert by_score_down == f"{a},{b},{c}"
-    assert by_problem == f"{a},{c},{b}"      # "" < "closest_point (fail)" < "pushed_out_of_crate (fail)"
+    assert by_problem == f"{a},{b},{c}"      # "" < "pushed_out_of_crate: fail" < "step 2 (closest_point): fail"
     assert by_name_down == f"{c},{b},{a}"
 
 
