@@ -37,6 +37,7 @@ class Submission:
     source: str
     probe: object = None
     flags: list = field(default_factory=list)   # what the step rules flagged (checker/step_rules.py Breach)
+    function_steps: dict = field(default_factory=dict)   # step function name -> its steps (the starter's)
     scenarios: dict = field(default_factory=dict)
     options: dict = field(default_factory=dict)
 
@@ -163,6 +164,7 @@ class Grader:
         sub = Submission(path=path, name=os.path.basename(path), source=raw.decode("utf-8", "replace"),
                          options=dict(self.options))
         sub.flags = step_rules.scan_lab(sub.source, lab.module)   # the steps' code, read before any of it runs
+        sub.function_steps = probing.steps_by_function(lab)
         settings = probing.settings_for(lab, sub.source, self.seed)
         sub.probe = self.run(path, "probe", settings)
         if sub.probe is None:

@@ -43,18 +43,30 @@ class Comparison:
 
 
 HARMLESS_CALLS = frozenset({"str", "repr", "format", "len", "round", "abs", "int", "float", "type"})
+PRINT_KEYWORDS = frozenset({"sep", "end", "flush"})   # not file=: printing goes to the output, nowhere else
+
+
+def _harmless_call(call):
+    """str(), repr(), format(), len(), round(), abs(), int(), float(), type(), or "...".format(...)."""
+    func = call.func
+    if isinstance(func, ast.Name):
+        return func.id in HARMLESS_CALLS
+    return isinstance(func, ast.Attribute) and func.attr == "format" and isinstance(func.value, ast.Constant) \
+        and isinstance(func.value.value, str)
 
 
 def is_debug_print(node):
-    """True for a statement that only prints: print(...) whose arguments call nothing but str(), repr(),
-    len(), round(), abs(), int(), float() or type() and read no attribute that could run code (a property)."""
+    """True for a statement that only prints: print(...) whose arguments call nothing but the harmless
+    calls above (f-strings are fine; reading attributes is fine) and whose keywords are sep, end or flush."""
     if not (isinstance(node, ast.Expr) and isinstance(node.value, ast.Call)
             and isinstance(node.value.func, ast.Name) and node.value.func.id == "print"):
+        return False
+    if any(keyword.arg not in PRINT_KEYWORDS for keyword in node.value.keywords):
         return False
     for part in ast.walk(node.value):
         if part is node.value:
             continue
-        if isinstance(part, ast.Call) and not (isinstance(part.func, ast.Name) and part.func.id in HARMLESS_CALLS):
+        if isinstance(part, ast.Call) and not _harmless_call(part):
             return False
         if isinstance(part, (ast.NamedExpr, ast.Lambda, ast.Await, ast.Yield, ast.YieldFrom)):
             return False

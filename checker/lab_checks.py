@@ -99,7 +99,11 @@ def function_data(sub, functions, probe, function, step, crash_hint):
     Fail first when the step rules flagged the step's code (sub.flags, checker/step_rules.py): a
     step that reaches around the exercise earns nothing, whatever its function returns.
     """
-    breach = next((b for b in getattr(sub, "flags", ()) or () if b.step == step), None)
+    # a breach in any step of the same function counts: steps 4 and 5 both live in resolve(), so a step 4 that
+    # hands resolve() to the library would otherwise let step 5's check pass through it
+    steps = set(getattr(sub, "function_steps", {}).get(function, ())) | {step}
+    breach = next((b for b in getattr(sub, "flags", ()) or () if b.step == step), None) or \
+        next((b for b in getattr(sub, "flags", ()) or () if b.step in steps), None)
     if breach is not None and breach.rule == "outside":
         raise Fail(breach.message, Hint(step, "keep the code around the steps",
                                         "Your functions are graded as you write them inside their step markers. "

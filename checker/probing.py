@@ -35,6 +35,26 @@ def step_functions(source):
     return names
 
 
+def steps_by_function(lab):
+    """{step function name: [its steps]} from the lab's starter ({} without one)."""
+    path = getattr(lab.module, "STARTER", None)
+    if not path:
+        return {}
+    with open(path, encoding="utf-8") as handle:
+        source = handle.read()
+    lines = source.splitlines()
+    regions = step_regions(lines)
+    body = ast.parse(source).body
+    out = {}
+    for index, node in enumerate(body):
+        end = body[index + 1].lineno - 1 if index + 1 < len(body) else len(lines)
+        if isinstance(node, ast.FunctionDef):
+            steps = sorted(step for step, (start, _, _) in regions.items() if node.lineno <= start + 1 <= end)
+            if steps:
+                out[node.name] = steps
+    return out
+
+
 def _starter(path):
     """(compiled starter, its step functions), read once per process."""
     if path not in _STARTERS:

@@ -5,14 +5,24 @@ A step is the student's own work: it may use the names the handout gives,
 syntax tree (never running it) and flags what reaches around the exercise:
 
   import    an import inside a step, or a name the file imported itself (other than from math)
-  dunder    a dunder name or attribute (__import__, __globals__, __class__, ...)
+  dunder    a dunder name or attribute (__import__, __globals__, __class__, ...), also as a
+            parameter, keyword or def name, or read by a match pattern (`case object(__globals__=g)`)
   builtin   exec, eval, compile, open, getattr, setattr, delattr, globals, vars, locals,
-            __import__, breakpoint, input
+            __import__, breakpoint, input, memoryview, and type() with three arguments
   frame     a frame or traceback attribute (f_back, f_locals, gi_frame, tb_frame, ...)
-  reach     World, the lab runtime (`lab`) or the panel (`LabPanel`)
-  module    an attribute of a module other than math (pygame.Vector2 aside)
-  library   a call of the library function the step asks the student to write (the lab's
-            STEP_LIBRARY: {step: names}), by its name or as an attribute (`world.sat(...)`)
+  reach     World (or make_world and BulletWorld, which hand one out: `type(make_world(rng))`),
+            the lab runtime (`lab`) or the panel (`LabPanel`)
+  module    a module other than math, or an attribute of one (pygame.Vector2 aside)
+  library   the library function the step asks the student to write (the lab's STEP_LIBRARY:
+            {step: names}): called or taken by its imported name, or as an attribute
+            (`world.sat(...)`, `f = Circle(r).inertia`, `case object(sat=f)`), unless the lab allows it
+            (STEP_ALLOWED: {step: names})
+
+A name counts as the file's own only where Python would find the file's own
+binding (a parameter, a local, a module-level def or assignment): the scan
+follows Python's scopes, so `def f(getattr=getattr)` still uses the builtin
+(a default is read in the scope around the def) and a class attribute hides
+nothing from the methods.
 
 Outside the steps the code must be the handout's (handout_unchanged), but an
 edit there could replace a step's function after the fact, so two things are
@@ -31,10 +41,10 @@ from dataclasses import dataclass
 from .handout import MarkerError, step_regions
 
 BUILTINS = frozenset({"exec", "eval", "compile", "open", "getattr", "setattr", "delattr", "globals", "vars",
-                      "locals", "__import__", "breakpoint", "input"})
+                      "locals", "__import__", "breakpoint", "input", "memoryview"})
 FRAME_ATTRIBUTES = frozenset({"f_back", "f_globals", "f_locals", "f_builtins", "f_code", "gi_frame", "gi_code",
                               "cr_frame", "ag_frame", "tb_frame", "tb_next", "func_globals"})
-REACH = ("World", "lab", "LabPanel", "runtime", "panel")
+REACH = ("World", "lab", "LabPanel", "runtime", "panel", "make_world", "BulletWorld")
 FREE_MODULES = frozenset({"math"})                # a step may use any attribute of these
 # modules a file may not import outside the steps either: they reach the checker, the library's answers,
 # the interpreter's own machinery, files or other processes
@@ -76,31 +86,119 @@ def _imports(tree):
     return bound
 
 
-def _bound_by_code(tree):
-    """Names the file binds itself other than by import: defs, classes, assignments, parameters, loop targets."""
-    names = set()
-    for node in ast.walk(tree):
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-            names.add(node.name)
-        elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
-            names.add(node.id)
-        elif isinstance(node, ast.arg):
-            names.add(node.arg)
-    return names
+class _Scope:
+    """One Python scope while the file is read: its kind and the names bound or declared in it."""
+
+    def __init__(self, kind, parent):
+        self.kind, self.parent = kind, parent         # kind: module, function, class, comprehension
+        self.bound, self.imported = set(), set()      # imported: names bound only by an import (module level)
+        self.declared_global, self.declared_nonlocal = set(), set()
 
 
-def scan(source, library=None, starter=None, reach=REACH):
+def _type_params(node):
+    """A def's or class's type parameters (Python 3.12+), read here in the scope around it."""
+    return list(getattr(node, "type_params", None) or [])
+
+
+def _name_origins(tree):
+    """{id(Name node): where Python finds the name} for every name the file reads.
+
+    "local" (a parameter or local of an enclosing function, lambda or comprehension),
+    "code" (a module-level def, class or assignment), "import" (a module-level import
+    only) or "free" (bound nowhere in the file: a builtin). A class body's names hide
+    nothing (its methods do not see them, and in the body itself a name may still be
+    read before the class binds it). The walk keeps its own stack, so no depth of
+    nesting that Python compiles can stop it.
+    """
+    module = _Scope("module", None)
+    loads, binds = [], []              # (Name node read, its scope); (name bound, the scope it is bound in)
+    todo = [(statement, module) for statement in tree.body]
+
+    def all_args(args):
+        return [a for a in args.posonlyargs + args.args + args.kwonlyargs + [args.vararg, args.kwarg] if a]
+
+    def outer_parts(node):
+        """What a def, lambda or class reads in the scope around it: decorators, defaults, annotations, bases."""
+        parts = list(getattr(node, "decorator_list", [])) + _type_params(node)
+        if isinstance(node, ast.ClassDef):
+            return parts + node.bases + node.keywords
+        args = node.args
+        parts += args.defaults + [d for d in args.kw_defaults if d is not None]
+        parts += [a.annotation for a in all_args(args) if a.annotation is not None]
+        return parts + ([node.returns] if getattr(node, "returns", None) else [])
+
+    while todo:
+        node, scope = todo.pop()
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
+            todo += [(part, scope) for part in outer_parts(node)]
+            if not isinstance(node, ast.Lambda):
+                binds.append((node.name, scope))
+            inner = _Scope("class" if isinstance(node, ast.ClassDef) else "function", scope)
+            if not isinstance(node, ast.ClassDef):
+                inner.bound.update(a.arg for a in all_args(node.args))
+            todo += [(part, inner) for part in (node.body if isinstance(node.body, list) else [node.body])]
+        elif isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
+            todo.append((node.generators[0].iter, scope))          # the first iterable is read outside
+            inner = _Scope("comprehension", scope)
+            for number, generator in enumerate(node.generators):
+                todo += [(generator.target, inner)] + [(condition, inner) for condition in generator.ifs]
+                if number:
+                    todo.append((generator.iter, inner))
+            parts = (node.key, node.value) if isinstance(node, ast.DictComp) else (node.elt,)
+            todo += [(part, inner) for part in parts]
+        elif isinstance(node, ast.NamedExpr):              # := binds outside a comprehension
+            todo.append((node.value, scope))
+            target = scope
+            while target.kind == "comprehension":
+                target = target.parent
+            binds.append((node.target.id, target))
+        elif isinstance(node, ast.Global):
+            scope.declared_global.update(node.names)
+        elif isinstance(node, ast.Nonlocal):
+            scope.declared_nonlocal.update(node.names)
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            for alias in node.names:
+                name = (alias.asname or alias.name).split(".")[0]
+                (scope.imported if scope is module else scope.bound).add(name)
+        elif isinstance(node, ast.Name):
+            (loads if isinstance(node.ctx, ast.Load) else binds).append((node if isinstance(node.ctx, ast.Load)
+                                                                          else node.id, scope))
+        else:
+            if isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
+                binds.append((node.name, scope))
+            elif isinstance(node, ast.MatchMapping) and node.rest:
+                binds.append((node.rest, scope))
+            todo += [(child, scope) for child in ast.iter_child_nodes(node)]
+
+    for name, scope in binds:     # after the walk: a `global x` anywhere in a function counts for all of it
+        (module if name in scope.declared_global else scope).bound.add(name)
+
+    def origin(name, scope):
+        while scope.kind != "module" and name not in scope.declared_global:
+            if scope.kind != "class" and name in scope.bound and name not in scope.declared_nonlocal:
+                return "local"
+            scope = scope.parent
+        if name in module.bound:
+            return "code"
+        return "import" if name in module.imported else "free"
+
+    return {id(node): origin(node.id, scope) for node, scope in loads}
+
+
+def scan(source, library=None, starter=None, reach=REACH, allowed=None):
     """Every Breach inside the step regions of `source` (a lab file's text), in line order.
 
     library: {step: names of library functions the step asks the student to write}.
     starter: the handout's source; a name the file imports that the handout does not is the
-    file's own import (rule "import" when a step uses it). [] when the file does not parse or
-    its markers are broken (other checks say so).
+    file's own import (rule "import" when a step uses it).
+    allowed: {step: attribute names the step may use although they are in library[step]}.
+    [] when the file does not parse or its markers are broken (other checks say so).
     """
-    library = library or {}
+    library, allowed = library or {}, allowed or {}
     try:
         regions = step_regions(source.splitlines())
         tree = ast.parse(source)
+        origins = _name_origins(tree)
     except (MarkerError, SyntaxError, ValueError, RecursionError, MemoryError):
         return []
     lines = source.splitlines()
@@ -111,8 +209,9 @@ def scan(source, library=None, starter=None, reach=REACH):
 
     imported = _imports(tree)
     handed = set(_imports(ast.parse(starter))) if starter else set(imported)
-    own = _bound_by_code(tree)
     found = {}
+    called = {id(node.func) for node in ast.walk(tree) if isinstance(node, ast.Call)}
+    attribute_bases = {id(node.value) for node in ast.walk(tree) if isinstance(node, ast.Attribute)}
 
     def flag(node, rule, what):
         line = node.lineno
@@ -124,39 +223,57 @@ def scan(source, library=None, starter=None, reach=REACH):
         if getattr(node, "lineno", None) is None or step_of(node.lineno) is None:
             continue
         step = step_of(node.lineno)
+        names = library.get(step, ())
         if isinstance(node, (ast.Import, ast.ImportFrom)):
-            names = ", ".join(alias.name for alias in node.names)
-            flag(node, "import", f"imports {names}" + (f" from {node.module}" if getattr(node, "module", None)
-                                                       else ""))
+            listed = ", ".join(alias.name for alias in node.names)
+            flag(node, "import", f"imports {listed}" + (f" from {node.module}" if getattr(node, "module", None)
+                                                        else ""))
         elif isinstance(node, ast.Name):
+            # where Python finds a name read here (one the walk missed counts as a builtin); None: bound here
+            where = origins.get(id(node), "free") if isinstance(node.ctx, ast.Load) else None
             if _is_dunder(node.id):
                 flag(node, "dunder", f"uses the dunder name {node.id}")
-            elif node.id in BUILTINS and node.id not in own:
-                flag(node, "builtin", f"uses {node.id}()")
             elif node.id in reach:
                 flag(node, "reach", f"reaches {node.id}")
-            elif node.id in imported and node.id not in handed and imported[node.id][0].split(".")[0] \
-                    not in FREE_MODULES and node.id not in own:
+            elif node.id in BUILTINS and where == "free":
+                flag(node, "builtin", f"uses {node.id}()")
+            elif node.id in names and where in ("import", "free") and (where == "import" or id(node) in called):
+                flag(node, "library", f"calls the library's {node.id}()" if id(node) in called
+                     else f"uses the library's {node.id}")
+            elif where == "import" and imported.get(node.id, ("", False))[1] and id(node) not in attribute_bases \
+                    and imported[node.id][0].split(".")[0] not in FREE_MODULES:
+                flag(node, "module", f"uses the module {node.id} itself")
+            elif where == "import" and node.id in imported and node.id not in handed \
+                    and imported[node.id][0].split(".")[0] not in FREE_MODULES:
                 flag(node, "import", f"uses {node.id}, which the file imports itself")
         elif isinstance(node, ast.Attribute):
             if _is_dunder(node.attr):
                 flag(node, "dunder", f"uses the dunder attribute .{node.attr}")
             elif node.attr in FRAME_ATTRIBUTES:
                 flag(node, "frame", f"reaches into a frame (.{node.attr})")
-            elif isinstance(node.value, ast.Name) and node.value.id in imported and imported[node.value.id][1] \
-                    and node.value.id not in own:
+            elif node.attr in names and isinstance(node.ctx, ast.Load) and node.attr not in allowed.get(step, ()):
+                flag(node, "library", f"calls the library's {node.attr}() (as .{node.attr})" if id(node) in called
+                     else f"uses the library's {node.attr} (as .{node.attr})")
+            if isinstance(node.value, ast.Name) and origins.get(id(node.value)) == "import" \
+                    and imported.get(node.value.id, ("", False))[1]:
                 module = imported[node.value.id][0].split(".")[0]
                 if module not in FREE_MODULES and node.attr not in FREE_ATTRIBUTES.get(module, ()):
                     flag(node, "module", f"reaches into the module {node.value.id} (.{node.attr})")
-        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and _is_dunder(node.name):
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)) and _is_dunder(node.name):
             flag(node, "dunder", f"defines the dunder name {node.name}")
-        if isinstance(node, ast.Call):
-            names = library.get(step, ())
-            func = node.func
-            if isinstance(func, ast.Name) and func.id in names and (func.id not in own or func.id in imported):
-                flag(node, "library", f"calls the library's {func.id}()")
-            elif isinstance(func, ast.Attribute) and func.attr in names:
-                flag(node, "library", f"calls the library's {func.attr}() (as .{func.attr})")
+        elif isinstance(node, (ast.arg, ast.keyword)) and node.arg and _is_dunder(node.arg):
+            flag(node, "dunder", f"uses the dunder name {node.arg}")
+        elif isinstance(node, ast.MatchClass):     # `case object(__globals__=g)` reads g = x.__globals__
+            for attr in node.kwd_attrs:
+                if _is_dunder(attr):
+                    flag(node, "dunder", f"reads the dunder attribute .{attr} through a match pattern")
+                elif attr in FRAME_ATTRIBUTES:
+                    flag(node, "frame", f"reaches into a frame (.{attr}) through a match pattern")
+                elif attr in names and attr not in allowed.get(step, ()):
+                    flag(node, "library", f"uses the library's {attr} (as .{attr}, through a match pattern)")
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "type" \
+                and origins.get(id(node.func)) == "free" and len(node.args) + len(node.keywords) >= 3:
+            flag(node, "builtin", "uses type() with three arguments (it makes a class)")
     _outside(tree, lines, spans, starter, found, step_of)
     return sorted(found.values(), key=lambda breach: (breach.line, breach.rule, breach.step))
 
@@ -225,6 +342,9 @@ def _outside(tree, lines, spans, starter, found, step_of):
         elif isinstance(node, ast.Attribute) and (_is_dunder(node.attr) or node.attr in FRAME_ATTRIBUTES
                                                   or node.attr == "modules"):
             what = f"uses .{node.attr} outside the steps"
+        elif isinstance(node, ast.MatchClass) and any(_is_dunder(attr) or attr in FRAME_ATTRIBUTES
+                                                      or attr == "modules" for attr in node.kwd_attrs):
+            what = "reads an attribute through a match pattern outside the steps"
         if what:
             flag_all(node, every, what + " (code that can replace your functions)")
 
@@ -239,7 +359,7 @@ def describe(breach, advice=""):
 
 
 def scan_lab(source, lab_module):
-    """scan() with the lab's own rules (its STEP_LIBRARY, STARTER and STEP_ADVICE), messages filled in."""
+    """scan() with the lab's own rules (its STEP_LIBRARY, STEP_ALLOWED, STARTER and STEP_ADVICE), messages filled in."""
     starter = None
     path = getattr(lab_module, "STARTER", None)
     if path:
@@ -250,4 +370,5 @@ def scan_lab(source, lab_module):
             starter = None
     advice = getattr(lab_module, "STEP_ADVICE", {})
     return [Breach(b.step, b.line, b.rule, b.what, b.text, describe(b, advice.get(b.step, "")))
-            for b in scan(source, getattr(lab_module, "STEP_LIBRARY", {}), starter)]
+            for b in scan(source, getattr(lab_module, "STEP_LIBRARY", {}), starter,
+                          allowed=getattr(lab_module, "STEP_ALLOWED", {}))]

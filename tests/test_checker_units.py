@@ -54,6 +54,31 @@ def test_a_print_that_calls_code_or_any_other_added_line_still_fails(added):
     assert not result.same and "was added" in result.problems[0]
 
 
+MAIN_WORLD = "    rng = random.Random(lab.seed(11))  # lab runtime: seed()\n    world = make_world(rng)\n"
+
+
+@pytest.mark.parametrize("old, new", [
+    (MAIN_WORLD, MAIN_WORLD + "    print(f'{len(world.bodies)} bodies', sep='')\n"),
+    (MAIN_WORLD, MAIN_WORLD + "    print('bodies: {}'.format(len(world.bodies)))\n"),
+    ("def main():\n", "print('loaded', repr(WIDTH), round(HEIGHT / 3, 1), abs(-1))\n\n\ndef main():\n"),
+])
+def test_debug_prints_in_other_styles_and_places_are_warnings(old, new):
+    source = edited(SOLUTION, old, new)
+    result = handout.compare(source, STARTER)
+    added = next(line for line in new.splitlines() if "print(" in line)
+    line = source.splitlines().index(added) + 1
+    assert result.same and result.problems == [] and result.warnings == [
+        f"line {line}: `{added.strip()}` added outside the steps (a debug print is allowed; "
+        "remove it before you hand in)"]
+
+
+@pytest.mark.parametrize("added", ["    print('x', file=world)\n", "    print(world.step(0.1))\n",
+                                   "    print(make_world(rng))\n", "    print(**{})\n"])
+def test_a_print_that_writes_elsewhere_or_runs_code_still_fails(added):
+    result = handout.compare(edited(SOLUTION, MAIN_WORLD, MAIN_WORLD + added), STARTER)
+    assert not result.same and result.warnings == [] and "was added" in result.problems[0]
+
+
 def test_an_import_that_rebinds_a_handout_name_is_an_edit():
     result = handout.compare(edited(SOLUTION, "import random\n", "import random\nfrom math import cos as cross\n"),
                              STARTER)

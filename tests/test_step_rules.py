@@ -19,6 +19,29 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 
+# The library functions each step asks the student to write, as the step rules' `library` argument: a step
+# that uses one (by its imported name or as an attribute) is flagged. Each lab module's STEP_LIBRARY row must
+# be within its row here (test below). Proposed beyond today's STEP_LIBRARY: More Shapes steps 3 and 4 and
+# Ball on Ramp step 5 also name the handed classes whose constructors run the library's answer
+# (Polygon(points) recentres on the library's centroid, Body(...).inertia is the library's inertia), and
+# Ball on Ramp step 6 and Sleeping Crates step 4 the World's hook attributes (circle_point, wake_pair).
+LAB_LIBRARY_NAMES = {
+    "tumbling_crates": {2: ("sat",), 3: ("sat",), 4: ("resolve", "lesson_resolve", "effective_mass_inverse"),
+                        5: ("resolve", "lesson_resolve"), 6: ("apply_impulse",)},
+    "more_shapes": {2: ("regular_polygon",),
+                    3: ("polygon_centroid", "polygon_area", "convex_polygon", "Polygon", "Body", "from_world_points"),
+                    4: ("polygon_inertia", "inertia", "inv_inertia", "Polygon", "Body", "from_world_points"),
+                    5: ("sat", "separating_axes")},
+    "ball_on_ramp": {2: ("closest_on_segment",), 3: ("circle_polygon",), 4: ("separate", "lesson_separate"),
+                     5: ("inertia", "inv_inertia", "Circle", "Body"), 6: ("circle_contact_point", "circle_point"),
+                     7: ("resolve", "lesson_resolve")},
+    "bullets": {2: ("circle_toi",), 3: ("bounding_radius",), 4: ("time_of_impact", "circle_toi"),
+                5: ("swept_move", "time_of_impact")},
+    "sleeping_crates": {2: ("sleep_timer", "sleep_timer_of_world", "update_sleep"), 3: ("moves", "moves_of_world"),
+                        4: ("wake_on_contact", "wake_of_world", "wake", "wake_pair")},
+}
+
+
 def lab_by_id(lab_id):
     return next(lab for lab in labs.LABS if lab.id == lab_id)
 
@@ -39,6 +62,25 @@ def test_no_corpus_entry_solution_or_starter_is_flagged(lab_id):
                for name, text in sources.items()}
     assert len(sources) >= 10
     assert {name: found for name, found in flagged.items() if found} == {}
+
+
+@pytest.mark.parametrize("lab_id", [lab.id for lab in labs.LABS])
+def test_no_corpus_entry_solution_or_starter_is_flagged_with_the_proposed_library_names(lab_id):
+    corpus = importlib.import_module(f"corpus_{lab_id}")
+    starter = read(f"starters/{lab_id}_starter.py")
+    sources = {e.name: corpus.build(e.name) for e in corpus.ENTRIES}
+    sources["solution"] = read(f"solutions/{lab_id}.py")
+    sources["starter"] = starter
+    flagged = {name: [(b.line, b.rule, b.text) for b in step_rules.scan(text, LAB_LIBRARY_NAMES[lab_id], starter)]
+               for name, text in sources.items()}
+    assert {name: found for name, found in flagged.items() if found} == {}
+
+
+@pytest.mark.parametrize("lab_id", [lab.id for lab in labs.LABS])
+def test_each_labs_step_library_is_within_the_proposed_table(lab_id):
+    rows = lab_by_id(lab_id).module.STEP_LIBRARY
+    assert set(rows) == set(LAB_LIBRARY_NAMES[lab_id])
+    assert all(set(names) <= set(LAB_LIBRARY_NAMES[lab_id][step]) for step, names in rows.items())
 
 
 def in_step(source, step, code):
@@ -74,6 +116,39 @@ ATTACKS = [   # (lab, step, code, the rule that must flag it)
     ("bullets", 2, "return circle_toi(p1, v1, r1, p2, v2, r2, dt) if False else World.swept_move", "reach"),
     ("bullets", 5, "world.swept_move(bullet, dt)", "library"),
     ("sleeping_crates", 2, "return World().sleep_timer_of_world(timer, speed, spin, dt)", "library"),
+    # the brief's list, as written
+    ("tumbling_crates", 2, "m = __import__('json')", "dunder"),
+    ("tumbling_crates", 2, "x = getattr(lab, 'x')", "builtin"),
+    ("tumbling_crates", 2, "x = getattr(lab, 'x')", "reach"),
+    ("tumbling_crates", 2, "x = lab.something", "reach"),
+    ("tumbling_crates", 2, "text = open(__file__).read()", "builtin"),
+    ("tumbling_crates", 2, "text = open(__file__).read()", "dunder"),
+    ("tumbling_crates", 2, "c = self.__class__", "dunder"),
+    ("tumbling_crates", 2, "m = type(pa).__mro__", "dunder"),
+    # a name is the student's own only where Python finds the student's binding
+    ("tumbling_crates", 2, "def f(getattr=getattr):\n    return getattr(edge_normals, 'x')\nreturn f()", "builtin"),
+    ("tumbling_crates", 2, "class K:\n    g = getattr\nreturn K.g(pa, 'x')", "builtin"),
+    ("tumbling_crates", 2, "names = [getattr for getattr in [1]]\nreturn getattr(pa, 'x')", "builtin"),
+    ("tumbling_crates", 2, "@getattr\ndef f(x):\n    return x\nreturn None", "builtin"),
+    ("tumbling_crates", 2, "def f():\n    global getattr\n    return getattr(pa, 'x')\nreturn f()", "builtin"),
+    ("tumbling_crates", 2, "def f(pygame=pygame):\n    return pygame.display\nreturn f()", "module"),
+    ("tumbling_crates", 2, "def f(r=random):\n    return r.random()\nreturn f()", "module"),
+    ("tumbling_crates", 2, "m = memoryview(b'')", "builtin"),
+    ("tumbling_crates", 2, "K = type('K', (), {})", "builtin"),
+    # the library's function taken as a value, not only called
+    ("ball_on_ramp", 5, "inertia_of = Circle(radius).inertia\nreturn inertia_of(mass)", "library"),
+    ("ball_on_ramp", 5, "return Body(Circle(radius), mass=mass).inertia", "library"),
+    ("more_shapes", 4, "return Body(points, mass=mass).inertia", "library"),
+    ("bullets", 5, "move = world.swept_move\nmove(bullet, dt)", "library"),
+    # attributes read by name through a match class pattern
+    ("tumbling_crates", 2, "match edge_normals:\n    case object(__globals__=library):\n"
+                           "        return library['sat'](pa, pb)", "dunder"),
+    ("bullets", 5, "match super(type(world), world):\n    case object(swept_move=library):\n"
+                   "        library(bullet, dt)", "library"),
+    ("tumbling_crates", 2, "def f(__x__=0):\n    return dict(__y__=1)\nreturn f()", "dunder"),
+    # World without naming it
+    ("ball_on_ramp", 6, "hooks = type(make_world(rng))()", "reach"),
+    ("bullets", 2, "hooks = BulletWorld()", "reach"),
 ]
 
 
@@ -86,6 +161,68 @@ def test_an_attack_is_flagged_with_its_step_line_and_rule(lab_id, step, code, ru
                for b in found), [(b.line, b.rule) for b in found]
     breach = next(b for b in found if b.rule == rule)
     assert breach.message.startswith(f"line {breach.line} (step {step}) ")
+
+
+PROPOSED_ATTACKS = [   # flagged with LAB_LIBRARY_NAMES (the rows proposed beyond today's STEP_LIBRARY)
+    ("more_shapes", 3, "return Body.from_world_points(points).pos"),
+    ("more_shapes", 3, "return Vector2(points[0]) - Polygon(points).points[0]"),
+    ("more_shapes", 3, "return Vector2(points[0]) - Body(points).shape.points[0]"),
+    ("more_shapes", 4, "return 1 / Body(points, mass=mass).inv_inertia"),
+    ("ball_on_ramp", 5, "return 1 / Body(Circle(radius), mass=mass).inv_inertia"),
+    ("ball_on_ramp", 6, "return hooks.circle_point(center, radius, normal, depth)"),
+    ("sleeping_crates", 4, "hooks.wake_pair(a, b)"),
+]
+
+
+@pytest.mark.parametrize("lab_id, step, code", PROPOSED_ATTACKS)
+def test_a_handed_class_that_runs_the_library_s_answer_is_flagged_with_the_proposed_names(lab_id, step, code):
+    source, first = in_step(read(f"solutions/{lab_id}.py"), step, code)
+    found = step_rules.scan(source, LAB_LIBRARY_NAMES[lab_id], read(f"starters/{lab_id}_starter.py"))
+    assert [(b.step, b.line, b.rule) for b in found] == [(step, first, "library")]
+
+
+@pytest.mark.parametrize("code", [
+    "def f(open, vars=0):\n    return open + vars\nbest = f(1)",     # the student's own names
+    "input = [1, 2]\ntype_of = type(pa)\nbest = input[0]",
+    "best = [eval for eval in range(3)]",
+    "def helper(x):\n    return x._private\nbest = None",
+    "print('axis', len(pa), math.hypot(1, 2), pygame.Vector2(1, 0), pygame.math.Vector2(0, 1))",
+])
+def test_ways_of_writing_a_step_are_not_flagged(code):
+    lab = lab_by_id("tumbling_crates")
+    solution = read("solutions/tumbling_crates.py")
+    source, _ = in_step(solution, 2, code + "\n" + step_code(solution, 2))
+    assert step_rules.scan_lab(source, lab.module) == []
+
+
+def test_no_nesting_that_python_compiles_hides_a_breach():
+    """The scan keeps its own stack: a long expression (deeper than the recursion limit) hides nothing."""
+    lab = lab_by_id("tumbling_crates")
+    code = "x = " + " + ".join(["1"] * 2500) + "\nreturn World().sat(pa, pb)"
+    source, first = in_step(read("solutions/tumbling_crates.py"), 2, code)
+    compile(source, "deep.py", "exec")
+    assert {(b.line, b.rule) for b in step_rules.scan_lab(source, lab.module)} == {(first + 1, "library"),
+                                                                                   (first + 1, "reach")}
+
+
+def test_an_allowed_attribute_is_not_flagged():
+    source, first = in_step(read("solutions/bullets.py"), 5, "world.swept_move(bullet, dt)")
+    starter = read("starters/bullets_starter.py")
+    assert [(b.line, b.rule) for b in step_rules.scan(source, {5: ("swept_move",)}, starter)] == [(first, "library")]
+    assert step_rules.scan(source, {5: ("swept_move",)}, starter, allowed={5: ("swept_move",)}) == []
+
+
+def test_describe_names_the_line_the_step_and_the_lab_s_hint():
+    breach = step_rules.Breach(2, 57, "library", "calls the library's sat()", "return sat(pa, pb)")
+    message = step_rules.describe(breach, "write the loop over the edge normals yourself")
+    assert message == ("line 57 (step 2) calls the library's sat() (`return sat(pa, pb)`): "
+                       "write the loop over the edge normals yourself.")
+
+
+def test_a_file_that_does_not_parse_or_has_broken_markers_has_no_breach():
+    solution = read("solutions/tumbling_crates.py")
+    assert step_rules.scan(solution + "\ndef (:\n", LAB_LIBRARY_NAMES["tumbling_crates"]) == []
+    assert step_rules.scan(solution.replace("# --- end of step 2 ---", ""), LAB_LIBRARY_NAMES["tumbling_crates"]) == []
 
 
 def test_an_import_added_outside_the_steps_and_used_inside_is_flagged_but_math_is_free():

@@ -37,7 +37,8 @@ STARTER = os.path.join(ROOT, "starters", "ball_on_ramp_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("closest_on_segment",), 3: ("circle_polygon",), 4: ("separate", "lesson_separate"),
-                5: ("inertia",), 6: ("circle_contact_point",), 7: ("resolve", "lesson_resolve")}
+                5: ("inertia", "inv_inertia", "Circle", "Body"), 6: ("circle_contact_point", "circle_point"),
+                7: ("resolve", "lesson_resolve")}
 STEP_ADVICE = {2: "clamp t to [0, 1] on the edge yourself",
                3: "handle the centre inside the polygon yourself",
                4: "split the push-out by inverse mass yourself",

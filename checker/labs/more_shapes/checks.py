@@ -33,8 +33,10 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.a
 STARTER = os.path.join(ROOT, "starters", "more_shapes_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "more_shapes.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
-STEP_LIBRARY = {2: ("regular_polygon",), 3: ("polygon_centroid", "polygon_area", "convex_polygon"),
-                4: ("polygon_inertia", "inertia"), 5: ("sat", "separating_axes")}
+STEP_LIBRARY = {2: ("regular_polygon",),
+                3: ("polygon_centroid", "polygon_area", "convex_polygon", "Polygon", "Body", "from_world_points"),
+                4: ("polygon_inertia", "inertia", "inv_inertia", "Polygon", "Body", "from_world_points"),
+                5: ("sat", "separating_axes")}
 STEP_ADVICE = {2: "place the corners at radius (cos θk, sin θk) yourself",
                3: "sum the triangle-fan areas and centroids yourself",
                4: "sum the triangle-fan terms yourself",

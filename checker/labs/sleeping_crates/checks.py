@@ -32,7 +32,7 @@ STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("sleep_timer", "sleep_timer_of_world", "update_sleep"), 3: ("moves", "moves_of_world"),
-                4: ("wake_on_contact", "wake_of_world", "wake")}
+                4: ("wake_on_contact", "wake_of_world", "wake", "wake_pair")}
 STEP_ADVICE = {2: "add dt while calm, else start from 0, yourself",
                3: "return whether the body moves yourself",
                4: "return the sleeping body of an awake pair yourself"}

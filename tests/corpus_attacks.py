@@ -1,0 +1,910 @@
+"""The attack corpus: files that try to get a step's points without doing the step, for every lab.
+
+Every entry is a whole student file built like the mistake corpora
+(tests/corpus_files.py): the lab's CURRENT starter with each step region filled,
+with the entry's code for the steps it names and the solution's code for the
+others, so the code around the steps is the handout's and handout_unchanged has
+nothing to say. A few entries go further, as a submission may: kind
+"evade_own_import" adds one top-level import line (the handout comparison allows
+it: "imports you add are fine"), and kinds "evade_side_module" and one
+"forge_unflagged" also put a second file beside the lab file (`extra_files`,
+as a submission folder may hold), imported by one line added at the file's end.
+
+An attack names `target`, the check ids that must NOT pass, and the file must
+score below the lab's maximum. A control (`target` None) is an honest, correct
+completion in an unusual style: every function check must pass and the step
+rules must flag nothing (a false fail is as bad as a false pass).
+
+Kinds, every lab has each of the first seven and at least two controls:
+
+  import      the step imports the library's function that does its job and returns its answer
+  world       the step asks World (built on the library's functions) to do its job
+  dunder      the step reaches the library through __import__ or importlib
+  forge       the step is left undone and, at its first call, patches the child's view of the
+              grading: the probe module's reference function (so the child's "lesson" answer equals
+              the placeholder's), json.dumps (copying every "want" into "got"), or a forged result
+              line written straight to the result pipe (fd 3) before the child kills itself
+  solution    the step reads solutions/<lab>.py, runs it and returns the solution's answer
+  detect      the step returns the library's answer only when it sees it is graded
+              (checker in sys.modules, __name__ == "lab_under_test", the checker's SDL driver or
+              its temporary working folder), the placeholder otherwise
+  table       the step answers from a table of the answers for the probes' FIXED inputs (read from
+              the probe modules' case lists, as a student copies them from a run) and guesses
+              otherwise: no forbidden construct at all, so only inputs drawn per run can catch it
+              (needs_random_inputs=True)
+  control     a correct completion in another style: while loops, comprehensions, math.hypot,
+              lambdas, a local named `result`, tuple unpacking; and one with a debug print in a step
+
+Beyond the brief's list: attacks that reach the same answers around the step rules
+(checker/step_rules.py), each written against the rules as they stood when it was added
+(the rules are being rewritten; the test says which still get through):
+
+  evade_alias       `[random][0]._os.sys.modules[...]`: random is a handout import, the list hid
+                    it from the "module" rule, random's private `_os` is the os module and its `sys`
+                    gives every loaded module; a library function bound to a local name first was no
+                    "library" call (only `x.sat(...)` and `sat(...)` were)
+  evade_class       a handout class or World method computes the answer under a name no rule lists:
+                    Body.from_world_points(points).pos (the library's centroid), 1 / Body(...).inv_inertia
+                    (polygon and disc inertia), type(make_world(...))() (a World without naming World),
+                    World.manifolds (sat), World().wake_pair, World.step (the sleep timer),
+                    super(BulletWorld, world) (World.swept_move)
+  evade_own_import  an added `from pkgutil import resolve_name` (allowed outside the steps, pkgutil
+                    is not a closed module), used in the step through a parameter default, which the
+                    "import" rule once took for a name the file binds itself
+  evade_match       a match statement's class pattern, `case object(__globals__=g)`, reads an
+                    attribute by a string (a dunder or a library name): a handout function's
+                    __globals__ is its library module's namespace (g["sat"], g["__builtins__"], ...)
+  evade_side_module the steps are the starter's (or call a name they never define); a module of the
+                    submission's own (lab_notes.py beside the lab file: the file's folder is on the
+                    child's path), imported by a line added at the end of the file (an added import
+                    is allowed), replaces the lab's functions or binds that name
+  forge_unflagged   the forge through evade_match or a side module, so no rule need flag it: only the
+                    grader's replay (references computed in the parent) stands between it and the points
+  vacuous           the step is not written and the function does nothing the probe can see (resolve()
+                    returns before any impulse): a check that skips what it cannot see would pass it
+
+    ENTRIES: [Entry]; BY_LAB: {lab: [Entry]}; LABS: {lab: its mistake-corpus module}
+    build(entry) -> source text; write(directory, entries=None) -> {name: path}
+"""
+import os
+import sys
+import textwrap
+from typing import NamedTuple
+
+TESTS = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(TESTS)
+for _path in (TESTS, ROOT):
+    if _path not in sys.path:
+        sys.path.insert(0, _path)
+
+import corpus_ball_on_ramp  # noqa: E402  (each lab's STARTER, SOLUTION, STEPS, CHECK_STEP, FUNCTION_CHECKS)
+import corpus_bullets  # noqa: E402
+import corpus_more_shapes  # noqa: E402
+import corpus_sleeping_crates  # noqa: E402
+import corpus_tumbling_crates  # noqa: E402
+from corpus_files import CorpusFiles  # noqa: E402  (starter + steps + edits, as the mistake corpora build)
+
+LABS = {"tumbling_crates": corpus_tumbling_crates, "more_shapes": corpus_more_shapes,
+        "ball_on_ramp": corpus_ball_on_ramp, "bullets": corpus_bullets, "sleeping_crates": corpus_sleeping_crates}
+TITLES = {"tumbling_crates": "Tumbling Crates", "more_shapes": "More Shapes", "ball_on_ramp": "Ball on the Ramp",
+          "bullets": "Bullets", "sleeping_crates": "Sleeping Crates"}
+LISTED_KINDS = ("import", "world", "dunder", "forge", "solution", "detect", "table")
+EVASIONS = ("evade_alias", "evade_class", "evade_own_import", "evade_match", "evade_side_module", "forge_unflagged",
+            "vacuous")
+
+
+class Entry(NamedTuple):
+    name: str
+    lab: str
+    kind: str                 # one of LISTED_KINDS, EVASIONS or "control"
+    steps: dict               # {step: the code put inside that step's region}; other steps get the solution's
+    target: object            # tuple of check ids that must not pass; None for a control (every function check passes)
+    why: str                  # one line: what the attack does and why it must fail (or why the control is correct)
+    edits: tuple = ()         # ((old, new), ...) outside the steps: only an added import line here
+    needs_random_inputs: bool = False   # only inputs drawn per grading run can catch it
+    extra_files: tuple = ()   # ((file name, text), ...) written beside the lab file (a submission's other files)
+
+
+def _code(text):
+    return textwrap.dedent(text).strip("\n")
+
+
+def attack(name, lab, kind, steps, target, why, edits=(), needs_random_inputs=False, extra_files=()):
+    return Entry(name, lab, kind, {step: _code(code) for step, code in steps.items()}, tuple(target), why,
+                 tuple(edits), needs_random_inputs, tuple(extra_files))
+
+
+def notes(*parts):
+    """A module's text from dedented parts (a side file of the submission)."""
+    return "\n\n".join(_code(part) for part in parts) + "\n"
+
+
+def control(name, lab, steps, why):
+    return Entry(name, lab, "control", {step: _code(code) for step, code in steps.items()}, None, why)
+
+
+# the pieces several attacks share
+
+# the library package reached from a handout import (see evade_alias above)
+ALIAS = '[random][0]._os.sys.modules["lesson11.physics2d"]'
+
+# what make_world(rng) needs of rng, so a step can build the handout's World and take its type
+DICE = """
+class Dice:
+    def randint(self, low, high):
+        return low
+
+    def uniform(self, low, high):
+        return low
+"""
+
+
+def dice(code):
+    """Step code that first defines Dice, then runs `code`."""
+    return _code(DICE) + "\n" + _code(code)
+
+
+# an added top-level import (outside the steps; the handout comparison allows a new name)
+PKGUTIL = (("import random\n", "import random\nfrom pkgutil import resolve_name\n"),)
+
+# an added import of a module of the submission's own, at the end of the file, after every def
+MAIN_GUARD = '\n\nif __name__ == "__main__":'
+LAB_NOTES = ((MAIN_GUARD, '\n\nimport lab_notes  # noqa: E402, F401\n' + MAIN_GUARD),)
+
+# lab_notes.py's first lines: find the globals of the lab file that imports it
+FIND_LAB = """
+    import sys
+
+    frame = sys._getframe(1)
+    while frame is not None and not ("main" in frame.f_globals and "make_world" in frame.f_globals):
+        frame = frame.f_back
+    lab_globals = frame.f_globals if frame is not None else {}
+"""
+
+
+def starter_steps(lab):
+    """{step: the starter's own code in it} (its comments and placeholder): the steps not done."""
+    module = LABS[lab]
+    with open(module.STARTER, encoding="utf-8") as handle:
+        return CorpusFiles(module.STARTER, module.SOLUTION, module.STEPS, {}, "").step_code(handle.read())
+
+
+def solution_call(lab, function, args):
+    """Step code that runs `function` from solutions/<lab>.py (read once, exec'd) on `args`."""
+    return f"""
+        global solution_{function}
+        try:
+            return solution_{function}({args})
+        except NameError:
+            pass
+        os = __import__("os")
+        root = os.path.dirname(os.path.dirname(__import__("lesson11").__file__))
+        namespace = {{}}
+        with open(os.path.join(root, "solutions", "{lab}.py"), encoding="utf-8") as handle:
+            exec(handle.read().split("\\ndef main")[0], namespace)
+        solution_{function} = namespace["{function}"]
+        return solution_{function}({args})
+    """
+
+
+# ---------------------------------------------------------------- the tables (kind "table")
+# Each reads the fixed inputs from the lab's probe module, as a student would copy them from a run.
+# Unknown inputs get a guess that is wrong for every input the probes draw. An empty table means the
+# probe modules moved (tests/test_corpus_attacks.py checks that every table holds the fixed inputs).
+
+def _round_key(numbers, digits):
+    return tuple(round(float(x), digits) for x in numbers)
+
+
+def _points_key(points):
+    return _round_key([c for p in points for c in (p[0], p[1])], 6)
+
+
+def _sat_table():
+    try:
+        from checker.probe_kit import reference_sat, sat_pairs
+        table = {}
+        for _, pa, pb in sat_pairs():
+            for first, second in ((pa, pb), (pb, pa)):
+                hit = reference_sat(first, second)
+                table[_points_key(list(first) + list(second))] = \
+                    None if hit is None else (hit[0].x, hit[0].y, float(hit[1]))
+        return table
+    except (ImportError, AttributeError, TypeError, ValueError):
+        return {}
+
+
+def _corner_table():
+    try:
+        from checker.labs.more_shapes.probes import POLYGONS
+        from lesson11.physics2d import regular_polygon
+        return {(sides, float(radius)): [(p.x, p.y) for p in regular_polygon(sides, radius)]
+                for sides, radius in POLYGONS}
+    except (ImportError, AttributeError, TypeError, ValueError):
+        return {}
+
+
+def _closest_table():
+    try:
+        from checker.labs.ball_on_ramp.probes import outside_cases, reference_closest, segment_cases
+        calls = [(p, a, b) for _, p, a, b in segment_cases()]
+        for _, center, _, points in outside_cases():   # circle_polygon() calls it once per edge
+            calls += [(center, points[i], points[(i + 1) % len(points)]) for i in range(len(points))]
+        table = {}
+        for p, a, b in calls:
+            point = reference_closest(p, a, b)
+            table[_points_key([p, a, b])] = (point.x, point.y)
+        return table
+    except (ImportError, AttributeError, TypeError, ValueError):
+        return {}
+
+
+def _toi_table():
+    try:
+        from checker.labs.bullets.probes import reference_circle_toi, toi_cases
+        table = {}
+        for _, p1, v1, r1, p2, v2, r2, dt in toi_cases():
+            key = _round_key((p1.x, p1.y, v1.x, v1.y, r1, p2.x, p2.y, v2.x, v2.y, r2, dt), 9)
+            table[key] = reference_circle_toi(p1, v1, r1, p2, v2, r2, dt)
+        return table
+    except (ImportError, AttributeError, TypeError, ValueError):
+        return {}
+
+
+def _timer_table():
+    try:
+        from checker.labs.sleeping_crates.probes import DT, TIMER_CASES, reference_timer
+        return {(timer, speed, spin, round(dt, 12)): reference_timer(timer, speed, spin, dt)
+                for _, timer, speed, spin in TIMER_CASES for dt in (DT, 1 / 60)}
+    except (ImportError, AttributeError, TypeError, ValueError):
+        return {}
+
+
+TABLES = {"tumbling_crates": _sat_table(), "more_shapes": _corner_table(), "ball_on_ramp": _closest_table(),
+          "bullets": _toi_table(), "sleeping_crates": _timer_table()}
+
+
+# ================================================================ Tumbling Crates: sat, resolve, apply_impulse
+
+TUMBLING = [
+    attack("tc_import_library_sat", "tumbling_crates", "import", {2: """
+        from lesson11.physics2d import sat as reference
+        return reference(pa, pb)
+    """}, ["sat_axes"], "step 2 imports the library's sat() and returns its answer: the SAT loop was never written"),
+    attack("tc_world_sat", "tumbling_crates", "world", {2: """
+        return World().sat(pa, pb)
+    """}, ["sat_axes"], "step 2 returns World().sat, which is the library's sat(): no loop written"),
+    attack("tc_world_lesson_resolve", "tumbling_crates", "world", {4: """
+        World().lesson_resolve(a, b, normal, point)
+        return
+    """}, ["resolve_k", "resolve_friction"],
+        "step 4 hands the whole contact to World.lesson_resolve (the library's resolve): no spin terms written"),
+    attack("tc_dunder_import", "tumbling_crates", "dunder", {2: """
+        return __import__("lesson11.physics2d", fromlist=["sat"]).sat(pa, pb)
+    """}, ["sat_axes"], "step 2 reaches the library's sat() through __import__"),
+    attack("tc_forge_reference", "tumbling_crates", "forge", {2: """
+        modules = __import__("sys").modules
+        for name in ("checker.labs.tumbling_crates.probes", "checker.probe_kit"):
+            if name in modules:
+                modules[name].reference_sat = lambda *args, **kwargs: None
+        return None  # until you write step 2, nothing ever collides
+    """}, ["sat_axes"], "step 2 stays the placeholder and makes the child's reference sat() say None too: "
+                        "the grader's own reference must still say the pairs overlap"),
+    attack("tc_solution_file", "tumbling_crates", "solution", {2: solution_call("tumbling_crates", "sat", "pa, pb")},
+           ["sat_axes"], "step 2 reads solutions/tumbling_crates.py, execs it and returns the solution's sat()"),
+    attack("tc_detect_checker", "tumbling_crates", "detect", {2: """
+        if "checker" in __import__("sys").modules:
+            from lesson11.physics2d import sat as reference
+            return reference(pa, pb)
+        return None  # until you write step 2, nothing ever collides
+    """}, ["sat_axes"], "step 2 answers with the library's sat() only when the checker is loaded; the placeholder "
+                        "otherwise"),
+    attack("tc_table_sat", "tumbling_crates", "table", {2: f"""
+        answers = {TABLES["tumbling_crates"]!r}
+        key = tuple(round(c, 6) for p in pa + pb for c in (p.x, p.y))
+        if key in answers:
+            hit = answers[key]
+            return None if hit is None else (pygame.Vector2(hit[0], hit[1]), hit[2])
+        return pygame.Vector2(1, 0), 1.0  # not in the table: a guess
+    """}, ["sat_axes"], "step 2 answers the probes' fixed pairs from a table; a pair drawn for this run is not in it",
+        needs_random_inputs=True),
+    attack("tc_alias_library_sat", "tumbling_crates", "evade_alias", {2: f"""
+        library = {ALIAS}.sat
+        return library(pa, pb)
+    """}, ["sat_axes"], "step 2 returns the library's sat() reached through random._os.sys.modules, with no "
+                        "import, dunder, World or module attribute the old rules named"),
+    attack("tc_world_by_type", "tumbling_crates", "evade_class", {2: dice("""
+        library = type(make_world(Dice()))().sat
+        return library(pa, pb)
+    """)}, ["sat_axes"], "step 2 builds the handout's world, takes its type (World) and uses a fresh World's "
+                        "default sat hook: the library's sat()"),
+    attack("tc_own_import_k", "tumbling_crates", "evade_own_import", {4: """
+        def effective_mass(resolve_name=resolve_name):
+            return resolve_name("lesson11.physics2d:effective_mass_inverse")
+        k = effective_mass()(a, b, ra, rb, normal)
+    """}, ["resolve_k"], "an added `from pkgutil import resolve_name` fetches the library's effective_mass_inverse "
+                         "for step 4's k; used through a parameter default, no rule flags it", edits=PKGUTIL),
+    attack("tc_side_module_free_name", "tumbling_crates", "evade_side_module", {2: """
+        return checked_sat(pa, pb)
+    """}, ["sat_axes"], "step 2 calls a name it never defines; an imported lab_notes.py beside the file binds it to "
+                        "the library's sat() in the lab's globals, so even the spliced probe runs the library",
+        edits=LAB_NOTES, extra_files=[("lab_notes.py", notes(FIND_LAB, """
+            from lesson11.physics2d import sat
+
+            lab_globals["checked_sat"] = sat
+        """))]),
+    attack("tc_early_return_friction", "tumbling_crates", "vacuous", {4: """
+        return  # (resolve does nothing for now)
+    """, 5: ""}, ["resolve_friction"], "steps 4 and 5 are not written (step 4 just returns): a resolve() that applies no "
+                                       "impulse must not pass the friction check"),
+    attack("tc_forge_unflagged", "tumbling_crates", "forge_unflagged", {2: """
+        match edge_normals:
+            case object(__globals__=namespace):
+                modules = namespace["__builtins__"]["__import__"]("sys").modules
+                for name in ("checker.labs.tumbling_crates.probes", "checker.probe_kit"):
+                    if name in modules:
+                        modules[name].reference_sat = lambda *args, **kwargs: None
+        return None  # until you write step 2, nothing ever collides
+    """}, ["sat_axes"], "the reference forge reached through a match pattern, so no rule flags it: the child's "
+                        "references agree with the placeholder, but the grader computes its own"),
+    attack("tc_world_manifolds", "tumbling_crates", "evade_class", {2: """
+        match make_crate:
+            case object(__globals__=lab_globals):
+                engine = lab_globals["World"]([Body.from_world_points(pa, 1.0), Body.from_world_points(pb, 1.0)])
+                for _, _, manifold in engine.manifolds():
+                    return manifold.normal, manifold.depth
+        return None
+    """}, ["sat_axes"], "step 2 puts both polygons in a World (taken from the lab's globals by a match pattern) and "
+                        "returns the library's contact manifold: no library name the rules list"),
+    attack("tc_match_globals", "tumbling_crates", "evade_match", {2: """
+        match edge_normals:
+            case object(__globals__=library):
+                return library["sat"](pa, pb)
+    """}, ["sat_axes"], "step 2 reads edge_normals.__globals__ through a match class pattern (a string, not an "
+                        "attribute) and returns the library module's sat()"),
+    attack("tc_side_module_solution", "tumbling_crates", "evade_side_module",
+           starter_steps("tumbling_crates"), ["resolve_k", "resolve_friction", "apply_impulse_spin"],
+           "the steps are the starter's; an imported lab_notes.py beside the file execs the solution's functions "
+           "over the lab's own (only sat's spliced probe reads the source)", edits=LAB_NOTES,
+           extra_files=[("lab_notes.py", notes(FIND_LAB, """
+               import os
+
+               import lesson11
+
+               root = os.path.dirname(os.path.dirname(lesson11.__file__))
+               with open(os.path.join(root, "solutions", "tumbling_crates.py"), encoding="utf-8") as handle:
+                   exec(handle.read().split("\\ndef main")[0], lab_globals)
+           """))]),
+    control("tc_control_while_and_lambda", "tumbling_crates", {2: """
+        axes = edge_normals(pa) + edge_normals(pb)
+        k = 0
+        while k < len(axes):
+            axis = axes[k]
+            k += 1
+            (low_a, high_a), (low_b, high_b) = project(pa, axis), project(pb, axis)
+            result = min(high_a, high_b) - max(low_a, low_b)
+            if result <= 0:
+                return None
+            if result < best_depth:
+                best_axis, best_depth = axis, result
+    """, 3: """
+        towards_b = centre_of(pb) - centre_of(pa)
+        best_axis = best_axis if towards_b.dot(best_axis) >= 0 else -best_axis
+    """, 4: """
+        square = lambda x: x * x
+        k += square(ran) * a.inv_inertia + square(rbn) * b.inv_inertia
+    """, 5: """
+        limit = mu * j
+        if jt > limit:
+            jt = limit
+        elif jt < -limit:
+            jt = -limit
+    """, 6: """
+        spin_a, spin_b = cross(ra, impulse) * a.inv_inertia, cross(rb, impulse) * b.inv_inertia
+        a.omega, b.omega = a.omega - spin_a, b.omega + spin_b
+    """}, "a while loop, tuple unpacking, a local named result, a conditional expression, a helper lambda, an "
+          "if/elif clamp: the lesson's arithmetic in another style"),
+    control("tc_control_print_in_step", "tumbling_crates", {2: """
+        for axis in edge_normals(pa) + edge_normals(pb):
+            min_a, max_a = project(pa, axis)
+            min_b, max_b = project(pb, axis)
+            overlap = min(max_a, max_b) - max(min_a, min_b)
+            if overlap <= 0:
+                return None
+            if overlap < best_depth:
+                best_axis, best_depth = axis, overlap
+        if best_depth > 25:
+            print("sat: a deep hit,", round(best_depth, 2), "px")
+    """}, "the solution's loop with a debug print of deep hits (a print inside a step is allowed)"),
+]
+
+
+# ================================================================ More Shapes: regular_polygon, centroid, inertia, axes
+
+MORE_SHAPES = [
+    attack("ms_import_library_polygon", "more_shapes", "import", {2: """
+        from lesson11.physics2d import regular_polygon as reference
+        return reference(sides, radius)
+    """}, ["polygon_corners"], "step 2 imports the library's regular_polygon() and returns its corners"),
+    attack("ms_world_body_inertia", "more_shapes", "world", {4: """
+        return World([Body(Polygon(points, recentre=False), (0, 0), mass)]).bodies[0].inertia
+    """}, ["inertia_sum"], "step 4 puts the polygon in a World and reads the inertia the library gave its body: no "
+                           "triangle-fan sum written"),
+    attack("ms_dunder_importlib_centroid", "more_shapes", "dunder", {3: """
+        library = __import__("importlib").import_module("lesson11.physics2d")
+        return library.polygon_centroid(points)
+    """}, ["centroid"], "step 3 reaches the library's polygon_centroid() through __import__('importlib')"),
+    attack("ms_forge_json", "more_shapes", "forge", {2: """
+        json = __import__("json")
+        if not hasattr(json.dumps, "forged"):
+            real = json.dumps
+
+            def copy_want(item):
+                if isinstance(item, dict):
+                    if "want" in item and "got" in item:
+                        item["got"] = item["want"]
+                    for inner in item.values():
+                        copy_want(inner)
+                elif isinstance(item, list):
+                    for inner in item:
+                        copy_want(inner)
+
+            def dumps(value, *args, **kwargs):
+                copy_want(value)
+                return real(value, *args, **kwargs)
+
+            dumps.forged = True
+            json.dumps = dumps
+        return box_points(radius, radius)  # until you write step 2, every shape is a square
+    """}, ["polygon_corners"], "step 2 stays the placeholder and replaces the child's json.dumps so every 'got' "
+                               "reported equals its 'want': the grader must not take the child's word"),
+    attack("ms_solution_file", "more_shapes", "solution",
+           {2: solution_call("more_shapes", "regular_polygon", "sides, radius")}, ["polygon_corners"],
+           "step 2 reads solutions/more_shapes.py, execs it and returns the solution's corners"),
+    attack("ms_detect_module_name", "more_shapes", "detect", {2: """
+        if __name__ == "lab_under_test":
+            from lesson11.physics2d import regular_polygon as reference
+            return reference(sides, radius)
+        return box_points(radius, radius)  # until you write step 2, every shape is a square
+    """}, ["polygon_corners"], "step 2 returns the library's corners only under the checker's module name"),
+    attack("ms_table_polygon", "more_shapes", "table", {2: f"""
+        corners = {TABLES["more_shapes"]!r}
+        if (sides, float(radius)) in corners:
+            return [Vector2(x, y) for x, y in corners[(sides, float(radius))]]
+        return box_points(radius, radius)  # not in the table: the placeholder
+    """}, ["polygon_corners"], "step 2 answers the probes' fixed (sides, radius) from a table; the polygon drawn for "
+                               "this run is not in it", needs_random_inputs=True),
+    attack("ms_alias_library_polygon", "more_shapes", "evade_alias", {2: f"""
+        library = {ALIAS}.regular_polygon
+        return library(sides, radius)
+    """}, ["polygon_corners"], "step 2 returns the library's regular_polygon() reached through random._os, nothing "
+                               "flagged"),
+    attack("ms_body_centroid", "more_shapes", "evade_class", {3: """
+        return Body.from_world_points(points).pos
+    """}, ["centroid"], "step 3 lets the handout's Body place a body on the points: its pos is the library's "
+                        "area-weighted centroid"),
+    attack("ms_body_inertia", "more_shapes", "evade_class", {4: """
+        return Body(Polygon(points, recentre=False), (0, 0), mass).inertia
+    """}, ["inertia_sum"], "step 4 reads the inertia the handout's Body computes with the library's polygon_inertia "
+                           "(an attribute, not a call of .inertia())"),
+    attack("ms_alias_solution_axes", "more_shapes", "evade_alias", {5: """
+        loader = [random][0]._os.sys.modules["importlib"]
+        solution = loader.import_module("solutions.more_shapes").separating_axes
+        axes.extend(solution(pa, pb))
+    """}, ["parallel_axes"], "step 5 imports solutions/more_shapes.py as a module (it is on the child's path) and "
+                             "takes the solution's separating_axes(), nothing flagged"),
+    attack("ms_body_inv_inertia", "more_shapes", "evade_class", {4: """
+        return 1 / Body(Polygon(points, recentre=False), (0, 0), mass).inv_inertia
+    """}, ["inertia_sum"], "step 4 inverts the inverse inertia the handout's Body got from the library's "
+                           "polygon_inertia (inv_inertia is no listed name)"),
+    attack("ms_match_globals", "more_shapes", "evade_match", {2: """
+        match box_points:
+            case object(__globals__=library):
+                return library["regular_polygon"](sides, radius)
+    """}, ["polygon_corners"], "step 2 reads box_points.__globals__ (the library's shapes module) through a match "
+                               "class pattern and returns its regular_polygon()"),
+    control("ms_control_while_and_zip", "more_shapes", {2: """
+        corners = []
+        k = 0
+        while k < sides:
+            theta = 2 * math.pi * k / sides
+            corners.append(Vector2(radius * math.cos(theta), radius * math.sin(theta)))
+            k += 1
+        return corners
+    """, 3: """
+        pairs = list(zip(points, points[1:] + points[:1]))
+        result = sum(((a + b) * cross(a, b) for a, b in pairs), Vector2())
+        return result / (6 * area)
+    """, 4: """
+        weight = lambda a, b: abs(cross(a, b))
+        pairs = [(points[i], points[(i + 1) % len(points)]) for i in range(len(points))]
+        top = sum(weight(a, b) * (a.dot(a) + a.dot(b) + b.dot(b)) for a, b in pairs)
+        bottom = sum(weight(a, b) for a, b in pairs)
+        return mass * top / (6 * bottom)
+    """, 5: """
+        for axis in [*edge_normals(pa), *edge_normals(pb)]:
+            parallel = [kept for kept in axes if abs(cross(axis, kept)) <= PARALLEL]
+            if not parallel:
+                axes.append(axis)
+    """}, "a while loop, zip with a rotated copy, sum() over a generator, a weight lambda, a local named result, "
+          "a list of parallel axes: the lesson's formulas"),
+    control("ms_control_print_in_step", "more_shapes", {3: """
+        print("centroid of", len(points), "points")
+        total = Vector2()
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            total += (a + b) * cross(a, b)
+        return total / (6 * area)
+    """}, "the solution's centroid with a debug print first (a print inside a step is allowed)"),
+]
+
+
+# ================================================================ Ball on the Ramp: closest point, inside, push-out, ...
+
+BALL_ON_RAMP = [
+    attack("br_import_library_closest", "ball_on_ramp", "import", {2: """
+        from lesson11.physics2d import closest_on_segment as reference
+        return reference(p, a, b)
+    """}, ["closest_point"], "step 2 imports the library's closest_on_segment() and returns its point"),
+    attack("br_world_lesson_separate", "ball_on_ramp", "world", {4: """
+        World().lesson_separate(a, b, normal, depth)
+    """}, ["push_out_split"], "step 4 hands the push-out to World.lesson_separate (the library's separate): no split "
+                              "by inverse mass written"),
+    attack("br_dunder_import", "ball_on_ramp", "dunder", {2: """
+        library = __import__("lesson11.physics2d", fromlist=["closest_on_segment"])
+        return library.closest_on_segment(p, a, b)
+    """}, ["closest_point"], "step 2 reaches the library's closest_on_segment() through __import__"),
+    attack("br_forge_result_pipe", "ball_on_ramp", "forge", {2: """
+        os = __import__("os")
+        forged = ('{"task": "probe", "phase": "done", "probe": {"missing": [], "functions": '
+                  '{"closest_on_segment": {"ok": true, "data": []}}}}\\n')
+        os.write(3, forged.encode())  # the result pipe (the old child wrote a file named in sys.argv)
+        os.kill(os.getpid(), 9)  # so the forged line stays the last one
+        return pygame.Vector2(math.inf, math.inf)  # until you write step 2, no edge is near the ball: it falls through
+    """}, ["closest_point"], "step 2 writes a forged 'done' result to the child's result pipe and kills the child: "
+                             "the grader must judge only what it replays itself"),
+    attack("br_solution_file", "ball_on_ramp", "solution",
+           {2: solution_call("ball_on_ramp", "closest_on_segment", "p, a, b")}, ["closest_point"],
+           "step 2 reads solutions/ball_on_ramp.py, execs it and returns the solution's point"),
+    attack("br_detect_sdl_driver", "ball_on_ramp", "detect", {2: """
+        if __import__("os").environ.get("SDL_VIDEODRIVER") == "dummy":
+            from lesson11.physics2d import closest_on_segment as reference
+            return reference(p, a, b)
+        return pygame.Vector2(math.inf, math.inf)  # until you write step 2, no edge is near the ball: it falls through
+    """}, ["closest_point"], "step 2 answers with the library only under the checker's dummy SDL driver"),
+    attack("br_table_closest", "ball_on_ramp", "table", {2: f"""
+        nearest = {TABLES["ball_on_ramp"]!r}
+        key = (round(p.x, 6), round(p.y, 6), round(a.x, 6), round(a.y, 6), round(b.x, 6), round(b.y, 6))
+        if key in nearest:
+            return pygame.Vector2(nearest[key])
+        return pygame.Vector2(math.inf, math.inf)  # not in the table: the placeholder
+    """}, ["closest_point"], "step 2 answers the probes' fixed points and edges (circle_polygon's too) from a table; "
+                             "the points drawn for this run are not in it", needs_random_inputs=True),
+    attack("br_body_disc_inertia", "ball_on_ramp", "evade_class", {5: """
+        return Body(Circle(radius), (0, 0), mass).inertia
+    """}, ["ball_inertia"], "step 5 reads the inertia the handout's Body gives a Circle (the library's ½ m r²)"),
+    attack("br_world_by_type_inside", "ball_on_ramp", "evade_class", {3: dice("""
+        if inside(center, points):
+            library = type(make_world(Dice()))().circle_polygon
+            return library(center, radius, points)
+    """)}, ["inside_case"], "step 3 takes World from the handout's world and uses its default circle_polygon hook "
+                           "(the library's) for the centre-inside case"),
+    attack("br_world_by_type_contact", "ball_on_ramp", "evade_class", {6: dice("""
+        library = type(make_world(Dice()))().circle_point
+        return library(center, radius, normal, depth)
+    """)}, ["contact_on_surface"], "step 6 returns the World's default circle_point hook's answer (the library's "
+                                  "circle_contact_point, which the check accepts)"),
+    attack("br_alias_library_separate", "ball_on_ramp", "evade_alias", {4: f"""
+        library = {ALIAS}.separate
+        library(a, b, normal, depth)
+    """}, ["push_out_split"], "step 4 calls the library's separate() reached through random._os, nothing flagged"),
+    attack("br_body_inv_inertia", "ball_on_ramp", "evade_class", {5: """
+        return 1 / Body(Circle(radius), (0, 0), mass).inv_inertia
+    """}, ["ball_inertia"], "step 5 inverts the inverse inertia the handout's Body gives a Circle (the library's "
+                            "½ m r²)"),
+    attack("br_match_globals", "ball_on_ramp", "evade_match", {4: """
+        match apply_impulse:
+            case object(__globals__=library):
+                library["separate"](a, b, normal, depth)
+    """}, ["push_out_split"], "step 4 reads apply_impulse.__globals__ (the library's response module) through a "
+                              "match class pattern and runs its separate()"),
+    attack("br_forge_unflagged", "ball_on_ramp", "forge_unflagged", {2: """
+        match inside:
+            case object(__globals__=namespace):
+                os = namespace["__builtins__"]["__import__"]("os")
+                forged = ('{"task": "probe", "phase": "done", "probe": {"missing": [], "functions": '
+                          '{"closest_on_segment": {"ok": true, "data": []}}}}\\n')
+                os.write(3, forged.encode())
+                os.kill(os.getpid(), 9)
+        return pygame.Vector2(math.inf, math.inf)  # until you write step 2, no edge is near the ball: it falls through
+    """}, ["closest_point"], "the result-pipe forge reached through a match pattern, so no rule flags it: only the "
+                             "grader's replay stands against it"),
+    control("br_control_hypot_and_lambda", "ball_on_ramp", {2: """
+        length = math.hypot(ab.x, ab.y)
+        t = (p - a).dot(ab) / (length * length)
+        t = min(max(t, 0.0), 1.0)
+        return a + ab * t
+    """, 3: """
+        if inside(center, points):
+            (nx, ny), result = -offset / dist, radius + dist
+            return pygame.Vector2(nx, ny), result
+    """, 4: """
+        share = lambda inv: push * inv / total
+        a.pos, b.pos = a.pos - normal * share(a.inv_mass), b.pos + normal * share(b.inv_mass)
+    """, 5: """
+        result = mass * radius * radius / 2
+        return result
+    """, 6: """
+        return center + radius * normal
+    """, 7: """
+        kt = sum((a.inv_mass, b.inv_mass, cross(ra, t) ** 2 * a.inv_inertia, cross(rb, t) ** 2 * b.inv_inertia))
+        jt = -rel.dot(t) / kt
+        jt = mu * j if jt > mu * j else -mu * j if jt < -mu * j else jt
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, "math.hypot squared, min(max()), tuple unpacking, a share lambda, a local named result, sum() of a "
+          "tuple, a chained conditional clamp: the lesson's formulas"),
+    control("br_control_print_in_step", "ball_on_ramp", {5: """
+        print("disc inertia for a ball of radius", radius)
+        return 0.5 * mass * radius ** 2
+    """}, "the solution's disc inertia with a debug print (a print inside a step is allowed)"),
+]
+
+
+# ================================================================ Bullets: circle_toi, bounding_radius, broad test, swept move
+
+BULLETS = [
+    attack("bu_import_library_toi", "bullets", "import", {2: """
+        from lesson11.physics2d import circle_toi as reference
+        return reference(p1, v1, r1, p2, v2, r2, dt)
+    """}, ["toi_matches_root"], "step 2 imports the library's circle_toi() and returns its time"),
+    attack("bu_world_swept_move", "bullets", "world", {5: """
+        World.swept_move(world, bullet, dt)
+    """}, ["swept_move_resolves"], "step 5 runs the library's World.swept_move on the lab's world: no move, resolve "
+                                   "and rest of the step written"),
+    attack("bu_dunder_importlib", "bullets", "dunder", {2: """
+        import importlib
+        return importlib.import_module("lesson11.physics2d.collision").circle_toi(p1, v1, r1, p2, v2, r2, dt)
+    """}, ["toi_matches_root"], "step 2 imports importlib and takes the library's circle_toi() from its module"),
+    attack("bu_forge_reference", "bullets", "forge", {2: """
+        modules = __import__("sys").modules
+        probes = modules.get("checker.labs.bullets.probes")
+        if probes is not None:
+            probes.analytic_toi = lambda *args: None
+            probes.reference_circle_toi = lambda *args: None
+        return None  # until you write step 2, nothing is ever hit: bullets fly through everything under CCD
+    """}, ["toi_matches_root"], "step 2 stays the placeholder and makes the child's analytic time None too: the "
+                                "grader computes its own"),
+    attack("bu_solution_file", "bullets", "solution",
+           {2: solution_call("bullets", "circle_toi", "p1, v1, r1, p2, v2, r2, dt")}, ["toi_matches_root"],
+           "step 2 reads solutions/bullets.py, execs it and returns the solution's time"),
+    attack("bu_detect_work_folder", "bullets", "detect", {2: """
+        if "checker-" in __import__("os").getcwd():
+            from lesson11.physics2d import circle_toi as reference
+            return reference(p1, v1, r1, p2, v2, r2, dt)
+        return None  # until you write step 2, nothing is ever hit: bullets fly through everything under CCD
+    """}, ["toi_matches_root"], "step 2 answers with the library only inside the checker's temporary working folder"),
+    attack("bu_table_toi", "bullets", "table", {2: f"""
+        times = {TABLES["bullets"]!r}
+        key = tuple(round(x, 9) for x in (p1.x, p1.y, v1.x, v1.y, r1, p2.x, p2.y, v2.x, v2.y, r2, dt))
+        if key in times:
+            return times[key]
+        return 0.0  # not in the table: a guess
+    """}, ["toi_matches_root"], "step 2 answers the probes' fixed paths from a table; the paths drawn for this run "
+                                "are not in it", needs_random_inputs=True),
+    attack("bu_super_swept_move", "bullets", "evade_class", {5: """
+        library = super(BulletWorld, world).swept_move
+        library(bullet, dt)
+    """}, ["swept_move_resolves"], "step 5 runs World.swept_move through super(BulletWorld, world), bound first so "
+                                   "it is no .swept_move() call: nothing flagged"),
+    attack("bu_alias_library_toi", "bullets", "evade_alias", {2: f"""
+        library = {ALIAS}.circle_toi
+        return library(p1, v1, r1, p2, v2, r2, dt)
+    """}, ["toi_matches_root"], "step 2 returns the library's circle_toi() reached through random._os, nothing "
+                                "flagged"),
+    attack("bu_own_import_solution", "bullets", "evade_own_import", {3: """
+        def solution(resolve_name=resolve_name):
+            return resolve_name("solutions.bullets:bounding_radius")
+        return solution()(points, centre)
+    """}, ["bounding_circle"], "an added `from pkgutil import resolve_name` imports solutions/bullets.py and step 3 "
+                               "returns the solution's bounding_radius(); a parameter default hides the name",
+        edits=PKGUTIL),
+    attack("bu_match_super_swept_move", "bullets", "evade_match", {5: """
+        match super(type(world), world):
+            case object(swept_move=library):
+                library(bullet, dt)
+    """}, ["swept_move_resolves"], "step 5 takes World.swept_move from super(type(world), world) through a match "
+                                   "class pattern (the name is a string) and runs it"),
+    attack("bu_match_globals", "bullets", "evade_match", {2: """
+        match circle_polygon_toi:
+            case object(__globals__=library):
+                return library["circle_toi"](p1, v1, r1, p2, v2, r2, dt)
+    """}, ["toi_matches_root"], "step 2 reads circle_polygon_toi.__globals__ (the library's collision module) "
+                                "through a match class pattern and returns its circle_toi()"),
+    control("bu_control_result_and_while", "bullets", {2: """
+        c = dp.dot(dp) - reach ** 2
+        if c <= 0:
+            return 0.0
+        a, b = dv.dot(dv), 2 * dp.dot(dv)
+        if a == 0:
+            return None
+        disc = b * b - 4 * a * c
+        if disc < 0:
+            return None
+        result = (-b - math.sqrt(disc)) / (2 * a)
+        return result if 0 <= result <= dt else None
+    """, 3: """
+        farthest, k = 0.0, 0
+        while k < len(points):
+            offset = points[k] - centre
+            farthest = max(farthest, math.hypot(offset.x, offset.y))
+            k += 1
+        return farthest
+    """, 4: """
+        reach_of_crate = bounding_radius(points, other.pos)
+        broad = circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(), reach_of_crate, dt)
+        if broad is None:
+            return None
+    """, 5: """
+        bullet.pos += bullet.vel * t
+        contact = bullet.pos + normal * bullet.radius
+        world.resolve(bullet, other, normal, contact)
+        remaining = dt - t
+        bullet.pos += bullet.vel * remaining
+    """}, "two early returns, tuple unpacking, a local named result, a while loop with math.hypot, named "
+          "intermediates: the lesson's formulas"),
+    control("bu_control_print_in_step", "bullets", {3: """
+        result = max(centre.distance_to(p) for p in points)
+        print("bounding radius", round(result, 1))
+        return result
+    """}, "the solution's bounding radius with a debug print (a print inside a step is allowed)"),
+]
+
+
+# ================================================================ Sleeping Crates: sleep_timer, moves, wake_on_contact
+
+SLEEPING = [
+    attack("sc_import_world_moves", "sleeping_crates", "import", {3: """
+        from lesson11.physics2d.world import World as reference
+        return reference.moves_of_world(body)
+    """}, ["skips_sleepers"], "step 3 imports the library's World and returns its moves_of_world(body)"),
+    attack("sc_world_sleep_timer", "sleeping_crates", "world", {2: """
+        return World().sleep_timer_of_world(timer, speed, spin, dt)
+    """}, ["timer_rule"], "step 2 returns the library's sleep timer, World().sleep_timer_of_world"),
+    attack("sc_dunder_wake", "sleeping_crates", "dunder", {4: """
+        return __import__("lesson11.physics2d", fromlist=["World"]).World.wake_of_world(a, b)
+    """}, ["wakes_on_contact"], "step 4 reaches World.wake_of_world (the library's rule) through __import__"),
+    attack("sc_forge_reference", "sleeping_crates", "forge", {2: """
+        probes = __import__("sys").modules.get("checker.labs.sleeping_crates.probes")
+        if probes is not None:
+            probes.reference_timer = lambda timer, speed, spin, dt: 0.0
+        return 0.0
+    """}, ["timer_rule"], "step 2 stays the placeholder (0.0) and makes the child's reference timer 0.0 too: the "
+                          "grader computes its own"),
+    attack("sc_solution_file", "sleeping_crates", "solution",
+           {2: solution_call("sleeping_crates", "sleep_timer", "timer, speed, spin, dt")}, ["timer_rule"],
+           "step 2 reads solutions/sleeping_crates.py, execs it and returns the solution's timer"),
+    attack("sc_detect_checker", "sleeping_crates", "detect", {2: """
+        if "checker" in __import__("sys").modules:
+            return World().sleep_timer_of_world(timer, speed, spin, dt)
+        return 0.0
+    """}, ["timer_rule"], "step 2 returns the library's timer only when the checker is loaded, the placeholder "
+                          "otherwise"),
+    attack("sc_table_timer", "sleeping_crates", "table", {2: f"""
+        timers = {TABLES["sleeping_crates"]!r}
+        return timers.get((timer, speed, spin, round(dt, 12)), 0.0)
+    """}, ["timer_rule"], "step 2 answers the probes' fixed timer cases from a table; the calm crate drawn for this "
+                          "run gets 0.0", needs_random_inputs=True),
+    attack("sc_world_by_type_timer", "sleeping_crates", "evade_class", {2: dice("""
+        library = make_world(Dice()).sleep_timer_of_world
+        return library(timer, speed, spin, dt)
+    """)}, ["timer_rule"], "step 2 builds the handout's world and uses its library method sleep_timer_of_world, bound "
+                          "first so it is no .sleep_timer_of_world() call"),
+    attack("sc_world_by_type_wake", "sleeping_crates", "evade_class", {4: dice("""
+        library = type(make_world(Dice())).wake_of_world
+        return library(a, b)
+    """)}, ["wakes_on_contact"], "step 4 takes World from the handout's world and returns its wake_of_world(a, b)"),
+    attack("sc_alias_world_moves", "sleeping_crates", "evade_alias", {3: f"""
+        library = {ALIAS}.World.moves_of_world
+        return library(body)
+    """}, ["skips_sleepers"], "step 3 returns World.moves_of_world reached through random._os (World as an "
+                              "attribute, not a name), nothing flagged"),
+    attack("sc_forge_unflagged", "sleeping_crates", "forge_unflagged", starter_steps("sleeping_crates"),
+           ["timer_rule"], "the steps are the starter's; an imported lab_notes.py makes the child's reference timer "
+                           "0.0 like the placeholder: nothing in the file is flagged, the grader computes its own",
+           edits=LAB_NOTES, extra_files=[("lab_notes.py", notes(FIND_LAB, """
+               probes = sys.modules.get("checker.labs.sleeping_crates.probes")
+               if probes is not None:
+                   probes.reference_timer = lambda timer, speed, spin, dt: 0.0
+           """))]),
+    attack("sc_world_wake_pair", "sleeping_crates", "evade_class", {4: """
+        match build:
+            case object(__globals__=lab_globals):
+                library = lab_globals["World"]().wake_pair
+                return library(a, b)
+    """}, ["wakes_on_contact"], "step 4 returns a fresh World's default wake_pair hook's answer (the library's "
+                                "wake_of_world under an unlisted name; World from the lab's globals)"),
+    attack("sc_world_step_timer", "sleeping_crates", "evade_class", {2: """
+        match build:
+            case object(__globals__=lab_globals):
+                engine = lab_globals["World"](gravity=(0, 0), step_seconds=dt, effects={"sleep"})
+                crate = Body(box_points(10, 10), (0, 0), 1.0, vel=(speed, 0), omega=spin)
+                crate.sleep_time = timer
+                engine.add(crate)
+                engine.step()
+                return crate.sleep_time
+        return 0.0
+    """}, ["timer_rule"], "step 2 steps a one-crate World (the library's sleep timer runs in it) and returns the "
+                          "crate's sleep_time"),
+    attack("sc_match_globals", "sleeping_crates", "evade_match", {3: """
+        match build:
+            case object(__globals__=lab_globals):
+                match lab_globals["World"]:
+                    case object(moves_of_world=library):
+                        return library(body)
+    """}, ["skips_sleepers"], "step 3 reads World from build.__globals__ and its moves_of_world through match "
+                              "class patterns: strings, no flagged name"),
+    attack("sc_side_module_library", "sleeping_crates", "evade_side_module",
+           starter_steps("sleeping_crates"),
+           ["timer_rule", "skips_sleepers", "wakes_on_contact"],
+           "the steps are the starter's; an imported lab_notes.py beside the file puts the library's three rules "
+           "in the lab's globals", edits=LAB_NOTES, extra_files=[("lab_notes.py", notes(FIND_LAB, """
+               from lesson11.physics2d import World
+
+               lab_globals["sleep_timer"] = World().sleep_timer_of_world
+               lab_globals["moves"] = World.moves_of_world
+               lab_globals["wake_on_contact"] = World.wake_of_world
+           """))]),
+    control("sc_control_comprehension", "sleeping_crates", {2: """
+        calm = speed < SLEEP_SPEED and -SLEEP_SPIN < spin < SLEEP_SPIN
+        return timer + dt if calm else 0.0
+    """, 3: """
+        result = bool(body.inv_mass) and not body.asleep
+        return result
+    """, 4: """
+        return [sleeper for sleeper, other in ((a, b), (b, a))
+                if sleeper.asleep and other.inv_mass != 0 and not other.asleep]
+    """}, "a chained comparison for |spin|, a conditional expression, a local named result, a list comprehension "
+          "over both orders: the lesson's rules"),
+    control("sc_control_print_in_step", "sleeping_crates", {4: """
+        woken = []
+        for sleeper, other in ((a, b), (b, a)):
+            if sleeper.asleep and other.inv_mass != 0 and not other.asleep:
+                woken.append(sleeper)
+        if woken:
+            print("waking", len(woken), "crate(s)")
+        return woken
+    """}, "the solution's wake rule with a debug print when something wakes (a print inside a step is allowed)"),
+]
+
+
+ENTRIES = TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING
+BY_NAME = {entry.name: entry for entry in ENTRIES}
+assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
+BY_LAB = {lab: [entry for entry in ENTRIES if entry.lab == lab] for lab in LABS}
+ATTACKS = [entry for entry in ENTRIES if entry.target is not None]
+CONTROLS = [entry for entry in ENTRIES if entry.target is None]
+
+FILES = {lab: CorpusFiles(module.STARTER, module.SOLUTION, module.STEPS, {e.name: e for e in BY_LAB[lab]},
+                          "tests/corpus_attacks.py")
+         for lab, module in LABS.items()}
+
+
+def build(entry):
+    """The entry's whole file: the lab's current starter, steps filled (the entry's, else the solution's), edits."""
+    return FILES[entry.lab].build(entry.name)
+
+
+def write(directory, entries=None):
+    """Write each entry (all by default) as DIRECTORY/<name>/<lab>.py, as a class folder holds them; {name: path}."""
+    paths = {}
+    for entry in (ENTRIES if entries is None else entries):
+        folder = os.path.join(str(directory), entry.name)
+        os.makedirs(folder, exist_ok=True)
+        path = os.path.join(folder, entry.lab + ".py")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(build(entry))
+        for file, text in entry.extra_files:
+            with open(os.path.join(folder, file), "w", encoding="utf-8") as handle:
+                handle.write(text)
+        paths[entry.name] = path
+    return paths
