@@ -20,28 +20,12 @@ from .handout import MarkerError, step_regions
 _STARTERS = {}   # starter path -> (its compiled code, its step functions)
 
 
-def step_functions(source):
-    """Names of the top-level functions of `source` that hold a step region."""
-    lines = source.splitlines()
-    regions = step_regions(lines)
-    body = ast.parse(source).body
-    names = []
-    for index, node in enumerate(body):
-        # a region of comments only (a starter's TODO) may lie after the function's last statement
-        end = body[index + 1].lineno - 1 if index + 1 < len(body) else len(lines)
-        if isinstance(node, ast.FunctionDef) and any(node.lineno <= start + 1 <= end
-                                                     for start, _, _ in regions.values()):
-            names.append(node.name)
-    return names
+def regions_by_function(source):
+    """{name: [its steps]} of the top-level functions of `source` that hold a step region.
 
-
-def steps_by_function(lab):
-    """{step function name: [its steps]} from the lab's starter ({} without one)."""
-    path = getattr(lab.module, "STARTER", None)
-    if not path:
-        return {}
-    with open(path, encoding="utf-8") as handle:
-        source = handle.read()
+    A region of comments only (a starter's TODO) may lie after the function's last statement, so a
+    function reaches to the next top-level statement.
+    """
     lines = source.splitlines()
     regions = step_regions(lines)
     body = ast.parse(source).body
@@ -53,6 +37,20 @@ def steps_by_function(lab):
             if steps:
                 out[node.name] = steps
     return out
+
+
+def step_functions(source):
+    """Names of the top-level functions of `source` that hold a step region."""
+    return list(regions_by_function(source))
+
+
+def steps_by_function(lab):
+    """{step function name: [its steps]} from the lab's starter ({} without one)."""
+    path = getattr(lab.module, "STARTER", None)
+    if not path:
+        return {}
+    with open(path, encoding="utf-8") as handle:
+        return regions_by_function(handle.read())
 
 
 def _starter(path):
