@@ -10,6 +10,14 @@ for two outputs. An existing output file named by the user is replaced
 import os
 
 
+def relative(path, start=None):
+    """os.path.relpath(path, start), or path itself when there is none (Windows: another drive than start)."""
+    try:
+        return os.path.relpath(path, start)
+    except ValueError:
+        return path
+
+
 def _inside(path, folder):
     try:
         return os.path.commonpath([path, folder]) == folder
@@ -37,7 +45,7 @@ def check(outputs, paths, entries, graded_folders):
             problems.append(f"{where}: that is one of the paths being graded; choose another place for the output")
         elif any(_inside(real, folder) for folder in graded_folders):
             folder = next(f for f in graded_folders if _inside(real, f))
-            problems.append(f"{where}: inside {os.path.relpath(folder)}, a folder being graded; "
+            problems.append(f"{where}: inside {relative(folder)}, a folder being graded; "
                             f"write it outside that folder")
         elif kind == "folder" and any(_inside(i, real) for i in inputs):
             problems.append(f"{where}: this folder holds files being graded; choose a folder outside them")
@@ -70,8 +78,11 @@ def submission_names(paths):
     absolute = {p: os.path.abspath(p) for p in paths}
     if not absolute:
         return {}
-    base = os.path.commonpath([os.path.dirname(a) for a in absolute.values()])
-    full = {p: os.path.relpath(a, base) for p, a in absolute.items()}
+    try:
+        base = os.path.commonpath([os.path.dirname(a) for a in absolute.values()])
+    except ValueError:  # Windows: submissions on two drives have no common folder; name each by its whole path
+        base = None
+    full = {p: relative(a, base) if base else os.path.splitdrive(a)[1].lstrip("\\/") for p, a in absolute.items()}
     full = {p: (name if name != "." else os.path.basename(absolute[p])) for p, name in full.items()}
     short = {p: name[:-3] if name.lower().endswith(".py") else name for p, name in full.items()}
     counts = {}

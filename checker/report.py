@@ -38,7 +38,7 @@ import tempfile
 from dataclasses import dataclass
 
 from .checks import step_of
-from .outputs import submission_names
+from .outputs import relative, submission_names
 
 SYMBOL = {"pass": ":)", "fail": ":(", "skip": ":|", "error": ":("}
 
@@ -266,10 +266,9 @@ def write_atomic(path, text):
 
 
 def _rel(path, root):
-    try:
-        return os.path.relpath(path, root or os.getcwd())
-    except ValueError:
-        return path
+    """The path as the user typed it (or as found in a folder they typed: `starters\\x.py` on Windows), never
+    made absolute or given other slashes; relative to `root` only when one is given (and on its drive)."""
+    return path if root is None else relative(path, root)
 
 
 def list_labs(labs, stream):
