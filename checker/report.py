@@ -266,9 +266,9 @@ def write_atomic(path, text):
 
 
 def _rel(path, root):
-    """The path as the user typed it (or as found in a folder they typed: `starters\\x.py` on Windows), never
-    made absolute or given other slashes; relative to `root` only when one is given (and on its drive)."""
-    return path if root is None else relative(path, root)
+    """The path relative to root (default: the current folder), so a path typed relative is shown as typed
+    (`starters\\x.py` on Windows, `starters/x.py` elsewhere); as given when on another drive than root."""
+    return relative(path, root)
 
 
 def list_labs(labs, stream):
