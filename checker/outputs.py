@@ -11,14 +11,18 @@ import os
 
 
 def relative(path, start=None):
-    """os.path.relpath(path, start), or path itself when there is none (Windows: another drive than start)."""
+    """path relative to start (default: the current folder) when it lies below start, else path as given: a
+    path outside start (`/tmp/x.py`, `D:\\class\\x.py` on Windows, where relpath fails across drives) is shown
+    as the user typed it, not as ../../tmp/x.py."""
     try:
-        return os.path.relpath(path, start)
+        shown = os.path.relpath(path, start)
     except ValueError:
         return path
+    return path if shown == os.path.pardir or shown.startswith(os.path.pardir + os.path.sep) else shown
 
 
-def _inside(path, folder):
+def inside(path, folder):
+    """Whether path lies in folder (both absolute); never on another drive."""
     try:
         return os.path.commonpath([path, folder]) == folder
     except ValueError:  # different drives
@@ -43,11 +47,11 @@ def check(outputs, paths, entries, graded_folders):
             problems.append(f"{where}: refusing to write to a .py file (it may be a submission); choose another name")
         elif real in inputs or os.path.abspath(path) in inputs:
             problems.append(f"{where}: that is one of the paths being graded; choose another place for the output")
-        elif any(_inside(real, folder) for folder in graded_folders):
-            folder = next(f for f in graded_folders if _inside(real, f))
+        elif any(inside(real, folder) for folder in graded_folders):
+            folder = next(f for f in graded_folders if inside(real, f))
             problems.append(f"{where}: inside {relative(folder)}, a folder being graded; "
                             f"write it outside that folder")
-        elif kind == "folder" and any(_inside(i, real) for i in inputs):
+        elif kind == "folder" and any(inside(i, real) for i in inputs):
             problems.append(f"{where}: this folder holds files being graded; choose a folder outside them")
         elif real in used:
             problems.append(f"{where}: the same path as {used[real]}; give each output its own path")

@@ -266,8 +266,8 @@ def write_atomic(path, text):
 
 
 def _rel(path, root):
-    """The path relative to root (default: the current folder), so a path typed relative is shown as typed
-    (`starters\\x.py` on Windows, `starters/x.py` elsewhere); as given when on another drive than root."""
+    """The path relative to root (default: the current folder) when below it, else as given: a path typed
+    relative is shown as typed (`starters\\x.py` on Windows, `starters/x.py` elsewhere)."""
     return relative(path, root)
 
 

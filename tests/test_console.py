@@ -129,6 +129,22 @@ def test_a_benchmark_on_an_ascii_console():
 def test_a_typed_relative_path_is_shown_unchanged():
     assert outputs.relative(STARTER) == STARTER
     assert outputs.relative(os.path.join(ROOT, STARTER), ROOT) == STARTER
+    outside = os.path.join(os.path.dirname(ROOT), "elsewhere", "tumbling_crates.py")
+    assert outputs.relative(outside, ROOT) == outside          # not ../elsewhere/tumbling_crates.py
+    assert outputs.relative(os.path.join(os.pardir, "x.py")) == os.path.join(os.pardir, "x.py")
+
+
+def test_a_typed_path_outside_the_current_folder_is_shown_as_typed(tmp_path):
+    """The report and the summary name a file outside the current folder by the path typed, not ../../x."""
+    lab = tmp_path / "tumbling_crates_starter.py"
+    with open(os.path.join(ROOT, STARTER), encoding="utf-8") as handle:
+        lab.write_text(handle.read(), encoding="utf-8")
+    status, out, err = run(["-m", "checker", str(lab), STARTER], "utf-8")
+    assert_clean(status, err, expected_status=1)
+    assert out.startswith(f"{lab} - Tumbling Crates: ") and f"\n{STARTER} - Tumbling Crates: " in out
+    table = out[out.index("\nfile "):]
+    assert f"\n{lab} " in table and f"\n{STARTER} " in table
+    assert f"] {lab}: " in err and f"] {STARTER}: " in err   # the progress lines
 
 
 def test_windows_paths_are_shown_as_typed(monkeypatch):
@@ -140,3 +156,4 @@ def test_windows_paths_are_shown_as_typed(monkeypatch):
     assert outputs.relative("starters\\tumbling_crates_starter.py") == "starters\\tumbling_crates_starter.py"
     assert outputs.relative("D:\\class\\alice\\tumbling_crates.py") == "D:\\class\\alice\\tumbling_crates.py"
     assert outputs.relative("D:\\class\\alice\\x.py", "D:\\class") == "alice\\x.py"
+    assert outputs.relative("..\\class\\x.py") == "..\\class\\x.py"

@@ -196,3 +196,42 @@ def test_the_classroom_package_workflow_runs_on_ubuntu(tmp_path):
         document = yaml.safe_load(handle)
     runners = {name: spec["runs-on"] for name, spec in document["jobs"].items()}
     assert runners and set(runners.values()) == {"ubuntu-latest"}, runners
+
+
+# ---------------------------------------------------------------- line endings on a Windows checkout
+
+
+def test_a_windows_checkout_keeps_lf_line_endings():
+    """.gitattributes: Git for Windows checks text files out with LF as here (its default would be CRLF), and
+    leaves pictures alone. Read through `git check-attr`, as git itself applies it at checkout."""
+    if not os.path.isdir(os.path.join(ROOT, ".git")) and not os.path.isfile(os.path.join(ROOT, ".git")):
+        pytest.skip("not a git checkout")
+    files = ["starters/tumbling_crates_starter.py", "checker/templates/gradescope_setup.sh", "README.md",
+             ".ci/run", "assets/bullets.png"]
+    done = subprocess.run(["git", "check-attr", "text", "eol", "--", *files], cwd=ROOT, capture_output=True,
+                          text=True, encoding="utf-8", timeout=60)
+    attributes = {}
+    for line in done.stdout.splitlines():
+        path, name, value = line.split(": ")
+        attributes.setdefault(path, {})[name] = value
+    for path in files[:-1]:
+        assert attributes[path] == {"text": "auto", "eol": "lf"}, (path, attributes[path])
+    assert attributes["assets/bullets.png"]["text"] == "unset"
+
+
+def test_the_packages_scripts_have_lf_endings_even_from_a_crlf_checkout(tmp_path, monkeypatch):
+    """A checkout that has CRLF anyway (a zip unpacked on Windows, an editor's conversion): the shell scripts
+    a package ships for Linux graders are still written with LF (bash reads a CR as part of each command)."""
+    from checker import package
+    crlf = tmp_path / "templates"
+    crlf.mkdir()
+    for name in os.listdir(package.TEMPLATES):
+        with open(os.path.join(package.TEMPLATES, name), "rb") as handle:
+            (crlf / name).write_bytes(handle.read().replace(b"\n", b"\r\n"))
+    monkeypatch.setattr(package, "TEMPLATES", str(crlf))
+    for name in ("gradescope_setup.sh", "gradescope_run_autograder", "run_prairielearn", "grade_submission.py"):
+        text = package.template(name, PINS="x", PYGAME_PIN="y", PYTHON="3.10")
+        assert "\r" not in text and text.count("\n") > 3, name
+    out = tmp_path / "out"
+    package.write_folder(str(out), {"setup.sh": (package.template("gradescope_setup.sh"), True)})
+    assert b"\r" not in (out / "setup.sh").read_bytes()
