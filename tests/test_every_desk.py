@@ -235,3 +235,23 @@ def test_the_packages_scripts_have_lf_endings_even_from_a_crlf_checkout(tmp_path
     out = tmp_path / "out"
     package.write_folder(str(out), {"setup.sh": (package.template("gradescope_setup.sh"), True)})
     assert b"\r" not in (out / "setup.sh").read_bytes()
+
+
+# ---------------------------------------------------------------- the suite itself on a Windows runner
+
+WINDOWS_MISSING = ("resource", "pwd", "grp", "fcntl", "termios", "tty", "pty")   # modules CPython lacks there
+
+
+def test_the_suite_collects_where_posix_modules_are_missing(tmp_path):
+    """On a Windows runner one test module that imports `resource` at its top stops pytest before any test runs
+    (a collection error ends the session). Emulated here: those modules made unimportable (sitecustomize), the
+    whole suite collected. (The os/signal names Windows lacks cannot be removed before pytest starts: Linux's
+    own subprocess module needs them; the checker's portable-path tests remove them inside the run.)"""
+    site = tmp_path / "sitecustomize.py"
+    site.write_text("import sys\nfor name in %r:\n    sys.modules[name] = None\n" % (WINDOWS_MISSING,),
+                    encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q", "-n", "0", "-p", "no:cacheprovider",
+                           os.path.join(ROOT, "tests")], cwd=ROOT, capture_output=True, text=True, encoding="utf-8",
+                          env=dict(os.environ, PYTHONPATH=str(tmp_path)), timeout=600)
+    assert done.returncode == 0 and "ERROR collecting" not in done.stdout, done.stdout[-3000:] + done.stderr[-2000:]
+    assert "tests/test_every_desk.py" in done.stdout   # it did collect (this file among the rest)
