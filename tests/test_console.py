@@ -145,6 +145,12 @@ def test_a_typed_path_outside_the_current_folder_is_shown_as_typed(tmp_path):
     table = out[out.index("\nfile "):]
     assert f"\n{lab} " in table and f"\n{STARTER} " in table
     assert f"] {lab}: " in err and f"] {STARTER}: " in err   # the progress lines
+    work = tmp_path / "work"
+    work.mkdir()
+    typed = os.path.join(os.pardir, lab.name)   # ../tumbling_crates_starter.py, from a folder beside it
+    status, out, err = run(["-m", "checker", typed], "utf-8", cwd=str(work))
+    assert_clean(status, err, expected_status=1)
+    assert out.startswith(f"{typed} - Tumbling Crates: "), out[:200]
 
 
 def test_windows_paths_are_shown_as_typed(monkeypatch):
