@@ -10,6 +10,7 @@ the examples and the benchmarks.
 """
 import codecs
 import sys
+import unicodedata
 
 HANDLER = "lesson11-readable"
 
@@ -28,14 +29,18 @@ SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+"))
 
 
 def readable(text, after=""):
-    """text with every character of STAND_INS / SUPERSCRIPTS replaced, others kept; `after` is the character
-    just before text (a superscript run that continues one gets no second ^)."""
+    """text with every character of STAND_INS / SUPERSCRIPTS replaced, an accented letter by its plain one
+    (a student's name: José -> Jose), others kept; `after` is the character just before text (a superscript
+    run that continues one gets no second ^)."""
     out, previous = [], after
     for char in text:
         if char in SUPERSCRIPTS:
             out.append(("" if previous in SUPERSCRIPTS else "^") + SUPERSCRIPTS[char])
+        elif char in STAND_INS:
+            out.append(STAND_INS[char])
         else:
-            out.append(STAND_INS.get(char, char))
+            plain = unicodedata.normalize("NFKD", char).encode("ascii", "ignore").decode("ascii")
+            out.append(plain if plain and unicodedata.category(char).startswith("L") else char)
         previous = char
     return "".join(out)
 
