@@ -70,14 +70,14 @@ ALLOWED = {
 }
 
 
-class Scanner(ast.NodeVisitor):
-    """Collects (line, function, name) for every POSIX-only use in one module's tree."""
+class Scoped(ast.NodeVisitor):
+    """Collects (line, function, what) notes, the function being the qualified name of the def around the node."""
 
     def __init__(self):
-        self.found, self.scope, self.aliases = [], [], {}  # aliases: local name -> module it stands for
+        self.found, self.scope = [], []
 
-    def note(self, node, name):
-        self.found.append((node.lineno, ".".join(self.scope) or "<module>", name))
+    def note(self, node, what):
+        self.found.append((node.lineno, ".".join(self.scope) or "<module>", what))
 
     def visit_FunctionDef(self, node):
         self.scope.append(node.name)
@@ -85,6 +85,14 @@ class Scanner(ast.NodeVisitor):
         self.scope.pop()
 
     visit_AsyncFunctionDef = visit_ClassDef = visit_FunctionDef
+
+
+class Scanner(Scoped):
+    """Every POSIX-only use in one module's tree."""
+
+    def __init__(self):
+        super().__init__()
+        self.aliases = {}  # local name -> the module it stands for
 
     def visit_Import(self, node):
         for alias in node.names:
@@ -236,23 +244,12 @@ def _is_true(value):
     return isinstance(value, ast.Constant) and value.value is True
 
 
-class TextScanner(ast.NodeVisitor):
-    """Collects (line, function, what) for text I/O that takes the locale's encoding (cp1252 on Windows)."""
-
-    def __init__(self):
-        self.found, self.scope = [], []
-
-    def visit_FunctionDef(self, node):
-        self.scope.append(node.name)
-        self.generic_visit(node)
-        self.scope.pop()
-
-    visit_AsyncFunctionDef = visit_ClassDef = visit_FunctionDef
+class TextScanner(Scoped):
+    """Text I/O that takes the locale's encoding (cp1252 on Windows) in one module's tree."""
 
     def visit_Call(self, node):
         name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
         method = isinstance(node.func, ast.Attribute)
-        where = ".".join(self.scope) or "<module>"
         has_encoding = _keyword(node, "encoding") is not None
         if name in OPENERS:
             # open(file, mode, buffering, encoding), os.fdopen/io.open likewise; Path.open(mode, buffering, encoding)
@@ -260,13 +257,13 @@ class TextScanner(ast.NodeVisitor):
             mode = _keyword(node, "mode") or (node.args[at] if len(node.args) > at else ast.Constant("r"))
             binary = not isinstance(mode, ast.Constant) or "b" in str(mode.value)
             if not binary and not has_encoding and len(node.args) <= at + 2:
-                self.found.append((node.lineno, where, f"{name}() in text mode without encoding="))
+                self.note(node, f"{name}() in text mode without encoding=")
         elif name in ("read_text", "write_text") and method:
             if not has_encoding and len(node.args) < (1 if name == "read_text" else 2):
-                self.found.append((node.lineno, where, f"{name}() without encoding="))
+                self.note(node, f"{name}() without encoding=")
         elif name in TEXT_RUNS and not has_encoding:
             if _is_true(_keyword(node, "text")) or _is_true(_keyword(node, "universal_newlines")):
-                self.found.append((node.lineno, where, f"{name}(text=True) without encoding="))
+                self.note(node, f"{name}(text=True) without encoding=")
         self.generic_visit(node)
 
 
