@@ -91,17 +91,20 @@ def test_quiz_on_a_console_that_is_not_utf8(encoding):
     assert "Score: " in out and ("(cB - cA)*n >= 0" if encoding == "ascii" else "(cB - cA)·n >= 0") in out
 
 
-def test_examples_on_an_ascii_console():
-    status, out, err = run(["-m", "lesson11.examples"], "ascii")
+@pytest.mark.parametrize("encoding", ["cp1252", "ascii"])
+def test_examples_on_a_console_that_is_not_utf8(encoding):
+    status, out, err = run(["-m", "lesson11.examples"], encoding)
     assert_clean(status, err)
-    assert "30 x 20 box" in out and "m (w^2 + h^2) / 12" in out
+    wanted = ("30 x 20 box", "m (w^2 + h^2) / 12") if encoding == "ascii" else ("30 × 20 box", "m (w² + h²) / 12")
+    assert all(text in out for text in wanted), out[:1500]
 
 
-def test_explorer_on_an_ascii_console(tmp_path):
-    """--screenshots prints the paths it saved; a folder named θ is printed with its stand-in."""
+@pytest.mark.parametrize("encoding", ["cp1252", "ascii"])
+def test_explorer_on_a_console_that_is_not_utf8(tmp_path, encoding):
+    """--screenshots prints the paths it saved; a folder named θ (in neither encoding) is printed as theta."""
     folder = tmp_path / "θ"
     folder.mkdir()
-    status, out, err = run(["-m", "lesson11.explorer", "--screenshots", str(folder)], "ascii")
+    status, out, err = run(["-m", "lesson11.explorer", "--screenshots", str(folder)], encoding)
     assert_clean(status, err)
     assert os.path.join(str(tmp_path), "theta", "sat_explorer.png") in out
 
