@@ -129,7 +129,7 @@ def grade_all(entries, grader, jobs, progress):
 
     def show(row):
         if progress:
-            print(f"[{done}/{len(rows)}] {os.path.relpath(row.path)}: {row.score:g}/{row.max_score:g} {row.status} "
+            print(f"[{done}/{len(rows)}] {outputs.relative(row.path)}: {row.score:g}/{row.max_score:g} {row.status} "
                   f"({time.monotonic() - start:.1f} s)", file=sys.stderr, flush=True)
 
     for row in rows:
