@@ -63,7 +63,28 @@ Beyond the brief's list: attacks that reach the same answers around the step rul
   vacuous           the step is not written and the function does nothing the probe can see (resolve()
                     returns before any impulse): a check that skips what it cannot see would pass it
 
-    ENTRIES: [Entry]; BY_LAB: {lab: [Entry]}; LABS: {lab: its mistake-corpus module}
+The first round (merged in from tests/attack_corpus.py, names kept: <lab>_<kind>) adds kind
+
+  rebind            the step is left undone; code outside the steps rebinds its function to the library's
+                    (its forge, rebind and solution entries change the code outside the steps: keeps_handout False)
+
+Issue 35's mechanisms (entry.mechanism = the item number; MECHANISMS_BY_LAB says where each applies):
+
+  line_breaks    (1)  a comment of characters str.splitlines() breaks at and the compiler does not; a step
+                      calls the library
+  coding         (2)  `# -*- coding: unicode_escape -*-`: a comment to the checker is a line of code to Python
+  changed_inputs (3)  the step changes the fields the probe reads its reference from after the call
+  frame_read     (4)  a format string reads the reference values the child holds in the probe's frame
+  foreign_hook   (5)  the child's tape names a handout function the probe never installed as a hook
+  star_import    (6)  `from solutions.<lab> import *` / `from lesson11.physics2d import *` after the defs
+  grader_stdout  (7)  the child writes a forged --json document to the grader's stdout (root)
+  evade_side_module (8), vacuous (9) as above; wrong_answer and stdlib controls (10)
+
+"No more than the honest work it contains" is formalised as: an issue-35 attack scores no more than
+honest(entry), the same file with the attack removed (the steps the entry wrote put back to the
+starter's placeholder, no edit, side file or extra text), graded in the same run.
+
+    ENTRIES: [Entry]; BY_LAB: {lab: [Entry]}; LABS: {lab: its mistake-corpus module}; HONEST: {name: Entry}
     build(entry) -> source text; write(directory, entries=None) -> {name: path}
 """
 import os

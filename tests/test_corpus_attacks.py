@@ -23,12 +23,14 @@ caught only by the inputs the checker draws per run; the checker draws them
 today, so those entries are expected to fail like the others (no xfail).
 A last test turns the step rules off (in-process) and grades the tables and
 forgeries: the grader's own replay and drawn inputs still fail them.
-Grading (-n 0, root mode): about 180 files, most stopping after their probe.
+Grading (-n 0, root mode): 186 files (166 entries, 20 honest files), most stopping after their probe.
 """
 import json
 import os
+import shutil
 import subprocess
 import sys
+import tempfile
 
 import pytest
 
@@ -62,8 +64,11 @@ def _documents(text):
 def _grade(folder, mode):
     """{"rows": {name: row}, "documents": how many JSON documents the grader's stdout held} for `mode`."""
     entries = [entry for entry in corpus.ENTRIES if mode in entry.modes]
-    honest = [corpus.HONEST[entry.name] for entry in entries if entry.name in corpus.HONEST]
-    paths = corpus.write(folder, entries + honest)
+    same = {}   # an honest file's text -> the first honest entry with it (44 honest entries, 20 distinct files)
+    for entry in entries:
+        if entry.name in corpus.HONEST:
+            same.setdefault(corpus.build(corpus.HONEST[entry.name]), corpus.HONEST[entry.name])
+    paths = corpus.write(folder, entries + list(same.values()))
     env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
     # the lab files themselves, not their folders: a side file (lab_notes.py) is no entry to grade
     proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--jobs", "2", "--timeout", "60",
@@ -76,6 +81,9 @@ def _grade(folder, mode):
     rows = {names[os.path.abspath(row["path"])]: row for row in documents[-1]["labs"]
             if os.path.abspath(row.get("path", "")) in names}
     assert set(rows) == set(paths), set(rows) ^ set(paths)
+    for entry in entries:   # every honest entry gets its file's row
+        if entry.name in corpus.HONEST:
+            rows[corpus.HONEST[entry.name].name] = rows[same[corpus.build(corpus.HONEST[entry.name])].name]
     return {"rows": rows, "documents": len(documents)}
 
 
@@ -88,9 +96,18 @@ def graded(tmp_path_factory):
         if mode == "child_user" and (os.geteuid() != 0 or not _user_exists("nobody")):
             pytest.skip("--child-user needs root and the user nobody")
         if mode not in runs:
-            runs[mode] = _grade(tmp_path_factory.mktemp(f"attacks-{mode}"), mode)
+            folder = tmp_path_factory.mktemp(f"attacks-{mode}")
+            if mode == "child_user":   # pytest's folders are root's alone (700): the class folder must be readable
+                folder = tempfile.mkdtemp(prefix="l11-attacks-", dir="/var/tmp")
+                made.append(folder)
+                os.chmod(folder, 0o755)
+            runs[mode] = _grade(folder, mode)
         return runs[mode]
-    return run
+
+    made = []
+    yield run
+    for folder in made:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def _user_exists(name):
@@ -194,13 +211,14 @@ OPEN = {
        for name in ("tc_side_module_free_name", "tc_side_module_solution", "sc_side_module_library",
                     "ms_m8_crate_utils", "br_m8_crate_utils", "bu_m8_crate_utils")},
 }
-# with --child-user nobody every run fails here today: the interpreter is under /root (mode 700), so the
-# child cannot start as nobody (issue 35 item 5: the checker must say so in one line, or the zygote import first)
+# with --child-user nobody the scenes fail here today: the interpreter's stdlib is under /root (mode 700), so a
+# scene's import of importlib.readers fails as nobody and is reported as the student's error (issue 35 item 5: the
+# zygote must import it first, or the checker say so in one line). The m7 attacks already hold in this mode.
 OPEN_AS_CHILD_USER = {
-    **{name: f"mechanism 7 (second part): as nobody the child cannot open the interpreter under /root; {SAFE}"
-       for name in ("tumbling_crates_while_loop", "more_shapes_comprehension", "sleeping_crates_print_in_step",
-                    "ball_on_ramp_hypot")},
-}
+    name: f"mechanism 7 (second part): as nobody a scene raises ModuleNotFoundError (importlib.readers, under "
+          f"/root), blamed on the student: the solution's steps score 8/17; {SAFE}"
+    for name in ("tumbling_crates_while_loop", "more_shapes_comprehension", "sleeping_crates_print_in_step",
+                 "ball_on_ramp_hypot")}
 
 
 def _cases():
@@ -231,6 +249,8 @@ def test_each_entry_gets_its_verdict(mode, entry, graded):
         return
     if entry.mechanism == 7:   # the grader's stdout is its own: one document, no forged one before it
         assert run["documents"] == 1, f"the grader's stdout held {run['documents']} JSON documents (a forged one)"
+        honest = run["rows"][corpus.HONEST[entry.name].name]   # and the child did run: no pass by running nothing
+        assert [c["status"] for c in honest["criteria"] if c["id"] == "loads"] == ["pass"], _show(honest)
     passed = [cid for cid in entry.target if checks[cid]["status"] == "pass"]
     assert not passed, (f"{entry.name} ({entry.kind}) gets {', '.join(passed)} without doing the step: {entry.why}"
                         f"\n{_show(row)}")
