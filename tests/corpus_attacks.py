@@ -1209,16 +1209,16 @@ ISSUE35 = [entry for lab in LABS for entry in _issue35(lab)] + [
     """, 5: """
         a.friction = b.friction = 1e12
     """}, ["resolve_k", "resolve_friction"], "step 4 zeroes both inverse inertias and step 5 sets friction 1e12, so "
-                                            "references read after resolve() agree with no spin terms and no clamp",
-        mechanism=3),
+                                            "references read after resolve() agree with no spin terms and no clamp; "
+                                            "the check must name the field changed", mechanism=3, message="inv_inertia"),
     attack("br_m3_zero_inertia", "ball_on_ramp", "changed_inputs", {7: """
         a.inv_inertia = b.inv_inertia = 0.0
         a.friction = b.friction = 1e12
         kt = a.inv_mass + b.inv_mass
         apply_impulse(a, b, t * (-rel.dot(t) / kt), ra, rb)
     """}, ["friction_rolls"], "step 7 zeroes both inverse inertias and sets friction 1e12 before an unclamped friction "
-                              "impulse without spin terms: the references must come from the bodies as given",
-        mechanism=3),
+                              "impulse without spin terms: the references must come from the bodies as given, the check "
+                              "name the field changed", mechanism=3, message="inv_inertia"),
     # 4: reference values read from the probe's frame
     attack("tc_m4_frame_format", "tumbling_crates", "frame_read", {6: frame_read(
         ("[ref_a].omega", "[ref_b].omega"), """
