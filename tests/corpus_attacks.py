@@ -124,10 +124,10 @@ class Entry(NamedTuple):
     steps: dict               # {step: the code put inside that step's region}; other steps get the solution's
     target: object            # tuple of check ids that must not pass; None for a control (every function check passes)
     why: str                  # one line: what the attack does and why it must fail (or why the control is correct)
-    edits: tuple = ()         # ((old, new), ...) outside the steps: an added import line (or, keeps_handout False, code)
+    edits: tuple = ()         # ((old, new), ...) outside the steps: an added import (keeps_handout False: code)
     needs_random_inputs: bool = False   # only inputs drawn per grading run can catch it
     extra_files: tuple = ()   # ((file name, text), ...) written beside the lab file (a submission's other files)
-    keeps_handout: bool = True   # False: code added outside the steps (tests/attack_corpus.py's forge, rebind, solution)
+    keeps_handout: bool = True   # False: code added outside the steps (the first round's forge, rebind, solution)
     mechanism: int = 0        # the mechanism of issue 35 it builds (1-10), 0 for none
     all_checks: bool = False  # a control whose every check must pass, the scenes included (full marks)
     modes: tuple = ("root",)  # the grading runs it is graded in (GRADING_MODES in tests/test_corpus_attacks.py)
@@ -930,9 +930,17 @@ FIRST_WORLD_CALLS = {   # the World method doing (or standing in for) each attac
 }
 
 
-def _outside(lab, code):
+def _outside(code):
     """Edits that put `code` outside every step, after the last def (before the main guard)."""
     return ((MAIN_GUARD, "\n\n" + code.rstrip("\n") + "\n" + MAIN_GUARD),)
+
+
+def library_code(lab, call, name):
+    """Step code returning the library's answer for `call` (Sleeping Crates: World's sleep timer)."""
+    args = call[call.index("("):]
+    if lab == "sleeping_crates":
+        return f"from lesson11.physics2d import World as _W\nreturn _W().sleep_timer_of_world{args}"
+    return f"from lesson11.physics2d import {name} as _library\nreturn _library{args}"
 
 
 def first_round(lab):
@@ -940,12 +948,12 @@ def first_round(lab):
     step, call, name, check = FIRST_TARGETS[lab]
     args = call[call.index("("):]
     function = call[:call.index("(")]
-    library = (f"from lesson11.physics2d import World as _W\nreturn _W().sleep_timer_of_world{args}"
-               if lab == "sleeping_crates" else f"from lesson11.physics2d import {name} as _library\nreturn _library{args}")
+    library = library_code(lab, call, name)
     undone = {step: starter_steps(lab)[step]}
     probes = f"checker.labs.{lab}.probes"
     rebind = (f"from lesson11.physics2d import World as _W\n{function} = lambda *a: _W().sleep_timer_of_world(*a)"
-              if lab == "sleeping_crates" else f"from lesson11.physics2d import {name} as _library\n{function} = _library")
+              if lab == "sleeping_crates" else f"from lesson11.physics2d import {name} as _library\n"
+                                               f"{function} = _library")
     solution = os.path.join(ROOT, "solutions", lab + ".py")
     world = "World()." if lab == "sleeping_crates" else ""
     return [
@@ -957,15 +965,15 @@ def first_round(lab):
                "the step reaches the library through __import__"),
         attack(f"{lab}_forge", lab, "forge", undone, [check],
                "the child's references are patched to agree with an undone step", keeps_handout=False,
-               edits=_outside(lab, f"import sys as _sys\nfor _name in dir(_sys.modules.get('{probes}')):\n"
+               edits=_outside(f"import sys as _sys\nfor _name in dir(_sys.modules.get('{probes}')):\n"
                                    f"    if _name.startswith('reference'):\n"
                                    f"        setattr(_sys.modules['{probes}'], _name, lambda *a, **k: None)")),
         attack(f"{lab}_rebind", lab, "rebind", undone, [check],
                "the undone step's function is rebound to the library's after the handout's def", keeps_handout=False,
-               edits=_outside(lab, rebind)),
+               edits=_outside(rebind)),
         attack(f"{lab}_solution", lab, "solution", undone, [check],
                "the shipped solution is read and run over the module", keeps_handout=False,
-               edits=_outside(lab, f"exec(open({solution!r}).read().split('def main')[0], globals())")),
+               edits=_outside(f"exec(open({solution!r}).read().split('def main')[0], globals())")),
         attack(f"{lab}_detect", lab, "detect",
                {step: "if __name__ == 'lab_under_test':\n    " + library.replace("\n", "\n    ")}, [check],
                "the library's answer only when graded"),
@@ -991,7 +999,8 @@ def _first_sat_table():
 
 def _first_timer_table():
     """Sleeping Crates' step 2 for the checker's fixed cases only (dt rounded to 9 digits)."""
-    table = {(timer, speed, spin, round(dt, 9)): want for (timer, speed, spin, dt), want in TABLES["sleeping_crates"].items()}
+    table = {(timer, speed, spin, round(dt, 9)): want
+             for (timer, speed, spin, dt), want in TABLES["sleeping_crates"].items()}
     return "table = " + repr(table) + "\nreturn table.get((timer, speed, spin, round(dt, 9)), 0.0)"
 
 
@@ -1033,7 +1042,7 @@ FIRST_ROUND = [entry for lab in FIRST_TARGETS for entry in first_round(lab)] + [
 ]
 
 
-# ================================================================ issue 35: the second round, one entry per mechanism per lab
+# ================================================================ issue 35: one entry per mechanism per lab
 # Each entry names its mechanism (issue 35, items 1-10). "No more than the honest work it contains" is
 # measured, not estimated: tests/test_corpus_attacks.py grades beside each attack its HONEST file (honest()
 # below: the same file with the attack removed - the steps the attack wrote put back to the starter's
@@ -1046,10 +1055,7 @@ for _lab, _module in LABS.items():
             _handle.read())
 
 # the library's function each lab's step 2 hands over to: (step, the step's code, its check)
-LIBRARY_STEP = {lab: (step, (f"from lesson11.physics2d import World as _W\nreturn _W().sleep_timer_of_world{call[call.index('('):]}"
-                             if lab == "sleeping_crates" else
-                             f"from lesson11.physics2d import {name} as _library\nreturn _library{call[call.index('('):]}"),
-                      check)
+LIBRARY_STEP = {lab: (step, library_code(lab, call, name), check)
                 for lab, (step, call, name, check) in FIRST_TARGETS.items()}
 
 # 1: characters str.splitlines() breaks at and the compiler does not, 60 of each in one comment
@@ -1139,6 +1145,7 @@ def _issue35(lab):
     module, undone = LABS[lab], starter_steps(lab)
     step, library, check = LIBRARY_STEP[lab]
     hidden_step, hidden, hidden_check = HIDDEN[lab]
+    forger, forged = FORGER[lab]
     out = [
         attack(f"{short}_m1_line_breaks", lab, "line_breaks", {step: library}, [check],
                "a comment of 480 \\x0b \\x0c \\x1c-\\x1e \\x85 U+2028 U+2029 shifts the checker's line numbers off the "
@@ -1151,8 +1158,8 @@ def _issue35(lab):
                            (MAIN_GUARD, f"\n\n# see my notes{BACKSLASH_N}{hidden}  # (mine)\n" + MAIN_GUARD)),
                mechanism=2),
         attack(f"{short}_m5_foreign_hook", lab, "foreign_hook",
-               {FORGER[lab][0]: _code(FOREIGN_EVENT) + "\n" + FILES_SOLUTION_STEPS[lab][FORGER[lab][0]]}, FORGER[lab][1],
-               f"step {FORGER[lab][0]} (the solution's, flagged) patches the child's json.dumps to add to every tape an "
+               {forger: _code(FOREIGN_EVENT) + "\n" + FILES_SOLUTION_STEPS[lab][forger]}, forged,
+               f"step {forger} (the solution's, flagged) patches the child's json.dumps to add to every tape an "
                "event naming draw_text, a handout function no probe installs: the solution's other steps must come "
                "out as a tape mismatch, never data or a call in the grader", mechanism=5, message="could not replay"),
         attack(f"{short}_m6_star_solution", lab, "star_import", undone, module.FUNCTION_CHECKS,
@@ -1166,14 +1173,14 @@ def _issue35(lab):
         attack(f"{short}_m7_grader_stdout", lab, "grader_stdout", undone, module.FUNCTION_CHECKS,
                "the steps are the starter's; at import the child finds the grader's process and writes a forged "
                "--json document to its stdout (/proc/<pid>/fd/1, root only)",
-               edits=_outside(lab, FORGED_STDOUT), keeps_handout=False, mechanism=7,
+               edits=_outside(FORGED_STDOUT), keeps_handout=False, mechanism=7,
                modes=("root", "child_user")),
     ]
     if lab in SIDE:
         side_step, function, found, side_check = SIDE[lab]
         out.append(attack(f"{short}_m8_crate_utils", lab, "evade_side_module", {side_step: undone[side_step]},
-                          [side_check], f"step {side_step} is the starter's; crate_utils.py beside the lab, imported by "
-                                        f"one added line, binds {function} in the lab's globals",
+                          [side_check], f"step {side_step} is the starter's; crate_utils.py beside the lab, "
+                                        f"imported by one added line, binds {function} in the lab's globals",
                           edits=CRATE_UTILS, mechanism=8, extra_files=[("crate_utils.py", notes(FIND_LAB, found, f"""
                               lab_globals["{function}"] = found
                           """))]))
@@ -1210,15 +1217,16 @@ ISSUE35 = [entry for lab in LABS for entry in _issue35(lab)] + [
         a.friction = b.friction = 1e12
     """}, ["resolve_k", "resolve_friction"], "step 4 zeroes both inverse inertias and step 5 sets friction 1e12, so "
                                             "references read after resolve() agree with no spin terms and no clamp; "
-                                            "the check must name the field changed", mechanism=3, message="inv_inertia"),
+                                            "the check must name the field changed",
+        mechanism=3, message="inv_inertia"),
     attack("br_m3_zero_inertia", "ball_on_ramp", "changed_inputs", {7: """
         a.inv_inertia = b.inv_inertia = 0.0
         a.friction = b.friction = 1e12
         kt = a.inv_mass + b.inv_mass
         apply_impulse(a, b, t * (-rel.dot(t) / kt), ra, rb)
     """}, ["friction_rolls"], "step 7 zeroes both inverse inertias and sets friction 1e12 before an unclamped friction "
-                              "impulse without spin terms: the references must come from the bodies as given, the check "
-                              "name the field changed", mechanism=3, message="inv_inertia"),
+                              "impulse without spin terms: the references must come from the bodies as given, "
+                              "the check name the field changed", mechanism=3, message="inv_inertia"),
     # 4: reference values read from the probe's frame
     attack("tc_m4_frame_format", "tumbling_crates", "frame_read", {6: frame_read(
         ("[ref_a].omega", "[ref_b].omega"), """
