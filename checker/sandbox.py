@@ -23,6 +23,7 @@ import math
 import os
 import atexit
 import selectors
+import shutil
 import signal
 import socket
 import subprocess
@@ -31,6 +32,8 @@ import tempfile
 import threading
 import time
 from dataclasses import dataclass, field
+
+from . import users
 
 PROJECT_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
@@ -349,6 +352,34 @@ def _last_result(data):
     return {}
 
 
+def _copy_lab(lab_path, work):
+    """Copy the submitted file into the child's work folder under its own name (child.copy_name); never the original."""
+    from .child import copy_name
+    shutil.copyfile(lab_path, os.path.join(work, copy_name(lab_path)))
+
+
+def _check_user(result, limits):
+    """Raise users.ChildUserError when the run failed only because its user could not read Python or a module.
+
+    A run that never reached its first result line failed before any lab code ran; one whose lab (or a probe's
+    call of it) raised ModuleNotFoundError for a module on the child's path that its user cannot read is
+    not the student's error either.
+    """
+    if not limits.user:
+        return
+    if not result:
+        problem = users.python_problem(limits.user, PROJECT_ROOT)
+        if problem:
+            raise users.ChildUserError(problem)
+    tapes = ((result.get("probe") or {}).get("tapes") or {}) if isinstance(result.get("probe"), dict) else {}
+    errors = [result.get("error")] + [t.get("error") for t in tapes.values() if isinstance(t, dict)]
+    path = [PROJECT_ROOT] + [p for p in sys.path if p and os.path.abspath(p) != os.getcwd()]
+    for error in errors:
+        problem = users.unreadable_import(error if isinstance(error, dict) else None, limits.user, path)
+        if problem:
+            raise users.ChildUserError(problem)
+
+
 def run_child(lab_path, task, settings, limits):
     """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour."""
     lab_path = os.path.abspath(lab_path)
@@ -361,19 +392,25 @@ def run_child(lab_path, task, settings, limits):
             json.dump(settings, handle)
         env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
         env.update(_CHILD_ENV)
+        _copy_lab(lab_path, work)   # the child runs a copy, alone in its folder: no file beside the submission
         if limits.user:   # the child's own user owns its work folder (its record, its traceback) and nothing else
             import pwd
             entry = pwd.getpwnam(limits.user)
             os.chown(work, entry.pw_uid, entry.pw_gid)
             env["HOME"] = work
         env.update({
-            "PYTHONPATH": os.pathsep.join([PROJECT_ROOT, os.path.dirname(lab_path)]),
+            "PYTHONPATH": PROJECT_ROOT,   # only the project: the submission's own folder is not on the child's path
             "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
         })
         start = time.monotonic()
         result_read, result_write = os.pipe()   # the child's result comes over a pipe we opened, not a file
         try:
             proc = _start(lab_path, task, settings_path, result_write, work, env, limits)
+        except OSError as exc:   # the user cannot even start this Python (the subprocess path)
+            os.close(result_read)
+            if limits.user:
+                raise users.ChildUserError(users.cannot_run_python(limits.user)) from exc
+            raise
         finally:
             os.close(result_write)
         chunks = {"stdout": [], "stderr": []}
@@ -440,6 +477,7 @@ def run_child(lab_path, task, settings, limits):
                 status = "error"
             else:
                 status = "crash"
+        _check_user(result, limits)   # an import the child's user could not read is the checker's problem
         return RunResult(status=status, result=result, record=record,
                          stdout=b"".join(chunks["stdout"]).decode("utf-8", "replace"),
                          stderr=b"".join(chunks["stderr"]).decode("utf-8", "replace"),
