@@ -358,16 +358,17 @@ def _copy_lab(lab_path, work):
     shutil.copyfile(lab_path, os.path.join(work, copy_name(lab_path)))
 
 
-def _check_user(result, limits):
+def _check_user(result, limits, forked):
     """Raise users.ChildUserError when the run failed only because its user could not read Python or a module.
 
-    A run that never reached its first result line failed before any lab code ran; one whose lab (or a probe's
-    call of it) raised ModuleNotFoundError for a module on the child's path that its user cannot read is
-    not the student's error either.
+    A child started with subprocess that never reached its first result line failed before any lab code
+    ran (a forked one needs no file of Python's); one whose lab (or a probe's call of it) raised
+    ModuleNotFoundError for a module on the child's path that its user cannot read is not the student's
+    error either.
     """
     if not limits.user:
         return
-    if not result:
+    if not result and not forked:
         problem = users.python_problem(limits.user, PROJECT_ROOT)
         if problem:
             raise users.ChildUserError(problem)
@@ -398,6 +399,11 @@ def run_child(lab_path, task, settings, limits):
             entry = pwd.getpwnam(limits.user)
             os.chown(work, entry.pw_uid, entry.pw_gid)
             env["HOME"] = work
+            closed = users.blocked(work, limits.user)   # e.g. TMPDIR in a folder only root may enter
+            if closed:
+                raise users.ChildUserError(f"the checker's work folders in {os.path.dirname(work)} are not "
+                                           f"reachable by user {limits.user!r}: {closed} is closed to it; set "
+                                           "TMPDIR to a folder it can enter, or choose another --child-user")
         env.update({
             "PYTHONPATH": PROJECT_ROOT,   # only the project: the submission's own folder is not on the child's path
             "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
@@ -477,7 +483,7 @@ def run_child(lab_path, task, settings, limits):
                 status = "error"
             else:
                 status = "crash"
-        _check_user(result, limits)   # an import the child's user could not read is the checker's problem
+        _check_user(result, limits, isinstance(proc, _Forked))   # an unreadable import is the checker's problem
         return RunResult(status=status, result=result, record=record,
                          stdout=b"".join(chunks["stdout"]).decode("utf-8", "replace"),
                          stderr=b"".join(chunks["stderr"]).decode("utf-8", "replace"),

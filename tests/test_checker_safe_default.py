@@ -189,3 +189,16 @@ for hop in range(2):
         return
     assert "FORGED-35" not in out
     assert "seen=[]" in loads_message(rows(out)["proc_lab.py"])   # no open succeeded
+
+
+@needs_nobody
+def test_work_folders_the_child_user_cannot_enter_are_the_checkers_line(tmp_path, monkeypatch):
+    """TMPDIR in a folder only root may enter: the child could not even enter its work folder."""
+    private = tmp_path / "private"
+    private.mkdir(mode=0o700)
+    monkeypatch.setenv("TMPDIR", str(private))
+    status, out, err = checker(SOLUTION, "--json", "--quiet")
+    row = rows(out)["tumbling_crates.py"]
+    assert row["criteria"] == [] and row["message"].startswith(
+        f"the checker's work folders in {private} are not reachable by user 'nobody': ")
+    assert "set TMPDIR to a folder it can enter" in row["message"]
