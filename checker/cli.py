@@ -3,8 +3,9 @@
 Exit status: 0 every entry was graded and passes every check; 1 an entry
 fails a check or could not be graded (or an output could not be written);
 2 the command line is wrong (a bad option or value, a path that does not
-exist, a folder with nothing to grade, an output path that is refused):
-then nothing is graded and nothing is written.
+exist, a folder with nothing to grade, an output path that is refused), or,
+without the zygote, the user the student's code would run as cannot run
+Python: then nothing is graded and nothing is written.
 """
 import argparse
 import json

@@ -26,6 +26,7 @@ import selectors
 import shutil
 import signal
 import socket
+import stat
 import subprocess
 import sys
 import tempfile
@@ -331,13 +332,28 @@ def _kill_group(proc):
         pass
 
 
-def _read_json(path, limit):
+def _read_work_file(path, limit):
+    """At most `limit` bytes of a file the child left in its work folder, or None.
+
+    The child's user owns that folder, so the name may have become a link (to /dev/zero, to a file of
+    the grader's) or a FIFO (an open() that never returns): only a regular file is read, links not followed.
+    """
     try:
-        if os.path.getsize(path) > limit:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
+    except OSError:
+        return None
+    with os.fdopen(fd, "rb") as handle:
+        info = os.fstat(handle.fileno())
+        if not stat.S_ISREG(info.st_mode) or info.st_size > limit:
             return None
-        with open(path, encoding="utf-8") as handle:
-            return json.load(handle)
-    except (OSError, ValueError):
+        return handle.read(limit + 1)
+
+
+def _read_json(path, limit):
+    data = _read_work_file(path, limit)
+    try:
+        return None if data is None or len(data) > limit else json.loads(data.decode("utf-8"))
+    except (ValueError, RecursionError):
         return None
 
 
@@ -469,11 +485,9 @@ def run_child(lab_path, task, settings, limits):
         result = _last_result(b"".join(result_chunks)) if result_size <= RESULT_LIMIT else {}
         record = _read_json(settings["record"], RECORD_LIMIT) if task == "scenario" else None
         trace = ""
-        try:
-            with open(os.path.join(work, "timeout_traceback.txt"), encoding="utf-8", errors="replace") as handle:
-                trace = handle.read(20000)
-        except OSError:
-            pass
+        data = _read_work_file(os.path.join(work, "timeout_traceback.txt"), 1 << 20)
+        if data:
+            trace = data[:20000].decode("utf-8", "replace")
         if trace and not status:
             status = "timeout"  # faulthandler fired and ended the process just before our deadline
         if not status:

@@ -202,3 +202,30 @@ def test_work_folders_the_child_user_cannot_enter_are_the_checkers_line(tmp_path
     assert row["criteria"] == [] and row["message"].startswith(
         f"the checker's work folders in {private} are not reachable by user 'nobody': ")
     assert "set TMPDIR to a folder it can enter" in row["message"]
+
+
+# ---------------------------------------------------------------- what the child leaves in its folder
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs are POSIX")
+def test_a_fifo_in_place_of_the_traceback_file_does_not_hang_the_grader(tmp_path):
+    """The child's user owns its work folder: a lab that swaps timeout_traceback.txt for a FIFO made the
+    grader's open() wait forever (the whole batch stalled); now only regular files are read."""
+    path = tmp_path / "fifo_lab.py"
+    path.write_text(f'{TITLE}import os\nos.unlink("timeout_traceback.txt")\nos.mkfifo("timeout_traceback.txt")\n',
+                    encoding="utf-8")
+    status, out, err = checker(str(path), "--json", "--quiet", "--total-timeout", "120")
+    assert status == 1, err
+    assert "defines no function sat()" in loads_message(rows(out)["fifo_lab.py"])
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="FIFOs and /dev/zero are POSIX")
+def test_the_grader_reads_only_regular_files_from_the_work_folder(tmp_path):
+    regular, fifo, link = tmp_path / "record.json", tmp_path / "fifo", tmp_path / "link"
+    regular.write_text('{"frames": 3}', encoding="utf-8")
+    os.mkfifo(fifo)
+    os.symlink("/dev/zero", link)
+    assert sandbox._read_json(str(regular), 1000) == {"frames": 3}
+    assert sandbox._read_json(str(regular), 5) is None            # over the limit
+    assert sandbox._read_work_file(str(fifo), 1000) is None       # would block in open()
+    assert sandbox._read_work_file(str(link), 1000) is None       # a link (to an endless file) is not followed
+    assert sandbox._read_work_file(str(tmp_path / "gone"), 1000) is None
