@@ -46,7 +46,10 @@ WARM_STDLIB = ("math", "cmath", "itertools", "functools", "operator", "fractions
                "hashlib", "io", "os", "sys", "atexit", "threading", "queue", "datetime", "calendar", "colorsys",
                "inspect", "ast", "dis", "importlib.resources", "importlib.readers", "importlib.util",
                "importlib.machinery", "encodings.latin_1", "encodings.ascii", "encodings.utf_16",
-               "encodings.unicode_escape", "encodings.raw_unicode_escape", "unicodedata", "zlib", "base64")
+               "encodings.unicode_escape", "encodings.raw_unicode_escape", "unicodedata", "zlib", "base64",
+               "pkgutil", "pathlib", "glob", "fnmatch", "shutil", "tempfile", "csv", "argparse", "platform",
+               "pickle", "copyreg", "codecs", "difflib", "shlex", "errno", "stat", "signal", "subprocess",
+               "logging", "secrets", "uuid", "locale", "gettext", "sysconfig")
 PACKAGE_DATA = ("freesansbold.ttf", "pygame_icon.bmp")   # what pygame opens lazily (its default font)
 MAX_MESSAGE = 1 << 20
 
