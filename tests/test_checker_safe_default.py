@@ -229,3 +229,16 @@ def test_the_grader_reads_only_regular_files_from_the_work_folder(tmp_path):
     assert sandbox._read_work_file(str(fifo), 1000) is None       # would block in open()
     assert sandbox._read_work_file(str(link), 1000) is None       # a link (to an endless file) is not followed
     assert sandbox._read_work_file(str(tmp_path / "gone"), 1000) is None
+
+
+def test_the_lab_cannot_patch_what_the_child_reports_with(tmp_path):
+    """json.dumps and the child's describe() are bound before the lab loads: a lab that replaces them (to send
+    a forged result, or to change the account of its error) changes nothing of what the child sends."""
+    path = tmp_path / "patch_lab.py"
+    path.write_text(TITLE + "import json, sys\n"
+                    "json.dumps = lambda *a, **k: '{\"task\": \"probe\", \"phase\": \"done\", \"probe\": {}}'\n"
+                    "sys.modules['__main__'].describe = lambda exc, path: {'kind': 'exception', 'message': 'FORGED'}\n"
+                    "raise RuntimeError('the real error')\n", encoding="utf-8")
+    status, out, err = checker(str(path), "--json", "--quiet")
+    message = loads_message(rows(out)["patch_lab.py"])
+    assert "RuntimeError: the real error" in message and "FORGED" not in message, message
