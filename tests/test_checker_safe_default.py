@@ -242,3 +242,23 @@ def test_the_lab_cannot_patch_what_the_child_reports_with(tmp_path):
     status, out, err = checker(str(path), "--json", "--quiet")
     message = loads_message(rows(out)["patch_lab.py"])
     assert "RuntimeError: the real error" in message and "FORGED" not in message, message
+
+
+@needs_nobody
+def test_a_file_of_pythons_own_that_nobody_cannot_read_is_the_checkers_line(tmp_path):
+    """Python's own files (where pygame keeps data it may open late, say) unreadable by the child's user: the
+    checker's line. A file the student opens that is not Python's (the solutions, say) stays the student's."""
+    stdlib_file = os.path.join(os.path.dirname(os.__file__), "this.py")
+    if not users.blocked(os.path.realpath(stdlib_file), users.DEFAULT_CHILD_USER):
+        pytest.skip("nobody can read the standard library here")
+    private = tmp_path / "private.txt"
+    private.write_text("answers", encoding="utf-8")
+    private.chmod(0o600)
+    for name, target in (("python_file.py", stdlib_file), ("private_file.py", str(private))):
+        (tmp_path / name).write_text(f"{TITLE}open({target!r}).read()\n", encoding="utf-8")
+    status, out, err = checker(str(tmp_path / "python_file.py"), str(tmp_path / "private_file.py"), "--json",
+                               "--quiet")
+    graded = rows(out)
+    assert graded["python_file.py"]["message"].startswith(f"the checker cannot read {stdlib_file} as user 'nobody'")
+    assert "PermissionError" in loads_message(graded["private_file.py"])
+    assert graded["private_file.py"]["message"] == ""
