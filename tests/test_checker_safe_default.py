@@ -262,3 +262,23 @@ def test_a_file_of_pythons_own_that_nobody_cannot_read_is_the_checkers_line(tmp_
     assert graded["python_file.py"]["message"].startswith(f"the checker cannot read {stdlib_file} as user 'nobody'")
     assert "PermissionError" in loads_message(graded["private_file.py"])
     assert graded["private_file.py"]["message"] == ""
+
+
+# ---------------------------------------------------------------- the packages' user
+
+@as_root
+def test_the_packages_pass_their_user_or_root_when_asked_and_never_fall_back_to_root(monkeypatch, capsys):
+    """grade_submission.run_as (Gradescope, PrairieLearn): the platform's user ("student") when it exists;
+    AUTOGRADER_USER="" is the documented opt-out (--child-user root); a missing user leaves the choice to the
+    checker (nobody), where it used to fall back to running the student's code as root."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location(
+        "grade_submission_35", os.path.join(ROOT, "checker", "templates", "grade_submission.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    monkeypatch.setenv("AUTOGRADER_USER", "")
+    assert module.run_as({"user": "student"}) == "root"
+    monkeypatch.delenv("AUTOGRADER_USER")
+    assert module.run_as({"user": "nobody"}) == "nobody"
+    assert module.run_as({"user": "no-such-user-35"}) is None
+    assert "the checker runs the student's code as its default user" in capsys.readouterr().err
