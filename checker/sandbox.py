@@ -53,6 +53,7 @@ class Limits:
 
     user: None runs the child as the grader's own user; a user name (the grader must be root) runs
     only the child as that user, so files the grader keeps to itself (the solutions) stay unreadable.
+    The command line picks one for a root grader unless told otherwise (checker/users.py: nobody).
     """
     timeout: float = 20.0
     memory_mb: int = 768
