@@ -208,21 +208,9 @@ OPEN = {
                                 f"resolve() that returns before step 4 passes it vacuously; {PROBES}",
     "ms_m10_parallel_one_minus_dot": f"mechanism 10: the parallel-axes probe has no pair 0.01 degrees apart; {PROBES}",
     "br_m10_contact_halfway": f"mechanism 10: contact_on_surface accepts the point halfway into the overlap; {PROBES}",
-    **{f"{lab}_m7_grader_stdout": f"mechanism 7: as root with no option the child runs as root and writes to the "
-                                  f"grader's stdout; {SAFE}" for lab in ("tc", "ms", "br", "bu", "sc")},
-    **{name: f"mechanism 8: a module beside the submission is importable in the child (the lab's folder is on its "
-             f"path) and binds what a step reads; {SAFE}"
-       for name in ("tc_side_module_free_name", "tc_side_module_solution", "sc_side_module_library",
-                    "ms_m8_crate_utils", "br_m8_crate_utils", "bu_m8_crate_utils")},
 }
-# with --child-user nobody the scenes fail here today: the interpreter's stdlib is under /root (mode 700), so a
-# scene's import of importlib.readers fails as nobody and is reported as the student's error (issue 35 item 5: the
-# zygote must import it first, or the checker say so in one line). The m7 attacks already hold in this mode.
-OPEN_AS_CHILD_USER = {
-    name: f"mechanism 7 (second part): as nobody a scene raises ModuleNotFoundError (importlib.readers, under "
-          f"/root), blamed on the student: the solution's steps score 8/17; {SAFE}"
-    for name in ("tumbling_crates_while_loop", "more_shapes_comprehension", "sleeping_crates_print_in_step",
-                 "ball_on_ramp_hypot")}
+# with --child-user nobody: no open hole (branch i35-safe made the zygote import what a scene needs).
+OPEN_AS_CHILD_USER = {}
 
 
 def _cases():
