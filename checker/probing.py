@@ -162,5 +162,6 @@ def judge(lab, path, settings, child):
             functions[name] = {"ok": False, "error": _error(
                 f"the child reported more calls of {function}() than the checker's probe makes")}
         else:
-            functions[name] = {"ok": True, "data": data, "changed_arguments": replay.changed(pure)}
+            functions[name] = {"ok": True, "data": data, "changed_arguments": replay.changed(pure),
+                               "changed_fields": replay.tampered()}
     return {"missing": [str(m) for m in missing], "functions": functions}
