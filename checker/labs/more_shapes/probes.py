@@ -225,6 +225,9 @@ def axis_pairs():
         ("a pentagon and a pentagon turned half a corner", ngon(5, 30, (0, 0)), ngon(5, 30, (50, 8), 36)),
         ("a hexagon and a box turned 0.01 rad (nearly parallel: keep both)", ngon(6, 30, (0, 0)),
          box(60, 40, (40, 35), math.degrees(0.01))),
+        # 0.01° apart: |a × b| = 1.7e-4 > PARALLEL keeps both; 1 - |a · b| = 1.5e-8 (about θ²/2) would merge them
+        ("two boxes turned 0.01° apart (nearly parallel: keep both)", box(60, 40, (0, 0)),
+         box(50, 30, (45, 20), 0.01)),
         ("two aligned boxes, far apart", box(40, 40, (0, 0)), box(40, 40, (300, 0))),
         ("a pentagon far from a triangle", ngon(5, 30, (0, 0), 10), ngon(3, 30, (200, 50))),
     ]
