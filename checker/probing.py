@@ -18,6 +18,7 @@ from . import tape
 from .handout import MarkerError, step_regions
 
 _STARTERS = {}   # starter path -> (its compiled code, its step functions)
+MAX_TAPE = 200_000   # entries on one probe's tape the grader replays at most (the solutions' longest: about 2000)
 
 
 def regions_by_function(source):
@@ -141,6 +142,11 @@ def judge(lab, path, settings, child):
         if not isinstance(record, dict) or not isinstance(record.get("tape"), list):
             continue
         child_error = record.get("error") if isinstance(record.get("error"), dict) else None
+        if len(record["tape"]) > MAX_TAPE:   # no probe makes that many calls: refuse before replaying any
+            functions[name] = {"ok": False, "error": _error(
+                f"the child reported {len(record['tape'])} calls for the probe of {function}(), more than the "
+                f"checker's probe makes (at most {MAX_TAPE}): the child's report was changed")}
+            continue
         replay = tape.Replayer(namespace, steps, record["tape"], child.get("constants"), settings.get("seed", 0))
         try:
             data = probe(replay, path)
