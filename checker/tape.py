@@ -15,7 +15,14 @@ What a forged tape can do: nothing a function could not have done. A replayed
 call is checked against the arguments the parent's own probe passes (a tape
 made for other inputs does not fit), and what it can claim - a return value,
 changed arguments, calls of the hooks - is exactly what a student's function
-is able to do anyway.
+is able to do anyway. A hook event may name only a function the probe put in
+the student's place in this probe (never another name of the handout, such as
+main); a call that changes a body's mass, inertia, material or shape (FROZEN)
+is noted (Replayer.tampered) and fails its check with the field named.
+
+The probes keep the child free of answers too: a helper that computes a
+reference is marked @reference and raises if called while a Recorder runs a
+probe (Recorder.run), so the lesson's answers exist only in the parent.
 
 Values cross the pipe as JSON with small tags: {"v": [x, y]} a Vector2,
 {"l": [...]} a list, {"t": [...]} a tuple, {"d": {...}} a dict, {"b": k, ...}
