@@ -104,8 +104,6 @@ KNOWN_HOLES = {
                                 "is on its path) and binds a name the step reads; the packages copy only the lab file",
     "tc_side_module_solution": "the same side module execs the solution into the lab's globals",
     "sc_side_module_library": "the same side module puts World's library rules into the lab's globals",
-    "tc_early_return_friction": "resolve_friction skips a contact where no impulse was recorded, so a resolve() that "
-                                "returns before step 4 passes it vacuously",
 }
 
 
