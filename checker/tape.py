@@ -554,7 +554,8 @@ class Replayer:
             if not isinstance(events, list):
                 raise TapeMismatch("a call's hook events on the tape are not a list")
             bodies = [obj for obj in seen.objects if isinstance(obj, Body)]
-            frozen = _frozen(bodies) if events or entry.get("post") is not None else None   # nothing restored: no change
+            restored = events or entry.get("post") is not None
+            frozen = _frozen(bodies) if restored else None   # nothing restored: nothing changed
             for event in events:
                 hook_name = event.get("hook") if isinstance(event, dict) else None
                 hook = self._hooks.get(hook_name) if isinstance(hook_name, str) else None

@@ -221,7 +221,7 @@ CORRECT = [
                 point += ab * t
                 return point
             """}, why="an in-place += on a new Vector2 changes nothing the caller holds"),
-    correct("correct_named_parts", "inside case with a named normal; push-out with named shares; a named surface offset",
+    correct("correct_named_parts", "inside case with a named normal; push-out with named shares; a named offset",
             {3: """
                 if inside(center, points):
                     way_out = (center - closest).normalize()

@@ -370,8 +370,8 @@ def contact_on_surface(sub, functions):
         centre, radius = case["center"], case["radius"]
         normal = case["normal"]
         if _same_point(got, case["halfway"]):
-            what = (f": that is halfway into the overlap, center + normal * (radius - depth / 2), {case['depth'] / 2:g} "
-                    "px inside the ball; the step asks for the point on the ball's surface")
+            what = (": that is halfway into the overlap, center + normal * (radius - depth / 2), "
+                    f"{case['depth'] / 2:g} px inside the ball; the step asks for the point on the ball's surface")
         elif _same_point(got, centre):
             what = ": that is the ball's center, where friction cannot turn it"
         elif _same_point(got, [centre[0] - normal[0] * radius, centre[1] - normal[1] * radius]):

@@ -291,7 +291,7 @@ def probe_separate(module, lab_path):
 
 @reference
 def _separate_reference(a, b, normal, depth, slop, percent):
-    """The lesson's push-out of a and b (as given): each moved by max(depth - slop, 0) · percent, split by inverse mass."""
+    """The lesson's push-out of a and b (as given): max(depth - slop, 0) · percent px, split by inverse mass."""
     total = a.inv_mass + b.inv_mass
     push = max(depth - slop, 0.0) * percent
     return {"push": push, "inv": {"a": a.inv_mass, "b": b.inv_mass}, "mass": {"a": a.mass, "b": b.mass},

@@ -371,8 +371,8 @@ def probe_swept(module, lab_path):
         for name, make in swept_cases(module):
             world, bullet = make()
             module.swept_move(world, bullet, STEP)
-            cases.append({"case": name,
-                          "got": {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}})
+            others = [_state(b) for b in world.bodies if b is not bullet]
+            cases.append({"case": name, "got": {"bullet": _state(bullet), "others": others}})
             if judging(module):
                 cases[-1].update(_swept_reference(make))
         return cases
