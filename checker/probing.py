@@ -127,7 +127,8 @@ def judge(lab, path, settings, child):
     starter = getattr(lab.module, "STARTER", None)
     tapes = child.get("tapes") if isinstance(child, dict) else None
     missing = child.get("missing") if isinstance(child, dict) else None
-    if not isinstance(tapes, dict) or not isinstance(missing, list):
+    constants = child.get("constants", {}) if isinstance(child, dict) else None
+    if not isinstance(tapes, dict) or not isinstance(missing, list) or not isinstance(constants, dict):
         return {"missing": [], "functions": {name: {"ok": False, "error": _error(
             "the probe's result is not in the checker's format (the file's code changed what the child reports)")}
             for name in probes.PROBES}}
@@ -147,8 +148,8 @@ def judge(lab, path, settings, child):
                 f"the child reported {len(record['tape'])} calls for the probe of {function}(), more than the "
                 f"checker's probe makes (at most {MAX_TAPE}): the child's report was changed")}
             continue
-        replay = tape.Replayer(namespace, steps, record["tape"], child.get("constants"), settings.get("seed", 0))
         try:
+            replay = tape.Replayer(namespace, steps, record["tape"], constants, settings.get("seed", 0))
             data = probe(replay, path)
         except (tape.StudentRaised, tape.TapeEnded) as exc:
             functions[name] = {"ok": False, "error": child_error or _error(

@@ -68,6 +68,17 @@ def test_a_tape_of_millions_of_calls_is_an_error_not_replayed(tmp_path):
     assert judged["functions"]["sat"]["ok"]   # the other probes are judged as usual
 
 
+@pytest.mark.parametrize("constants", [[1, 2], {"RESTING_SPEED": {"v": [1]}}, {"RESTING_SPEED": "[" * 50}])
+def test_forged_constants_are_an_error_row_not_a_crash(constants, tmp_path):
+    lab = lab_by_id("tumbling_crates")
+    path = os.path.join(ROOT, "solutions", "tumbling_crates.py")
+    settings, result, _ = recorded(lab, path, 2, tmp_path)
+    judged = probing.judge(lab, path, settings, dict(result, constants=constants))
+    assert judged["functions"], judged
+    for entry in judged["functions"].values():
+        assert entry["ok"] or entry["error"]["message"], entry
+
+
 # ---------------------------------------------------------------- NaN and infinity in a scene's record
 
 
