@@ -170,7 +170,7 @@ def run_probe(module, lab_path, probes, seconds, settings):
         if not callable(getattr(module, function, None)):
             continue
         try:
-            call_limited(probe, seconds, recorder, lab_path)
+            call_limited(recorder.run, seconds, probe, lab_path)   # no reference helper runs here
             result["tapes"][name] = {"tape": recorder.take()}
         except FunctionTimeout as exc:
             error = describe(exc, lab_path)

@@ -354,15 +354,35 @@ def _read_json(path, limit):
     data = _read_work_file(path, limit)
     try:
         return None if data is None or len(data) > limit else json.loads(data.decode("utf-8"))
-    except (ValueError, RecursionError):
+    except (ValueError, RecursionError, MemoryError):
         return None
 
 
+RESULT_LINE_LIMIT = 8 * 1024 * 1024   # bytes: the largest result line parsed (the solutions' probes: 0.6 MB at most)
+
+
+def _unreadable(why):
+    """A result saying the child's last line could not be read: the run's error (the file's code wrote it)."""
+    return {"phase": "run", "error": {"kind": "exception", "line": None, "text": None, "traceback": "",
+                                      "message": f"a result the checker cannot read ({why}); the checker does not "
+                                                 "grade what the child reports then"}}
+
+
 def _last_result(data):
-    """The last complete JSON line the child wrote on its result pipe (it writes one per phase), or {}."""
+    """The last complete JSON line the child wrote on its result pipe (it writes one per phase), or {}.
+
+    A line that is not JSON is passed over (the child was stopped while writing). A line too big or
+    nested too deep to read in bounded memory and time ends the search as the run's error: the child
+    never writes one, so the file's code did.
+    """
     for line in reversed(data.split(b"\n")[:-1]):
+        if len(line) > RESULT_LINE_LIMIT:
+            return _unreadable(f"{len(line) / 1e6:.0f} MB on one line, more than the "
+                               f"{RESULT_LINE_LIMIT // (1024 * 1024)} MB it reads")
         try:
             value = json.loads(line)
+        except (RecursionError, MemoryError) as exc:
+            return _unreadable("nested deeper than it reads" if isinstance(exc, RecursionError) else "out of memory")
         except ValueError:
             continue
         return value if isinstance(value, dict) else {}

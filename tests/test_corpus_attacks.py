@@ -195,19 +195,6 @@ OPEN = {
     **{name: f"mechanism 10: a pure standard-library module in a step is flagged (a false fail); {READING}"
        for name in ("ms_m10_cmath_corners", "ms_m10_itertools_centroid", "tc_m10_itertools_axes",
                     "sc_m10_itertools_wake")},
-    "tc_m3_zero_inertia": f"mechanism 3: probe_resolve reads k, mu and kt from the bodies after resolve(); {PROBES}",
-    "br_m3_zero_inertia": f"mechanism 3 (the field guard): friction_rolls fails it today, but not naming the "
-                          f"inverse inertia step 7 changed; {PROBES}",
-    "tc_m4_frame_format": f"mechanism 4: the child holds ref_a, ref_b when it calls apply_impulse(); {PROBES} "
-                          f"(i35-reading's format-string flag closes it too)",
-    "br_m4_frame_format": f"mechanism 4: the child holds `want` when it calls separate(); {PROBES} "
-                          f"(i35-reading's format-string flag closes it too)",
-    **{f"{lab}_m5_foreign_hook": f"mechanism 5: the replay calls any callable of the handout a tape event names; "
-                                 f"{PROBES}" for lab in ("tc", "ms", "br", "bu", "sc")},
-    "tc_early_return_friction": f"mechanism 9: resolve_friction skips a contact where no impulse was recorded, so a "
-                                f"resolve() that returns before step 4 passes it vacuously; {PROBES}",
-    "ms_m10_parallel_one_minus_dot": f"mechanism 10: the parallel-axes probe has no pair 0.01 degrees apart; {PROBES}",
-    "br_m10_contact_halfway": f"mechanism 10: contact_on_surface accepts the point halfway into the overlap; {PROBES}",
 }
 # with --child-user nobody: no open hole (branch i35-safe made the zygote import what a scene needs).
 OPEN_AS_CHILD_USER = {}
