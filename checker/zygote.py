@@ -48,7 +48,7 @@ def _child(request, fds, base_path, close):
         out_fd, err_fd, _, result_fd = fds
         from checker import sandbox
         limits = sandbox.Limits(**request["limits"])
-        sandbox._limit_child(limits)()  # setsid and the rlimits, exactly as the preexec_fn does
+        sandbox._limit_child(limits, result_fd)()  # setsid and the rlimits, exactly as the preexec_fn does
         null = os.open(os.devnull, os.O_RDONLY)
         os.dup2(null, 0)
         os.dup2(out_fd, 1)
