@@ -585,8 +585,10 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
             pass
         if time.monotonic() >= deadline:
             status = "timeout"
-        elif errors.size + _file_size(out_path) > limits.max_output + FLOOD_SLACK:
+        elif _flooded(errors, out_path, limits):
             status = "flood"
+    if status is None and _flooded(errors, out_path, limits):
+        status = "flood"   # it ended (the file-size limit, say) between two looks
     _kill_tree(popen, job)   # a stopped run, and anything the lab left running
     try:
         popen.wait(timeout=5)
@@ -606,11 +608,13 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
                     notes)
 
 
-def _file_size(path):
+def _flooded(errors, out_path, limits):
+    """True once the lab's stderr and stdout file hold more than max_output + FLOOD_SLACK bytes."""
     try:
-        return os.path.getsize(path)
+        size = os.path.getsize(out_path)
     except OSError:
-        return 0
+        size = 0
+    return errors.size + size > limits.max_output + FLOOD_SLACK
 
 
 def _kill_tree(popen, job):
