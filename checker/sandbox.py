@@ -17,6 +17,14 @@ a process started once per grading run that has already imported pygame, lesson1
 so each run saves starting Python and those imports. CHECKER_ZYGOTE=0 in the environment (or
 USE_ZYGOTE = False here) turns it off; whenever the zygote cannot be started or stops answering,
 children are started with subprocess as before. The run and its RunResult are the same either way.
+A limit the system refuses (macOS refuses RLIMIT_AS) is skipped and noted in RunResult.notes.
+
+The portable path (portable(): Windows, no fork or process groups, or CHECKER_PORTABLE=1) starts
+the child with plain subprocess and no preexec_fn or pass_fds: the child's stdout is its result
+channel (it moves the lab's stdout to a file first), threads read the pipes, the parent kills
+the whole tree at the wall-clock limit or on a flood (a Job Object on Windows, else the process
+group), and the child applies its own limits: rlimits where `resource` exists and the system
+accepts them, CPU time by a watchdog thread, on Windows memory by the parent's Job Object.
 """
 import json
 import math
