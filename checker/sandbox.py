@@ -425,7 +425,8 @@ class _Outcome:
 def run_child(lab_path, task, settings, limits):
     """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour."""
     lab_path = os.path.abspath(lab_path)
-    with tempfile.TemporaryDirectory(prefix="checker-") as work:
+    # ignore_cleanup_errors: on Windows a file a dying process still holds open cannot be removed yet
+    with tempfile.TemporaryDirectory(prefix="checker-", ignore_cleanup_errors=True) as work:
         settings = dict(settings, max_output=limits.max_output)  # the child stops a flood at its print()
         if task == "scenario":
             settings["record"] = os.path.join(work, "record.json")
