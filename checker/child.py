@@ -9,7 +9,8 @@ lab's main()). The child writes what happened, one JSON line per phase, to file
 descriptor N, the write end of a pipe the parent (the grader) opened and reads;
 the parent decides. On the portable path (Windows, CHECKER_PORTABLE=1: checker/sandbox.py)
 the result channel is the child's own stdout, and the lab's stdout goes to FILE from before the
-lab loads; the child then applies its limits itself (CHECKER_CHILD_LIMITS, see Watchdog). The lab sees sys.argv as [its own path], as when run itself. The lab is compiled from its source under its own
+lab loads; the child then applies its limits itself (CHECKER_CHILD_LIMITS, see Watchdog).
+The lab sees sys.argv as [its own path], as when run itself. The lab is compiled from its source under its own
 file name (so tracebacks name the student's file and line) and imported under
 the module name "lab_under_test", so its `if __name__ == "__main__":` guard does
 not run main(). No bytecode is written next to the submitted file.
@@ -24,6 +25,7 @@ import importlib
 import io
 import _thread
 import json
+import math
 import os
 import sys
 import signal
@@ -216,7 +218,7 @@ def _portable_limits(result_pipe, trace):
     global _watchdog
     limits = sandbox.Limits(**json.loads(os.environ.pop("CHECKER_CHILD_LIMITS", "{}")))
     sandbox.write_notes(result_pipe.fileno(), sandbox.set_rlimits(limits, cpu=False))
-    _watchdog = Watchdog(max(1, limits.timeout), trace)
+    _watchdog = Watchdog(max(1, math.ceil(limits.timeout)), trace)   # RLIMIT_CPU's soft limit on POSIX
     return limits
 
 

@@ -175,7 +175,8 @@ def emulation(directory, *parts):
                 handle.write(f"{{module}} {{how}}\\n")
         """)
     (directory / "sitecustomize.py").write_text(head + "".join(textwrap.dedent(part) for part in parts))
-    wrapper.write_text(f'#!/bin/sh\nPYTHONPATH="{directory}${{PYTHONPATH:+:$PYTHONPATH}}" exec "{sys.executable}" "$@"\n')
+    path = f'PYTHONPATH="{directory}${{PYTHONPATH:+:$PYTHONPATH}}"'
+    wrapper.write_text(f'#!/bin/sh\n{path} exec "{sys.executable}" "$@"\n')
     wrapper.chmod(0o755)
     return str(wrapper), log
 
@@ -297,7 +298,8 @@ def test_the_result_channel_keeps_the_last_result_and_every_note():
 
 HOSTILE = {   # name: (source, words the loads check's message must hold)
     "loop": ('x = 0\nwhile True:\n    x += 1\n', "did not finish importing within 6 s of CPU time"),
-    "two_gigabytes": ("hoard = bytearray(2 * 1024 ** 3)\n", "ran out of memory (limit 512 MB) at two_gigabytes.py, line 2"),
+    "two_gigabytes": ("hoard = bytearray(2 * 1024 ** 3)\n",
+                      "ran out of memory (limit 512 MB) at two_gigabytes.py, line 2"),
     "crash": ("import ctypes\nctypes.string_at(0)\n", "ended the process unexpectedly"),
     "print_flood": ("while True:\n    print('x' * 1000)\n", "printed more than 64 KB of output and was stopped; it was "
                                                           "printing at print_flood.py, line 3"),
@@ -305,7 +307,8 @@ HOSTILE = {   # name: (source, words the loads check's message must hold)
                   "printed more than 64 KB of output and was stopped."),
     "sleeps": ("import time\ntime.sleep(60)\n", "did not finish importing within 6 s of CPU time"),
 }
-LOOPING_SAT = ("    # --- step 2: the SAT loop ---\n", "    # --- step 2: the SAT loop ---\n    while pa:\n        pa = pa\n")
+MARKER = "    # --- step 2: the SAT loop ---\n"
+LOOPING_SAT = (MARKER, MARKER + "    while pa:\n        pa = pa\n")   # sat() never returns
 
 
 @pytest.fixture(scope="module")
