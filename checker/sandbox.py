@@ -540,14 +540,14 @@ class _Drain(threading.Thread):
 
     def __init__(self, stream, keep):
         super().__init__(daemon=True)
-        self.stream, self.keep = stream, keep
+        self.stream, self.fd, self.keep = stream, stream.fileno(), keep
         self.chunks, self.kept, self.size = [], 0, 0
         self.start()
 
     def run(self):
         try:
             while True:
-                data = self.stream.read1(65536)
+                data = os.read(self.fd, 65536)   # not the buffered stream: its close() would wait on this read
                 if not data:
                     return
                 self.size += len(data)
@@ -559,6 +559,13 @@ class _Drain(threading.Thread):
 
     def data(self):
         return b"".join(self.chunks)
+
+    def close(self):
+        """Wait up to 2 s for the end of the pipe, then close it; a grandchild the kill missed may hold it open,
+        and then it is left to the thread (closing a pipe another thread reads is not safe everywhere)."""
+        self.join(timeout=2.0)
+        if not self.is_alive():
+            self.stream.close()
 
 
 def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
@@ -603,10 +610,8 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
         popen.wait(timeout=5)
     except subprocess.TimeoutExpired:
         pass   # not killable from here: its returncode stays None and the run counts as stopped
-    for drain in (channel, errors):
-        drain.join(timeout=2.0)   # a grandchild the kill missed may hold a pipe open: don't wait on it
-    popen.stdout.close()
-    popen.stderr.close()
+    channel.close()
+    errors.close()
     stderr = errors.data()
     try:
         with open(out_path, "rb") as handle:
