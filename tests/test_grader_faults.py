@@ -29,24 +29,24 @@ DONE = b'{"task": "probe", "phase": "run"}\n'
 
 def test_a_result_line_nested_too_deep_is_the_runs_error():
     nested = b"[" * 200_000 + b"]" * 200_000
-    result = sandbox._last_result(DONE + nested + b"\n")
+    result = sandbox._read_channel(DONE + nested + b"\n")[0]
     assert result["error"]["message"].startswith("a result the checker cannot read (nested deeper than it reads)")
     nested_dict = b'{"a":' * 100_000 + b"1" + b"}" * 100_000
-    assert "nested deeper" in sandbox._last_result(DONE + nested_dict + b"\n")["error"]["message"]
+    assert "nested deeper" in sandbox._read_channel(DONE + nested_dict + b"\n")[0]["error"]["message"]
 
 
 def test_a_huge_result_line_is_refused_before_it_is_parsed():
     huge = b'{"phase": "done", "probe": {"tapes": {"x": {"tape": [' + b'{"k":"clock","t":0},' * 500_000 + \
         b'{"k":"clock","t":0}]}}}}'
     assert len(huge) > sandbox.RESULT_LINE_LIMIT
-    result = sandbox._last_result(DONE + huge + b"\n")
+    result = sandbox._read_channel(DONE + huge + b"\n")[0]
     assert "MB on one line" in result["error"]["message"] and "phase" in result and result["phase"] != "done"
 
 
 def test_the_ordinary_lines_still_read():
-    assert sandbox._last_result(DONE + b'{"phase": "done"}\n') == {"phase": "done"}
-    assert sandbox._last_result(DONE + b'{"phase": "done"}\n{"cut sh') == {"phase": "done"}   # stopped mid-write
-    assert sandbox._last_result(DONE + b"not json\n") == {"task": "probe", "phase": "run"}
+    assert sandbox._read_channel(DONE + b'{"phase": "done"}\n')[0] == {"phase": "done"}
+    assert sandbox._read_channel(DONE + b'{"phase": "done"}\n{"cut sh')[0] == {"phase": "done"}   # stopped mid-write
+    assert sandbox._read_channel(DONE + b"not json\n")[0] == {"task": "probe", "phase": "run"}
 
 
 def test_a_record_nested_too_deep_reads_as_none(tmp_path):
