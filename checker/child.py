@@ -316,7 +316,7 @@ def main(argv):
     _only_the_project_on_path()
     faulthandler.enable()
     budget = float(os.environ.get("CHECKER_FAULT_SECONDS", "0") or 0)
-    trace = open("timeout_traceback.txt", "w")
+    trace = open("timeout_traceback.txt", "w", encoding="utf-8")   # faulthandler writes to its fd: ASCII
     if budget > 0:
         faulthandler.dump_traceback_later(budget, exit=True, file=trace)
     if portable:
