@@ -356,24 +356,26 @@ def test_an_endless_loop_in_a_function_is_stopped_at_its_line(hostile, path):
 # ---------------------------------------------------------------- every corpus through the portable path
 
 def _corpus_entries():
-    params = [pytest.param(lab, entry, id=f"{lab}-{entry.name}") for lab, (corpus, _) in CORPORA.items()
-              for entry in corpus.ENTRIES]
-    for param in attacks_verdicts._entries_with_holes():   # the attack corpus's known holes stay strict xfails
-        entry = param.values[0] if hasattr(param, "values") else param
-        marks = param.marks if hasattr(param, "values") else ()
-        params.append(pytest.param("attacks", entry, id=f"attacks-{entry.name}", marks=marks))
-    return params
+    return [pytest.param(lab, entry, id=f"{lab}-{entry.name}") for lab, (corpus, _) in CORPORA.items()
+            for entry in corpus.ENTRIES]
+
+
+def _attack_entries():
+    """The attack corpus's entries graded as root (its open holes, if any, stay strict xfails here too)."""
+    return [pytest.param(entry, id=f"attacks-{entry.name}",
+                         marks=[pytest.mark.xfail(strict=True, reason=attacks_verdicts.OPEN[entry.name])]
+                         if entry.name in attacks_verdicts.OPEN else [])
+            for entry in corpus_attacks.ENTRIES if "root" in entry.modes]
 
 
 @pytest.fixture(scope="module")
 def corpora(tmp_path_factory):
     """{lab or "attacks": {entry name: its JSON row}}: every corpus file graded in ONE portable checker run."""
     folder = tmp_path_factory.mktemp("corpora")
-    for lab in (*CORPORA, "attacks"):
+    for lab in CORPORA:
         (folder / lab).mkdir()
     written = {(lab, name): path for lab, (corpus, _) in CORPORA.items()
                for name, path in corpus.write_corpus(folder / lab).items()}
-    written.update({("attacks", name): path for name, path in corpus_attacks.write(folder / "attacks").items()})
     # generous limits, as the corpus tests give: no entry loops, and a busy machine must not fail a scene
     rows = graded_json("--jobs", "2", "--timeout", "120", "--total-timeout", "7000", *map(str, written.values()),
                        env_extra={"CHECKER_PORTABLE": "1"}, timeout=7500)
@@ -389,8 +391,17 @@ def corpora(tmp_path_factory):
 @pytest.mark.parametrize("lab, entry", _corpus_entries())
 def test_each_corpus_entry_gets_its_verdict_on_the_portable_path(corpora, lab, entry):
     """The corpus module's own verdict test, on the portable path's grades."""
-    if lab == "attacks":
-        attacks_verdicts.test_each_entry_gets_its_verdict(entry, corpora["attacks"])
-        return
     graded = {name: {c["id"]: c for c in row["criteria"]} for name, row in corpora[lab].items()}
     CORPORA[lab][1].test_the_checker_gives_each_entry_its_verdict(entry, graded)
+
+
+@pytest.fixture(scope="module")
+def attacks_portable(tmp_path_factory):
+    """The attack corpus (and each attack's honest file) graded as root in one portable checker run."""
+    return attacks_verdicts._grade(tmp_path_factory.mktemp("attacks-portable"), "root", {"CHECKER_PORTABLE": "1"})
+
+
+@pytest.mark.parametrize("entry", _attack_entries())
+def test_each_attack_gets_its_verdict_on_the_portable_path(attacks_portable, entry):
+    """The attack corpus's own verdict test (as root, no option), on the portable path's grades."""
+    attacks_verdicts.test_each_entry_gets_its_verdict("root", entry, lambda mode: attacks_portable)

@@ -61,15 +61,16 @@ def _documents(text):
         found.append(document)
 
 
-def _grade(folder, mode):
-    """{"rows": {name: row}, "documents": how many JSON documents the grader's stdout held} for `mode`."""
+def _grade(folder, mode, env_extra=None):
+    """{"rows": {name: row}, "documents": how many JSON documents the grader's stdout held} for `mode`
+    (env_extra: more environment for the checker, e.g. CHECKER_PORTABLE=1 in tests/test_checker_portable.py)."""
     entries = [entry for entry in corpus.ENTRIES if mode in entry.modes]
     same = {}   # an honest file's text -> the first honest entry with it (44 honest entries, 20 distinct files)
     for entry in entries:
         if entry.name in corpus.HONEST:
             same.setdefault(corpus.build(corpus.HONEST[entry.name]), corpus.HONEST[entry.name])
     paths = corpus.write(folder, entries + list(same.values()))
-    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", **(env_extra or {}))
     # the lab files themselves, not their folders: a side file (lab_notes.py) is no entry to grade
     proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--jobs", "2", "--timeout", "60",
                            "--total-timeout", "3000", *GRADING_MODES[mode], *paths.values()],
