@@ -29,7 +29,9 @@ same sitecustomize first on their path, so the children run without it too:
   macOS: setrlimit(RLIMIT_AS, ...) raises ValueError ("current limit exceeds maximum limit"), and
       Unix sockets refuse SOCK_SEQPACKET (the constant kept, socketpair refusing it; a missing
       constant is checked in-process). Real macOS forks and has process groups, so it takes the
-      POSIX subprocess path (no zygote), as emulated; it does not enforce RLIMIT_AS at all.
+      POSIX subprocess path (no zygote), as emulated; it does not enforce RLIMIT_AS at all. A student
+      runs the checker under their own account there, so the emulated grader is told it is not root
+      (os.geteuid) and switches no user, as on a Mac; this machine's test really runs as root.
       A second run keeps SOCK_SEQPACKET, so the zygote's children meet the same refusal.
 """
 import json
@@ -157,6 +159,13 @@ def socketpair(family=socket.AF_UNIX, type=socket.SOCK_STREAM, proto=0):
 socket.socketpair = socketpair
 """
 
+# A student's Mac: the checker runs under the student's own account, never as root, so there is no user to
+# switch to (checker/users.py). This machine's tests run as root: the grader is told it is not.
+MACOS_STUDENT = """
+import os
+os.geteuid = lambda: 501
+"""
+
 
 def emulation(directory, *parts):
     """A python wrapper that runs with `parts` as its sitecustomize (and makes its children do the same).
@@ -201,7 +210,7 @@ def paths(tmp_path_factory):
     base = tmp_path_factory.mktemp("emulations")
     runs = {"portable": ({"CHECKER_PORTABLE": "1"}, None)}
     runs["windows"] = ({}, emulation(base / "windows", WINDOWS))
-    runs["macos"] = ({}, emulation(base / "macos", MACOS_RLIMIT, MACOS_SOCKETS))
+    runs["macos"] = ({}, emulation(base / "macos", MACOS_RLIMIT, MACOS_SOCKETS, MACOS_STUDENT))
     runs["rlimit_refused_zygote"] = ({}, emulation(base / "zygote", MACOS_RLIMIT))
     out = {}
     for name, (env, emulated) in runs.items():
