@@ -26,6 +26,8 @@ import signal
 import traceback
 import types
 
+from checker.source import read as read_source   # imported here, so the zygote has it warm
+
 sys.dont_write_bytecode = True
 
 MODULE_NAME = "lab_under_test"
@@ -110,10 +112,12 @@ def describe(exc, lab_path):
 
 
 def load_lab(lab_path, copy_path):
-    """Compile and run the lab's source as module MODULE_NAME; returns the module."""
-    with open(lab_path, "rb") as handle:
-        source = handle.read()
-    code = compile(source, lab_path, "exec", dont_inherit=True)
+    """Compile and run the lab's source as module MODULE_NAME; returns the module.
+
+    It compiles the text the grader read and numbered (checker/source.py), never the bytes under a coding
+    of the file's choosing, so the lines the grader's rules read are the lines that run.
+    """
+    code = compile(read_source(lab_path), lab_path, "exec", dont_inherit=True)
     module = types.ModuleType(MODULE_NAME)
     module.__file__ = copy_path  # the lab sees a copy, never the submitted file
     sys.modules[MODULE_NAME] = module

@@ -22,7 +22,10 @@ submission's line and, where there is one, the handout's), `added_imports` and
 import ast
 import difflib
 import re
+import string
 from dataclasses import dataclass, field
+
+from .source import lines as split_lines
 
 START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+)\b.*---\s*$")
 END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---\s*$")
@@ -46,13 +49,33 @@ HARMLESS_CALLS = frozenset({"str", "repr", "format", "len", "round", "abs", "int
 PRINT_KEYWORDS = frozenset({"sep", "end", "flush"})   # not file=: printing goes to the output, nowhere else
 
 
+def reaching_fields(template):
+    """The replacement fields of a str.format template that read an attribute or an item: ["0.gi_frame", "0[k]"].
+
+    Such a field reads attributes named in a string, where no rule on the syntax tree sees them.
+    A template str.format would reject is [] (it reads nothing).
+    """
+    try:
+        parsed = list(string.Formatter().parse(template))
+    except ValueError:
+        return []
+    found = []
+    for _, name, spec, _ in parsed:
+        if name and ("." in name or "[" in name):
+            found.append(name)
+        if spec:
+            found += reaching_fields(spec)     # a nested field: "{0:{1.x}}"
+    return found
+
+
 def _harmless_call(call):
-    """str(), repr(), format(), len(), round(), abs(), int(), float(), type(), or "...".format(...)."""
+    """str(), repr(), format(), len(), round(), abs(), int(), float(), type(), or "...".format(...) whose
+    fields read no attribute or item."""
     func = call.func
     if isinstance(func, ast.Name):
         return func.id in HARMLESS_CALLS
     return isinstance(func, ast.Attribute) and func.attr == "format" and isinstance(func.value, ast.Constant) \
-        and isinstance(func.value.value, str)
+        and isinstance(func.value.value, str) and not reaching_fields(func.value.value)
 
 
 def is_debug_print(node):
@@ -74,7 +97,10 @@ def is_debug_print(node):
 
 
 def step_regions(lines):
-    """{step: (start line index, end line index, indent)} of the marked regions (0-based marker lines)."""
+    """{step: (start line index, end line index, indent)} of the marked regions (0-based marker lines).
+
+    `lines`: the file's lines as Python counts them (checker/source.py lines()), never str.splitlines().
+    """
     regions, open_step = {}, None
     for index, line in enumerate(lines):
         start, end = START.match(line), END.match(line)
@@ -105,7 +131,7 @@ def blank_steps(source):
     Line numbers outside the regions shift; returns (text, line map) where the
     map takes a line of the new text (1-based) to the line of `source`.
     """
-    lines = source.splitlines()
+    lines = split_lines(source)
     regions = step_regions(lines)
     out, origin = [], []
     skip_until = -1
@@ -256,7 +282,7 @@ def compare(submission, starter, submission_name="the file", starter_name="the h
     mine.body = kept
     if _dump(mine) == _dump(theirs):
         return Comparison(True, [], added)
-    sub_lines, start_lines = submission.splitlines(), starter.splitlines()
+    sub_lines, start_lines = split_lines(submission), split_lines(starter)
     differences = []
     _diff(mine.body, theirs.body, differences)
     problems, warnings = [], []
