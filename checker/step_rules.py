@@ -475,10 +475,10 @@ def scan_lab(source, lab_module, path=None):
     path: the submission's own path (the modules beside it are flagged when imported), None when unknown.
     """
     starter = None
-    path = getattr(lab_module, "STARTER", None)
-    if path:
+    starter_path = getattr(lab_module, "STARTER", None)
+    if starter_path:
         try:
-            starter = read_source(path)
+            starter = read_source(starter_path)
         except (OSError, SourceError):
             starter = None
     advice = getattr(lab_module, "STEP_ADVICE", {})
