@@ -118,6 +118,30 @@ def test_a_file_that_does_not_parse_passes_the_guard():
     assert source.check("def (:\n") is None
 
 
+def test_the_child_compiles_the_text_the_grader_read(tmp_path, monkeypatch):
+    """checker/child.py load_lab: a BOM and \r line ends read as the grader reads them; another coding never runs."""
+    from checker import child
+    monkeypatch.setitem(sys.modules, child.MODULE_NAME, None)   # load_lab's module is gone after the test
+    path = tmp_path / "lab.py"
+    path.write_bytes(b"\xef\xbb\xbfa = 1\rb = '\x0c'\r\nc = 3  # \xe2\x80\xa8 \x1c\n")
+    module = child.load_lab(str(path), str(tmp_path / "copy.py"))
+    assert (module.a, module.b, module.c) == (1, "\x0c", 3)
+    path.write_bytes(b"# -*- coding: unicode_escape -*-\n# \\nran = True\n")
+    with pytest.raises(source.SourceError, match="unicode_escape"):
+        child.load_lab(str(path), str(tmp_path / "copy.py"))
+
+
+def test_the_grader_refuses_another_coding_before_anything_runs(tmp_path):
+    """Grader.grade (the path every output takes, also without the command line's entries) refuses the file."""
+    from checker.grade import Grader
+    path = tmp_path / "tumbling_crates.py"
+    path.write_bytes(b"# -*- coding: unicode_escape -*-\n" + read("solutions/tumbling_crates.py").encode())
+    report = Grader().grade(str(path), lab("tumbling_crates"))
+    assert report.status == "error" and report.score == 0
+    assert report.results[0].message == ("tumbling_crates.py declares `# coding: unicode_escape`; save it as UTF-8 "
+                                         "and remove the line.")
+
+
 # ---------------------------------------------------------------- the checker's modules read the same lines
 
 def shifted(text, before, count=100):
