@@ -68,9 +68,16 @@ FREE_MODULES = frozenset({"math", "cmath", "itertools", "functools", "operator",
 BY_NAME = frozenset({"attrgetter", "methodcaller", "update_wrapper", "wraps"})   # getattr/setattr by a string
 # modules a file may not import outside the steps either: they reach the checker, the library's answers,
 # the interpreter's own machinery, files or other processes
-CLOSED_MODULES = frozenset({"checker", "lesson11", "solutions", "starters", "sys", "importlib", "inspect", "gc", "ctypes", "builtins",
-                            "types", "json", "pickle", "marshal", "os", "subprocess", "io", "runpy", "threading",
-                            "signal", "shutil", "pathlib", "socket", "traceback", "faulthandler", "atexit"})
+# (and the lab's own module by its name in the child, and modules that import, run or read by a string or a path)
+CLOSED_MODULES = frozenset({"checker", "lesson11", "solutions", "starters", "lab_under_test", "sys", "importlib",
+                            "inspect", "gc", "ctypes", "builtins", "types", "json", "pickle", "marshal", "os",
+                            "subprocess", "io", "runpy", "threading", "signal", "shutil", "pathlib", "socket",
+                            "traceback", "faulthandler", "atexit", "pkgutil", "pydoc", "imp", "_imp", "zipimport",
+                            "code", "codeop", "timeit", "cProfile", "profile", "pdb", "bdb", "trace", "doctest",
+                            "unittest", "multiprocessing", "concurrent", "asyncio", "_thread", "linecache",
+                            "tokenize", "codecs", "tempfile", "glob", "fileinput", "zipfile", "tarfile", "mmap",
+                            "shelve", "dbm", "sqlite3", "copyreg", "platform", "pty", "site", "sysconfig", "posix",
+                            "nt", "posixpath", "ntpath"})
 FREE_ATTRIBUTES = {"pygame": frozenset({"Vector2", "math"})}   # and these attributes of these
 
 

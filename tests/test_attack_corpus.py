@@ -63,7 +63,7 @@ def test_each_entry_gets_its_verdict(entry, graded):
 
 def test_without_the_step_rules_the_replay_still_fails_tables_and_forgery(tmp_path, monkeypatch, capsys):
     from checker import cli, step_rules
-    monkeypatch.setattr(step_rules, "scan_lab", lambda source, module: [])
+    monkeypatch.setattr(step_rules, "scan_lab", lambda source, module, path=None: [])
     chosen = [e for e in corpus.ENTRIES if e.kind in ("table", "forge")]
     write(chosen, tmp_path)
     monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")

@@ -100,10 +100,6 @@ def test_every_table_holds_the_fixed_inputs_of_its_probe(lab):
 
 # Known holes, open (strict: the test fails once one is closed, so its mark must go):
 KNOWN_HOLES = {
-    "tc_side_module_free_name": "a module placed beside the submission is importable in the child (the lab's folder "
-                                "is on its path) and binds a name the step reads; the packages copy only the lab file",
-    "tc_side_module_solution": "the same side module execs the solution into the lab's globals",
-    "sc_side_module_library": "the same side module puts World's library rules into the lab's globals",
     "tc_early_return_friction": "resolve_friction skips a contact where no impulse was recorded, so a resolve() that "
                                 "returns before step 4 passes it vacuously",
 }

@@ -316,8 +316,11 @@ def test_a_star_import_anywhere_fails_every_step_naming_its_line(added):
 
 @pytest.mark.parametrize("added", ["import solutions.tumbling_crates as answers\n",
                                    "from solutions import tumbling_crates\n",
-                                   "from starters.tumbling_crates_starter import main as handout_main\n"])
-def test_solutions_and_starters_are_closed_modules(added):
+                                   "from starters.tumbling_crates_starter import main as handout_main\n",
+                                   "from pkgutil import resolve_name\n",          # imports by a string
+                                   "import lab_under_test\n",                      # the lab's own module in the child
+                                   "import timeit\n"])                             # runs code from a string
+def test_solutions_starters_and_import_by_string_are_closed_modules(added):
     lab = lab_by_id("tumbling_crates")
     found = step_rules.scan_lab(added + read("solutions/tumbling_crates.py"), lab.module)
     assert {(b.step, b.line, b.rule) for b in found} == {(step, 1, "outside") for step in (2, 3, 4, 5, 6)}
