@@ -33,7 +33,11 @@ MAX_PROBLEMS = 4
 
 
 class MarkerError(ValueError):
-    """The step markers are missing, repeated or out of order."""
+    """The step markers are missing, repeated or out of order; `line`: the 1-based line where it shows, if known."""
+
+    def __init__(self, message, line=None):
+        super().__init__(message)
+        self.line = line
 
 
 @dataclass
@@ -108,20 +112,21 @@ def step_regions(lines):
             step = int(start.group("step"))
             if open_step is not None:
                 raise MarkerError(f"step {open_step}'s region has no `# --- end of step {open_step} ---` line "
-                                  f"before step {step} starts (line {index + 1})")
+                                  f"before step {step} starts (line {index + 1})", index + 1)
             if step in regions:
-                raise MarkerError(f"the `# --- step {step}` marker appears twice (line {index + 1})")
+                raise MarkerError(f"the `# --- step {step}` marker appears twice (line {index + 1})", index + 1)
             open_step = step
             regions[step] = [index, None, start.group("indent")]
         elif end:
             step = int(end.group("step"))
             if open_step != step:
                 raise MarkerError(f"line {index + 1} ends step {step}, but step {step} was not started "
-                                  "just before it")
+                                  "just before it", index + 1)
             regions[step][1] = index
             open_step = None
     if open_step is not None:
-        raise MarkerError(f"step {open_step}'s region has no `# --- end of step {open_step} ---` line")
+        raise MarkerError(f"step {open_step}'s region has no `# --- end of step {open_step} ---` line",
+                          regions[open_step][0] + 1)
     return {step: tuple(region) for step, region in regions.items()}
 
 

@@ -267,16 +267,23 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
     file's own import (rule "import" when a step uses it).
     allowed: {step: attribute names the step may use although they are in library[step]}.
     folder: the submission's folder; an import of a module that lies in it is flagged under every step.
-    [] when the file does not parse or its markers are broken (other checks say so).
+    [] when the file does not parse (other checks say so); when its markers are broken or a step's are
+    missing, a breach under every step they leave unmarked (the rules cannot find that step's code).
     """
     library, allowed = library or {}, allowed or {}
     try:
-        regions = step_regions(split_lines(source))
         tree = ast.parse(source)
         origins = _name_origins(tree)
-    except (MarkerError, SyntaxError, ValueError, RecursionError, MemoryError):
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
         return []
     lines = split_lines(source)
+    try:
+        regions = step_regions(lines)
+    except MarkerError as exc:
+        return _unmarked(starter, lines, {}, exc.line or 0, f"breaks the step markers ({exc})")
+    unmarked = _unmarked(starter, lines, regions, 0, "")
+    if unmarked:
+        return unmarked
     spans = [(step, start + 1, end + 1) for step, (start, end, _) in regions.items()]
 
     def step_of(line):
@@ -382,6 +389,19 @@ def _beside(folder):
     return names
 
 
+def _unmarked(starter, lines, regions, line, what):
+    """A Breach (rule "outside") under each of the handout's steps that `regions` lacks: code the rules cannot
+    find cannot be graded as the step. [] without a starter (no steps known) or when every step is marked."""
+    try:
+        wanted = sorted(step_regions(split_lines(starter))) if starter else []
+    except MarkerError:
+        return []
+    text = lines[line - 1].strip() if 0 < line <= len(lines) else ""
+    return [Breach(step, line, "outside", what or f"the file has no markers for step {step} (keep `# --- step "
+                                                  f"{step}: ... ---` and `# --- end of step {step} ---` from the "
+                                                  "handout)", text) for step in wanted if step not in regions]
+
+
 def _outside(tree, lines, spans, starter, found, step_of, folder=None):
     """Flag edits outside the steps that can replace a step function (see the module docstring)."""
     steps_of = {}   # step function name -> its steps
@@ -470,9 +490,11 @@ def _outside(tree, lines, spans, starter, found, step_of, folder=None):
 def describe(breach, advice=""):
     """The one-line message a step's check shows: "line 57 (step 2) calls the library's sat(): write ... yourself"."""
     tail = advice or f"write step {breach.step} with the lesson's own tools (the handout's names, math, your functions)"
-    if breach.rule == "outside":
-        return (f"line {breach.line} {breach.what} (`{breach.text}`): step {breach.step} is graded only as you "
-                "write it inside its markers; keep the handout's code around the steps as it was.")
+    if breach.rule == "outside":   # line 0: no line to name (a step's markers are missing)
+        where = (f"line {breach.line} " if breach.line else "") + breach.what + \
+            (f" (`{breach.text}`)" if breach.text else "")
+        return (f"{where}: step {breach.step} is graded only as you write it inside its markers; keep the "
+                "handout's code around the steps as it was.")
     return f"line {breach.line} (step {breach.step}) {breach.what} (`{breach.text}`): {tail}."
 
 

@@ -418,3 +418,20 @@ def test_a_debug_print_outside_the_steps_may_not_format_an_attribute():
     assert not handout.is_debug_print(ast.parse("print('{0.gi_frame}'.format(g))").body[0])
     assert handout.reaching_fields("{0.x} {1[k]} {{0.y}} {:>{w.z}}") == ["0.x", "1[k]", "w.z"]
     assert handout.reaching_fields("{") == []
+
+
+def test_broken_or_missing_markers_leave_no_step_unchecked():
+    """A stray end marker (all regions unknown) or a step's markers removed: the code the rules cannot find as the
+    step fails that step, naming the markers (the library call below would pass its check otherwise)."""
+    lab = lab_by_id("tumbling_crates")
+    delegating, first = in_step(read("solutions/tumbling_crates.py"), 2, "return World().sat(pa, pb)")
+    stray = delegating.replace("def main():", "# --- end of step 2 ---\ndef main():")
+    line = stray.splitlines().index("# --- end of step 2 ---") + 1
+    found = step_rules.scan_lab(stray, lab.module)
+    assert {(b.step, b.line) for b in found} == {(step, line) for step in (2, 3, 4, 5, 6)}
+    assert found[0].message.startswith(f"line {line} breaks the step markers (line {line} ends step 2")
+    lines = delegating.splitlines(keepends=True)
+    unmarked = "".join(text for text in lines if "step 2:" not in text and "end of step 2 " not in text)
+    found = step_rules.scan_lab(unmarked, lab.module)
+    assert [(b.step, b.rule) for b in found] == [(2, "outside")]
+    assert found[0].message.startswith("the file has no markers for step 2 (keep `# --- step 2: ... ---`")
