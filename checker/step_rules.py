@@ -53,6 +53,7 @@ import importlib
 import importlib.machinery
 import inspect
 import os
+import re
 from dataclasses import dataclass
 
 from .handout import MarkerError, reaching_fields, step_regions
@@ -483,6 +484,13 @@ def _outside(tree, lines, spans, starter, found, step_of, folder=None):
         elif isinstance(node, ast.MatchClass) and any(_is_dunder(attr) or attr in FRAME_ATTRIBUTES
                                                       or attr == "modules" for attr in node.kwd_attrs):
             what = "reads an attribute through a match pattern outside the steps"
+        elif isinstance(node, ast.Attribute) and node.attr in ("format", "format_map") and _format_breach(node) \
+                and not _format_breach(node).startswith("formats the field"):
+            what = f"calls .{node.attr} on a template that is not written out, outside the steps"
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str) and any(
+                _is_dunder(name) or name in FRAME_ATTRIBUTES or name == "modules"
+                for field in reaching_fields(node.value) for name in re.findall(r"\.(\w+)", field)):
+            what = "formats a field that reads a frame, dunder or module attribute outside the steps"
         if what:
             flag_all(node, every, what + " (code that can replace your functions)")
 

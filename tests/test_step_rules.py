@@ -435,3 +435,15 @@ def test_broken_or_missing_markers_leave_no_step_unchecked():
     found = step_rules.scan_lab(unmarked, lab.module)
     assert [(b.step, b.rule) for b in found] == [(2, "outside")]
     assert found[0].message.startswith("the file has no markers for step 2 (keep `# --- step 2: ... ---`")
+
+
+@pytest.mark.parametrize("added, flagged", [
+    ("spy = '{0.gi_frame.f_back.f_locals}'.format\n", True),     # a frame read through a format field
+    ("spy = '{0.__globals__}'\n", True),
+    ("template = 'x'\nshow = template.format\n", True),            # a template built at run time
+    ("label = '{0.x} {1[2]}'.format\n", False),                     # fields, but nothing that reaches further
+])
+def test_a_format_string_outside_the_steps_that_reaches_a_frame_fails_every_step(added, flagged):
+    lab = lab_by_id("tumbling_crates")
+    found = step_rules.scan_lab(read("solutions/tumbling_crates.py") + "\n" + added, lab.module)
+    assert ({b.step for b in found} == {2, 3, 4, 5, 6}) == flagged and (found == []) != flagged
