@@ -53,7 +53,8 @@ def handout_unchanged(sub, starter_path, hint):
     try:
         starter = source.read(starter_path)
     except (OSError, source.SourceError) as exc:
-        raise Error(f"the checker cannot read the handout {starter_path} ({getattr(exc, 'strerror', None) or exc}) to compare with; "
+        reason = getattr(exc, "strerror", None) or exc
+        raise Error(f"the checker cannot read the handout {starter_path} ({reason}) to compare with; "
                     "reinstall the lab bundle.")
     try:
         comparison = handout.compare(sub.source, starter, sub.name, "the handout")

@@ -206,7 +206,8 @@ def files():
     def before_guard(text, line):
         return text.replace(guard, line + "\n\n" + guard)
 
-    honest_cmath = in_step(shapes, 2, "corners = [radius * cmath.exp(2j * cmath.pi * k / sides) for k in range(sides)]\n"
+    honest_cmath = in_step(shapes, 2, "corners = [radius * cmath.exp(2j * cmath.pi * k / sides)\n"
+                                      "           for k in range(sides)]\n"
                                       "return [Vector2(z.real, z.imag) for z in corners]")
     honest_cmath = honest_cmath.replace("import math\n", "import cmath\nimport math\n", 1)
     honest_itertools = in_step(in_step(shapes, 3, "import itertools\ntotal = Vector2()\n"
@@ -231,8 +232,8 @@ def files():
                         {"crate_utils.py": SIDE_MODULE}),
         "format_frame": ("tumbling_crates", in_step(crates, 6, "a.omega -= cross(ra, impulse) * a.inv_inertia\n"
                                                                "b.omega += cross(rb, impulse) * b.inv_inertia\n"
-                                                               "where = '{0.gi_frame.f_lineno}'.format((lambda: (yield))())"),
-                         {}),
+                                                               "where = '{0.gi_frame.f_lineno}'.format(\n"
+                                                               "    (lambda: (yield))())"), {}),
         "stray_marker": ("tumbling_crates", in_step(crates, 2, "return World().sat(pa, pb)").replace(
             "def main():", "# --- end of step 2 ---\ndef main():"), {}),
         "no_step_2": ("tumbling_crates", no_step_2, {}),
