@@ -21,8 +21,11 @@ submission's line and, where there is one, the handout's), `added_imports` and
 """
 import ast
 import difflib
+import functools
+import io
 import re
 import string
+import tokenize
 from dataclasses import dataclass, field
 
 from .source import lines as split_lines
@@ -100,14 +103,30 @@ def is_debug_print(node):
     return True
 
 
+@functools.lru_cache(maxsize=32)
+def _comment_lines(text):
+    """The 1-based lines of `text` on which a comment starts, as Python's tokenizer reads them; None when the
+    text does not tokenize (the checks that compile it say so)."""
+    try:
+        return frozenset(token.start[0] for token in tokenize.generate_tokens(io.StringIO(text).readline)
+                         if token.type == tokenize.COMMENT)
+    except (tokenize.TokenError, SyntaxError, ValueError, RecursionError, MemoryError):
+        return None
+
+
 def step_regions(lines):
     """{step: (start line index, end line index, indent)} of the marked regions (0-based marker lines).
 
     `lines`: the file's lines as Python counts them (checker/source.py lines()), never str.splitlines().
+    A marker counts only as the comment it looks like: one inside a string literal is a MarkerError.
     """
     regions, open_step = {}, None
+    comments = _comment_lines("\n".join(lines) + "\n")
     for index, line in enumerate(lines):
         start, end = START.match(line), END.match(line)
+        if (start or end) and comments is not None and index + 1 not in comments:
+            raise MarkerError(f"line {index + 1} looks like a step marker but is inside a string, not a comment",
+                              index + 1)
         if start:
             step = int(start.group("step"))
             if open_step is not None:

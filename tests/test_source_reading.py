@@ -236,6 +236,9 @@ def files():
                                                                "    (lambda: (yield))())"), {}),
         "stray_marker": ("tumbling_crates", in_step(crates, 2, "return World().sat(pa, pb)").replace(
             "def main():", "# --- end of step 2 ---\ndef main():"), {}),
+        "marker_in_string": ("tumbling_crates", in_step(crates, 2, 's = """\n    # --- end of step 2 ---\n"""\n'
+                                                               'return World().sat(pa, pb)').replace(
+            "    # --- end of step 2 ---\n    # --- step 3", "    # --- step 3"), {}),
         "no_step_2": ("tumbling_crates", no_step_2, {}),
         "no_step_6": ("tumbling_crates", no_step_6, {}),
         # honest files: full marks
@@ -249,7 +252,7 @@ def files():
 
 ATTACKS = {"linebreaks": "no_step_2", "unicode_escape": "no_step_2", "star_solutions": "no_step_6",
            "star_library": "no_step_2", "side_module": "no_step_6", "format_frame": "no_step_6",
-           "stray_marker": "no_step_2"}
+           "stray_marker": "no_step_2", "marker_in_string": "no_step_2"}
 HONEST = ("crlf", "bom", "formfeed", "cmath", "itertools")
 
 
@@ -298,6 +301,7 @@ def test_the_unicode_escape_file_is_refused_with_one_clear_line(graded):
     ("side_module", "apply_impulse_spin", "imports crate_utils from the submission's own folder"),
     ("format_frame", "apply_impulse_spin", "formats the field {0.gi_frame.f_lineno}"),
     ("stray_marker", "sat_axes", "breaks the step markers"),
+    ("marker_in_string", "sat_axes", "looks like a step marker but is inside a string"),
 ])
 def test_each_attack_fails_its_step_naming_the_line(attack, check, words, graded):
     checks = {c["id"]: c for c in graded[attack]["criteria"]}

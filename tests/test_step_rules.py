@@ -447,3 +447,18 @@ def test_a_format_string_outside_the_steps_that_reaches_a_frame_fails_every_step
     lab = lab_by_id("tumbling_crates")
     found = step_rules.scan_lab(read("solutions/tumbling_crates.py") + "\n" + added, lab.module)
     assert ({b.step for b in found} == {2, 3, 4, 5, 6}) == flagged and (found == []) != flagged
+
+
+def test_a_marker_inside_a_string_is_no_marker():
+    """An end marker inside a string literal (the real one removed) would end the region before the step's code:
+    the markers are read as the comments they must be, so every step fails naming the line."""
+    lab = lab_by_id("tumbling_crates")
+    source, first = in_step(read("solutions/tumbling_crates.py"), 2,
+                            's = """\n    # --- end of step 2 ---\n"""\nreturn World().sat(pa, pb)')
+    real = source.rindex("    # --- end of step 2 ---\n")
+    source = source[:real] + source[real + len("    # --- end of step 2 ---\n"):]
+    found = step_rules.scan_lab(source, lab.module)
+    assert {(b.step, b.line) for b in found} == {(step, first + 1) for step in (2, 3, 4, 5, 6)}
+    assert "looks like a step marker but is inside a string" in found[0].message
+    with pytest.raises(handout.MarkerError, match="inside a string"):
+        handout.compare(source, read("starters/tumbling_crates_starter.py"))
