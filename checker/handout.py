@@ -121,7 +121,7 @@ def step_regions(lines):
     A marker counts only as the comment it looks like: one inside a string literal is a MarkerError.
     """
     regions, open_step = {}, None
-    comments = _comment_lines("\n".join(lines) + "\n")
+    comments = _comment_lines("".join(line.rstrip("\r\n") + "\n" for line in lines))   # lines may keep their ends
     for index, line in enumerate(lines):
         start, end = START.match(line), END.match(line)
         if (start or end) and comments is not None and index + 1 not in comments:

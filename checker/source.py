@@ -31,11 +31,16 @@ def decode(raw, name="the file"):
     """The text Python compiles from the bytes `raw`; SourceError unless it is UTF-8 (with or without a BOM)."""
     try:
         encoding, _ = tokenize.detect_encoding(io.BytesIO(raw).readline)
-    except SyntaxError as exc:       # an unknown coding, or a BOM with another coding declared
-        raise SourceError(f"{name}: {exc.msg}; save it as UTF-8 and remove any "
-                          "`# coding:` line") from None
+    except SyntaxError as exc:       # bytes that are not UTF-8, an unknown coding, a BOM with another coding
+        _utf8(raw, name)             # the bytes, when that is the trouble
+        raise SourceError(f"{name}: {exc.msg}; save it as UTF-8 and remove any `# coding:` line") from None
     if codecs.lookup(encoding).name not in UTF8:
         raise SourceError(f"{name} declares `# coding: {encoding}`; save it as UTF-8 and remove the line")
+    return _utf8(raw, name, encoding)
+
+
+def _utf8(raw, name, encoding="utf-8"):
+    """raw decoded as `encoding` (utf-8 or utf-8-sig); SourceError naming the first byte that is not UTF-8."""
     try:
         return raw.decode(encoding)
     except UnicodeDecodeError as bad:

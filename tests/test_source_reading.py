@@ -97,6 +97,7 @@ def test_utf8_in_every_spelling_is_read_as_python_reads_it(raw):
     (b"# coding: utf-16\nx = 1\n", "declares `# coding: utf-16`"),
     (b"# coding: no-such-coding\nx = 1\n", "lab.py: unknown encoding"),
     (b"x = 1\n# caf\xe9\n", "lab.py is not UTF-8 text: byte 0xe9 on line 2 cannot be read"),
+    (b"# caf\xe9\nx = 1\n", "lab.py is not UTF-8 text: byte 0xe9 on line 1 cannot be read"),   # detect_encoding's
     (b"\xef\xbb\xbf# coding: latin-1\nx = 1\n", "lab.py: encoding problem"),
 ])
 def test_any_other_coding_or_bytes_are_refused_in_one_line(raw, words):
