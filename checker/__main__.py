@@ -2,7 +2,11 @@
 import os
 import sys
 
+from lesson11.console import safe_output
+
 from . import sandbox
+
+safe_output()  # reports use θ, ×, ², ≤: a console that is not UTF-8 gets stand-ins, never a UnicodeEncodeError
 
 if any(not arg.startswith("-") and os.path.exists(arg) for arg in sys.argv[1:]) and sys.argv[1:2] != ["package"]:
     sandbox.start_zygote()  # there is something to grade: warm the children's zygote while the labs import

@@ -6,10 +6,15 @@ TASK is "probe" (import the lab and test its own functions on the lesson's
 cases) or "scenario" (configure the lab runtime with SETTINGS_JSON and run the
 lab's main()). The child writes what happened, one JSON line per phase, to file
 descriptor N, the write end of a pipe the parent (the grader) opened and reads;
-the parent decides. The lab sees sys.argv as [its own path], as when run itself. The lab is compiled from its source under its own
-file name (so tracebacks name the student's file and line) and imported under
-the module name "lab_under_test", so its `if __name__ == "__main__":` guard does
-not run main(). No bytecode is written next to the submitted file.
+the parent decides. The child runs a copy of the file that sandbox.run_child put
+alone in the child's working folder (copy_name()): the lab's `__file__` and
+sys.argv name the copy, and only the project and Python's own folders are on
+sys.path, so nothing beside the submission can be imported. The lab is compiled
+from the copy's source under the submitted file's name (so tracebacks name the
+student's file and line) and imported under the module name "lab_under_test",
+so its `if __name__ == "__main__":` guard does not run main(). No bytecode is
+written anywhere. What the child calls after the lab's code ran (json.dumps, the
+pipe's write, describe(), ...) is bound before the lab loads.
 
 The parent sets the resource limits and the wall-clock timeout; this file only
 arms faulthandler (on SIGXCPU, the CPU-time limit, and shortly before the
@@ -80,18 +85,22 @@ def _blocked_os_exit(code=0):
     raise LabExit(code)
 
 
-def where(exc, lab_path):
-    """(line, source text) of the innermost traceback frame inside the lab file, or (None, None)."""
+def where(exc, lab_path, _extract_tb=traceback.extract_tb):
+    """(line, source text) of the innermost traceback frame inside the lab file, or (None, None).
+
+    (traceback's functions are bound as defaults when this module loads, before any lab: a lab that
+    replaces traceback.extract_tb does not change what the child reports.)
+    """
     if isinstance(exc, SyntaxError) and exc.filename == lab_path:
         return exc.lineno, (exc.text or "").strip()
     found = (None, None)
-    for frame in traceback.extract_tb(exc.__traceback__):
+    for frame in _extract_tb(exc.__traceback__):
         if frame.filename == lab_path:
             found = (frame.lineno, (frame.line or "").strip())
     return found
 
 
-def describe(exc, lab_path):
+def describe(exc, lab_path, _format_exception=traceback.format_exception):
     """A JSON-ready account of an exception raised by lab code."""
     line, text = where(exc, lab_path)
     if isinstance(exc, LabExit):
@@ -106,7 +115,7 @@ def describe(exc, lab_path):
         kind, message = "syntax", f"SyntaxError: {exc.msg}"
     else:
         kind, message = "exception", f"{type(exc).__name__}: {exc}"
-    tail = traceback.format_exception(type(exc), exc, exc.__traceback__)
+    tail = _format_exception(type(exc), exc, exc.__traceback__)
     return {"kind": kind, "message": message, "line": line, "text": text,
             "traceback": "".join(tail)[-4000:]}
 
@@ -115,9 +124,10 @@ def load_lab(lab_path, copy_path):
     """Compile and run the lab's source as module MODULE_NAME; returns the module.
 
     It compiles the text the grader read and numbered (checker/source.py), never the bytes under a coding
-    of the file's choosing, so the lines the grader's rules read are the lines that run.
+    of the file's choosing, so the lines the grader's rules read are the lines that run. It reads the copy
+    in the work folder (the child may not read the original); the grader checks the original is unchanged.
     """
-    code = compile(read_source(lab_path), lab_path, "exec", dont_inherit=True)
+    code = compile(read_source(copy_path), lab_path, "exec", dont_inherit=True)
     module = types.ModuleType(MODULE_NAME)
     module.__file__ = copy_path  # the lab sees a copy, never the submitted file
     sys.modules[MODULE_NAME] = module
@@ -197,10 +207,35 @@ def run_scenario(module, settings):
         runtime.write_record()
 
 
+RESERVED = ("settings.json", "record.json", "timeout_traceback.txt")   # the checker's own files in the work folder
+
+
+def copy_name(lab_path):
+    """The name of the lab's copy in the child's work folder: the file's own name, unless the checker uses it."""
+    name = os.path.basename(lab_path)
+    return name if name not in RESERVED and not name.startswith(".") else "lab_" + name.lstrip(".")
+
+
+def _only_the_project_on_path():
+    """Take the working folder off sys.path (`python -m` puts it first): the lab's copy there is no module."""
+    here = os.getcwd()
+    sys.path[:] = [p for p in sys.path if p and os.path.abspath(p) != here]
+
+
+def _keep_lines(lab_path, copy_path):
+    """Serve the lab's source lines under its own name from the copy, so a traceback shows them even where
+    the child's user cannot read the submitted file (linecache reads the copy as it would the file)."""
+    import linecache
+    lines = linecache.getlines(copy_path)
+    linecache.cache[lab_path] = (sum(map(len, lines)), None, lines, lab_path)   # no mtime: never re-read
+
+
 def main(argv):
     lab_path, task, settings_path, channel = argv
     result_pipe = os.fdopen(int(channel.split(":", 1)[1]), "w", encoding="utf-8")
-    sys.argv[:] = [lab_path]
+    copy_path = os.path.abspath(copy_name(lab_path))   # the copy sandbox.run_child put in the working folder
+    sys.argv[:] = [copy_path]
+    _only_the_project_on_path()
     faulthandler.enable()
     budget = float(os.environ.get("CHECKER_FAULT_SECONDS", "0") or 0)
     trace = open("timeout_traceback.txt", "w")
@@ -217,12 +252,17 @@ def main(argv):
         counter = [0]
         sys.stdout = LimitedStream(sys.stdout, counter, output_limit)
         sys.stderr = LimitedStream(sys.stderr, counter, output_limit)
-    copy_path = os.path.abspath(os.path.basename(lab_path))
+    _keep_lines(lab_path, copy_path)
     result = {"task": task, "phase": "import"}
+    # what the child calls once the lab's code has run, taken now, before it runs: a lab that replaces
+    # json.dumps, the pipe's write or a function of this module does not change the report
+    dumps, write, flush, account = json.dumps, result_pipe.write, result_pipe.flush, describe
+    probe_all, scenario, cancel = run_probe, run_scenario, faulthandler.cancel_dump_traceback_later
+    stdout, stderr, real_exit = sys.__stdout__, sys.__stderr__, _real_exit
 
     def save():
-        result_pipe.write(json.dumps(result) + "\n")
-        result_pipe.flush()
+        write(dumps(result) + "\n")
+        flush()
 
     save()
     try:
@@ -230,24 +270,23 @@ def main(argv):
         result["phase"] = "run"
         save()
         if task == "probe":
-            result["probe"] = run_probe(module, lab_path, probes, PROBE_SECONDS, settings)
+            result["probe"] = probe_all(module, lab_path, probes, PROBE_SECONDS, settings)
         else:
             missing = [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]
             if missing:
                 raise AttributeError(f"the lab defines no {missing[0]}()")
-            run_scenario(module, settings)
+            scenario(module, settings)
         result["phase"] = "done"
     except BaseException as exc:  # anything the lab raises, SystemExit included, becomes a result
-        result["error"] = describe(exc, lab_path)
-    faulthandler.cancel_dump_traceback_later()
-    sys.stdout = sys.__stdout__
-    sys.stderr = sys.__stderr__
+        result["error"] = account(exc, lab_path)
+    cancel()
+    sys.stdout, sys.stderr = stdout, stderr
     save()
     # leave without running the lab's atexit handlers twice or waiting on its threads
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os.__dict__["_exit"] = _real_exit
-    _real_exit(0)
+    stdout.flush()
+    stderr.flush()
+    os.__dict__["_exit"] = real_exit
+    real_exit(0)
 
 
 _real_exit = os._exit

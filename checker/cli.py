@@ -3,8 +3,9 @@
 Exit status: 0 every entry was graded and passes every check; 1 an entry
 fails a check or could not be graded (or an output could not be written);
 2 the command line is wrong (a bad option or value, a path that does not
-exist, a folder with nothing to grade, an output path that is refused):
-then nothing is graded and nothing is written.
+exist, a folder with nothing to grade, an output path that is refused), or,
+without the zygote, the user the student's code would run as cannot run
+Python: then nothing is graded and nothing is written.
 """
 import argparse
 import json
@@ -13,7 +14,7 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
-from . import html_report, outputs, pictures, report
+from . import html_report, outputs, pictures, report, sandbox, users
 from .entries import discover, graded_folders
 from .grade import Grader
 from . import labs
@@ -70,8 +71,10 @@ def parse_args(argv):
                         help="draw the probes' per-run inputs with seed N (default: a fresh seed per file, shown in "
                              "--json as each file's \"seed\"; give it here to grade a file again with the same inputs)")
     parser.add_argument("--child-user", metavar="NAME", default=None,
-                        help="run the student's code (the child processes) as this user; the grader itself must "
-                             "run as root and keeps what only it may read, such as the solutions")
+                        help="when the grader runs as root, run the student's code (the child processes) as NAME "
+                             f"(default: {users.DEFAULT_CHILD_USER}; 'root' runs it as root); the grader stays root "
+                             "and keeps what only it may read, such as the solutions. A grader that is not root "
+                             "runs it as itself")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     parser.add_argument("--allow-edits", action="store_true",
                         help="code changed outside the steps is a warning, not a failure (the scenes still run)")
@@ -87,15 +90,9 @@ def parse_args(argv):
         parser.error(f"--memory must be >= 64 MB, got {args.memory}")
     if args.max_output < 1:
         parser.error(f"--max-output must be >= 1 KB, got {args.max_output}")
-    if args.child_user is not None:
-        try:
-            import pwd
-            pwd.getpwnam(args.child_user)
-        except (ImportError, KeyError):
-            parser.error(f"--child-user {args.child_user}: no such user on this machine")
-        if os.geteuid() != 0:
-            parser.error(f"--child-user {args.child_user}: only a grader running as root can run the student's code "
-                         "as another user")
+    args.child_user, problem = users.choose(args.child_user)   # root: an unprivileged user unless told otherwise
+    if problem:
+        parser.error(problem)
     if args.csv is not None and args.csv.lower() == "none":
         args.csv = None  # `--csv none` from older scripts: no CSV (which is now the default)
     for option in ("csv", "gradescope", "gradescope_dir", "pictures", "html"):
@@ -126,10 +123,11 @@ def grade_all(entries, grader, jobs, progress):
     todo = [i for i, row in enumerate(rows) if row is None]
     start = time.monotonic()
     done = 0
+    said = set()   # the checker's own one-line problems, each printed once
 
     def show(row):
         if progress:
-            print(f"[{done}/{len(rows)}] {os.path.relpath(row.path)}: {row.score:g}/{row.max_score:g} {row.status} "
+            print(f"[{done}/{len(rows)}] {outputs.relative(row.path)}: {row.score:g}/{row.max_score:g} {row.status} "
                   f"({time.monotonic() - start:.1f} s)", file=sys.stderr, flush=True)
 
     for row in rows:
@@ -144,6 +142,11 @@ def grade_all(entries, grader, jobs, progress):
                 entry = entries[index]
                 try:
                     rows[index] = future.result()
+                except users.ChildUserError as exc:  # the child's user cannot run Python: ours to fix, not the file's
+                    rows[index] = NotGraded(entry.path, entry.lab, str(exc))
+                    if str(exc) not in said:
+                        said.add(str(exc))
+                        print(f"checker: error: {exc}", file=sys.stderr, flush=True)
                 except OSError as exc:  # the file went away or became unreadable after it was found
                     rows[index] = NotGraded(entry.path, entry.lab, f"cannot read: {exc.strerror or exc}")
                 except Exception as exc:  # a bug of ours: this file gets an error row, the batch goes on
@@ -216,6 +219,10 @@ def main(argv=None):
             report.list_labs(labs.LABS, sys.stdout)
             return 0
         entries = plan(args)
+        problem = args.child_user and not sandbox.zygote_enabled() and \
+            users.python_problem(args.child_user, sandbox.PROJECT_ROOT)
+        if problem:   # without the zygote every child starts Python as that user: it must be able to
+            raise UsageError(problem)
     except UsageError as exc:
         for line in str(exc).splitlines():
             print(f"checker: error: {line}", file=sys.stderr)

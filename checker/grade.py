@@ -158,7 +158,7 @@ class Grader:
     def grade(self, path, lab):
         """Grade one file as `lab`; returns a LabReport. Never raises for anything the file does."""
         start = time.monotonic()
-        path = os.path.abspath(path)
+        given, path = path, os.path.abspath(path)   # the report names the file as the user typed it
         with open(path, "rb") as handle:
             raw = handle.read()
         digest = hashlib.sha256(raw).hexdigest()
@@ -167,14 +167,14 @@ class Grader:
             text = source.decode(raw, name)
             source.check(text, name)
         except source.SourceError as exc:
-            return LabReport(path, lab, skipped_all(lab.checks, f"{exc}."), time.monotonic() - start)
+            return LabReport(given, lab, skipped_all(lab.checks, f"{exc}."), time.monotonic() - start)
         sub = Submission(path=path, name=name, source=text, options=dict(self.options))
         sub.flags = step_rules.scan_lab(sub.source, lab.module, path)   # the steps' code, read before any of it runs
         sub.function_steps = probing.steps_by_function(lab)
         settings = probing.settings_for(lab, sub.source, self.seed)
         sub.probe = self.run(path, "probe", settings)
         if sub.probe is None:
-            return LabReport(path, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start,
+            return LabReport(given, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start,
                              seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
         if sub.probe.status == "done":   # the verdicts' data: the child's tapes replayed and judged here
             sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
@@ -209,7 +209,7 @@ class Grader:
                 if settings is not None else None
             if run is not None and getattr(run, "record", None) and run.record.get("records"):
                 records[name], preview = run.record, name
-        return LabReport(path, lab, results, time.monotonic() - start, records, preview, settings["seed"],
+        return LabReport(given, lab, results, time.monotonic() - start, records, preview, settings["seed"],
                          [asdict(b) for b in sub.flags])
 
     @staticmethod

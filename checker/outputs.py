@@ -10,7 +10,19 @@ for two outputs. An existing output file named by the user is replaced
 import os
 
 
-def _inside(path, folder):
+def relative(path, start=None):
+    """path relative to start (default: the current folder) when it lies below start, else path as given: a
+    path outside start (`/tmp/x.py`, `D:\\class\\x.py` on Windows, where relpath fails across drives) is shown
+    as the user typed it, not as ../../tmp/x.py."""
+    try:
+        shown = os.path.relpath(path, start)
+    except ValueError:
+        return path
+    return path if shown == os.path.pardir or shown.startswith(os.path.pardir + os.path.sep) else shown
+
+
+def inside(path, folder):
+    """Whether path lies in folder (both absolute); never on another drive."""
     try:
         return os.path.commonpath([path, folder]) == folder
     except ValueError:  # different drives
@@ -35,11 +47,11 @@ def check(outputs, paths, entries, graded_folders):
             problems.append(f"{where}: refusing to write to a .py file (it may be a submission); choose another name")
         elif real in inputs or os.path.abspath(path) in inputs:
             problems.append(f"{where}: that is one of the paths being graded; choose another place for the output")
-        elif any(_inside(real, folder) for folder in graded_folders):
-            folder = next(f for f in graded_folders if _inside(real, f))
-            problems.append(f"{where}: inside {os.path.relpath(folder)}, a folder being graded; "
+        elif any(inside(real, folder) for folder in graded_folders):
+            folder = next(f for f in graded_folders if inside(real, f))
+            problems.append(f"{where}: inside {relative(folder)}, a folder being graded; "
                             f"write it outside that folder")
-        elif kind == "folder" and any(_inside(i, real) for i in inputs):
+        elif kind == "folder" and any(inside(i, real) for i in inputs):
             problems.append(f"{where}: this folder holds files being graded; choose a folder outside them")
         elif real in used:
             problems.append(f"{where}: the same path as {used[real]}; give each output its own path")
@@ -70,8 +82,11 @@ def submission_names(paths):
     absolute = {p: os.path.abspath(p) for p in paths}
     if not absolute:
         return {}
-    base = os.path.commonpath([os.path.dirname(a) for a in absolute.values()])
-    full = {p: os.path.relpath(a, base) for p, a in absolute.items()}
+    try:
+        base = os.path.commonpath([os.path.dirname(a) for a in absolute.values()])
+    except ValueError:  # Windows: submissions on two drives have no common folder; name each by its whole path
+        base = None
+    full = {p: relative(a, base) if base else os.path.splitdrive(a)[1].lstrip("\\/") for p, a in absolute.items()}
     full = {p: (name if name != "." else os.path.basename(absolute[p])) for p, name in full.items()}
     short = {p: name[:-3] if name.lower().endswith(".py") else name for p, name in full.items()}
     counts = {}

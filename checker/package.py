@@ -24,6 +24,7 @@ import sys
 import zipfile
 
 from . import labs as lab_registry
+from .outputs import inside
 
 PROJECT_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates")
@@ -116,7 +117,7 @@ def check_out(out, kind, force):
     real = os.path.realpath(out)
     for top in ("starters", "solutions") + PROJECT_DIRS:
         folder = os.path.realpath(os.path.join(PROJECT_ROOT, top))
-        if os.path.commonpath([real, folder]) == folder:
+        if inside(real, folder):
             raise PackageError(f"--out {out}: inside {folder}, which the package copies; choose a path outside it")
     if out.lower().endswith(".py"):
         raise PackageError(f"--out {out}: refusing to write to a .py file (it may be a submission)")

@@ -38,7 +38,7 @@ import tempfile
 from dataclasses import dataclass
 
 from .checks import step_of
-from .outputs import submission_names
+from .outputs import relative, submission_names
 
 SYMBOL = {"pass": ":)", "fail": ":(", "skip": ":|", "error": ":("}
 
@@ -266,10 +266,9 @@ def write_atomic(path, text):
 
 
 def _rel(path, root):
-    try:
-        return os.path.relpath(path, root or os.getcwd())
-    except ValueError:
-        return path
+    """The path relative to root (default: the current folder) when below it, else as given: a path typed
+    relative is shown as typed (`starters\\x.py` on Windows, `starters/x.py` elsewhere)."""
+    return relative(path, root)
 
 
 def list_labs(labs, stream):

@@ -23,14 +23,18 @@ import math
 import os
 import atexit
 import selectors
+import shutil
 import signal
 import socket
+import stat
 import subprocess
 import sys
 import tempfile
 import threading
 import time
 from dataclasses import dataclass, field
+
+from . import users
 
 PROJECT_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
@@ -49,6 +53,7 @@ class Limits:
 
     user: None runs the child as the grader's own user; a user name (the grader must be root) runs
     only the child as that user, so files the grader keeps to itself (the solutions) stay unreadable.
+    The command line picks one for a root grader unless told otherwise (checker/users.py: nobody).
     """
     timeout: float = 20.0
     memory_mb: int = 768
@@ -328,13 +333,28 @@ def _kill_group(proc):
         pass
 
 
-def _read_json(path, limit):
+def _read_work_file(path, limit):
+    """At most `limit` bytes of a file the child left in its work folder, or None.
+
+    The child's user owns that folder, so the name may have become a link (to /dev/zero, to a file of
+    the grader's) or a FIFO (an open() that never returns): only a regular file is read, links not followed.
+    """
     try:
-        if os.path.getsize(path) > limit:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0))
+    except OSError:
+        return None
+    with os.fdopen(fd, "rb") as handle:
+        info = os.fstat(handle.fileno())
+        if not stat.S_ISREG(info.st_mode) or info.st_size > limit:
             return None
-        with open(path, encoding="utf-8") as handle:
-            return json.load(handle)
-    except (OSError, ValueError):
+        return handle.read(limit + 1)
+
+
+def _read_json(path, limit):
+    data = _read_work_file(path, limit)
+    try:
+        return None if data is None or len(data) > limit else json.loads(data.decode("utf-8"))
+    except (ValueError, RecursionError):
         return None
 
 
@@ -349,6 +369,35 @@ def _last_result(data):
     return {}
 
 
+def _copy_lab(lab_path, work):
+    """Copy the submitted file into the child's work folder under its own name (child.copy_name); never the original."""
+    from .child import copy_name
+    shutil.copyfile(lab_path, os.path.join(work, copy_name(lab_path)))
+
+
+def _check_user(result, limits, forked):
+    """Raise users.ChildUserError when the run failed only because its user could not read Python or a module.
+
+    A child started with subprocess that never reached its first result line failed before any lab code
+    ran (a forked one needs no file of Python's); one whose lab (or a probe's call of it) raised
+    ModuleNotFoundError for a module on the child's path that its user cannot read is not the student's
+    error either.
+    """
+    if not limits.user:
+        return
+    if not result and not forked:
+        problem = users.python_problem(limits.user, PROJECT_ROOT)
+        if problem:
+            raise users.ChildUserError(problem)
+    tapes = ((result.get("probe") or {}).get("tapes") or {}) if isinstance(result.get("probe"), dict) else {}
+    errors = [result.get("error")] + [t.get("error") for t in tapes.values() if isinstance(t, dict)]
+    path = [PROJECT_ROOT] + [p for p in sys.path if p and os.path.abspath(p) != os.getcwd()]
+    for error in errors:
+        problem = users.unreadable_import(error if isinstance(error, dict) else None, limits.user, path)
+        if problem:
+            raise users.ChildUserError(problem)
+
+
 def run_child(lab_path, task, settings, limits):
     """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour."""
     lab_path = os.path.abspath(lab_path)
@@ -361,19 +410,30 @@ def run_child(lab_path, task, settings, limits):
             json.dump(settings, handle)
         env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
         env.update(_CHILD_ENV)
+        _copy_lab(lab_path, work)   # the child runs a copy, alone in its folder: no file beside the submission
         if limits.user:   # the child's own user owns its work folder (its record, its traceback) and nothing else
             import pwd
             entry = pwd.getpwnam(limits.user)
             os.chown(work, entry.pw_uid, entry.pw_gid)
             env["HOME"] = work
+            closed = users.blocked(work, limits.user)   # e.g. TMPDIR in a folder only root may enter
+            if closed:
+                raise users.ChildUserError(f"the checker's work folders in {os.path.dirname(work)} are not "
+                                           f"reachable by user {limits.user!r}: {closed} is closed to it; set "
+                                           "TMPDIR to a folder it can enter, or choose another --child-user")
         env.update({
-            "PYTHONPATH": os.pathsep.join([PROJECT_ROOT, os.path.dirname(lab_path)]),
+            "PYTHONPATH": PROJECT_ROOT,   # only the project: the submission's own folder is not on the child's path
             "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
         })
         start = time.monotonic()
         result_read, result_write = os.pipe()   # the child's result comes over a pipe we opened, not a file
         try:
             proc = _start(lab_path, task, settings_path, result_write, work, env, limits)
+        except OSError as exc:   # the user cannot even start this Python (the subprocess path)
+            os.close(result_read)
+            if limits.user:
+                raise users.ChildUserError(users.cannot_run_python(limits.user)) from exc
+            raise
         finally:
             os.close(result_write)
         chunks = {"stdout": [], "stderr": []}
@@ -426,11 +486,9 @@ def run_child(lab_path, task, settings, limits):
         result = _last_result(b"".join(result_chunks)) if result_size <= RESULT_LIMIT else {}
         record = _read_json(settings["record"], RECORD_LIMIT) if task == "scenario" else None
         trace = ""
-        try:
-            with open(os.path.join(work, "timeout_traceback.txt"), encoding="utf-8", errors="replace") as handle:
-                trace = handle.read(20000)
-        except OSError:
-            pass
+        data = _read_work_file(os.path.join(work, "timeout_traceback.txt"), 1 << 20)
+        if data:
+            trace = data[:20000].decode("utf-8", "replace")
         if trace and not status:
             status = "timeout"  # faulthandler fired and ended the process just before our deadline
         if not status:
@@ -440,6 +498,7 @@ def run_child(lab_path, task, settings, limits):
                 status = "error"
             else:
                 status = "crash"
+        _check_user(result, limits, isinstance(proc, _Forked))   # an unreadable import is the checker's problem
         return RunResult(status=status, result=result, record=record,
                          stdout=b"".join(chunks["stdout"]).decode("utf-8", "replace"),
                          stderr=b"".join(chunks["stderr"]).decode("utf-8", "replace"),

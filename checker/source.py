@@ -15,6 +15,7 @@ with Python about which code is on which line:
 """
 import ast
 import codecs
+import encodings.utf_8_sig  # noqa: F401 - the BOM's codec, imported while the child may still read the stdlib
 import io
 import re
 import tokenize

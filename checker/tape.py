@@ -35,6 +35,9 @@ from pygame import Vector2
 from lesson11.physics2d import Body, World
 from lesson11.physics2d import shapes as _shapes
 
+# bound when the child imports this module, before any lab: a lab that replaces json.dumps or hashlib.sha256
+# does not change how the recorder tells a changed argument from an unchanged one
+_dumps, _sha256 = json.dumps, hashlib.sha256
 SHAPES = {"Polygon": _shapes.Polygon, "Circle": _shapes.Circle}
 # what a Body carries over the tape: the fields Body() sets. The world's own bookkeeping on a body
 # (a sleeping island, caches) stays with the world that made it.
@@ -127,7 +130,7 @@ def encode(value, seen, depth=0):
         return {"d": {key: encode(item, seen, depth + 1) for key, item in value.items()}}
     if isinstance(value, (set, frozenset)):
         items = [encode(item, seen, depth + 1) for item in value]
-        return {"s": sorted(items, key=lambda item: json.dumps(item, sort_keys=True))}
+        return {"s": sorted(items, key=lambda item: _dumps(item, sort_keys=True))}
     if callable(value):
         return {"o": "function", "repr": getattr(value, "__qualname__", "a function")}
     try:
@@ -139,12 +142,12 @@ def encode(value, seen, depth=0):
 
 def key(data):
     """A canonical text of encoded data, to compare two encodings exactly."""
-    return json.dumps(data, sort_keys=True, allow_nan=True)
+    return _dumps(data, sort_keys=True, allow_nan=True)
 
 
 def digest(data):
     """A short fingerprint of encoded data: the tape keeps a call's arguments as this, not in full."""
-    return hashlib.sha256(key(data).encode()).hexdigest()[:24]
+    return _sha256(key(data).encode()).hexdigest()[:24]
 
 
 # ---------------------------------------------------------------- decoding (in the parent)

@@ -30,15 +30,36 @@ import signal
 import socket
 import sys
 
-WARM_MODULES = ("pygame", "lesson11.runtime", "lesson11.panel", "lesson11.physics2d", "lesson11.physics2d.draw",
-                "checker.child", "checker.tape", "checker.labs.tumbling_crates.probes",
-                "checker.labs.more_shapes.probes", "checker.labs.ball_on_ramp.probes", "checker.labs.bullets.probes",
+WARM_MODULES = ("pygame", "pygame.font", "pygame.freetype", "pygame.sysfont", "pygame.pkgdata", "pygame.sprite",
+                "pygame.surfarray", "pygame.sndarray", "numpy", "lesson11.runtime", "lesson11.panel",
+                "lesson11.physics2d", "lesson11.physics2d.draw", "checker.child", "checker.tape",
+                "checker.labs.tumbling_crates.probes", "checker.labs.more_shapes.probes",
+                "checker.labs.ball_on_ramp.probes", "checker.labs.bullets.probes",
                 "checker.labs.sleeping_crates.probes")
+# the standard library a step or a lab may import (item 7 of issue 35 allows the pure ones in steps), and what
+# the child's own error and timing paths import late: all imported here, so a child that runs as another user
+# never opens a file of Python's after it switched (its interpreter may sit where that user cannot enter)
+WARM_STDLIB = ("math", "cmath", "itertools", "functools", "operator", "fractions", "decimal", "numbers",
+               "statistics", "random", "collections", "collections.abc", "dataclasses", "typing", "enum", "abc",
+               "copy", "heapq", "bisect", "array", "string", "re", "time", "contextlib", "warnings", "traceback",
+               "linecache", "tokenize", "textwrap", "pprint", "reprlib", "weakref", "types", "struct", "json",
+               "hashlib", "io", "os", "sys", "atexit", "threading", "queue", "datetime", "calendar", "colorsys",
+               "inspect", "ast", "dis", "importlib.resources", "importlib.readers", "importlib.util",
+               "importlib.machinery", "encodings.latin_1", "encodings.ascii", "encodings.utf_16",
+               "encodings.unicode_escape", "encodings.raw_unicode_escape", "unicodedata", "zlib", "base64",
+               "pkgutil", "pathlib", "glob", "fnmatch", "shutil", "tempfile", "csv", "argparse", "platform",
+               "pickle", "copyreg", "codecs", "difflib", "shlex", "errno", "stat", "signal", "subprocess",
+               "logging", "secrets", "uuid", "locale", "gettext", "sysconfig")
+PACKAGE_DATA = ("freesansbold.ttf", "pygame_icon.bmp")   # what pygame opens lazily (its default font)
 MAX_MESSAGE = 1 << 20
 
 
 def _child(request, fds, base_path, close):
-    """In the forked process: become the child sandbox.run_child would have started, run it, exit."""
+    """In the forked process: become the child sandbox.run_child would have started, run it, exit.
+
+    Everything that needs a file of Python's or the project's (the child module's code) is done before
+    the limits switch the user: after that the child opens only its work folder.
+    """
     code = 1
     try:
         signal.signal(signal.SIGCHLD, signal.SIG_DFL)
@@ -46,9 +67,11 @@ def _child(request, fds, base_path, close):
         for thing in close:
             thing.close()  # the zygote's sockets (this request's among them) and its selector
         out_fd, err_fd, _, result_fd = fds
+        argv = request["argv"]
+        spec, main_code = _main_code(argv[0])   # read while still the zygote's user
         from checker import sandbox
         limits = sandbox.Limits(**request["limits"])
-        sandbox._limit_child(limits)()  # setsid and the rlimits, exactly as the preexec_fn does
+        sandbox._limit_child(limits)()  # setsid, the rlimits and the user switch, exactly as the preexec_fn does
         null = os.open(os.devnull, os.O_RDONLY)
         os.dup2(null, 0)
         os.dup2(out_fd, 1)
@@ -62,14 +85,11 @@ def _child(request, fds, base_path, close):
         import faulthandler
         faulthandler.enable()  # -X faulthandler
         sys.dont_write_bytecode = True  # PYTHONDONTWRITEBYTECODE
-        argv = request["argv"]
         python_path = [p for p in request["env"].get("PYTHONPATH", "").split(os.pathsep) if p]
-        sys.path[:] = [os.getcwd()] + python_path + base_path
+        sys.path[:] = python_path + base_path   # the project and Python's own; not the work folder
         sys.argv[:] = argv
-        import runpy
-        sys.modules.pop(argv[0], None)  # run as __main__ afresh, as -m does (and without runpy's warning)
         try:
-            runpy.run_module(argv[0], run_name="__main__", alter_sys=True)
+            _run_main(spec, main_code)
             code = 0
         except SystemExit as exc:
             code = _exit_code(exc.code)
@@ -84,6 +104,29 @@ def _child(request, fds, base_path, close):
                 pass
     finally:
         os._exit(code)
+
+
+_MAIN_CODE = {}   # module name -> (its spec, its code object), read once by the zygote
+
+
+def _main_code(name):
+    """(spec, code) of module `name`, to run as __main__ as `python -m name` does (cached)."""
+    if name not in _MAIN_CODE:
+        import importlib.util
+        spec = importlib.util.find_spec(name)
+        _MAIN_CODE[name] = (spec, spec.loader.get_code(name))
+    return _MAIN_CODE[name]
+
+
+def _run_main(spec, main_code):
+    """Run `main_code` as the module __main__, as runpy.run_module(alter_sys=True) does."""
+    import types
+    module = types.ModuleType("__main__")
+    module.__dict__.update(__file__=spec.origin, __cached__=None, __loader__=spec.loader,
+                           __package__=spec.parent, __spec__=spec)
+    sys.modules["__main__"] = module
+    sys.argv[0] = spec.origin
+    exec(main_code, module.__dict__)
 
 
 def _exit_code(code):
@@ -219,12 +262,65 @@ def main(argv):
     control = socket.socket(fileno=int(argv[0]))
     import importlib
     importlib.import_module("checker.sandbox")
-    for name in WARM_MODULES:
-        importlib.import_module(name)
+    for name in WARM_MODULES + WARM_STDLIB + _handout_imports():
+        try:
+            importlib.import_module(name)
+        except ImportError:
+            if name in WARM_MODULES:
+                raise
+    _keep_package_data()
+    _main_code("checker.child")
     import gc
     gc.collect()
     gc.freeze()  # what is here now stays shared with the children: their collections never walk it
     serve(control)
+
+
+def _handout_imports():
+    """Every module the labs' handouts (their starters) import, so a lab needs no import of its own."""
+    import ast
+    from checker import labs
+    names = []
+    for lab in labs.LABS:
+        try:
+            with open(lab.module.STARTER, "rb") as handle:
+                tree = ast.parse(handle.read())
+        except (OSError, SyntaxError, ValueError, AttributeError):
+            continue
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                names += [alias.name for alias in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+                names.append(node.module)
+    return tuple(dict.fromkeys(names))
+
+
+def _keep_package_data():
+    """Read the files pygame opens lazily (its default font) now, and have pygame.pkgdata serve them from memory.
+
+    pygame.font.Font(None, size) opens freesansbold.ttf beside pygame's own files, which a child running as
+    another user may not be able to read; a file-like object of the same bytes is what pygame takes instead.
+    """
+    import io
+    import pygame.pkgdata as pkgdata
+    original = pkgdata.getResource
+    kept = {}
+    for name in PACKAGE_DATA:
+        try:
+            with original(name) as handle:
+                kept[name] = handle.read()
+        except OSError:
+            pass
+
+    def get_resource(identifier, pkgname=pkgdata.__name__):
+        if pkgname == pkgdata.__name__ and identifier in kept:
+            return io.BytesIO(kept[identifier])
+        return original(identifier, pkgname)
+
+    get_resource.__doc__ = original.__doc__
+    pkgdata.getResource = get_resource
+    from lesson11 import panel
+    panel.study_rows()   # the solver panel's table (lesson11/bench/frontier.json), read once and kept
 
 
 if __name__ == "__main__":

@@ -32,6 +32,7 @@ import sys
 
 import pygame
 
+from lesson11.console import safe_output
 from lesson11.physics2d import (Body, TOUCH_TOLERANCE, Vector2, box_points, edge_normals, inside,
                                project, sat)
 
@@ -368,6 +369,7 @@ def save_screenshots(folder):
 
 def main(argv=None, frames=None):
     """Open the window and run until it is closed (or for `frames` frames). Returns the exit code."""
+    safe_output()
     parser = argparse.ArgumentParser(prog="python -m lesson11.explorer", description="The SAT explorer.")
     parser.add_argument("--screenshots", metavar="FOLDER",
                         help="save sat_explorer.png and sat_explorer_overlap.png in FOLDER and exit")

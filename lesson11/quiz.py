@@ -19,6 +19,8 @@ import shutil
 import sys
 import textwrap
 
+from lesson11.console import safe_output
+
 QUESTIONS_FILE = os.path.join(os.path.dirname(__file__), "quiz_questions.json")
 LETTERS = ("A", "B", "C", "D")
 
@@ -112,6 +114,7 @@ def run_quiz(questions, ask=input):
 
 
 def main(argv=None):
+    safe_output()
     parser = argparse.ArgumentParser(prog="python -m lesson11.quiz", description="Lesson 11 quick quiz.")
     parser.add_argument("--questions", default=QUESTIONS_FILE, help="question file (JSON)")
     parser.add_argument("--answers", action="store_true", help="print the answer key and stop")

@@ -37,7 +37,10 @@ import os
 
 import pygame
 
+from .console import safe_output
 from .physics2d import Body, box_points
+
+safe_output()  # a lab window's prints (and the student's) survive a console that is not UTF-8
 
 # The labs play no sound: without a sound card SDL's audio prints 9 ALSA lines at pygame.init(). A driver set
 # in the environment is kept.

@@ -63,7 +63,28 @@ Beyond the brief's list: attacks that reach the same answers around the step rul
   vacuous           the step is not written and the function does nothing the probe can see (resolve()
                     returns before any impulse): a check that skips what it cannot see would pass it
 
-    ENTRIES: [Entry]; BY_LAB: {lab: [Entry]}; LABS: {lab: its mistake-corpus module}
+The first round (merged in from tests/attack_corpus.py, names kept: <lab>_<kind>) adds kind
+
+  rebind            the step is left undone; code outside the steps rebinds its function to the library's
+                    (its forge, rebind and solution entries change the code outside the steps: keeps_handout False)
+
+Issue 35's mechanisms (entry.mechanism = the item number; MECHANISMS_BY_LAB says where each applies):
+
+  line_breaks    (1)  a comment of characters str.splitlines() breaks at and the compiler does not; a step
+                      calls the library
+  coding         (2)  `# -*- coding: unicode_escape -*-`: a comment to the checker is a line of code to Python
+  changed_inputs (3)  the step changes the fields the probe reads its reference from after the call
+  frame_read     (4)  a format string reads the reference values the child holds in the probe's frame
+  foreign_hook   (5)  the child's tape names a handout function the probe never installed as a hook
+  star_import    (6)  `from solutions.<lab> import *` / `from lesson11.physics2d import *` after the defs
+  grader_stdout  (7)  the child writes a forged --json document to the grader's stdout (root)
+  evade_side_module (8), vacuous (9) as above; wrong_answer and stdlib controls (10)
+
+"No more than the honest work it contains" is formalised as: an issue-35 attack scores no more than
+honest(entry), the same file with the attack removed (the steps the entry wrote put back to the
+starter's placeholder, no edit, side file or extra text), graded in the same run.
+
+    ENTRIES: [Entry]; BY_LAB: {lab: [Entry]}; LABS: {lab: its mistake-corpus module}; HONEST: {name: Entry}
     build(entry) -> source text; write(directory, entries=None) -> {name: path}
 """
 import os
@@ -82,13 +103,16 @@ import corpus_bullets  # noqa: E402
 import corpus_more_shapes  # noqa: E402
 import corpus_sleeping_crates  # noqa: E402
 import corpus_tumbling_crates  # noqa: E402
+import mutants  # noqa: E402
 from corpus_files import CorpusFiles  # noqa: E402  (starter + steps + edits, as the mistake corpora build)
 
 LABS = {"tumbling_crates": corpus_tumbling_crates, "more_shapes": corpus_more_shapes,
         "ball_on_ramp": corpus_ball_on_ramp, "bullets": corpus_bullets, "sleeping_crates": corpus_sleeping_crates}
 TITLES = {"tumbling_crates": "Tumbling Crates", "more_shapes": "More Shapes", "ball_on_ramp": "Ball on the Ramp",
           "bullets": "Bullets", "sleeping_crates": "Sleeping Crates"}
-LISTED_KINDS = ("import", "world", "dunder", "forge", "solution", "detect", "table")
+LISTED_KINDS = ("import", "world", "dunder", "forge", "rebind", "solution", "detect", "table")
+MECHANISM_KINDS = ("line_breaks", "coding", "changed_inputs", "frame_read", "foreign_hook", "star_import",
+                   "grader_stdout", "wrong_answer")   # issue 35
 EVASIONS = ("evade_alias", "evade_class", "evade_own_import", "evade_match", "evade_side_module", "forge_unflagged",
             "vacuous")
 
@@ -96,22 +120,29 @@ EVASIONS = ("evade_alias", "evade_class", "evade_own_import", "evade_match", "ev
 class Entry(NamedTuple):
     name: str
     lab: str
-    kind: str                 # one of LISTED_KINDS, EVASIONS or "control"
+    kind: str                 # one of LISTED_KINDS, EVASIONS, MECHANISMS' kinds or "control"
     steps: dict               # {step: the code put inside that step's region}; other steps get the solution's
     target: object            # tuple of check ids that must not pass; None for a control (every function check passes)
     why: str                  # one line: what the attack does and why it must fail (or why the control is correct)
-    edits: tuple = ()         # ((old, new), ...) outside the steps: only an added import line here
+    edits: tuple = ()         # ((old, new), ...) outside the steps: an added import (keeps_handout False: code)
     needs_random_inputs: bool = False   # only inputs drawn per grading run can catch it
     extra_files: tuple = ()   # ((file name, text), ...) written beside the lab file (a submission's other files)
+    keeps_handout: bool = True   # False: code added outside the steps (the first round's forge, rebind, solution)
+    mechanism: int = 0        # the mechanism of issue 35 it builds (1-10), 0 for none
+    all_checks: bool = False  # a control whose every check must pass, the scenes included (full marks)
+    modes: tuple = ("root",)  # the grading runs it is graded in (GRADING_MODES in tests/test_corpus_attacks.py)
+    message: str = ""         # text the first target check's message must hold (the issue's stated outcome)
+    extra_text: tuple = ()    # ((old, new), ...) replacements in the built file's text after the edits (bytes-exact
+                              # attacks the handout's own parser may not read alike: mechanisms 1 and 2)
 
 
 def _code(text):
     return textwrap.dedent(text).strip("\n")
 
 
-def attack(name, lab, kind, steps, target, why, edits=(), needs_random_inputs=False, extra_files=()):
+def attack(name, lab, kind, steps, target, why, edits=(), needs_random_inputs=False, extra_files=(), **more):
     return Entry(name, lab, kind, {step: _code(code) for step, code in steps.items()}, tuple(target), why,
-                 tuple(edits), needs_random_inputs, tuple(extra_files))
+                 tuple(edits), needs_random_inputs, tuple(extra_files), **more)
 
 
 def notes(*parts):
@@ -119,8 +150,8 @@ def notes(*parts):
     return "\n\n".join(_code(part) for part in parts) + "\n"
 
 
-def control(name, lab, steps, why):
-    return Entry(name, lab, "control", {step: _code(code) for step, code in steps.items()}, None, why)
+def control(name, lab, steps, why, **more):
+    return Entry(name, lab, "control", {step: _code(code) for step, code in steps.items()}, None, why, **more)
 
 
 # the pieces several attacks share
@@ -332,11 +363,11 @@ TUMBLING = [
             from lesson11.physics2d import sat
 
             lab_globals["checked_sat"] = sat
-        """))]),
+        """))], mechanism=8),
     attack("tc_early_return_friction", "tumbling_crates", "vacuous", {4: """
         return  # (resolve does nothing for now)
     """, 5: ""}, ["resolve_friction"], "steps 4 and 5 are not written (step 4 just returns): a resolve() that applies no "
-                                       "impulse must not pass the friction check"),
+                                       "impulse must not pass the friction check", mechanism=9),
     attack("tc_forge_unflagged", "tumbling_crates", "forge_unflagged", {2: """
         match edge_normals:
             case object(__globals__=namespace):
@@ -374,7 +405,7 @@ TUMBLING = [
                root = os.path.dirname(os.path.dirname(lesson11.__file__))
                with open(os.path.join(root, "solutions", "tumbling_crates.py"), encoding="utf-8") as handle:
                    exec(handle.read().split("\\ndef main")[0], lab_globals)
-           """))]),
+           """))], mechanism=8),
     control("tc_control_while_and_lambda", "tumbling_crates", {2: """
         axes = edge_normals(pa) + edge_normals(pb)
         k = 0
@@ -853,7 +884,7 @@ SLEEPING = [
                lab_globals["sleep_timer"] = World().sleep_timer_of_world
                lab_globals["moves"] = World.moves_of_world
                lab_globals["wake_on_contact"] = World.wake_of_world
-           """))]),
+           """))], mechanism=8),
     control("sc_control_comprehension", "sleeping_crates", {2: """
         calm = speed < SLEEP_SPEED and -SLEEP_SPIN < spin < SLEEP_SPIN
         return timer + dt if calm else 0.0
@@ -877,21 +908,435 @@ SLEEPING = [
 ]
 
 
-ENTRIES = TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING
+# ================================================================ the first round (was tests/attack_corpus.py)
+# Merged here from tests/attack_corpus.py (41 entries, names kept): one attacked step per lab,
+# the kinds above plus "rebind" (code outside the steps rebinds the undone step's function to the
+# library's); its forge, rebind and solution entries add code outside the steps (keeps_handout False),
+# and its four controls must get every check, the scenes included (all_checks).
+
+FIRST_TARGETS = {   # lab: (step, the call with its own arguments, the library's name for it, the step's check)
+    "tumbling_crates": (2, "sat(pa, pb)", "sat", "sat_axes"),
+    "more_shapes": (2, "regular_polygon(sides, radius)", "regular_polygon", "polygon_corners"),
+    "ball_on_ramp": (2, "closest_on_segment(p, a, b)", "closest_on_segment", "closest_point"),
+    "bullets": (2, "circle_toi(p1, v1, r1, p2, v2, r2, dt)", "circle_toi", "toi_matches_root"),
+    "sleeping_crates": (2, "sleep_timer(timer, speed, spin, dt)", "sleep_timer_of_world", "timer_rule"),
+}
+FIRST_WORLD_CALLS = {   # the World method doing (or standing in for) each attacked step's job
+    "tumbling_crates": "return World().sat(pa, pb)",
+    "sleeping_crates": "return World().sleep_timer_of_world(timer, speed, spin, dt)",
+    "ball_on_ramp": "return World().circle_point and p",
+    "more_shapes": "return [p for p in World().bodies] or Polygon(box_points(2 * radius, radius)).points",
+    "bullets": "return World().swept_move and None",
+}
+
+
+def _outside(code):
+    """Edits that put `code` outside every step, after the last def (before the main guard)."""
+    return ((MAIN_GUARD, "\n\n" + code.rstrip("\n") + "\n" + MAIN_GUARD),)
+
+
+def library_code(lab, call, name):
+    """Step code returning the library's answer for `call` (Sleeping Crates: World's sleep timer)."""
+    args = call[call.index("("):]
+    if lab == "sleeping_crates":
+        return f"from lesson11.physics2d import World as _W\nreturn _W().sleep_timer_of_world{args}"
+    return f"from lesson11.physics2d import {name} as _library\nreturn _library{args}"
+
+
+def first_round(lab):
+    """The seven kinds of tests/attack_corpus.py against step 2 of `lab`."""
+    step, call, name, check = FIRST_TARGETS[lab]
+    args = call[call.index("("):]
+    function = call[:call.index("(")]
+    library = library_code(lab, call, name)
+    undone = {step: starter_steps(lab)[step]}
+    probes = f"checker.labs.{lab}.probes"
+    rebind = (f"from lesson11.physics2d import World as _W\n{function} = lambda *a: _W().sleep_timer_of_world(*a)"
+              if lab == "sleeping_crates" else f"from lesson11.physics2d import {name} as _library\n"
+                                               f"{function} = _library")
+    solution = os.path.join(ROOT, "solutions", lab + ".py")
+    world = "World()." if lab == "sleeping_crates" else ""
+    return [
+        attack(f"{lab}_import", lab, "import", {step: library}, [check], "the step imports the library's answer"),
+        attack(f"{lab}_world", lab, "world", {step: FIRST_WORLD_CALLS[lab]}, [check],
+               "the step asks World, which runs on the library's functions"),
+        attack(f"{lab}_dunder", lab, "dunder", {step: f"return __import__('lesson11.physics2d', fromlist=['x']).{world}"
+                                                      f"{name}{args}"}, [check],
+               "the step reaches the library through __import__"),
+        attack(f"{lab}_forge", lab, "forge", undone, [check],
+               "the child's references are patched to agree with an undone step", keeps_handout=False,
+               edits=_outside(f"import sys as _sys\nfor _name in dir(_sys.modules.get('{probes}')):\n"
+                                   f"    if _name.startswith('reference'):\n"
+                                   f"        setattr(_sys.modules['{probes}'], _name, lambda *a, **k: None)")),
+        attack(f"{lab}_rebind", lab, "rebind", undone, [check],
+               "the undone step's function is rebound to the library's after the handout's def", keeps_handout=False,
+               edits=_outside(rebind)),
+        attack(f"{lab}_solution", lab, "solution", undone, [check],
+               "the shipped solution is read and run over the module", keeps_handout=False,
+               edits=_outside(f"exec(open({solution!r}).read().split('def main')[0], globals())")),
+        attack(f"{lab}_detect", lab, "detect",
+               {step: "if __name__ == 'lab_under_test':\n    " + library.replace("\n", "\n    ")}, [check],
+               "the library's answer only when graded"),
+    ]
+
+
+def _first_sat_table():
+    """Tumbling Crates' step 2 (and 3) answered from a table of the checker's fixed pairs (keys: first corners)."""
+    try:
+        from checker.probe_kit import reference_sat, sat_pairs
+        table = {}
+        for _, pa, pb in sat_pairs():
+            for first, second in ((pa, pb), (pb, pa)):
+                hit = reference_sat(first, second)
+                key = (round(first[0].x, 3), round(first[0].y, 3), round(second[0].x, 3), round(second[0].y, 3))
+                table[key] = None if hit is None else (round(hit[0].x, 12), round(hit[0].y, 12), hit[1])
+    except (ImportError, AttributeError, TypeError, ValueError):
+        table = {}
+    return ("table = " + repr(table) + "\n"
+            "hit = table.get((round(pa[0].x, 3), round(pa[0].y, 3), round(pb[0].x, 3), round(pb[0].y, 3)))\n"
+            "if hit is None:\n    return None\nreturn pygame.Vector2(hit[0], hit[1]), hit[2]")
+
+
+def _first_timer_table():
+    """Sleeping Crates' step 2 for the checker's fixed cases only (dt rounded to 9 digits)."""
+    table = {(timer, speed, spin, round(dt, 9)): want
+             for (timer, speed, spin, dt), want in TABLES["sleeping_crates"].items()}
+    return "table = " + repr(table) + "\nreturn table.get((timer, speed, spin, round(dt, 9)), 0.0)"
+
+
+FIRST_ROUND = [entry for lab in FIRST_TARGETS for entry in first_round(lab)] + [
+    attack("tumbling_crates_table", "tumbling_crates", "table", {2: _first_sat_table()}, ["sat_axes"],
+           "answers copied for the fixed pairs only", needs_random_inputs=True),
+    attack("sleeping_crates_table", "sleeping_crates", "table", {2: _first_timer_table()},
+           ["timer_rule"], "answers copied for the fixed timer cases only", needs_random_inputs=True),
+    control("tumbling_crates_while_loop", "tumbling_crates", {2: """
+        axes = edge_normals(pa) + edge_normals(pb)
+        k = 0
+        while k < len(axes):
+            axis = axes[k]
+            k += 1
+            lo_a, hi_a = project(pa, axis)
+            lo_b, hi_b = project(pb, axis)
+            overlap = min(hi_a, hi_b) - max(lo_a, lo_b)
+            if overlap <= 0:
+                return None
+            if overlap < best_depth:
+                best_depth = overlap
+                best_axis = axis
+    """}, "a while loop and other names", all_checks=True, modes=("root", "child_user")),
+    control("more_shapes_comprehension", "more_shapes", {2: """
+        return [pygame.Vector2(radius * math.cos(2 * math.pi * k / sides),
+                               radius * math.sin(2 * math.pi * k / sides)) for k in range(sides)]
+    """}, "a comprehension with math.cos / math.sin and pygame.Vector2", all_checks=True, modes=("root", "child_user")),
+    control("sleeping_crates_print_in_step", "sleeping_crates", {2: """
+        calm = speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN
+        print('timer', timer, calm)
+        return timer + dt if calm else 0.0
+    """}, "a debug print inside the step", all_checks=True, modes=("root", "child_user")),
+    control("ball_on_ramp_hypot", "ball_on_ramp", {2: """
+        ab = b - a
+        length_squared = math.hypot(ab.x, ab.y) ** 2
+        t = min(1.0, max(0.0, (p - a).dot(ab) / length_squared))
+        return a + ab * t
+    """}, "math.hypot for |ab|, the clamp written min(max())", all_checks=True, modes=("root", "child_user")),
+]
+
+
+# ================================================================ issue 35: one entry per mechanism per lab
+# Each entry names its mechanism (issue 35, items 1-10). "No more than the honest work it contains" is
+# measured, not estimated: tests/test_corpus_attacks.py grades beside each attack its HONEST file (honest()
+# below: the same file with the attack removed - the steps the attack wrote put back to the starter's
+# placeholder, no edit, no side file, no extra text) in the same run, and the attack may score no more.
+
+FILES_SOLUTION_STEPS = {}
+for _lab, _module in LABS.items():
+    with open(_module.SOLUTION, encoding="utf-8") as _handle:
+        FILES_SOLUTION_STEPS[_lab] = CorpusFiles(_module.STARTER, _module.SOLUTION, _module.STEPS, {}, "").step_code(
+            _handle.read())
+
+# the library's function each lab's step 2 hands over to: (step, the step's code, its check)
+LIBRARY_STEP = {lab: (step, library_code(lab, call, name), check)
+                for lab, (step, call, name, check) in FIRST_TARGETS.items()}
+
+# 1: characters str.splitlines() breaks at and the compiler does not, 60 of each in one comment
+BREAKS = "\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029" * 60
+IMPORT_RANDOM = "\nimport random\n"
+
+# 2: what each lab's file hides in a comment under `# -*- coding: unicode_escape -*-`: a line rebinding a
+# step function (one no probe splices) to the library's, and the step and check it takes
+HIDDEN = {
+    "tumbling_crates": (6, "from lesson11.physics2d import apply_impulse", "apply_impulse_spin"),
+    "more_shapes": (2, "from lesson11.physics2d import regular_polygon", "polygon_corners"),
+    "ball_on_ramp": (2, "from lesson11.physics2d import closest_on_segment", "closest_point"),
+    "bullets": (2, "from lesson11.physics2d import circle_toi", "toi_matches_root"),
+    "sleeping_crates": (2, "sleep_timer = World().sleep_timer_of_world", "timer_rule"),
+}
+BACKSLASH_N = "\\" + "n"   # the two characters a unicode_escape file decodes to a line break
+
+# 5: the child's own json.dumps adds, to the first call of every probe's tape, an event naming draw_text (a
+# function of the handout no probe installs; `main` would run the whole handout in the grader). It is put
+# in by one step function (FORGER: its steps are flagged, the forgery runs when a probe calls it); the
+# other step functions are the solution's, and their checks must come out as a tape mismatch.
+FOREIGN_EVENT = """
+json = __import__("json")
+if not hasattr(json.dumps, "forged"):
+    real = json.dumps
+
+    def forge(value, *args, **kwargs):
+        if isinstance(value, dict) and isinstance(value.get("probe"), dict):
+            for record in (value["probe"].get("tapes") or {}).values():
+                for entry in record.get("tape") or []:
+                    if isinstance(entry, dict) and entry.get("k") == "call":
+                        entry["events"] = [{"hook": "draw_text", "state": None,
+                                            "args": {"t": [{"t": []}, {"d": {}}]}}] + list(entry.get("events") or [])
+                        break
+        return real(value, *args, **kwargs)
+
+    forge.forged = True
+    json.dumps = forge
+"""
+FORGER = {"tumbling_crates": (4, ("sat_axes", "apply_impulse_spin")),
+          "more_shapes": (5, ("polygon_corners", "centroid", "inertia_sum")),
+          "ball_on_ramp": (7, ("closest_point", "push_out_split", "ball_inertia", "contact_on_surface")),
+          "bullets": (5, ("toi_matches_root", "bounding_circle", "broad_test")),
+          "sleeping_crates": (4, ("timer_rule", "skips_sleepers"))}
+
+# 7: a forged --json document written to the grader's own stdout: the child's parent is the zygote (or the
+# grader), whose parent is the grader; as root /proc/<pid>/fd/1 opens the grader's stdout pipe
+FORGED_STDOUT = """
+import json as _json
+import os as _os
+
+
+def _forge_grades():
+    pid = _os.getppid()
+    for _ in range(3):
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as handle:
+                command = handle.read().split(b"\\0")
+            if b"checker" in command and b"checker.zygote" not in command and b"checker.child" not in command:
+                with open(f"/proc/{pid}/fd/1", "w") as out:
+                    out.write(_json.dumps({"labs": [{"path": __file__, "lab": "forged", "score": 99,
+                                                     "max_score": 99, "criteria": []}]}) + "\\n")
+                return
+            with open(f"/proc/{pid}/status") as handle:
+                pid = int(next(line.split()[1] for line in handle if line.startswith("PPid:")))
+        except (OSError, ValueError, StopIteration):
+            return
+
+
+_forge_grades()
+"""
+
+# 8: a side module beside the lab, imported by one added line: it binds the step function's name in
+# the lab's globals to the library's
+SIDE = {"more_shapes": (2, "regular_polygon", "from lesson11.physics2d import regular_polygon as found",
+                        "polygon_corners"),
+        "ball_on_ramp": (5, "disc_inertia", "def found(mass, radius):\n    return 0.5 * mass * radius ** 2",
+                         "ball_inertia"),
+        "bullets": (2, "circle_toi", "from lesson11.physics2d import circle_toi as found", "toi_matches_root")}
+CRATE_UTILS = ((MAIN_GUARD, "\n\nimport crate_utils  # noqa: E402, F401\n" + MAIN_GUARD),)
+
+
+def _issue35(lab):
+    """Mechanisms 1, 2, 5, 6, 7 (and 8 where the first round has no side module) against `lab`."""
+    short = {"tumbling_crates": "tc", "more_shapes": "ms", "ball_on_ramp": "br", "bullets": "bu",
+             "sleeping_crates": "sc"}[lab]
+    module, undone = LABS[lab], starter_steps(lab)
+    step, library, check = LIBRARY_STEP[lab]
+    hidden_step, hidden, hidden_check = HIDDEN[lab]
+    forger, forged = FORGER[lab]
+    out = [
+        attack(f"{short}_m1_line_breaks", lab, "line_breaks", {step: library}, [check],
+               "a comment of 480 \\x0b \\x0c \\x1c-\\x1e \\x85 U+2028 U+2029 shifts the checker's line numbers off the "
+               "compiler's, so the library call in the step is in no step region it reads",
+               extra_text=((IMPORT_RANDOM, IMPORT_RANDOM + "# notes: " + BREAKS + "\n"),), mechanism=1),
+        attack(f"{short}_m2_unicode_escape", lab, "coding", {hidden_step: undone[hidden_step]}, [hidden_check],
+               "the file declares `coding: unicode_escape`: a comment to a UTF-8 reader holds `\\n` and a line "
+               "rebinding the undone step's function to the library's, module code to Python",
+               extra_text=(("", "# -*- coding: unicode_escape -*-\n"),
+                           (MAIN_GUARD, f"\n\n# see my notes{BACKSLASH_N}{hidden}  # (mine)\n" + MAIN_GUARD)),
+               mechanism=2),
+        attack(f"{short}_m5_foreign_hook", lab, "foreign_hook",
+               {forger: _code(FOREIGN_EVENT) + "\n" + FILES_SOLUTION_STEPS[lab][forger]}, forged,
+               f"step {forger} (the solution's, flagged) patches the child's json.dumps to add to every tape an "
+               "event naming draw_text, a handout function no probe installs: the solution's other steps must come "
+               "out as a tape mismatch, never data or a call in the grader", mechanism=5, message="could not replay"),
+        attack(f"{short}_m6_star_solution", lab, "star_import", undone, module.FUNCTION_CHECKS,
+               f"the steps are the starter's; `from solutions.{lab} import *` after the defs replaces every step "
+               "function with the solution's", edits=((MAIN_GUARD, f"\n\nfrom solutions.{lab} import *  # noqa\n"
+                                                       + MAIN_GUARD),), mechanism=6),
+        attack(f"{short}_m6_star_library", lab, "star_import", undone, module.FUNCTION_CHECKS,
+               "the steps are the starter's; `from lesson11.physics2d import *` after the defs binds the library's "
+               "functions under the steps' names", edits=((MAIN_GUARD, "\n\nfrom lesson11.physics2d import *  # noqa\n"
+                                                          + MAIN_GUARD),), mechanism=6),
+        attack(f"{short}_m7_grader_stdout", lab, "grader_stdout", undone, module.FUNCTION_CHECKS,
+               "the steps are the starter's; at import the child finds the grader's process and writes a forged "
+               "--json document to its stdout (/proc/<pid>/fd/1, root only)",
+               edits=_outside(FORGED_STDOUT), keeps_handout=False, mechanism=7,
+               modes=("root", "child_user")),
+    ]
+    if lab in SIDE:
+        side_step, function, found, side_check = SIDE[lab]
+        out.append(attack(f"{short}_m8_crate_utils", lab, "evade_side_module", {side_step: undone[side_step]},
+                          [side_check], f"step {side_step} is the starter's; crate_utils.py beside the lab, "
+                                        f"imported by one added line, binds {function} in the lab's globals",
+                          edits=CRATE_UTILS, mechanism=8, extra_files=[("crate_utils.py", notes(FIND_LAB, found, f"""
+                              lab_globals["{function}"] = found
+                          """))]))
+    return out
+
+
+# 4: the child holds reference values in the probe's frame when it calls the student's function; a format
+# string reads them through a running generator's frame (gi_frame.f_back: the step's own frame, then the
+# tape's recording wrapper, then the probe), with no forbidden name (the rules never look inside a string)
+FRAME_READ = """
+def peek():
+    yield FIELDS.format(me[0])
+me = [None]
+me[0] = peek()
+try:
+    values = [float(text) for text in next(me[0]).split()]
+except (KeyError, AttributeError, IndexError, ValueError):
+    values = None
+"""
+
+
+def frame_read(fields, then):
+    """Step code that reads the probe's locals (`fields`: format fields after f_locals) and then runs `then`."""
+    chain = "{0.gi_frame.f_back.f_back.f_back.f_locals"
+    text = " ".join(chain + field + "}" for field in fields)
+    return _code(FRAME_READ).replace("FIELDS", repr(text)) + "\n" + _code(then)
+
+
+ISSUE35 = [entry for lab in LABS for entry in _issue35(lab)] + [
+    # 3: the probe reads k, mu and kt from the bodies after resolve() changed them
+    attack("tc_m3_zero_inertia", "tumbling_crates", "changed_inputs", {4: """
+        a.inv_inertia = b.inv_inertia = 0.0
+    """, 5: """
+        a.friction = b.friction = 1e12
+    """}, ["resolve_k", "resolve_friction"], "step 4 zeroes both inverse inertias and step 5 sets friction 1e12, so "
+                                            "references read after resolve() agree with no spin terms and no clamp; "
+                                            "the check must name the field changed",
+        mechanism=3, message="inv_inertia"),
+    attack("br_m3_zero_inertia", "ball_on_ramp", "changed_inputs", {7: """
+        a.inv_inertia = b.inv_inertia = 0.0
+        a.friction = b.friction = 1e12
+        kt = a.inv_mass + b.inv_mass
+        apply_impulse(a, b, t * (-rel.dot(t) / kt), ra, rb)
+    """}, ["friction_rolls"], "step 7 zeroes both inverse inertias and sets friction 1e12 before an unclamped friction "
+                              "impulse without spin terms: the references must come from the bodies as given, "
+                              "the check name the field changed", mechanism=3, message="inv_inertia"),
+    # 4: reference values read from the probe's frame
+    attack("tc_m4_frame_format", "tumbling_crates", "frame_read", {6: frame_read(
+        ("[ref_a].omega", "[ref_b].omega"), """
+        if values:
+            a.omega, b.omega = values
+    """)}, ["apply_impulse_spin"], "step 6 reads the child's reference spins ref_a, ref_b from probe_apply_impulse's "
+                                   "frame through a format string, and does nothing otherwise", mechanism=4),
+    attack("br_m4_frame_format", "ball_on_ramp", "frame_read", {4: frame_read(
+        ("[want][a][0]", "[want][a][1]", "[want][b][0]", "[want][b][1]"), """
+        if values:
+            a.pos, b.pos = pygame.Vector2(values[:2]), pygame.Vector2(values[2:])
+    """)}, ["push_out_split"], "step 4 reads the child's expected positions `want` from probe_separate's frame through "
+                              "a format string, and pushes nothing otherwise", mechanism=4),
+    # 9: vacuous checks (tc_early_return_friction above is Tumbling Crates')
+    attack("br_m9_early_return_friction", "ball_on_ramp", "vacuous", {7: """
+        return  # (no friction yet)
+    """}, ["friction_rolls"], "step 7 returns before any friction impulse: the friction check must see that nothing "
+                              "was applied", mechanism=9),
+    # 10: wrong answers that must fail
+    attack("ms_m10_parallel_one_minus_dot", "more_shapes", "wrong_answer", {5: """
+        for axis in edge_normals(pa) + edge_normals(pb):
+            if all(1 - abs(axis.dot(kept)) >= PARALLEL for kept in axes):
+                axes.append(axis)
+    """}, ["parallel_axes"], "step 5 counts axes as parallel when 1 - |a.b| < PARALLEL (about theta^2 / 2): axes up "
+                             "to 0.08 degrees apart merge", mechanism=10),
+    attack("br_m10_contact_halfway", "ball_on_ramp", "wrong_answer", {6: """
+        return center + normal * (radius - depth / 2)
+    """}, ["contact_on_surface"], "step 6 puts the contact halfway into the overlap, not on the ball's surface",
+        mechanism=10),
+    # 10: honest steps with a pure standard-library module: full marks
+    control("ms_m10_cmath_corners", "more_shapes", {2: """
+        import cmath
+        corners = [radius * cmath.exp(2j * math.pi * k / sides) for k in range(sides)]
+        return [Vector2(z.real, z.imag) for z in corners]
+    """}, "step 2's corners as complex exponentials r e^(2 pi i k / n) with cmath", all_checks=True, mechanism=10),
+    control("ms_m10_itertools_centroid", "more_shapes", {3: """
+        import itertools
+        total = Vector2()
+        for a, b in itertools.pairwise(points + points[:1]):
+            total += (a + b) * cross(a, b)
+        return total / (6 * area)
+    """}, "step 3's edges as itertools.pairwise over the closed outline", all_checks=True, mechanism=10),
+    control("tc_m10_itertools_axes", "tumbling_crates", {2: """
+        import itertools
+        for axis in itertools.chain(edge_normals(pa), edge_normals(pb)):
+            min_a, max_a = project(pa, axis)
+            min_b, max_b = project(pb, axis)
+            overlap = min(max_a, max_b) - max(min_a, min_b)
+            if overlap <= 0:
+                return None
+            if overlap < best_depth:
+                best_axis, best_depth = axis, overlap
+    """}, "step 2's axes as itertools.chain of both shapes' edge normals", all_checks=True, mechanism=10),
+    control("sc_m10_itertools_wake", "sleeping_crates", {4: """
+        import itertools
+        return [sleeper for sleeper, other in itertools.permutations((a, b))
+                if sleeper.asleep and other.inv_mass != 0 and not other.asleep]
+    """}, "step 4's two orders as itertools.permutations((a, b))", all_checks=True, mechanism=10),
+]
+
+
+# where each mechanism of issue 35 applies (tests/test_corpus_attacks.py holds the corpus to it); left out:
+#   3 (inputs changed under the reference): More Shapes' and Sleeping Crates' steps are pure (a changed argument
+#     fails them, checker/lab_checks.function_data) and Bullets' references come from a fresh world; Ball on the
+#     Ramp's come from copies made first (br_m3_zero_inertia shows it);
+#   4 (references in the child's frame at the call): More Shapes, Bullets and Sleeping Crates compute a case's
+#     reference after the student's call; 9 (a check that can grade nothing): the checks of More Shapes,
+#     Bullets and Sleeping Crates compare every case's answer (none skips a case it cannot see);
+#   10 (wrong answers) are More Shapes' and Ball on the Ramp's; the stdlib controls are where a step reads
+#     naturally with cmath or itertools (More Shapes, Tumbling Crates, Sleeping Crates).
+MECHANISMS_BY_LAB = {"tumbling_crates": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10), "more_shapes": (1, 2, 5, 6, 7, 8, 10),
+                     "ball_on_ramp": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10), "bullets": (1, 2, 5, 6, 7, 8),
+                     "sleeping_crates": (1, 2, 5, 6, 7, 8, 10)}
+
+
+ENTRIES = TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING + FIRST_ROUND + ISSUE35
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
 BY_LAB = {lab: [entry for entry in ENTRIES if entry.lab == lab] for lab in LABS}
 ATTACKS = [entry for entry in ENTRIES if entry.target is not None]
 CONTROLS = [entry for entry in ENTRIES if entry.target is None]
 
-FILES = {lab: CorpusFiles(module.STARTER, module.SOLUTION, module.STEPS, {e.name: e for e in BY_LAB[lab]},
+
+def honest(entry):
+    """The entry with its attack removed: the steps it wrote back to the starter's, no edit, side file or extra text.
+
+    What it contains of honest work is then exactly what this file earns (the solution's code in the other steps).
+    """
+    undone = starter_steps(entry.lab)
+    steps = {step: undone[step] if step in entry.steps else code
+             for step, code in FILES_SOLUTION_STEPS[entry.lab].items()}
+    return Entry(entry.name + "__honest", entry.lab, "honest", steps, None, f"{entry.name} without its attack")
+
+
+HONEST = {entry.name: honest(entry) for entry in ATTACKS if entry.mechanism}
+
+FILES = {lab: CorpusFiles(module.STARTER, module.SOLUTION, module.STEPS,
+                          {e.name: e for e in BY_LAB[lab] + [h for h in HONEST.values() if h.lab == lab]},
                           "tests/corpus_attacks.py")
          for lab, module in LABS.items()}
 
 
 def build(entry):
-    """The entry's whole file: the lab's current starter, steps filled (the entry's, else the solution's), edits."""
-    return FILES[entry.lab].build(entry.name)
+    """The entry's whole file: the lab's current starter, steps filled (the entry's, else the solution's), edits,
+    then its extra text (an empty `old` puts `new` first in the file)."""
+    source = FILES[entry.lab].build(entry.name)
+    for old, new in entry.extra_text:
+        source = new + source if old == "" else mutants.apply_edits(source, [(old, new)], entry.name, "the built file",
+                                                                    "tests/corpus_attacks.py")
+    return source
 
 
 def write(directory, entries=None):

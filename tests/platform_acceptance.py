@@ -127,7 +127,29 @@ def submissions():
         ("another lab", {"bullets.py": read("solutions/bullets.py")}, zero),
         ("reads the answers", {"tumbling_crates.py": answer_reader()}, lambda s, m, st, p, d: s <= st),
         ("opens the answers", {"tumbling_crates.py": answer_opener()}, denied),
-    ]
+    ] + issue35_rows()
+
+
+GRADED = {}   # name -> score of the rows graded so far on the current platform (the honest files come first)
+
+
+def issue35_rows():
+    """Tumbling Crates' issue-35 entries of tests/corpus_attacks.py, each after its honest file (the same file
+    without the attack): an attack scores no more than its honest file did on the same platform; a control
+    gets full marks."""
+    import corpus_attacks as corpus
+    rows = []
+    for entry in corpus.BY_LAB["tumbling_crates"]:
+        if not entry.mechanism:
+            continue
+        files = {"tumbling_crates.py": corpus.build(entry), **dict(entry.extra_files)}
+        if entry.target is None:
+            rows.append((entry.name, files, lambda s, m, st, p, d: s == m))
+            continue
+        honest = corpus.HONEST[entry.name]
+        rows.append((honest.name, {"tumbling_crates.py": corpus.build(honest)}, lambda s, m, st, p, d: True))
+        rows.append((entry.name, files, lambda s, m, st, p, d, h=honest.name: s <= GRADED.get(h, -1)))
+    return rows
 
 
 # ------------------------------------------------------------------ root file systems
@@ -528,6 +550,7 @@ def main(argv=None):
                 cls = {"gradescope": Gradescope, "prairielearn": PrairieLearn, "classroom": Classroom}[kind]
                 graders = {}
                 starter_score = None
+                GRADED.clear()
                 for index, (name, files, expect, package) in enumerate(cases):
                     if package not in graders:
                         grader = cls(platform, base, tempfile.mkdtemp(prefix=f"{platform}-", dir=work_all),
@@ -538,6 +561,7 @@ def main(argv=None):
                     score, top, seconds, message, doc = graders[package].grade(files, index)
                     if name == "starter":
                         starter_score = score
+                    GRADED[name] = score
                     ok = score is not None and expect(score, top, starter_score, platform, doc)
                     rows.append((platform, name, score, top, seconds, ok, message, graders[package].ran_as))
                     print(f"  {platform:17} {name:22} {score}/{top} {seconds:5.1f} s {'ok' if ok else 'NOT AS EXPECTED'}",

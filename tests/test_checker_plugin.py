@@ -1,16 +1,19 @@
 """A lab is one module: a new lab is graded without touching child.py, grade.py, cli.py or report.py.
 
-The test writes a toy lab (a student file), its checks module, its probe module and its starter
-(the handout: the parent replays the probe's calls of the step functions through it) into a
-temporary folder, adds one row to checker.labs.LABS for this process only, and grades the
+The test writes a toy lab's checks module, probe module and starter (the handout: the parent
+replays the probe's calls of the step functions through it) into a fresh folder of checker/labs/,
+as a real lab is added, and a student file into a temporary folder; it adds one row to checker.labs.LABS for this process only, and grades the
 toy file with the command line in-process: the probe runs in the child (which imports the
 lab's probe module by the name the lab gives), a scene runs under the lab runtime, and the
 checks receive what the checks they depend on returned.
 """
 import importlib
 import json
+import os
+import shutil
 import sys
 import textwrap
+import uuid
 
 import pytest
 
@@ -56,7 +59,7 @@ import os
 from checker.checks import Fail, Passed, Registry
 
 TITLE = "Toy Lab"
-PROBES = "toy_lab_probes"
+PROBES = __name__.rsplit(".", 1)[0] + ".probes"   # this lab's probe module, beside this one
 STARTER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "toy_starter.py")  # the handout: its step functions
 CHECKS = Registry()
 
@@ -98,19 +101,27 @@ def runs(sub, total):
 
 @pytest.fixture
 def toy_lab(tmp_path, monkeypatch):
-    """The toy lab registered for this process; returns the student file's path."""
-    # a real lab's modules live in checker/; here they sit beside the student's file, whose folder the
-    # child process has on its path too, so the child can import the probe module by its name
-    (tmp_path / "toy_lab_probes.py").write_text(textwrap.dedent(PROBES), encoding="utf-8")
-    (tmp_path / "toy_lab_checks.py").write_text(textwrap.dedent(CHECKS), encoding="utf-8")
-    (tmp_path / "toy_starter.py").write_text(STARTER, encoding="utf-8")
-    student = tmp_path / "toy.py"
-    student.write_text(STUDENT, encoding="utf-8")
-    monkeypatch.syspath_prepend(str(tmp_path))
-    module = importlib.import_module("toy_lab_checks")
-    monkeypatch.setattr(labs, "LABS", labs.LABS + (labs.Lab("toy_lab", module.TITLE, module),))
-    yield student
-    sys.modules.pop("toy_lab_checks", None)
+    """The toy lab registered for this process; returns the student file's path.
+
+    Its modules go where a real lab's do, a folder of checker/labs/ (a fresh name, removed afterwards):
+    the child has only the project on its path, never the student's folder, where they once sat."""
+    folder = os.path.join(os.path.dirname(labs.__file__), f"_toy_{uuid.uuid4().hex[:12]}")
+    package = f"checker.labs.{os.path.basename(folder)}"
+    os.mkdir(folder)
+    try:
+        for name, text in (("__init__.py", ""), ("probes.py", textwrap.dedent(PROBES)),
+                           ("checks.py", textwrap.dedent(CHECKS)), ("toy_starter.py", STARTER)):
+            with open(os.path.join(folder, name), "w", encoding="utf-8") as handle:
+                handle.write(text)
+        student = tmp_path / "toy.py"
+        student.write_text(STUDENT, encoding="utf-8")
+        module = importlib.import_module(package + ".checks")
+        monkeypatch.setattr(labs, "LABS", labs.LABS + (labs.Lab("toy_lab", module.TITLE, module),))
+        yield student
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+        for name in [name for name in sys.modules if name.startswith(package)]:
+            sys.modules.pop(name, None)
 
 
 def test_a_new_lab_is_graded_with_one_module_and_one_row(toy_lab, capsys):

@@ -16,6 +16,7 @@ import uuid
 import pytest
 
 from checker import sandbox
+from checker import users
 from checker.sandbox import Limits, run_child
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -50,10 +51,14 @@ def processes_marked(mark):
 
 
 def grade(paths, zygote, mark):
+    """The checker's --json document of paths, with the zygote on or off. As root the children run as root
+    (--child-user root): the two ways of starting a child are compared here, not the user switch, whose
+    default (nobody) cannot start this machine's Python without the zygote (tests/test_checker_safe_default.py)."""
     env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
                CHECKER_ZYGOTE="1" if zygote else "0", CHECKER_TEST_MARK=mark)
+    as_root = ["--child-user", "root"] if users.is_root() else []
     proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--timeout", "8", "--memory", "512",
-                           *paths], cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
+                           *as_root, *paths], cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
     document = json.loads(proc.stdout)
     return proc.returncode, without_seconds(document)
 

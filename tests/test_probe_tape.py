@@ -42,7 +42,9 @@ def recorded(lab, path, seed, tmp_path):
     with open(path, encoding="utf-8") as handle:
         source = handle.read()
     settings = probing.settings_for(lab, source, seed)
-    module = child.load_lab(path, str(tmp_path / os.path.basename(path)))
+    copy = tmp_path / child.copy_name(path)   # the child reads the copy sandbox.run_child puts in its folder
+    copy.write_bytes(open(path, "rb").read())
+    module = child.load_lab(path, str(copy))
     result = child.run_probe(module, path, importlib.import_module(lab.probes), 10.0, settings)
     return settings, json.loads(json.dumps(result)), source
 

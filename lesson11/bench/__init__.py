@@ -10,3 +10,6 @@
 Run the study with `python -m lesson11.bench.accuracy_cost` (a few minutes) or
 add `--quick` for a small run in seconds; the same for `python -m lesson11.bench.speed`.
 """
+from lesson11.console import safe_output
+
+safe_output()  # every benchmark prints ×, ², μ: a console that is not UTF-8 gets stand-ins

@@ -571,9 +571,9 @@ def physics2d_note():
     folder = Path(world_module.__file__).resolve().parent
     try:
         commit = subprocess.run(["git", "log", "-1", "--format=%h %cs", "--", "."], cwd=folder, capture_output=True,
-                                text=True, timeout=10).stdout.strip()
+                                text=True, encoding="utf-8", errors="replace", timeout=10).stdout.strip()
         changed = subprocess.run(["git", "status", "--porcelain", "--", "."], cwd=folder, capture_output=True,
-                                 text=True, timeout=10).stdout.strip()
+                                 text=True, encoding="utf-8", errors="replace", timeout=10).stdout.strip()
     except (OSError, subprocess.SubprocessError):
         return "physics2d: not in a git checkout"
     if not commit:
@@ -584,7 +584,8 @@ def physics2d_note():
 def machine_note():
     """Cores, Python, pygame-ce, pymunk, the platform and the load when the run started."""
     import pygame
-    load = " / ".join(f"{x:.2f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "n/a"
+    loadavg = getattr(os, "getloadavg", None)  # not on Windows
+    load = " / ".join(f"{x:.2f}" for x in loadavg()) if loadavg else "n/a"
     return (f"{os.cpu_count()} cores · Python {platform.python_version()} · pygame-ce {pygame.version.ver} · "
             f"pymunk {pymunk_version() or 'not installed'} · {platform.platform()} · load average {load} · "
             f"{physics2d_note()}")

@@ -3,6 +3,9 @@
 Run one with `python -m lesson11.examples.<name>`, or all of them with
 `python -m lesson11.examples`. The README in this folder says what each shows.
 """
+from lesson11.console import safe_output
+
+safe_output()  # every way in (one example or all) prints θ, ×, ²: a console that is not UTF-8 gets stand-ins
 
 # name, what it shows; the runner (__main__.py) and the tests use this list.
 EXAMPLES = [
