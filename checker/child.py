@@ -1,6 +1,7 @@
 """The child process that runs one lab file for the checker, isolated from the grader.
 
     python -m checker.child LAB_PATH TASK SETTINGS_JSON fd:N
+    python -m checker.child LAB_PATH TASK SETTINGS_JSON stdout:FILE     (the portable path)
 
 TASK is "probe" (import the lab and test its own functions on the lesson's
 cases) or "scenario" (configure the lab runtime with SETTINGS_JSON and run the
@@ -14,21 +15,28 @@ from the copy's source under the submitted file's name (so tracebacks name the
 student's file and line) and imported under the module name "lab_under_test",
 so its `if __name__ == "__main__":` guard does not run main(). No bytecode is
 written anywhere. What the child calls after the lab's code ran (json.dumps, the
-pipe's write, describe(), ...) is bound before the lab loads.
+pipe's write, describe(), ...) is bound before the lab loads. On the portable path
+(Windows, CHECKER_PORTABLE=1: checker/sandbox.py) the result channel is the child's
+own stdout, and the lab's stdout goes to FILE from before the lab loads; the child
+then applies its limits itself (CHECKER_CHILD_LIMITS, see Watchdog).
 
-The parent sets the resource limits and the wall-clock timeout; this file only
+On the POSIX path the parent sets the resource limits and the wall-clock timeout; this file only
 arms faulthandler (on SIGXCPU, the CPU-time limit, and shortly before the
 wall-clock limit) so that a run killed for taking too long leaves a traceback
 (where the lab was looping) in "timeout_traceback.txt" in the working directory.
 """
+import _thread
 import faulthandler
 import importlib
 import io
 import json
+import math
 import os
 import sys
 import signal
 import traceback
+import threading
+import time
 import types
 
 from checker.source import read as read_source   # imported here, so the zygote has it warm
@@ -146,7 +154,9 @@ def _alarm(signum, frame):
 
 
 def call_limited(func, seconds, *args):
-    """func(*args), interrupted with FunctionTimeout after `seconds` of CPU time (SIGPROF)."""
+    """func(*args), interrupted with FunctionTimeout after `seconds` of CPU time (SIGPROF, or the Watchdog)."""
+    if _watchdog is not None:
+        return _watchdog.call(func, seconds, *args)
     previous = signal.signal(signal.SIGPROF, _alarm)
     signal.setitimer(signal.ITIMER_PROF, seconds)
     try:
@@ -154,6 +164,76 @@ def call_limited(func, seconds, *args):
     finally:
         signal.setitimer(signal.ITIMER_PROF, 0)
         signal.signal(signal.SIGPROF, previous)
+
+
+class Watchdog(threading.Thread):
+    """The portable child's CPU-time limits, kept by a thread: no SIGPROF, setitimer or SIGXCPU needed.
+
+    The whole run: past `budget` s of process CPU time it writes every thread's stack to `trace`
+    (where the lab was looping) and ends the process, as RLIMIT_CPU with SIGXCPU does on POSIX.
+    One probe call (call()): past its `seconds` of CPU it interrupts the main thread
+    (_thread.interrupt_main), whose SIGINT handler raises FunctionTimeout inside the student's function.
+    A tick is TICK s, so a limit is kept to about that.
+    """
+    TICK = 0.05
+
+    def __init__(self, budget, trace):
+        super().__init__(daemon=True)
+        self.budget, self.trace = budget, trace
+        self.until, self.call_id, self.fired = None, 0, -1   # the current call's CPU deadline and its number
+        signal.signal(signal.SIGINT, self._interrupt)
+        self.start()
+
+    def run(self):
+        while True:
+            time.sleep(self.TICK)
+            now = time.process_time()
+            if now >= self.budget:
+                faulthandler.dump_traceback(file=self.trace, all_threads=True)
+                self.trace.flush()
+                _real_exit(1)
+            call_id, until = self.call_id, self.until
+            if until is not None and now >= until and self.fired != call_id:
+                self.fired = call_id
+                _thread.interrupt_main()
+
+    def _interrupt(self, signum, frame):
+        # only the call the watchdog fired for, and only while it runs (a late interrupt is dropped)
+        if self.until is not None and self.fired == self.call_id:
+            self.until = None
+            raise FunctionTimeout()
+
+    def call(self, func, seconds, *args):
+        self.call_id += 1
+        self.until = time.process_time() + seconds
+        try:
+            return func(*args)
+        finally:
+            self.until = None
+
+
+_watchdog = None   # the portable child's Watchdog
+
+
+def _stdout_channel(path):
+    """The portable result channel: the real stdout, kept on a new fd; fd 1 (the lab's stdout) now goes to `path`."""
+    sys.stdout.flush()
+    channel = os.dup(1)   # not inherited by anything the lab starts
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC | getattr(os, "O_BINARY", 0), 0o600)
+    os.dup2(fd, 1)
+    os.close(fd)
+    return os.fdopen(channel, "w", encoding="utf-8")
+
+
+def _portable_limits(result_pipe, trace):
+    """Apply the run's limits from inside (CHECKER_CHILD_LIMITS): the rlimits the system accepts (notes of the
+    refused ones go to the parent) and the Watchdog for CPU time. Returns the sandbox.Limits."""
+    from checker import sandbox
+    global _watchdog
+    limits = sandbox.Limits(**json.loads(os.environ.pop("CHECKER_CHILD_LIMITS", "{}")))
+    sandbox.write_notes(result_pipe.fileno(), sandbox.set_rlimits(limits, cpu=False))
+    _watchdog = Watchdog(max(1, math.ceil(limits.timeout)), trace)   # RLIMIT_CPU's soft limit on POSIX
+    return limits
 
 
 def run_probe(module, lab_path, probes, seconds, settings):
@@ -175,7 +255,7 @@ def run_probe(module, lab_path, probes, seconds, settings):
         if not callable(getattr(module, function, None)):
             continue
         try:
-            call_limited(probe, seconds, recorder, lab_path)
+            call_limited(recorder.run, seconds, probe, lab_path)   # no reference helper runs here
             result["tapes"][name] = {"tape": recorder.take()}
         except FunctionTimeout as exc:
             error = describe(exc, lab_path)
@@ -207,7 +287,8 @@ def run_scenario(module, settings):
         runtime.write_record()
 
 
-RESERVED = ("settings.json", "record.json", "timeout_traceback.txt")   # the checker's own files in the work folder
+# the checker's own files in the work folder (lab_stdout.txt: the lab's stdout on the portable path)
+RESERVED = ("settings.json", "record.json", "timeout_traceback.txt", "lab_stdout.txt")
 
 
 def copy_name(lab_path):
@@ -232,16 +313,21 @@ def _keep_lines(lab_path, copy_path):
 
 def main(argv):
     lab_path, task, settings_path, channel = argv
-    result_pipe = os.fdopen(int(channel.split(":", 1)[1]), "w", encoding="utf-8")
+    kind, _, target = channel.partition(":")
+    portable = kind == "stdout"
+    result_pipe = _stdout_channel(target) if portable else os.fdopen(int(target), "w", encoding="utf-8")
     copy_path = os.path.abspath(copy_name(lab_path))   # the copy sandbox.run_child put in the working folder
     sys.argv[:] = [copy_path]
     _only_the_project_on_path()
     faulthandler.enable()
     budget = float(os.environ.get("CHECKER_FAULT_SECONDS", "0") or 0)
-    trace = open("timeout_traceback.txt", "w")
+    trace = open("timeout_traceback.txt", "w", encoding="utf-8")   # faulthandler writes to its fd: ASCII
     if budget > 0:
         faulthandler.dump_traceback_later(budget, exit=True, file=trace)
-    faulthandler.register(signal.SIGXCPU, file=trace, all_threads=False)  # the CPU-time limit: where it looped
+    if portable:
+        limits = _portable_limits(result_pipe, trace)
+    else:
+        faulthandler.register(signal.SIGXCPU, file=trace, all_threads=False)  # the CPU-time limit: where it looped
     os._exit = _blocked_os_exit
     with open(settings_path, encoding="utf-8") as handle:
         settings = json.load(handle)
@@ -264,6 +350,10 @@ def main(argv):
         write(dumps(result) + "\n")
         flush()
 
+    if portable and limits.user:   # the POSIX path drops root before the lab's interpreter starts; here, now,
+        from checker import sandbox, zygote   # after importing what a lab needs, as the zygote does
+        zygote.warm_up()
+        sandbox.drop_user(limits.user)
     save()
     try:
         module = load_lab(lab_path, copy_path)

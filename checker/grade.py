@@ -60,6 +60,7 @@ class LabReport:
     preview: str = ""   # the scene run ungraded for a picture when the graded scenes never ran (--pictures)
     seed: int | None = None   # the seed of the probe inputs drawn for this run (--seed N grades with the same)
     flags: list = field(default_factory=list)   # step_rules breaches as dicts (step, line, rule, what, text)
+    notes: list = field(default_factory=list)   # limits this system refused and the runs went without (sandbox)
 
     @property
     def score(self):
@@ -209,8 +210,10 @@ class Grader:
                 if settings is not None else None
             if run is not None and getattr(run, "record", None) and run.record.get("records"):
                 records[name], preview = run.record, name
+        runs = [sub.probe, *sub.scenarios.values()]
+        notes = sorted({note for run in runs for note in getattr(run, "notes", ())})
         return LabReport(given, lab, results, time.monotonic() - start, records, preview, settings["seed"],
-                         [asdict(b) for b in sub.flags])
+                         [asdict(b) for b in sub.flags], notes)
 
     @staticmethod
     def _wants_preview(results):

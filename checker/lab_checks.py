@@ -129,6 +129,15 @@ def function_data(sub, functions, probe, function, step, crash_hint):
                    "(a + ab * t makes a new vector; a += ... changes a).",
                    Hint(step, f"the arguments of {function}()", "A function that answers a question must not "
                         "change what it was asked about: build new vectors and lists, leave the arguments alone."))
+    if isinstance(entry["data"], list) and not entry["data"]:   # the grader's probe always has cases: never a pass
+        raise Error(f"the checker's probe of {function}() holds no case, so nothing was graded.", crash_hint)
+    for changer, fields in sorted((entry.get("changed_fields") or {}).items()):
+        raise Fail(f"{changer}() changes the {', '.join(fields)} of a body it is given: a step may change a body's "
+                   "motion (position, velocity, spin), never its mass, inertia, material or shape, which the "
+                   "lesson's formulas read. Read those fields, don't set them.",
+                   Hint(step, f"the bodies given to {changer}()", "Use a body's mass, inv_mass, inertia, "
+                        "inv_inertia, friction, restitution and shape as they are: they describe the body, "
+                        "and every other contact reads them too."))
     return entry["data"]
 
 

@@ -3,14 +3,32 @@
 Tumbling Crates and More Shapes both probe a sat(); Ball on the Ramp and Bullets
 place boxes and polygons. Units: px, degrees for the angles given here
 (clockwise on screen), rad inside the bodies.
+
+A probe runs twice: in the child (the student's code runs there) it only calls the
+student's functions on its inputs; in the grader it replays the child's tape and adds
+the lesson's answers. So every reference value is computed under `if judging(module):`
+by a helper marked `@reference` (which raises if the child ever calls it), from inputs
+or from a `twin` of a body taken before the student's function could change it.
 """
+import copy
 import math
 
 from pygame import Vector2
 
 from lesson11.physics2d import box_points, centre_of, cross, edge_normals, project, regular_polygon
 
-from .tape import splice_name
+from .tape import judging, reference, splice_name  # noqa: F401 (the labs' probes import them from here)
+
+
+def twin(body):
+    """A separate copy of `body` (its own pos and vel vectors; the shape is shared, it is never changed).
+
+    Taken before a student's function gets the body, so a reference computed from the twin
+    reads the body as it was given, whatever the function did to it.
+    """
+    copied = copy.copy(body)
+    copied.pos, copied.vel = Vector2(body.pos), Vector2(body.vel)
+    return copied
 
 
 def with_reference_steps(module, lab_path, function, steps, solution=None):
@@ -115,6 +133,7 @@ def axis_overlaps(pa, pb):
     return out
 
 
+@reference
 def reference_sat(pa, pb, rule="lesson"):
     """The lesson's sat (or, with rule="short", the shorter-way-out depth): None or (normal A→B, depth)."""
     best_axis, best_depth = None, math.inf

@@ -19,6 +19,7 @@ from . import source as source_text
 from .handout import MarkerError, step_regions
 
 _STARTERS = {}   # starter path -> (its compiled code, its step functions)
+MAX_TAPE = 200_000   # entries on one probe's tape the grader replays at most (the solutions' longest: about 2000)
 
 
 def regions_by_function(source):
@@ -124,7 +125,8 @@ def judge(lab, path, settings, child):
     starter = getattr(lab.module, "STARTER", None)
     tapes = child.get("tapes") if isinstance(child, dict) else None
     missing = child.get("missing") if isinstance(child, dict) else None
-    if not isinstance(tapes, dict) or not isinstance(missing, list):
+    constants = child.get("constants", {}) if isinstance(child, dict) else None
+    if not isinstance(tapes, dict) or not isinstance(missing, list) or not isinstance(constants, dict):
         return {"missing": [], "functions": {name: {"ok": False, "error": _error(
             "the probe's result is not in the checker's format (the file's code changed what the child reports)")}
             for name in probes.PROBES}}
@@ -139,8 +141,13 @@ def judge(lab, path, settings, child):
         if not isinstance(record, dict) or not isinstance(record.get("tape"), list):
             continue
         child_error = record.get("error") if isinstance(record.get("error"), dict) else None
-        replay = tape.Replayer(namespace, steps, record["tape"], child.get("constants"), settings.get("seed", 0))
+        if len(record["tape"]) > MAX_TAPE:   # no probe makes that many calls: refuse before replaying any
+            functions[name] = {"ok": False, "error": _error(
+                f"the child reported {len(record['tape'])} calls for the probe of {function}(), more than the "
+                f"checker's probe makes (at most {MAX_TAPE}): the child's report was changed")}
+            continue
         try:
+            replay = tape.Replayer(namespace, steps, record["tape"], constants, settings.get("seed", 0))
             data = probe(replay, path)
         except (tape.StudentRaised, tape.TapeEnded) as exc:
             functions[name] = {"ok": False, "error": child_error or _error(
@@ -160,5 +167,6 @@ def judge(lab, path, settings, child):
             functions[name] = {"ok": False, "error": _error(
                 f"the child reported more calls of {function}() than the checker's probe makes")}
         else:
-            functions[name] = {"ok": True, "data": data, "changed_arguments": replay.changed(pure)}
+            functions[name] = {"ok": True, "data": data, "changed_arguments": replay.changed(pure),
+                               "changed_fields": replay.tampered()}
     return {"missing": [str(m) for m in missing], "functions": functions}

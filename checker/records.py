@@ -63,10 +63,15 @@ def max_pair_overlap(bodies):
 
 
 def finite(frames):
-    """True when every recorded number is finite."""
+    """True when every recorded number is finite: positions, velocities, angles, spins and corners.
+
+    The metrics compare numbers: a NaN compares False with every bound, so a record holding one
+    must fail here rather than slip through a criterion.
+    """
     for frame in frames:
         for body in frame["bodies"]:
-            values = body["pos"] + body["vel"] + [body["angle"], body["omega"]]
+            values = body["pos"] + body["vel"] + [body["angle"], body["omega"]] + \
+                [c for point in body.get("points", ()) for c in point]
             if not all(math.isfinite(v) for v in values):
                 return False
     return True

@@ -108,7 +108,8 @@ def to_json(reports, errors=(), root=None, pictures=None):
                   "title": r.lab.title if r.lab is not None else None, "status": r.status,
                   "score": r.score, "max_score": r.max_score, "seconds": round(r.seconds, 2),
                   "seed": getattr(r, "seed", None), "message": message_of(r),
-                  "flags": list(getattr(r, "flags", ()) or ()), "criteria": [_criterion_json(c, r, pictures) for c in r.results]}
+                  "flags": list(getattr(r, "flags", ()) or ()), "notes": list(getattr(r, "notes", ()) or ()),
+                  "criteria": [_criterion_json(c, r, pictures) for c in r.results]}
                  for r in reports],
         "errors": [{"path": p, "message": m} for p, m in all_errors],
     }

@@ -17,6 +17,14 @@ a process started once per grading run that has already imported pygame, lesson1
 so each run saves starting Python and those imports. CHECKER_ZYGOTE=0 in the environment (or
 USE_ZYGOTE = False here) turns it off; whenever the zygote cannot be started or stops answering,
 children are started with subprocess as before. The run and its RunResult are the same either way.
+A limit the system refuses (macOS refuses RLIMIT_AS) is skipped and noted in RunResult.notes.
+
+The portable path (portable(): Windows, no fork or process groups, or CHECKER_PORTABLE=1) starts
+the child with plain subprocess and no preexec_fn or pass_fds: the child's stdout is its result
+channel (it moves the lab's stdout to a file first), threads read the pipes, the parent kills
+the whole tree at the wall-clock limit or on a flood (a Job Object on Windows, else the process
+group), and the child applies its own limits: rlimits where `resource` exists and the system
+accepts them, CPU time by a watchdog thread, on Windows memory by the parent's Job Object.
 """
 import json
 import math
@@ -32,7 +40,7 @@ import sys
 import tempfile
 import threading
 import time
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 
 from . import users
 
@@ -72,6 +80,7 @@ class RunResult:
     returncode: int | None = None
     seconds: float = 0.0
     timeout_trace: str = ""         # faulthandler's stack dump when the run timed out
+    notes: list = field(default_factory=list)   # limits the system refused (skipped), for the run's record
 
 
 _CHILD_ENV = {
@@ -86,22 +95,69 @@ def wall_limit(limits):
     return WALL_FACTOR * limits.timeout + WALL_EXTRA
 
 
-def _limit_child(limits):
-    def apply():
+def portable():
+    """True when children are started the portable way (checker/README.md, "Windows and macOS").
+
+    That is on Windows, wherever fork, setsid or process groups are missing, and whenever
+    CHECKER_PORTABLE=1 is in the environment (then Linux takes the Windows path, so the tests run it).
+    """
+    return (os.environ.get("CHECKER_PORTABLE") == "1" or sys.platform == "win32"
+            or not all(hasattr(os, name) for name in ("fork", "setsid", "killpg")))
+
+
+def set_rlimits(limits, cpu=True):
+    """Apply the run's resource limits to this process where the system accepts them.
+
+    Returns a note per limit not applied: the `resource` module missing (Windows), or setrlimit
+    refusing it (macOS refuses RLIMIT_AS: "current limit exceeds maximum limit"). A refused limit is
+    skipped, never an error: the run goes on, and the note goes to the run's record, not to the student.
+    cpu=False leaves RLIMIT_CPU out (the portable child watches its CPU time with a thread instead).
+    """
+    try:
         import resource
+    except ImportError:   # Windows: the parent limits memory with a Job Object instead
+        missing = "file size" if sys.platform == "win32" else "memory, file size"
+        return [f"resource limits ({missing}): no resource module on this system, not applied"]
+    memory = limits.memory_mb * 1024 * 1024
+    seconds = max(1, math.ceil(limits.timeout))
+    wanted = [("RLIMIT_AS", (memory, memory), f"memory {limits.memory_mb} MB"),
+              ("RLIMIT_CPU", (seconds, seconds + 1), f"CPU time {seconds} s"),
+              ("RLIMIT_FSIZE", (FILE_LIMIT, FILE_LIMIT), f"file size {FILE_LIMIT >> 20} MB"),
+              ("RLIMIT_CORE", (0, 0), "no core dumps")]
+    notes = []
+    for name, value, what in wanted if cpu else [w for w in wanted if w[0] != "RLIMIT_CPU"]:
+        try:
+            resource.setrlimit(getattr(resource, name), value)
+        except (AttributeError, ValueError, OSError) as exc:
+            notes.append(f"{name} ({what}) refused by this system ({type(exc).__name__}: {exc}): not applied")
+    return notes
+
+
+def write_notes(fd, notes):
+    """Send the notes of skipped limits to the parent as one line on the result channel (fd)."""
+    if notes:
+        os.write(fd, (json.dumps({"limits_skipped": notes}) + "\n").encode())
+
+
+def drop_user(user):
+    """Run as `user` from now on (groups first, then group, then user); the caller must be root."""
+    import pwd
+    entry = pwd.getpwnam(user)
+    os.setgroups([])
+    os.setgid(entry.pw_gid)
+    os.setuid(entry.pw_uid)
+
+
+def _limit_child(limits, note_fd=None):
+    """The POSIX child's set-up after fork: its own session, the rlimits (notes of refused ones to note_fd),
+    and last the student's user."""
+    def apply():
         os.setsid()
-        memory = limits.memory_mb * 1024 * 1024
-        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
-        cpu = max(1, math.ceil(limits.timeout))
-        resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
-        resource.setrlimit(resource.RLIMIT_FSIZE, (FILE_LIMIT, FILE_LIMIT))
-        resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
-        if limits.user:   # last: drop root for the student's user (groups first, then group, then user)
-            import pwd
-            entry = pwd.getpwnam(limits.user)
-            os.setgroups([])
-            os.setgid(entry.pw_gid)
-            os.setuid(entry.pw_uid)
+        notes = set_rlimits(limits)
+        if note_fd is not None:
+            write_notes(note_fd, notes)
+        if limits.user:   # last: drop root for the student's user
+            drop_user(limits.user)
     return apply
 
 
@@ -120,7 +176,7 @@ def _start(lab_path, task, settings_path, result_fd, work, env, limits):
                f"fd:{result_fd}"]
     return _Subprocess(subprocess.Popen(command, cwd=work, env=env, stdin=subprocess.DEVNULL,
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, pass_fds=(result_fd,),
-                                        preexec_fn=_limit_child(limits)))
+                                        preexec_fn=_limit_child(limits, result_fd)))
 
 
 class _Subprocess:
@@ -178,8 +234,9 @@ class _Forked:
 
 
 def zygote_enabled():
-    """True if children should be forked from the zygote: USE_ZYGOTE, CHECKER_ZYGOTE != "0", POSIX with fork."""
-    return (USE_ZYGOTE and os.environ.get("CHECKER_ZYGOTE", "1") != "0" and hasattr(os, "fork")
+    """True if children should be forked from the zygote: USE_ZYGOTE, CHECKER_ZYGOTE != "0", not portable(),
+    and Unix sockets with SOCK_SEQPACKET (macOS has none: its children are started with subprocess)."""
+    return (USE_ZYGOTE and os.environ.get("CHECKER_ZYGOTE", "1") != "0" and not portable()
             and hasattr(socket, "send_fds") and hasattr(socket, "AF_UNIX") and hasattr(socket, "SOCK_SEQPACKET"))
 
 
@@ -354,19 +411,57 @@ def _read_json(path, limit):
     data = _read_work_file(path, limit)
     try:
         return None if data is None or len(data) > limit else json.loads(data.decode("utf-8"))
-    except (ValueError, RecursionError):
+    except (ValueError, RecursionError, MemoryError):
         return None
 
 
-def _last_result(data):
-    """The last complete JSON line the child wrote on its result pipe (it writes one per phase), or {}."""
-    for line in reversed(data.split(b"\n")[:-1]):
+RESULT_LINE_LIMIT = 8 * 1024 * 1024   # bytes: the largest result line parsed (the solutions' probes: 0.6 MB at most)
+
+
+def _unreadable(why):
+    """A result saying the child's result could not be read: the run's error (the file's code wrote it)."""
+    return {"phase": "run", "error": {"kind": "exception", "line": None, "text": None, "traceback": "",
+                                      "message": f"a result the checker cannot read ({why}); the checker does not "
+                                                 "grade what the child reports then"}}
+
+
+def _read_channel(data):
+    """(the last complete result line the child wrote on its result channel (one per phase) or {},
+    the notes of limits the system refused) from the channel's bytes.
+
+    A line that is not JSON is passed over (the child was stopped while writing). A line too big or
+    nested too deep to read in bounded memory and time is the run's error: the child never writes one,
+    so the file's code did.
+    """
+    result, notes = None, []
+    for line in data.split(b"\n")[:-1]:
+        if len(line) > RESULT_LINE_LIMIT:
+            return _unreadable(f"{len(line) / 1e6:.0f} MB on one line, more than the "
+                               f"{RESULT_LINE_LIMIT // (1024 * 1024)} MB it reads"), notes
         try:
             value = json.loads(line)
+        except (RecursionError, MemoryError) as exc:
+            return _unreadable("nested deeper than it reads" if isinstance(exc, RecursionError)
+                               else "out of memory"), notes
         except ValueError:
             continue
-        return value if isinstance(value, dict) else {}
-    return {}
+        if isinstance(value, dict) and set(value) == {"limits_skipped"}:
+            notes += [str(note) for note in value["limits_skipped"]][:10]
+        else:
+            result = value
+    return (result if isinstance(result, dict) else {}), notes
+
+
+@dataclass
+class _Outcome:
+    """What the parent collected from one child, either path: its end and its three streams (bytes)."""
+    status: str | None      # "timeout" or "flood" when the parent stopped it, else None
+    returncode: int | None
+    stdout: bytes
+    stderr: bytes
+    channel: bytes | None   # the result channel, None when it was larger than RESULT_LIMIT
+    notes: list = field(default_factory=list)   # limits the parent could not apply
+    as_user: bool = False   # the interpreter itself was started as limits.user (the POSIX subprocess path)
 
 
 def _copy_lab(lab_path, work):
@@ -375,17 +470,17 @@ def _copy_lab(lab_path, work):
     shutil.copyfile(lab_path, os.path.join(work, copy_name(lab_path)))
 
 
-def _check_user(result, limits, forked):
+def _check_user(result, limits, as_user):
     """Raise users.ChildUserError when the run failed only because its user could not read Python or a module.
 
-    A child started with subprocess that never reached its first result line failed before any lab code
-    ran (a forked one needs no file of Python's); one whose lab (or a probe's call of it) raised
-    ModuleNotFoundError for a module on the child's path that its user cannot read is not the student's
-    error either.
+    A child whose interpreter was started as that user (the POSIX subprocess path) and that never reached
+    its first result line failed before any lab code ran (a forked one needs no file of Python's); one whose
+    lab (or a probe's call of it) raised ModuleNotFoundError for a module on the child's path that its user
+    cannot read is not the student's error either.
     """
     if not limits.user:
         return
-    if not result and not forked:
+    if not result and as_user:
         problem = users.python_problem(limits.user, PROJECT_ROOT)
         if problem:
             raise users.ChildUserError(problem)
@@ -401,7 +496,8 @@ def _check_user(result, limits, forked):
 def run_child(lab_path, task, settings, limits):
     """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour."""
     lab_path = os.path.abspath(lab_path)
-    with tempfile.TemporaryDirectory(prefix="checker-") as work:
+    # ignore_cleanup_errors: on Windows a file a dying process still holds open cannot be removed yet
+    with tempfile.TemporaryDirectory(prefix="checker-", ignore_cleanup_errors=True) as work:
         settings = dict(settings, max_output=limits.max_output)  # the child stops a flood at its print()
         if task == "scenario":
             settings["record"] = os.path.join(work, "record.json")
@@ -426,64 +522,13 @@ def run_child(lab_path, task, settings, limits):
             "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
         })
         start = time.monotonic()
-        result_read, result_write = os.pipe()   # the child's result comes over a pipe we opened, not a file
-        try:
-            proc = _start(lab_path, task, settings_path, result_write, work, env, limits)
-        except OSError as exc:   # the user cannot even start this Python (the subprocess path)
-            os.close(result_read)
-            if limits.user:
-                raise users.ChildUserError(users.cannot_run_python(limits.user)) from exc
-            raise
-        finally:
-            os.close(result_write)
-        chunks = {"stdout": [], "stderr": []}
-        result_chunks, result_size = [], 0
-        total = 0
-        status = None
-        selector = selectors.DefaultSelector()
-        selector.register(proc.stdout_fd, selectors.EVENT_READ, "stdout")
-        selector.register(proc.stderr_fd, selectors.EVENT_READ, "stderr")
-        selector.register(result_read, selectors.EVENT_READ, "result")
-        open_streams = 3
         deadline = start + wall_limit(limits)
-        while open_streams:
-            remaining = deadline - time.monotonic()
-            if remaining <= 0:
-                status = "timeout"
-                break
-            for key, _ in selector.select(timeout=min(remaining, 0.5)):
-                data = os.read(key.fd, 65536)
-                if not data:
-                    selector.unregister(key.fileobj)
-                    open_streams -= 1
-                    continue
-                if key.data == "result":
-                    result_size += len(data)
-                    if result_size <= RESULT_LIMIT:
-                        result_chunks.append(data)
-                    continue
-                room = limits.max_output - total
-                chunks[key.data].append(data[:max(room, 0)])
-                total += len(data)
-                if total > limits.max_output + FLOOD_SLACK:
-                    status = "flood"
-                    break
-            if status:
-                break
-        if status:
-            _kill_group(proc)
-        try:
-            proc.wait(timeout=max(deadline - time.monotonic(), 0) + 2)
-        except subprocess.TimeoutExpired:
-            status = status or "timeout"
-            _kill_group(proc)
-            proc.wait()
-        _kill_group(proc)  # anything the lab left running in its group
-        selector.close()
-        os.close(result_read)
-        proc.close()
+        collect = _run_portable if portable() else _run_posix
+        outcome = collect(lab_path, task, settings_path, work, env, limits, deadline)
+        status = outcome.status
         seconds = time.monotonic() - start
-        result = _last_result(b"".join(result_chunks)) if result_size <= RESULT_LIMIT else {}
+        result, notes = _read_channel(outcome.channel) if outcome.channel is not None else ({}, [])
+        notes = outcome.notes + notes
         record = _read_json(settings["record"], RECORD_LIMIT) if task == "scenario" else None
         trace = ""
         data = _read_work_file(os.path.join(work, "timeout_traceback.txt"), 1 << 20)
@@ -498,8 +543,247 @@ def run_child(lab_path, task, settings, limits):
                 status = "error"
             else:
                 status = "crash"
-        _check_user(result, limits, isinstance(proc, _Forked))   # an unreadable import is the checker's problem
+        _check_user(result, limits, outcome.as_user)   # an unreadable import is the checker's problem, not the student's
         return RunResult(status=status, result=result, record=record,
-                         stdout=b"".join(chunks["stdout"]).decode("utf-8", "replace"),
-                         stderr=b"".join(chunks["stderr"]).decode("utf-8", "replace"),
-                         returncode=proc.returncode, seconds=seconds, timeout_trace=trace)
+                         stdout=outcome.stdout.decode("utf-8", "replace"),
+                         stderr=outcome.stderr.decode("utf-8", "replace"),
+                         returncode=outcome.returncode, seconds=seconds, timeout_trace=trace, notes=notes)
+
+
+def _run_posix(lab_path, task, settings_path, work, env, limits, deadline):
+    """Start the child (zygote or subprocess) with a result pipe and read its three pipes with a selector."""
+    result_read, result_write = os.pipe()   # the child's result comes over a pipe we opened, not a file
+    try:
+        proc = _start(lab_path, task, settings_path, result_write, work, env, limits)
+    except OSError as exc:   # the user cannot even start this Python (the subprocess path)
+        os.close(result_read)
+        if limits.user:
+            raise users.ChildUserError(users.cannot_run_python(limits.user)) from exc
+        raise
+    finally:
+        os.close(result_write)
+    chunks = {"stdout": [], "stderr": []}
+    result_chunks, result_size = [], 0
+    total = 0
+    status = None
+    selector = selectors.DefaultSelector()
+    selector.register(proc.stdout_fd, selectors.EVENT_READ, "stdout")
+    selector.register(proc.stderr_fd, selectors.EVENT_READ, "stderr")
+    selector.register(result_read, selectors.EVENT_READ, "result")
+    open_streams = 3
+    while open_streams:
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            status = "timeout"
+            break
+        for key, _ in selector.select(timeout=min(remaining, 0.5)):
+            data = os.read(key.fd, 65536)
+            if not data:
+                selector.unregister(key.fileobj)
+                open_streams -= 1
+                continue
+            if key.data == "result":
+                result_size += len(data)
+                if result_size <= RESULT_LIMIT:
+                    result_chunks.append(data)
+                continue
+            room = limits.max_output - total
+            chunks[key.data].append(data[:max(room, 0)])
+            total += len(data)
+            if total > limits.max_output + FLOOD_SLACK:
+                status = "flood"
+                break
+        if status:
+            break
+    if status:
+        _kill_group(proc)
+    try:
+        proc.wait(timeout=max(deadline - time.monotonic(), 0) + 2)
+    except subprocess.TimeoutExpired:
+        status = status or "timeout"
+        _kill_group(proc)
+        proc.wait()
+    _kill_group(proc)  # anything the lab left running in its group
+    selector.close()
+    os.close(result_read)
+    proc.close()
+    return _Outcome(status, proc.returncode, b"".join(chunks["stdout"]), b"".join(chunks["stderr"]),
+                    b"".join(result_chunks) if result_size <= RESULT_LIMIT else None,
+                    as_user=not isinstance(proc, _Forked))
+
+
+# ---------------------------------------------------------------- the portable path (Windows; CHECKER_PORTABLE=1)
+
+STDOUT_FILE = "lab_stdout.txt"   # in the work folder: the lab's stdout on the portable path
+
+
+class _Drain(threading.Thread):
+    """Reads a pipe to its end in a thread (Windows cannot select() on pipes): keeps `keep` bytes, counts all."""
+
+    def __init__(self, stream, keep):
+        super().__init__(daemon=True)
+        self.stream, self.fd, self.keep = stream, stream.fileno(), keep
+        self.chunks, self.kept, self.size = [], 0, 0
+        self.start()
+
+    def run(self):
+        try:
+            while True:
+                data = os.read(self.fd, 65536)   # not the buffered stream: its close() would wait on this read
+                if not data:
+                    return
+                self.size += len(data)
+                if self.kept < self.keep:
+                    self.chunks.append(data[:self.keep - self.kept])
+                    self.kept += len(self.chunks[-1])
+        except (OSError, ValueError):
+            return   # the pipe was closed under us: what was read is kept
+
+    def data(self):
+        return b"".join(self.chunks)
+
+    def close(self):
+        """Wait up to 2 s for the end of the pipe, then close it; a grandchild the kill missed may hold it open,
+        and then it is left to the thread (closing a pipe another thread reads is not safe everywhere)."""
+        self.join(timeout=2.0)
+        if not self.is_alive():
+            self.stream.close()
+
+
+def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
+    """Start `python -m checker.child` with plain subprocess and watch it from here.
+
+    The child's real stdout is its result channel (the child moves the lab's stdout to STDOUT_FILE
+    before the lab loads); its stderr is the lab's. Both pipes are read by threads. The parent stops
+    the whole process tree at the wall-clock limit or past max_output + FLOOD_SLACK bytes of output;
+    the child applies its own resource limits and watches its CPU time (checker/child.py).
+    """
+    out_path = os.path.join(work, STDOUT_FILE)
+    command = [sys.executable, "-X", "faulthandler", "-m", "checker.child", lab_path, task, settings_path,
+               f"stdout:{out_path}"]
+    env = dict(env, CHECKER_CHILD_LIMITS=json.dumps(asdict(limits)))
+    if sys.platform == "win32":
+        group = {"creationflags": subprocess.CREATE_NEW_PROCESS_GROUP}
+    else:
+        group = {"start_new_session": True}   # POSIX emulation: a process group to kill, set up by subprocess itself
+    popen = subprocess.Popen(command, cwd=work, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, **group)
+    job, notes = None, []
+    if sys.platform == "win32":
+        job = _windows_job(popen, limits)
+        if job is None:
+            notes.append(f"memory limit ({limits.memory_mb} MB): Windows refused a Job Object, not applied")
+    channel, errors = _Drain(popen.stdout, RESULT_LIMIT + 1), _Drain(popen.stderr, limits.max_output)
+    status = None
+    while status is None:
+        try:
+            popen.wait(timeout=0.1)
+            break
+        except subprocess.TimeoutExpired:
+            pass
+        if time.monotonic() >= deadline:
+            status = "timeout"
+        elif _flooded(errors, out_path, limits):
+            status = "flood"
+    if status is None and _flooded(errors, out_path, limits):
+        status = "flood"   # it ended (the file-size limit, say) between two looks
+    _kill_tree(popen, job)   # a stopped run, and anything the lab left running
+    try:
+        popen.wait(timeout=5)
+    except subprocess.TimeoutExpired:
+        pass   # not killable from here: its returncode stays None and the run counts as stopped
+    channel.close()
+    errors.close()
+    stderr = errors.data()
+    try:
+        with open(out_path, "rb") as handle:
+            stdout = handle.read(max(limits.max_output - len(stderr), 0))
+    except OSError:
+        stdout = b""
+    return _Outcome(status, popen.returncode, stdout, stderr, channel.data() if channel.size <= RESULT_LIMIT else None,
+                    notes)
+
+
+def _flooded(errors, out_path, limits):
+    """True once the lab's stderr and stdout file hold more than max_output + FLOOD_SLACK bytes."""
+    try:
+        size = os.path.getsize(out_path)
+    except OSError:
+        size = 0
+    return errors.size + size > limits.max_output + FLOOD_SLACK
+
+
+def _kill_tree(popen, job):
+    """Kill the child and everything it started: the Job Object (Windows), taskkill /T, or the process group."""
+    if job is not None:
+        job.close()   # KILL_ON_JOB_CLOSE ends every process in the job
+    elif sys.platform == "win32":
+        subprocess.run(["taskkill", "/T", "/F", "/PID", str(popen.pid)], stdin=subprocess.DEVNULL,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    elif hasattr(os, "killpg") and hasattr(signal, "SIGKILL"):
+        _kill_group(popen)
+    if popen.poll() is None and (sys.platform == "win32" or hasattr(signal, "SIGKILL")):
+        popen.kill()
+    elif popen.poll() is None:
+        popen.terminate()   # a POSIX without SIGKILL (the Windows emulation in the tests)
+
+
+class _WindowsJob:
+    """A Windows Job Object holding the child: closing it kills every process in it (KILL_ON_JOB_CLOSE),
+    and it caps each process's memory at limits.memory_mb (ProcessMemoryLimit).
+
+    UNTESTED on this project's machines (Linux): written against the documented Win32 structures
+    (JOBOBJECT_EXTENDED_LIMIT_INFORMATION). If any call fails the run goes on without it (no memory
+    limit; the tree is then killed with taskkill /T /F).
+    """
+
+    KILL_ON_JOB_CLOSE, PROCESS_MEMORY, EXTENDED_LIMIT_INFORMATION = 0x2000, 0x100, 9
+
+    def __init__(self, popen, limits):
+        import ctypes
+        from ctypes import wintypes
+        self.kernel32 = kernel32 = ctypes.WinDLL("kernel32", use_last_error=True)
+        kernel32.CreateJobObjectW.restype = wintypes.HANDLE
+        kernel32.CreateJobObjectW.argtypes = (wintypes.LPVOID, wintypes.LPCWSTR)
+        kernel32.SetInformationJobObject.argtypes = (wintypes.HANDLE, ctypes.c_int, wintypes.LPVOID, wintypes.DWORD)
+        kernel32.AssignProcessToJobObject.argtypes = (wintypes.HANDLE, wintypes.HANDLE)
+        kernel32.CloseHandle.argtypes = (wintypes.HANDLE,)
+
+        class Basic(ctypes.Structure):
+            _fields_ = [("PerProcessUserTimeLimit", ctypes.c_int64), ("PerJobUserTimeLimit", ctypes.c_int64),
+                        ("LimitFlags", wintypes.DWORD), ("MinimumWorkingSetSize", ctypes.c_size_t),
+                        ("MaximumWorkingSetSize", ctypes.c_size_t), ("ActiveProcessLimit", wintypes.DWORD),
+                        ("Affinity", ctypes.c_size_t), ("PriorityClass", wintypes.DWORD),
+                        ("SchedulingClass", wintypes.DWORD)]
+
+        class Extended(ctypes.Structure):
+            _fields_ = [("BasicLimitInformation", Basic), ("IoInfo", ctypes.c_uint64 * 6),
+                        ("ProcessMemoryLimit", ctypes.c_size_t), ("JobMemoryLimit", ctypes.c_size_t),
+                        ("PeakProcessMemoryUsed", ctypes.c_size_t), ("PeakJobMemoryUsed", ctypes.c_size_t)]
+
+        self.handle = kernel32.CreateJobObjectW(None, None)
+        if not self.handle:
+            raise ctypes.WinError(ctypes.get_last_error())
+        info = Extended()
+        info.BasicLimitInformation.LimitFlags = self.KILL_ON_JOB_CLOSE | self.PROCESS_MEMORY
+        info.ProcessMemoryLimit = limits.memory_mb * 1024 * 1024
+        ok = kernel32.SetInformationJobObject(self.handle, self.EXTENDED_LIMIT_INFORMATION, ctypes.byref(info),
+                                              ctypes.sizeof(info))
+        # the child runs a moment before it joins the job (it is not started suspended): its start-up is not limited
+        if not ok or not kernel32.AssignProcessToJobObject(self.handle, int(popen._handle)):
+            error = ctypes.WinError(ctypes.get_last_error())
+            self.close()
+            raise error
+
+    def close(self):
+        if self.handle:
+            self.kernel32.CloseHandle(self.handle)
+            self.handle = None
+
+
+def _windows_job(popen, limits):
+    """A _WindowsJob for the child, or None where the system refuses one (then: taskkill, no memory limit)."""
+    try:
+        return _WindowsJob(popen, limits)
+    except (OSError, AttributeError, ValueError):
+        return None

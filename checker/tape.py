@@ -15,7 +15,14 @@ What a forged tape can do: nothing a function could not have done. A replayed
 call is checked against the arguments the parent's own probe passes (a tape
 made for other inputs does not fit), and what it can claim - a return value,
 changed arguments, calls of the hooks - is exactly what a student's function
-is able to do anyway.
+is able to do anyway. A hook event may name only a function the probe put in
+the student's place in this probe (never another name of the handout, such as
+main); a call that changes a body's mass, inertia, material or shape (FROZEN)
+is noted (Replayer.tampered) and fails its check with the field named.
+
+The probes keep the child free of answers too: a helper that computes a
+reference is marked @reference and raises if called while a Recorder runs a
+probe (Recorder.run), so the lesson's answers exist only in the parent.
 
 Values cross the pipe as JSON with small tags: {"v": [x, y]} a Vector2,
 {"l": [...]} a list, {"t": [...]} a tuple, {"d": {...}} a dict, {"b": k, ...}
@@ -23,6 +30,7 @@ a Body, {"w": k, ...} a World (its bodies and counters), {"r": k} the k-th
 body or world seen in this call's arguments, {"o": type, "repr": text}
 anything else (kept as an opaque stand-in).
 """
+import functools
 import hashlib
 import json
 import math
@@ -65,6 +73,38 @@ def run_seed(module):
     return vars(module)["seed"] if isinstance(module, (Recorder, Replayer)) else 0
 
 
+# ---------------------------------------------------------------- references: computed in the parent only
+
+_IN_CHILD = [False]   # True while a Recorder runs a probe: the child, where the student's code runs
+
+
+class ReferenceInChild(RuntimeError):
+    """A reference helper was called while the child ran a probe (a probe that computes the answer there)."""
+
+
+def reference(function):
+    """`function`, marked as computing a reference value: it runs in the grading parent only.
+
+    A probe's child half only calls the student's functions on inputs and records; the lesson's
+    answers are computed when the parent replays the tape. Called in the child, a reference raises
+    ReferenceInChild, so a probe that computes one there is an error, not an answer in reach of the
+    student's code (which could read it from the probe's frames).
+    """
+    @functools.wraps(function)
+    def parent_only(*args, **kwargs):
+        if _IN_CHILD[0]:
+            raise ReferenceInChild(f"{function.__name__}() is a reference and runs in the grader only")
+        return function(*args, **kwargs)
+
+    parent_only.__reference__ = True
+    return parent_only
+
+
+def judging(module):
+    """True in the grading parent (a Replayer or a plain module), False in the child (a Recorder)."""
+    return not isinstance(module, Recorder)
+
+
 class TapeMismatch(Exception):
     """The parent's probe asked for a call the tape does not hold (other inputs, another order)."""
 
@@ -95,9 +135,12 @@ class Seen:
         return self.ids[key], True
 
 
+MAX_DEPTH = 40   # levels of nesting encode() writes at most; decode() refuses deeper
+
+
 def encode(value, seen, depth=0):
     """`value` as JSON-ready tagged data (see the module docstring); `seen` numbers bodies and worlds."""
-    if depth > 40:
+    if depth > MAX_DEPTH:
         return {"o": type(value).__name__, "repr": "(nested too deep)"}
     if value is None or isinstance(value, (bool, str)):
         return value
@@ -158,25 +201,28 @@ def opaque(type_name, text):
     return cls()
 
 
-def decode(data, seen):
+def decode(data, seen, depth=0):
     """The value tagged `data` describes; {"r": k} is the k-th object of `seen`, new bodies are added to it."""
     if data is None or isinstance(data, (bool, int, float, str)):
         return data
+    if depth > MAX_DEPTH + 2:   # encode() never nests deeper: a forged tape must not exhaust the grader's stack
+        raise TapeMismatch("a value on the tape is nested deeper than the child ever writes")
+    depth += 1
     if isinstance(data, list):   # not produced by encode(); a forged tape gets plain lists
-        return [decode(item, seen) for item in data]
+        return [decode(item, seen, depth) for item in data]
     if not isinstance(data, dict) or len(data) == 0:
         raise TapeMismatch("a value on the tape is not in the tape's format")
     if "v" in data:
         x, y = data["v"]
         return Vector2(float(x), float(y))
     if "l" in data:
-        return [decode(item, seen) for item in data["l"]]
+        return [decode(item, seen, depth) for item in data["l"]]
     if "t" in data:
-        return tuple(decode(item, seen) for item in data["t"])
+        return tuple(decode(item, seen, depth) for item in data["t"])
     if "d" in data:
-        return {str(k): decode(item, seen) for k, item in data["d"].items()}
+        return {str(k): decode(item, seen, depth) for k, item in data["d"].items()}
     if "s" in data:
-        return set(decode(item, seen) for item in data["s"])
+        return set(decode(item, seen, depth) for item in data["s"])
     if "r" in data:
         index = data["r"]
         if not isinstance(index, int) or not 0 <= index < len(seen.objects):
@@ -186,7 +232,7 @@ def decode(data, seen):
         body = Body.__new__(Body)
         seen.number(body)
         for name, item in data["vars"].items():
-            setattr(body, str(name), decode(item, seen))
+            setattr(body, str(name), decode(item, seen, depth))
         return body
     if "shape" in data:
         cls = SHAPES.get(data["shape"])
@@ -194,7 +240,7 @@ def decode(data, seen):
             raise TapeMismatch("the tape holds a shape of an unknown kind")
         shape = cls.__new__(cls)
         for name, item in data["vars"].items():
-            setattr(shape, str(name), decode(item, seen))
+            setattr(shape, str(name), decode(item, seen, depth))
         return shape
     if "w" in data:
         return opaque("World", "<a World>")
@@ -317,6 +363,14 @@ class Recorder:
         self._tape.append({"k": "splice", "name": name, "ok": callable(spliced)})
         return self._recording(name, spliced) if callable(spliced) else None
 
+    def run(self, probe, lab_path):
+        """probe(self, lab_path) as the child runs it: no reference helper may run meanwhile (`reference`)."""
+        _IN_CHILD[0] = True
+        try:
+            return probe(self, lab_path)
+        finally:
+            _IN_CHILD[0] = False
+
     def clock(self):
         """process_time(), recorded so the parent's replay reports the child's timings."""
         now = self._clock()
@@ -420,6 +474,8 @@ class Replayer:
         object.__setattr__(self, "_tape", list(tape))
         object.__setattr__(self, "_at", [0])
         object.__setattr__(self, "_saved", {})
+        object.__setattr__(self, "_hooks", {})       # name -> the function this probe put in the student's place
+        object.__setattr__(self, "_tampered", {})    # step function -> body fields it changed (FROZEN)
         replays = {}
         for name in steps:
             replays[name] = self._replay(name)
@@ -459,7 +515,11 @@ class Replayer:
         if name not in self._saved:
             self._saved[name] = ns.get(name, _MISSING)
         original = self._replays.get(name, self._saved[name])
-        ns[name] = original if (value is original or value is self._saved[name]) else value
+        if value is original or value is self._saved[name]:
+            ns[name] = original
+            self._hooks.pop(name, None)
+        else:
+            ns[name] = self._hooks[name] = value
 
     def spliced(self, name, function):
         """The replay of a spliced step function, or None if the child could not build it."""
@@ -478,6 +538,10 @@ class Replayer:
                        if isinstance(entry, dict) and entry.get("k") == "call" and entry.get("fn") in names
                        and entry.get("post") is not None})
 
+    def tampered(self):
+        """{step function: [the body fields (FROZEN) it changed in some replayed call]}, sorted."""
+        return {name: sorted(fields) for name, fields in sorted(self._tampered.items())}
+
     def finished(self):
         """True when the probe used the whole tape (a longer tape was made for other inputs)."""
         return self._at[0] == len(self._tape)
@@ -489,21 +553,48 @@ class Replayer:
             seen = Seen()
             if digest(encode(arguments, seen)) != entry.get("args"):
                 raise TapeMismatch(f"{name}() was called with other arguments in the child")
-            for event in entry.get("events") or []:
-                hook = self._ns.get(event.get("hook"))
-                if not callable(hook):
-                    raise TapeMismatch("the tape calls a function the probe did not provide")
+            events = entry.get("events") or []
+            if not isinstance(events, list):
+                raise TapeMismatch("a call's hook events on the tape are not a list")
+            bodies = [obj for obj in seen.objects if isinstance(obj, Body)]
+            restored = events or entry.get("post") is not None
+            frozen = _frozen(bodies) if restored else None   # nothing restored: nothing changed
+            for event in events:
+                hook_name = event.get("hook") if isinstance(event, dict) else None
+                hook = self._hooks.get(hook_name) if isinstance(hook_name, str) else None
+                if hook is None:   # only a function this probe put in the student's place, never anything else
+                    raise TapeMismatch("the tape calls a function the probe did not put in the student's place")
                 restore(arguments, event.get("state"), seen)
+                self._guard(name, bodies, frozen)
                 hook_args, hook_kwargs = decode(event.get("args"), seen)
                 hook(*hook_args, **hook_kwargs)
             if entry.get("post") is not None:
                 restore(arguments, entry["post"], seen)
+                self._guard(name, bodies, frozen)
             if entry.get("raised"):
                 raise StudentRaised({"kind": "exception", "message": "raised"})
             return decode(entry.get("ret"), seen)
 
         replayed.__name__ = name
         return replayed
+
+
+    def _guard(self, name, bodies, frozen):
+        """Note the FROZEN fields of `bodies` that differ from `frozen` (their state before the call)."""
+        changed = {field for before, now in zip(frozen, _frozen(bodies)) for field in FROZEN
+                   if before[field] != now[field]}
+        if changed:
+            self._tampered.setdefault(name, set()).update(changed)
+
+
+# what a step function may never change on a body it is given: the body's mass, inertia, material and shape
+# (a resolve() that zeroes inv_inertia or raises friction would make the lesson's formula agree with it)
+FROZEN = ("mass", "inv_mass", "inertia", "inv_inertia", "friction", "restitution", "shape")
+
+
+def _frozen(bodies):
+    """Per body, the canonical text of each FROZEN field (absent fields as None)."""
+    return [{field: key(encode(getattr(body, field, None), Seen())) for field in FROZEN} for body in bodies]
 
 
 class TapeEnded(Exception):

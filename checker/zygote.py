@@ -71,7 +71,7 @@ def _child(request, fds, base_path, close):
         spec, main_code = _main_code(argv[0])   # read while still the zygote's user
         from checker import sandbox
         limits = sandbox.Limits(**request["limits"])
-        sandbox._limit_child(limits)()  # setsid, the rlimits and the user switch, exactly as the preexec_fn does
+        sandbox._limit_child(limits, result_fd)()  # setsid, the rlimits (refused ones as notes) and the user switch, as the preexec_fn does
         null = os.open(os.devnull, os.O_RDONLY)
         os.dup2(null, 0)
         os.dup2(out_fd, 1)
@@ -260,6 +260,20 @@ def _send(sock, message):
 
 def main(argv):
     control = socket.socket(fileno=int(argv[0]))
+    warm_up()
+    _main_code("checker.child")
+    import gc
+    gc.collect()
+    gc.freeze()  # what is here now stays shared with the children: their collections never walk it
+    serve(control)
+
+
+def warm_up():
+    """Import everything a child needs and keep the data files pygame opens lazily, while still the grader's user.
+
+    The zygote does it once before it forks; the portable child (checker/child.py) does it itself before it
+    switches user, so that a child running as another user never opens a file of Python's afterwards.
+    """
     import importlib
     importlib.import_module("checker.sandbox")
     for name in WARM_MODULES + WARM_STDLIB + _handout_imports():
@@ -269,11 +283,6 @@ def main(argv):
             if name in WARM_MODULES:
                 raise
     _keep_package_data()
-    _main_code("checker.child")
-    import gc
-    gc.collect()
-    gc.freeze()  # what is here now stays shared with the children: their collections never walk it
-    serve(control)
 
 
 def _handout_imports():

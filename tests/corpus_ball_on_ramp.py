@@ -144,6 +144,10 @@ WRONG = [
     wrong("contact_at_centre", "returns the ball's center as the contact point", "contact_on_surface", {6: """
         return center
     """}, why="the point should be radius px along the normal"),
+    wrong("contact_halfway", "center + normal * (radius - depth / 2): halfway into the overlap, not on the surface",
+          "contact_on_surface", {6: """
+        return center + normal * (radius - depth / 2)
+    """}, why="the point lies depth/2 px inside the ball; the step asks for the point on its surface"),
     wrong("contact_far_side", "center - normal * radius (the wrong side of the ball)", "contact_on_surface", {6: """
         return center - normal * radius
     """}, why="the normal points out of the ball, into the other body"),
@@ -217,7 +221,7 @@ CORRECT = [
                 point += ab * t
                 return point
             """}, why="an in-place += on a new Vector2 changes nothing the caller holds"),
-    correct("correct_named_parts", "inside case with a named normal; push-out with named shares; halfway contact point",
+    correct("correct_named_parts", "inside case with a named normal; push-out with named shares; a named offset",
             {3: """
                 if inside(center, points):
                     way_out = (center - closest).normalize()
@@ -228,9 +232,9 @@ CORRECT = [
                 a.pos = a.pos - normal * push * share_a
                 b.pos = b.pos + normal * push * share_b
             """, 6: """
-                surface = radius - depth / 2  # halfway into the overlap, as physics2d places it
-                return center + normal * surface
-            """}, why="(center - closest) / dist is -offset / dist; shares by inverse mass; a point within the overlap"),
+                to_surface = normal * radius  # from the center out to the ball's surface
+                return center + to_surface
+            """}, why="(center - closest) / dist is -offset / dist; shares by inverse mass; the same surface point"),
     correct("correct_friction_if_clamp", "friction clamped with if/copysign, kt from named terms", {7: """
         spin_a = cross(ra, t) ** 2 * a.inv_inertia
         spin_b = cross(rb, t) ** 2 * b.inv_inertia

@@ -201,6 +201,12 @@ WRONG = [
             if all(abs(cross(axis, kept)) > PARALLEL for kept in axes):
                 axes.append(axis)
     """}, why="a box and a turned box: B's directions are missing, the lesson's diamond is called a hit"),
+    wrong("axes_dot_threshold", "skips an axis when 1 - |axis · kept| <= PARALLEL (a cosine test, about θ²/2)",
+          "parallel_axes", {5: """
+        for axis in edge_normals(pa) + edge_normals(pb):
+            if all(1 - abs(axis.dot(kept)) > PARALLEL for kept in axes):
+                axes.append(axis)
+    """}, why="two boxes turned 0.01° apart: 1 - cos θ = 1.5e-8 merges them, |sin θ| = 1.7e-4 keeps both"),
     wrong("axes_last_kept_only", "compares each normal with the last kept axis only", "parallel_axes", {5: """
         for axis in edge_normals(pa) + edge_normals(pb):
             if not axes or abs(cross(axis, axes[-1])) > PARALLEL:

@@ -179,23 +179,10 @@ def test_every_table_holds_the_fixed_inputs_of_its_probe(lab):
 
 # ---------------------------------------------------------------- the checker's verdicts
 
-# Holes open on main today, each a strict xfail naming its mechanism of issue 35 and the branch expected to close
-# it (strict: the test fails once the hole is closed, so its mark must go). Scores today: see the report of
-# branch i35-attacks. PROBES and SAFE are the branches (i35-reading's mechanisms 1, 2, 4's format flag, 6 and
-# 10's standard-library steps are closed).
-PROBES = "i35-probes (references out of the child, replay of installed hooks only, no vacuous pass, probe fixes)"
-SAFE = "i35-safe (safe by default: unprivileged child, work folder with the lab file alone)"
-OPEN = {
-    "tc_m3_zero_inertia": f"mechanism 3: probe_resolve reads k, mu and kt from the bodies after resolve(); {PROBES}",
-    "br_m3_zero_inertia": f"mechanism 3 (the field guard): friction_rolls fails it today, but not naming the "
-                          f"inverse inertia step 7 changed; {PROBES}",
-    **{f"{lab}_m5_foreign_hook": f"mechanism 5: the replay calls any callable of the handout a tape event names; "
-                                 f"{PROBES}" for lab in ("tc", "ms", "br", "bu", "sc")},
-    "tc_early_return_friction": f"mechanism 9: resolve_friction skips a contact where no impulse was recorded, so a "
-                                f"resolve() that returns before step 4 passes it vacuously; {PROBES}",
-    "ms_m10_parallel_one_minus_dot": f"mechanism 10: the parallel-axes probe has no pair 0.01 degrees apart; {PROBES}",
-    "br_m10_contact_halfway": f"mechanism 10: contact_on_surface accepts the point halfway into the overlap; {PROBES}",
-}
+# Holes open, each a strict xfail naming its mechanism of issue 35 and the branch expected to close it (strict: the
+# test fails once the hole is closed, so its mark must go). None is open now: i35-probes, i35-safe and i35-reading
+# closed mechanisms 1-10.
+OPEN = {}
 # with --child-user nobody: no open hole (branch i35-safe made the zygote import what a scene needs).
 OPEN_AS_CHILD_USER = {}
 

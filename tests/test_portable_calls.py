@@ -42,14 +42,17 @@ SOCKET_METHODS = {"send_fds", "recv_fds", "sendmsg", "recvmsg"}  # methods of a 
 ALLOWED = {
     "checker/sandbox.py": {
         "<module>": {"import selectors"},
-        "_limit_child.apply": {"import pwd", "import resource", "os.setgid", "os.setgroups", "os.setsid", "os.setuid",
-                               "pwd.getpwnam", "resource.RLIMIT_AS", "resource.RLIMIT_CORE", "resource.RLIMIT_CPU",
-                               "resource.RLIMIT_FSIZE", "resource.setrlimit"},
+        # the portable path calls it too: `import resource` failing (Windows) and a refused limit (macOS) are notes
+        "set_rlimits": {"import resource", "resource.setrlimit"},
+        # a root grader's child only (users.is_root() is False on Windows)
+        "drop_user": {"import pwd", "os.setgid", "os.setgroups", "os.setuid", "pwd.getpwnam"},
+        "_limit_child.apply": {"os.setsid"},
         "_start": {"Popen(pass_fds=)", "Popen(preexec_fn=)"},
         "ZygoteClient.__init__": {"Popen(pass_fds=)", "socket.AF_UNIX", "socket.SOCK_SEQPACKET"},
         "ZygoteClient.spawn": {"socket.AF_UNIX", "socket.SOCK_SEQPACKET", "socket.send_fds"},
-        "_kill_group": {"os.killpg", "signal.SIGKILL"},
-        "run_child": {"import pwd", "os.chown", "pwd.getpwnam", "selectors.DefaultSelector", "selectors.EVENT_READ"},
+        "_kill_group": {"os.killpg", "signal.SIGKILL"},   # the portable path calls it only where both exist
+        "run_child": {"import pwd", "os.chown", "pwd.getpwnam"},   # with a child user only (a root grader)
+        "_run_posix": {"selectors.DefaultSelector", "selectors.EVENT_READ"},
     },
     "checker/zygote.py": {
         "<module>": {"import selectors"},
@@ -59,11 +62,18 @@ ALLOWED = {
         "_reap": {"os.WNOHANG"},
     },
     "checker/child.py": {
-        "call_limited": {"signal.ITIMER_PROF", "signal.SIGPROF", "signal.setitimer"},
-        "main": {"signal.SIGXCPU"},
+        "call_limited": {"signal.ITIMER_PROF", "signal.SIGPROF", "signal.setitimer"},   # the Watchdog otherwise
+        "main": {"signal.SIGXCPU"},   # the POSIX path only (the portable child has its Watchdog)
     },
-    # --child-user NAME: `import pwd` fails first on Windows (caught: "no such user"), so geteuid is never reached
-    "checker/cli.py": {"parse_args": {"import pwd", "pwd.getpwnam", "os.geteuid"}},
+    # the child's user: consulted only by a root grader (is_root() is hasattr-guarded and False on Windows)
+    "checker/users.py": {
+        "is_root": {"os.geteuid"},
+        "choose": {"import pwd", "pwd.getpwnam"},
+        "_entry": {"import pwd", "pwd.getpwnam"},
+        "_groups": {"grp.getgrall", "import grp"},
+        "python_problem.drop": {"os.setgid", "os.setgroups", "os.setuid"},
+        "python_problem": {"Popen(preexec_fn=)"},
+    },
     # shipped into the graders' Linux containers only (Gradescope, GitHub Classroom, PrairieLearn)
     "checker/templates/grade_submission.py": {"<module>": {"import pwd"}, "run_as": {"os.geteuid", "pwd.getpwnam"},
                                               "run_checker": {"shutil.chown"}},
@@ -232,10 +242,6 @@ def test_scanner_names_the_function_and_line():
 OPENERS = {"open", "fdopen"}          # open(), io.open(), codecs.open(), os.fdopen(), Path.open()
 TEXT_RUNS = {"run", "Popen", "check_output", "call", "check_call"}
 # Known gaps in files another branch owns (issue 32): each is a strict xfail below, so its fix is noticed.
-KNOWN_GAPS = {("checker/child.py", "main"):   # writes timeout_traceback.txt in the locale's encoding (cp1252 on
-              "i32-portable / i35-reading: child.py, open('timeout_traceback.txt', 'w') without encoding"}
-
-
 def _keyword(node, name):
     return next((k.value for k in node.keywords if k.arg == name), None)
 
@@ -284,15 +290,8 @@ def text_gaps():
 def test_every_text_file_is_opened_with_an_encoding():
     """open()/os.fdopen()/Path.open() in text mode, read_text/write_text, subprocess text=True: each names its
     encoding, so a lab, a tool or the checker reads and writes the same bytes on Windows (cp1252) as here."""
-    stray = [f"{path}:{line}: {what} in {function}" for path, line, function, what in text_gaps()
-             if (path, function) not in KNOWN_GAPS]
+    stray = [f"{path}:{line}: {what} in {function}" for path, line, function, what in text_gaps()]
     assert not stray, "\n".join(stray)
-
-
-@pytest.mark.parametrize("place", sorted(KNOWN_GAPS), ids=lambda place: f"{place[0]}:{place[1]}")
-@pytest.mark.xfail(strict=True, reason="owned by another branch (see KNOWN_GAPS); remove the entry once fixed")
-def test_known_encoding_gaps_are_still_open(place):
-    assert not [gap for gap in text_gaps() if gap[::2] == place], KNOWN_GAPS[place]
 
 
 TEXT_FOUND = {

@@ -4,6 +4,8 @@ Each probe calls one of the student's functions on configurations chosen so
 that together they exercise every term of the lesson's formula, and returns
 plain data: the student's answer beside the lesson's on the same inputs
 (checker/labs/ball_on_ramp/checks.py compares them and names the first that differs).
+The lesson's answers are added in the grader only (`judging`, checker/probe_kit.py),
+from the inputs as they were before the student's function got them.
 
     closest_on_segment  (step 2) points beside an edge, beyond either end, slanted and reversed edges
     circle_outside      (step 2) circle_polygon() on circles outside or touching a polygon (near a
@@ -25,9 +27,9 @@ import os
 from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
-from lesson11.physics2d import apply_impulse as reference_apply_impulse
+from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
-from ...probe_kit import box, ngon, with_reference_steps
+from ...probe_kit import box, judging, ngon, reference, twin, with_reference_steps
 from ...tape import run_rng
 
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
@@ -74,13 +76,21 @@ def _short(value):
 
 # ---------------------------------------------------------------- the lesson's formulas
 
-def reference_closest(p, a, b):
-    """The lesson's closest_on_segment: a + ab t, t = clamp((p - a)·ab / ab·ab, 0, 1)."""
+def lesson_closest(p, a, b):
+    """The lesson's closest_on_segment: a + ab t, t = clamp((p - a)·ab / ab·ab, 0, 1).
+
+    Also put in the student's place under circle_polygon() (step 3 graded on its own), so it runs
+    in the child as a stand-in; as a reference answer it is reference_closest, grader only.
+    """
     ab = b - a
     t = max(0.0, min(1.0, (p - a).dot(ab) / ab.dot(ab)))
     return a + ab * t
 
 
+reference_closest = reference(lesson_closest)
+
+
+@reference
 def reference_circle_polygon(center, radius, points):
     """The lesson's circle_polygon: None, or (normal from the circle into the polygon, depth px)."""
     closest = min((reference_closest(center, points[i], points[(i + 1) % len(points)]) for i in range(len(points))),
@@ -136,13 +146,20 @@ def probe_closest(module, lab_path):
         given = {"p": Vector2(p), "a": Vector2(a), "b": Vector2(b)}   # copies: a change shows, and stays here
         got = module.closest_on_segment(given["p"], given["a"], given["b"])
         changed = {key: list(value) for key, value in given.items() if value != {"p": p, "a": a, "b": b}[key]}
-        ab = b - a
-        line = a + ab * ((p - a).dot(ab) / ab.dot(ab))
-        cases.append({"case": name, "p": list(p), "a": list(a), "b": list(b), "got": answer_point(got),
-                      "want": list(reference_closest(p, a, b)), "line": list(line),
-                      "unsquared": list(a + ab * max(0.0, min(1.0, (p - a).dot(ab) / ab.length()))),
-                      "changed": changed})
+        case = {"case": name, "p": list(p), "a": list(a), "b": list(b), "got": answer_point(got), "changed": changed}
+        if judging(module):
+            case.update(_closest_reference(p, a, b))
+        cases.append(case)
     return cases
+
+
+@reference
+def _closest_reference(p, a, b):
+    """The lesson's closest point, the point on the unclamped line, and the one with t not divided by |ab|²."""
+    ab = b - a
+    line = a + ab * ((p - a).dot(ab) / ab.dot(ab))
+    return {"want": list(reference_closest(p, a, b)), "line": list(line),
+            "unsquared": list(a + ab * max(0.0, min(1.0, (p - a).dot(ab) / ab.length())))}
 
 
 # ---------------------------------------------------------------- steps 2 and 3: circle_polygon
@@ -182,16 +199,25 @@ def inside_cases():
     ]
 
 
-def _circle_cases(function, cases):
+def _circle_cases(module, function, cases):
     out = []
     for name, center, radius, points in cases:
         got = function(Vector2(center), radius, [Vector2(p) for p in points])
-        closest = min((reference_closest(center, points[i], points[(i + 1) % len(points)])
-                       for i in range(len(points))), key=center.distance_squared_to)
-        out.append({"case": name, "center": list(center), "radius": radius, "points": [list(p) for p in points],
-                    "got": answer_hit(got), "want": _plain(reference_circle_polygon(center, radius, points)),
-                    "dist": center.distance_to(closest), "toward": list((closest - center).normalize())})
+        case = {"case": name, "center": list(center), "radius": radius, "points": [list(p) for p in points],
+                "got": answer_hit(got)}
+        if judging(module):
+            case.update(_circle_reference(center, radius, points))
+        out.append(case)
     return out
+
+
+@reference
+def _circle_reference(center, radius, points):
+    """The lesson's circle_polygon answer, the distance to the outline and the direction to its closest point."""
+    closest = min((reference_closest(center, points[i], points[(i + 1) % len(points)])
+                   for i in range(len(points))), key=center.distance_squared_to)
+    return {"want": _plain(reference_circle_polygon(center, radius, points)),
+            "dist": center.distance_to(closest), "toward": list((closest - center).normalize())}
 
 
 def probe_circle_outside(module, lab_path):
@@ -201,15 +227,15 @@ def probe_circle_outside(module, lab_path):
     """
     function = with_reference_steps(module, lab_path, "circle_polygon", (3,), solution=SOLUTION) or \
         module.circle_polygon
-    return _circle_cases(function, outside_cases())
+    return _circle_cases(module, function, outside_cases())
 
 
 def probe_circle_inside(module, lab_path):
     """circle_polygon() on the inside cases, with the lesson's closest_on_segment in place of the student's."""
     own = module.closest_on_segment
-    module.closest_on_segment = reference_closest
+    module.closest_on_segment = lesson_closest
     try:
-        return _circle_cases(module.circle_polygon, inside_cases())
+        return _circle_cases(module, module.circle_polygon, inside_cases())
     finally:
         module.closest_on_segment = own
 
@@ -251,19 +277,27 @@ def probe_separate(module, lab_path):
               Body(box_points(rng.uniform(30, 90), rng.uniform(30, 90)), crate_pos, rng.uniform(2.5, 9.0)),
               _ball(rng.uniform(6, 30), crate_pos + push_dir * 40), push_dir, rng.uniform(2.0, 12.0))]
     for name, a, b, normal, depth in separate_cases() + drawn:
-        before = {"a": list(a.pos), "b": list(b.pos)}
-        total = a.inv_mass + b.inv_mass
-        push = max(depth - slop, 0.0) * percent
-        want = {"a": list(a.pos - normal * (push * a.inv_mass / total)),
-                "b": list(b.pos + normal * (push * b.inv_mass / total))}
-        given = Vector2(normal)   # a copy: a change to it shows
-        module.separate(a, b, given, depth)
-        cases.append({"case": name, "normal": list(normal), "depth": depth, "push": push,
-                      "normal_after": None if given == normal else list(given),
-                      "inv": {"a": a.inv_mass, "b": b.inv_mass}, "mass": {"a": a.mass, "b": b.mass},
-                      "before": before, "after": {"a": answer_point(a.pos), "b": answer_point(b.pos)},
-                      "want": want})
+        given = (twin(a), twin(b))   # the bodies as separate() gets them
+        normal_given = Vector2(normal)   # a copy: a change to it shows
+        module.separate(a, b, normal_given, depth)
+        case = {"case": name, "normal": list(normal), "depth": depth,
+                "normal_after": None if normal_given == normal else list(normal_given),
+                "after": {"a": answer_point(a.pos), "b": answer_point(b.pos)}}
+        if judging(module):
+            case.update(_separate_reference(*given, normal, depth, slop, percent))
+        cases.append(case)
     return cases
+
+
+@reference
+def _separate_reference(a, b, normal, depth, slop, percent):
+    """The lesson's push-out of a and b (as given): max(depth - slop, 0) · percent px, split by inverse mass."""
+    total = a.inv_mass + b.inv_mass
+    push = max(depth - slop, 0.0) * percent
+    return {"push": push, "inv": {"a": a.inv_mass, "b": b.inv_mass}, "mass": {"a": a.mass, "b": b.mass},
+            "before": {"a": list(a.pos), "b": list(b.pos)},
+            "want": {"a": list(a.pos - normal * (push * a.inv_mass / total)),
+                     "b": list(b.pos + normal * (push * b.inv_mass / total))}}
 
 
 # ---------------------------------------------------------------- step 5: disc_inertia
@@ -279,8 +313,16 @@ def probe_inertia(module, lab_path):
             got = float(got)
         except (TypeError, ValueError):
             got = {"bad": _short(got)}
-        cases.append({"mass": mass, "radius": radius, "got": got, "want": 0.5 * mass * radius ** 2})
+        cases.append({"mass": mass, "radius": radius, "got": got})
+        if judging(module):
+            cases[-1]["want"] = reference_disc_inertia(mass, radius)
     return cases
+
+
+@reference
+def reference_disc_inertia(mass, radius):
+    """The lesson's I = ½ m r² (mass·px²)."""
+    return 0.5 * mass * radius ** 2
 
 
 # ---------------------------------------------------------------- step 6: contact_point
@@ -305,9 +347,16 @@ def probe_contact(module, lab_path):
     for name, center, radius, normal, depth in contact_cases() + drawn:
         got = module.contact_point(Vector2(center), radius, Vector2(normal), depth)
         cases.append({"case": name, "center": list(center), "radius": radius, "normal": list(normal),
-                      "depth": depth, "got": answer_point(got), "want": list(center + normal * radius),
-                      "halfway": list(center + normal * (radius - depth / 2))})
+                      "depth": depth, "got": answer_point(got)})
+        if judging(module):
+            cases[-1].update(_contact_reference(center, radius, normal, depth))
     return cases
+
+
+@reference
+def _contact_reference(center, radius, normal, depth):
+    """The lesson's contact point, center + normal · radius (on the ball's surface), and the halfway-in mistake."""
+    return {"want": list(center + normal * radius), "halfway": list(center + normal * (radius - depth / 2))}
 
 
 # ---------------------------------------------------------------- step 7: friction in resolve
@@ -348,6 +397,7 @@ def resolve_cases():
 FRICTION_VARIANTS = ("right", "none", "sign", "unclamped", "no_spin_kt", "at_centre", "always_full")
 
 
+@reference
 def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEED):
     """The handout's resolve() with the lesson's friction ("right") or a plausible mistake in step 7.
 
@@ -364,7 +414,7 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     k = a.inv_mass + b.inv_mass + ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia
     e = min(a.restitution, b.restitution) if vn < -resting else 0.0
     j = -(1 + e) * vn / k
-    reference_apply_impulse(a, b, normal * j, ra, rb)
+    lesson_apply_impulse(a, b, normal * j, ra, rb)
     rel = relative_velocity(a, b, ra, rb)
     tangent = rel - normal * rel.dot(normal)
     if tangent.length_squared() <= 1e-12 or variant == "none":
@@ -384,15 +434,7 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
         jt = -jt
     if variant == "at_centre":
         ra, rb = Vector2(), Vector2()
-    reference_apply_impulse(a, b, t * jt, ra, rb)
-
-
-def _copy(body):
-    """A separate body with the same shape, mass, inertia, state and material."""
-    twin = Body(body.shape, body.pos, body.mass, angle=body.angle, vel=body.vel, omega=body.omega,
-                restitution=body.restitution, friction=body.friction)
-    twin.inertia, twin.inv_inertia = body.inertia, body.inv_inertia
-    return twin
+    lesson_apply_impulse(a, b, t * jt, ra, rb)
 
 
 def _outcome(a, b):
@@ -410,17 +452,25 @@ def probe_resolve(module, lab_path):
     cases = []
     resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
     for name, a, b, normal, point in resolve_cases():
-        variants = {}
-        for variant in FRICTION_VARIANTS:
-            ca, cb = _copy(a), _copy(b)
-            reference_resolve(ca, cb, Vector2(normal), Vector2(point), variant, resting)
-            variants[variant] = _outcome(ca, cb)
-        ra, rb = point - a.pos, point - b.pos
-        mu = math.sqrt(a.friction * b.friction)
+        given = (twin(a), twin(b))   # the bodies as resolve() gets them
         module.resolve(a, b, Vector2(normal), Vector2(point))
-        cases.append({"case": name, "mu": mu, "got": _outcome(a, b), "variants": variants,
-                      "ra": list(ra), "rb": list(rb)})
+        case = {"case": name, "got": _outcome(a, b)}
+        if judging(module):
+            case.update(_resolve_reference(*given, normal, point, resting))
+        cases.append(case)
     return cases
+
+
+@reference
+def _resolve_reference(a, b, normal, point, resting):
+    """The outcome of the handout's resolve with each friction variant, from a and b as given; mu, ra and rb."""
+    variants = {}
+    for variant in FRICTION_VARIANTS:
+        ca, cb = twin(a), twin(b)
+        reference_resolve(ca, cb, Vector2(normal), Vector2(point), variant, resting)
+        variants[variant] = _outcome(ca, cb)
+    return {"mu": math.sqrt(a.friction * b.friction), "variants": variants,
+            "ra": list(point - a.pos), "rb": list(point - b.pos)}
 
 
 # the spliced functions the probes use: (function, the solution's steps put in it, the solution)

@@ -2,7 +2,9 @@
 
 Each probe calls the student's functions and returns plain data: the
 student's answer beside the analytic one (checker/labs/bullets/checks.py compares them
-and names the first case that differs).
+and names the first case that differs). The analytic answers are added in the grader
+only (`judging`, checker/probe_kit.py); the lesson's functions that stand in for the
+student's other steps (lesson_circle_toi, ...) run in the child too, as the student's code calls them.
 
     circle_toi      (step 2) head-on, glancing, both moving, already touching, moving apart,
                     parallel paths, missing, too far for this step; the analytic answer is the
@@ -25,7 +27,7 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
-from ...probe_kit import box, ngon
+from ...probe_kit import box, judging, ngon, reference, twin
 from ...tape import clock, run_rng
 
 REQUIRED = ("circle_toi", "bounding_radius", "time_of_impact", "swept_move", "apply_mode", "make_wall", "make_bullet",
@@ -57,6 +59,7 @@ def _short(value):
 
 # ---------------------------------------------------------------- step 2: circle_toi
 
+@reference
 def analytic_toi(p1, v1, r1, p2, v2, r2, dt):
     """The first touching time by geometry: closest approach of the relative path, then back by the chord.
 
@@ -128,20 +131,31 @@ def probe_toi(module, lab_path):
     cases = []
     for name, p1, v1, r1, p2, v2, r2, dt in toi_cases() + drawn_toi_cases(run_rng(module, "circle_toi")):
         got = module.circle_toi(Vector2(p1), Vector2(v1), r1, Vector2(p2), Vector2(v2), r2, dt)
-        dp, dv = p2 - p1, v2 - v1
-        a, b, c = dv.dot(dv), 2 * dp.dot(dv), dp.dot(dp) - (r1 + r2) ** 2
-        disc = b * b - 4 * a * c
-        later = (-b + math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
-        earlier = (-b - math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
-        cases.append({"case": name, "dt": dt, "got": answer_time(got), "want": analytic_toi(p1, v1, r1, p2, v2, r2, dt),
-                      "later": later, "earlier": earlier, "c": c})
+        cases.append({"case": name, "dt": dt, "got": answer_time(got)})
+        if judging(module):
+            cases[-1].update(_toi_reference(p1, v1, r1, p2, v2, r2, dt))
     return cases
+
+
+@reference
+def _toi_reference(p1, v1, r1, p2, v2, r2, dt):
+    """The analytic time, and the quadratic's two roots and c (to name the usual wrong answers)."""
+    dp, dv = p2 - p1, v2 - v1
+    a, b, c = dv.dot(dv), 2 * dp.dot(dv), dp.dot(dp) - (r1 + r2) ** 2
+    disc = b * b - 4 * a * c
+    later = (-b + math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
+    earlier = (-b - math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
+    return {"want": analytic_toi(p1, v1, r1, p2, v2, r2, dt), "later": later, "earlier": earlier, "c": c}
 
 
 # ---------------------------------------------------------------- step 3: bounding_radius
 
-def reference_bounding_radius(points, centre):
+def lesson_bounding_radius(points, centre):
+    """The lesson's bounding_radius: the farthest corner's distance (px); a stand-in under time_of_impact()."""
     return max(centre.distance_to(p) for p in points)
+
+
+reference_bounding_radius = reference(lesson_bounding_radius)
 
 
 def bounding_cases():
@@ -165,17 +179,24 @@ def probe_bounding(module, lab_path):
     cases = []
     for name, points, centre in bounding_cases() + drawn:
         got = module.bounding_radius([Vector2(p) for p in points], Vector2(centre))
-        half_sides = [abs(p.x - centre.x) for p in points] + [abs(p.y - centre.y) for p in points]
-        cases.append({"case": name, "got": answer_time(got), "want": reference_bounding_radius(points, centre),
-                      "smallest": min(centre.distance_to(p) for p in points), "half_side": max(half_sides) if
-                      half_sides else 0.0})
+        cases.append({"case": name, "got": answer_time(got)})
+        if judging(module):
+            cases[-1].update(_bounding_reference(points, centre))
     return cases
+
+
+@reference
+def _bounding_reference(points, centre):
+    """The farthest corner's distance, the nearest one's and the largest half side (to name mistakes)."""
+    half_sides = [abs(p.x - centre.x) for p in points] + [abs(p.y - centre.y) for p in points]
+    return {"want": reference_bounding_radius(points, centre), "smallest": min(centre.distance_to(p) for p in points),
+            "half_side": max(half_sides) if half_sides else 0.0}
 
 
 # ---------------------------------------------------------------- step 4: time_of_impact
 
-def reference_circle_toi(p1, v1, r1, p2, v2, r2, dt):
-    """The lesson's circle_toi (the quadratic's earlier root)."""
+def lesson_circle_toi(p1, v1, r1, p2, v2, r2, dt):
+    """The lesson's circle_toi (the quadratic's earlier root); a stand-in under time_of_impact()."""
     dp, dv = p2 - p1, v2 - v1
     c = dp.dot(dp) - (r1 + r2) ** 2
     if c <= 0:
@@ -186,6 +207,9 @@ def reference_circle_toi(p1, v1, r1, p2, v2, r2, dt):
         return None
     t = (-b - math.sqrt(disc)) / (2 * a)
     return t if 0 <= t <= dt else None
+
+
+reference_circle_toi = reference(lesson_circle_toi)
 
 
 def _bullet(pos, vel, radius=3.0, mass=0.05):
@@ -236,16 +260,17 @@ def probe_impact(module, lab_path):
         calls[0] += 1
         return circle_polygon_toi(*args)
 
-    module.circle_toi, module.bounding_radius = reference_circle_toi, reference_bounding_radius
+    module.circle_toi, module.bounding_radius = lesson_circle_toi, lesson_bounding_radius
     module.circle_polygon_toi = counted
     try:
         cases = []
         for name, bullet, other, dt, exact in impact_cases():
             calls[0] = 0
+            given = (twin(bullet), twin(other))   # the bodies as time_of_impact() gets them
             got = module.time_of_impact(bullet, other, dt)
-            want = circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), dt)
-            cases.append({"case": name, "got": _plain_hit(got), "want": _plain_hit(want), "exact_tests": calls[0],
-                          "needs_exact": exact})
+            cases.append({"case": name, "got": _plain_hit(got), "exact_tests": calls[0], "needs_exact": exact})
+            if judging(module):
+                cases[-1]["want"] = _plain_hit(reference_impact(*given, dt))
         return cases
     finally:
         module.circle_toi, module.bounding_radius = own[0], own[1]
@@ -255,19 +280,27 @@ def probe_impact(module, lab_path):
 
 # ---------------------------------------------------------------- step 5: swept_move
 
-def reference_time_of_impact(bullet, other, dt):
+@reference
+def reference_impact(bullet, other, dt):
+    """The exact swept test of a bullet against a polygon: (t, normal) or None."""
+    return circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), dt)
+
+
+def lesson_time_of_impact(bullet, other, dt):
+    """The lesson's time_of_impact (no broad test); a stand-in under swept_move()."""
     if other.shape.kind == "circle":
-        t = reference_circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(), other.radius, dt)
+        t = lesson_circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(), other.radius, dt)
         return None if t is None else (t, (other.pos - bullet.pos - bullet.vel * t).normalize())
     return circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), dt)
 
 
+@reference
 def reference_swept_move(world, bullet, dt):
     first = None
     for other in world.bodies:
         if other is bullet:
             continue
-        hit = reference_time_of_impact(bullet, other, dt)
+        hit = lesson_time_of_impact(bullet, other, dt)
         if hit is not None and (first is None or hit[0] < first[0]):
             first = (hit[0], hit[1], other)
     if first is None:
@@ -316,10 +349,11 @@ def _state(body):
     return {"pos": [body.pos.x, body.pos.y], "vel": [body.vel.x, body.vel.y], "omega": body.omega}
 
 
+@reference
 def first_hit(world, bullet):
     """(t, normal, other) of the bullet's first impact this step by the lesson's time_of_impact, or None."""
     return min((h + (o,) for o in world.bodies if o is not bullet
-                for h in [reference_time_of_impact(bullet, o, STEP)] if h is not None),
+                for h in [lesson_time_of_impact(bullet, o, STEP)] if h is not None),
                key=lambda h: h[0], default=None)
 
 
@@ -331,39 +365,46 @@ def probe_swept(module, lab_path):
     (a whole dt moved after the impact), "no_resolve" (moved through without resolving).
     """
     own = module.time_of_impact
-    module.time_of_impact = reference_time_of_impact
+    module.time_of_impact = lesson_time_of_impact
     try:
         cases = []
         for name, make in swept_cases(module):
             world, bullet = make()
             module.swept_move(world, bullet, STEP)
-            got = {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
-            world, bullet = make()
-            start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
-            reference_swept_move(world, bullet, STEP)
-            want = {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
-            world, bullet = make()
-            hit = first_hit(world, bullet)
-            variants = {}
-            if hit is not None:
-                t = hit[0]
-                world.resolve(bullet, hit[2], hit[1], start + velocity * t + hit[1] * bullet.radius)
-                after = Vector2(bullet.vel)
-                variants = {"stops": list(start + velocity * t), "old_velocity": list(start + velocity * STEP),
-                            "whole_step": list(start + velocity * t + after * STEP),
-                            "no_resolve": list(start + velocity * STEP)}
-                world, bullet = make()   # the contact point on the far side of the bullet: pos - normal * r
-                _, normal, other = first_hit(world, bullet)
-                bullet.pos += bullet.vel * t
-                world.resolve(bullet, other, normal, bullet.pos - normal * bullet.radius)
-                bullet.pos += bullet.vel * (STEP - t)
-                if (bullet.pos - Vector2(want["bullet"]["pos"])).length() > 1e-6:
-                    variants["far_side"] = [bullet.pos.x, bullet.pos.y]
-            cases.append({"case": name, "got": got, "want": want, "variants": variants,
-                          "t": None if hit is None else hit[0]})
+            others = [_state(b) for b in world.bodies if b is not bullet]
+            cases.append({"case": name, "got": {"bullet": _state(bullet), "others": others}})
+            if judging(module):
+                cases[-1].update(_swept_reference(make))
         return cases
     finally:
         module.time_of_impact = own
+
+
+@reference
+def _swept_reference(make):
+    """The lesson's swept move in a fresh world from make(), and the usual mistakes' bullet positions."""
+    world, bullet = make()
+    start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
+    reference_swept_move(world, bullet, STEP)
+    want = {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
+    world, bullet = make()
+    hit = first_hit(world, bullet)
+    variants = {}
+    if hit is not None:
+        t = hit[0]
+        world.resolve(bullet, hit[2], hit[1], start + velocity * t + hit[1] * bullet.radius)
+        after = Vector2(bullet.vel)
+        variants = {"stops": list(start + velocity * t), "old_velocity": list(start + velocity * STEP),
+                    "whole_step": list(start + velocity * t + after * STEP),
+                    "no_resolve": list(start + velocity * STEP)}
+        world, bullet = make()   # the contact point on the far side of the bullet: pos - normal * r
+        _, normal, other = first_hit(world, bullet)
+        bullet.pos += bullet.vel * t
+        world.resolve(bullet, other, normal, bullet.pos - normal * bullet.radius)
+        bullet.pos += bullet.vel * (STEP - t)
+        if (bullet.pos - Vector2(want["bullet"]["pos"])).length() > 1e-6:
+            variants["far_side"] = [bullet.pos.x, bullet.pos.y]
+    return {"want": want, "variants": variants, "t": None if hit is None else hit[0]}
 
 
 # ---------------------------------------------------------------- criteria 1 and 2: the shots
@@ -420,15 +461,24 @@ def probe_crate_hit(module, lab_path):
     """
     bullet = module.make_bullet((300, 300), (9000, 0))
     crate = _crate(40, 40, (380, 300))
+    given = (twin(bullet), twin(crate))   # the masses and restitutions as the world got them
     world = module.BulletWorld([crate, bullet], effects={"ccd", "restitution"})
     module.apply_mode(world, "ccd")
     for _ in range(3):
         world.step()
-    m, mass, v = bullet.mass, crate.mass, 9000.0
+    out = {"got": [crate.vel.x * given[1].mass, crate.vel.y * given[1].mass], "bullet_x": bullet.pos.x,
+           "crate_x": crate.pos.x}
+    if judging(module):
+        out.update(_crate_hit_reference(*given, 9000.0))
+    return out
+
+
+@reference
+def _crate_hit_reference(bullet, crate, v):
+    """The crate's momentum after a central hit, M (1 + e) m v / (m + M), the bullet's m v and e."""
+    m, mass = bullet.mass, crate.mass
     e = min(bullet.restitution, crate.restitution)
-    want = mass * (1 + e) * m * v / (m + mass)
-    return {"got": [crate.vel.x * mass, crate.vel.y * mass], "want": want, "bullet_momentum": m * v,
-            "bullet_x": bullet.pos.x, "crate_x": crate.pos.x, "e": e}
+    return {"want": mass * (1 + e) * m * v / (m + mass), "bullet_momentum": m * v, "e": e}
 
 
 # the step functions that answer a question and must leave their arguments as they got them (the grader

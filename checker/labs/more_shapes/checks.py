@@ -337,6 +337,13 @@ def parallel_axes(sub, functions):
         missing = next((n for n in normals if not any(_parallel(a, n) for a in got)), None)
         if missing is not None:
             whose = "A's" if missing in case["normals_a"] else "B's"
+            near = next((a for a in got if 1 - abs(a[0] * missing[0] + a[1] * missing[1]) <= 1e-6), None)
+            if near is not None:   # merged by a dot-product test: 1 - |a·b| ≈ θ²/2 is tiny long before θ is
+                angle = math.degrees(math.asin(min(1.0, abs(near[0] * missing[1] - near[1] * missing[0]))))
+                raise Fail(f"for {label}, separating_axes has no axis along {whose} edge normal {_vec(missing)}, "
+                           f"which is {angle:.2g}° from the kept axis {_vec(near)}: the test 1 - |a · b| <= PARALLEL "
+                           "merges axes up to about 0.08° apart (1 - cos θ ≈ θ² / 2). Compare |a × b| (≈ θ) with "
+                           "PARALLEL, as the lesson does.", HINTS["axes"])
             raise Fail(f"for {label}, separating_axes has no axis along {whose} edge normal {_vec(missing)}: "
                        f"{len(got)} axes for {len(case['want'])} distinct directions. Skip an axis only when it is "
                        "parallel to one already kept, or SAT misses the gap along it.", HINTS["axes"])

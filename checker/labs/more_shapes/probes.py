@@ -4,7 +4,8 @@ Each probe calls one of the student's functions on configurations chosen to
 show the mistakes a student makes, and returns plain data: what the student's
 function gave, what the lesson's formula gives on the same inputs, and (where
 it helps name a mistake) what the usual wrong formulas give. The checks in
-checker/labs/more_shapes/checks.py compare them in the grading process.
+checker/labs/more_shapes/checks.py compare them in the grading process. The lesson's
+answers are added in the grader only (`judging`, checker/probe_kit.py).
 
     regular_polygon    (step 2) 3 to 12 sides, radii from 5 to 40 px
     polygon_centroid   (step 3) right triangles, a house, a trapezoid, irregular hexagons far from
@@ -23,11 +24,14 @@ import math
 from pygame import Vector2
 
 from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, polygon_area
-from lesson11.physics2d import polygon_centroid as reference_centroid
-from lesson11.physics2d import polygon_inertia as reference_inertia
-from lesson11.physics2d import regular_polygon as reference_regular_polygon
+from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from ... import probe_kit
+from ...probe_kit import judging, reference
+
+reference_centroid = reference(polygon_centroid)
+reference_inertia = reference(polygon_inertia)
+reference_regular_polygon = reference(regular_polygon)
 from ...tape import run_rng
 
 REQUIRED = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes", "sat", "build", "main")
@@ -74,8 +78,12 @@ def probe_regular_polygon(module, lab_path):
     """The student's regular_polygon(sides, radius) beside the lesson's corners radius (cos θk, sin θk), θk = 2πk/n."""
     rng = run_rng(module, "regular_polygon")   # and one polygon drawn for this run
     drawn = ((rng.randint(3, 11), round(rng.uniform(6, 60), 1)),)
-    return [{"sides": sides, "radius": radius, "got": _points(module.regular_polygon(sides, radius)),
-             "want": _plain(reference_regular_polygon(sides, radius))} for sides, radius in POLYGONS + drawn]
+    cases = [{"sides": sides, "radius": radius, "got": _points(module.regular_polygon(sides, radius))}
+             for sides, radius in POLYGONS + drawn]
+    if judging(module):
+        for case in cases:
+            case["want"] = _plain(reference_regular_polygon(case["sides"], case["radius"]))
+    return cases
 
 
 # ---------------------------------------------------------------- step 3: polygon_centroid
@@ -117,16 +125,23 @@ def probe_polygon_centroid(module, lab_path):
     for name, corners in centroid_cases() + drawn:
         for order, points in (("", corners), (" (the other way round)", list(reversed(corners)))):
             pts = [Vector2(p) for p in points]
-            average = sum(pts, Vector2()) / len(pts)
             cases.append({"case": name + order, "points": _plain(pts),
-                          "got": _vector(module.polygon_centroid([Vector2(p) for p in pts])),
-                          "want": list(reference_centroid(pts)), "average": [average.x, average.y],
-                          "area": polygon_area(pts)})
+                          "got": _vector(module.polygon_centroid([Vector2(p) for p in pts]))})
+            if judging(module):
+                cases[-1].update(_centroid_reference(pts))
     return cases
+
+
+@reference
+def _centroid_reference(pts):
+    """The area-weighted centroid, the average of the corners (a mistake to name) and the signed area."""
+    average = sum(pts, Vector2()) / len(pts)
+    return {"want": list(reference_centroid(pts)), "average": [average.x, average.y], "area": polygon_area(pts)}
 
 
 # ---------------------------------------------------------------- step 4: polygon_inertia
 
+@reference
 def analytic_inertia(kind, mass, radius=None, w=None, h=None, sides=None):
     """The textbook inertia (mass·px²): a box m (w² + h²) / 12, a regular n-gon m r² (2 + cos(2π/n)) / 6."""
     if kind == "box":
@@ -134,6 +149,7 @@ def analytic_inertia(kind, mass, radius=None, w=None, h=None, sides=None):
     return mass * radius * radius * (2 + math.cos(2 * math.pi / sides)) / 6
 
 
+@reference
 def _inertia_forms(points, mass):
     """What the usual mistakes give for these centred points, by name (to name the student's)."""
     pts = [Vector2(p) for p in points]
@@ -160,15 +176,15 @@ def _inertia_forms(points, mass):
 
 
 def inertia_cases():
-    """(name, centred points, mass, analytic inertia or None)."""
+    """(name, centred points, mass, the analytic inertia's arguments (analytic_inertia) or None)."""
     cases = []
     for sides, radius, mass in ((3, 34, 1.5), (4, 20, 0.8), (5, 30, 2.1), (6, 28, 2.0), (7, 15, 0.4), (8, 40, 4.2)):
         cases.append((f"a regular {sides}-gon of radius {radius} px, mass {mass:g}",
-                      reference_regular_polygon(sides, radius), mass,
-                      analytic_inertia("polygon", mass, radius=radius, sides=sides)))
+                      regular_polygon(sides, radius), mass,
+                      {"kind": "polygon", "mass": mass, "radius": radius, "sides": sides}))
     for w, h, mass in ((30, 20, 2.0), (80, 45, 3.6), (12, 70, 0.84)):
         cases.append((f"a {w} × {h} box, mass {mass:g}", box_points(w, h), mass,
-                      analytic_inertia("box", mass, w=w, h=h)))
+                      {"kind": "box", "mass": mass, "w": w, "h": h}))
     for name, corners in centroid_cases()[:4]:
         centred = convex_polygon(corners)
         cases.append((f"{name}, centred on its centroid, mass 1.7", centred, 1.7, None))
@@ -185,9 +201,11 @@ def probe_polygon_inertia(module, lab_path):
               None)]
     for name, points, mass, analytic in inertia_cases() + drawn:
         got = module.polygon_inertia([Vector2(p) for p in points], mass)
-        cases.append({"case": name, "points": _plain(points), "mass": mass, "got": _number(got),
-                      "want": reference_inertia([Vector2(p) for p in points], mass), "analytic": analytic,
-                      "forms": _inertia_forms(points, mass)})
+        cases.append({"case": name, "points": _plain(points), "mass": mass, "got": _number(got)})
+        if judging(module):
+            cases[-1].update(want=reference_inertia([Vector2(p) for p in points], mass),
+                             analytic=analytic_inertia(**analytic) if analytic else None,
+                             forms=_inertia_forms(points, mass))
     return cases
 
 
@@ -207,11 +225,15 @@ def axis_pairs():
         ("a pentagon and a pentagon turned half a corner", ngon(5, 30, (0, 0)), ngon(5, 30, (50, 8), 36)),
         ("a hexagon and a box turned 0.01 rad (nearly parallel: keep both)", ngon(6, 30, (0, 0)),
          box(60, 40, (40, 35), math.degrees(0.01))),
+        # 0.01° apart: |a × b| = 1.7e-4 > PARALLEL keeps both; 1 - |a · b| = 1.5e-8 (about θ²/2) would merge them
+        ("two boxes turned 0.01° apart (nearly parallel: keep both)", box(60, 40, (0, 0)),
+         box(50, 30, (45, 20), 0.01)),
         ("two aligned boxes, far apart", box(40, 40, (0, 0)), box(40, 40, (300, 0))),
         ("a pentagon far from a triangle", ngon(5, 30, (0, 0), 10), ngon(3, 30, (200, 50))),
     ]
 
 
+@reference
 def distinct_directions(axes):
     """The lesson's answer: the axes in order, each kept unless parallel (|a × b| <= PARALLEL) to one kept."""
     kept = []
@@ -227,10 +249,11 @@ def probe_separating_axes(module, lab_path):
     for name, pa, pb in axis_pairs():
         for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
             got = module.separating_axes([Vector2(p) for p in first], [Vector2(p) for p in second])
-            normals_a, normals_b = edge_normals(first), edge_normals(second)
-            cases.append({"pair": name, "order": order, "got": _points(got),
-                          "normals_a": _plain(normals_a), "normals_b": _plain(normals_b),
-                          "want": _plain(distinct_directions(normals_a + normals_b))})
+            cases.append({"pair": name, "order": order, "got": _points(got)})
+            if judging(module):
+                normals_a, normals_b = edge_normals(first), edge_normals(second)
+                cases[-1].update(normals_a=_plain(normals_a), normals_b=_plain(normals_b),
+                                 want=_plain(distinct_directions(normals_a + normals_b)))
     return cases
 
 
@@ -241,13 +264,15 @@ def probe_sat(module, lab_path):
     for name, pa, pb in pairs:
         for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
             got = module.sat([Vector2(p) for p in first], [Vector2(p) for p in second])
-            want = probe_kit.reference_sat(first, second, "lesson")
-            cases.append({"pair": name, "order": order, "got": probe_kit.sat_answer(got),
-                          "want": None if want is None else {"normal": list(want[0]), "depth": want[1]},
-                          "ties": [] if want is None else _tied_normals(first, second, want[1])})
+            cases.append({"pair": name, "order": order, "got": probe_kit.sat_answer(got)})
+            if judging(module):
+                want = probe_kit.reference_sat(first, second, "lesson")
+                cases[-1].update(want=None if want is None else {"normal": list(want[0]), "depth": want[1]},
+                                 ties=[] if want is None else _tied_normals(first, second, want[1]))
     return cases
 
 
+@reference
 def _tied_normals(pa, pb, depth):
     """Every edge normal (turned to point from A to B) whose overlap equals the smallest, `depth`.
 
@@ -280,19 +305,25 @@ def probe_bodies(module, lab_path):
     for item in BODY_ITEMS:
         body = module.build(dict(item))
         local = [Vector2(p) for p in body.local]
-        kind = item["kind"]
-        if kind in SIDES:
-            analytic = analytic_inertia(kind, body.mass, radius=item["size"], sides=SIDES[kind])
-        elif kind == "box":
-            analytic = analytic_inertia("box", body.mass, w=item["w"], h=item["h"])
-        else:
-            analytic = None
-        true_points = convex_polygon(local)
-        cases.append({"kind": kind, "item": item, "mass": body.mass, "inertia": body.inertia,
-                      "area": abs(polygon_area(local)), "corners": len(local),
-                      "centroid": list(reference_centroid(local)), "analytic": analytic,
-                      "reference": reference_inertia(true_points, body.mass)})
+        cases.append({"kind": item["kind"], "item": item, "mass": body.mass, "inertia": body.inertia,
+                      "corners": len(local)})
+        if judging(module):
+            cases[-1].update(_body_reference(item, body.mass, local))
     return cases
+
+
+@reference
+def _body_reference(item, mass, local):
+    """For a body build() made of `item`: its outline's area and centroid, the analytic and the lesson's inertia."""
+    kind = item["kind"]
+    if kind in SIDES:
+        analytic = analytic_inertia(kind, mass, radius=item["size"], sides=SIDES[kind])
+    elif kind == "box":
+        analytic = analytic_inertia("box", mass, w=item["w"], h=item["h"])
+    else:
+        analytic = None
+    return {"area": abs(polygon_area(local)), "centroid": list(reference_centroid(local)), "analytic": analytic,
+            "reference": reference_inertia(convex_polygon(local), mass)}
 
 
 # the step functions that answer a question and must leave their arguments as they got them (the grader

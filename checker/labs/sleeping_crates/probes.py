@@ -2,8 +2,8 @@
 
 Each probe calls one of the student's functions on cases chosen to show the
 usual mistakes and returns plain data: what the student's function gave and
-what the lesson's rule gives. The checks in checker/labs/sleeping_crates/checks.py
-compare them in the grading process.
+what the lesson's rule gives (added in the grader only: `judging`, checker/probe_kit.py).
+The checks in checker/labs/sleeping_crates/checks.py compare them in the grading process.
 
     sleep_timer      (step 2) calm and not calm crates: fast, spinning either way, both
     moves            (step 3) static, awake, sleeping bodies (and a static body flagged asleep)
@@ -17,6 +17,7 @@ Units: px, s, rad.
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
 
+from ...probe_kit import judging, reference
 from ...tape import clock, run_rng
 
 REQUIRED = ("sleep_timer", "moves", "wake_on_contact", "build", "main")
@@ -57,6 +58,7 @@ TIMER_CASES = (
 )
 
 
+@reference
 def reference_timer(timer, speed, spin, dt):
     return timer + dt if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN else 0.0
 
@@ -72,8 +74,9 @@ def probe_sleep_timer(module, lab_path):
     for what, timer, speed, spin in TIMER_CASES + drawn:
         for dt in (DT,) if what != "a calm crate, 0.25 s into its timer" else (DT, 1 / 60):
             cases.append({"case": what, "timer": timer, "speed": speed, "spin": spin, "dt": dt,
-                          "got": _number(module.sleep_timer(timer, speed, spin, dt)),
-                          "want": reference_timer(timer, speed, spin, dt)})
+                          "got": _number(module.sleep_timer(timer, speed, spin, dt))})
+            if judging(module):
+                cases[-1]["want"] = reference_timer(timer, speed, spin, dt)
     return cases
 
 
@@ -97,9 +100,16 @@ def probe_moves(module, lab_path):
              for what, mass, asleep in rng.sample(MOVES_CASES, len(MOVES_CASES))]
     for what, mass, asleep in MOVES_CASES + tuple(drawn):
         got = module.moves(_crate(mass, asleep))
-        cases.append({"case": what, "got": bool(got) if isinstance(got, (bool, int)) else _text(got),
-                      "want": mass != 0 and not asleep})
+        cases.append({"case": what, "got": bool(got) if isinstance(got, (bool, int)) else _text(got)})
+        if judging(module):
+            cases[-1]["want"] = reference_moves(mass, asleep)
     return cases
+
+
+@reference
+def reference_moves(mass, asleep):
+    """The lesson's moves(): a body moves when it is dynamic (mass > 0) and awake."""
+    return mass != 0 and not asleep
 
 
 # ---------------------------------------------------------------- step 4: wake_on_contact
@@ -119,10 +129,17 @@ def probe_wake_on_contact(module, lab_path):
             woken = sorted({"a" if body is a else "b" if body is b else "another body" for body in (got or ())})
         except TypeError:
             woken = _text(got)
-        want = sorted(name for name, me, other in (("a", kind_a, kind_b), ("b", kind_b, kind_a))
-                      if me == "asleep" and other == "awake")
-        cases.append({"a": kind_a, "b": kind_b, "got": woken, "want": want})
+        cases.append({"a": kind_a, "b": kind_b, "got": woken})
+        if judging(module):
+            cases[-1]["want"] = reference_woken(kind_a, kind_b)
     return cases
+
+
+@reference
+def reference_woken(kind_a, kind_b):
+    """The lesson's wake_on_contact: the sleeping body ("a" or "b") of a pair whose other body is awake."""
+    return sorted(name for name, me, other in (("a", kind_a, kind_b), ("b", kind_b, kind_a))
+                  if me == "asleep" and other == "awake")
 
 
 # ---------------------------------------------------------------- the cost criterion

@@ -291,6 +291,9 @@ def sat_axes(sub, functions):
 def sat_normal(sub, functions, step2_cases):
     """Step 3: the normal sat() returns points from A to B, with a positive depth."""
     cases = _function(sub, functions, "sat", "sat", 3)
+    if not any(case["got"] is not None and case["lesson"] is not None for case in cases):   # no vacuous pass
+        raise Fail(f"sat() found no overlap in any of the {len(cases)} pairs, so the direction of its normal could not "
+                   "be graded (nothing was graded).", HINTS["normal_flipped"])
     for case, step2 in zip(cases, step2_cases):
         got, want, before = case["got"], case["lesson"], step2["got"]
         if (got is None) != (before is None) or (got is not None and "bad" in got):
@@ -359,10 +362,14 @@ def resolve_k(sub, functions):
 def resolve_friction(sub, functions):
     """Step 5: resolve() clamps friction with Coulomb's law, |jt| <= mu j, and leaves smaller jt alone."""
     cases = _function(sub, functions, "resolve", "resolve", 5)
-    for case in cases:
+    graded = [case for case in cases if case["friction"] is not None and case["j"] is not None]
+    if not graded:   # nothing to compare is no pass: a resolve() that returns before step 4 applies no impulse
+        said = "applied no impulse" if all(case["calls"] == 0 for case in cases) else "left no slip to stop"
+        raise Fail(f"resolve() {said} in any of the {len(cases)} contacts, so its friction could not be graded "
+                   "(nothing was graded). Write step 4 (the normal impulse) first, then step 5's friction after it.",
+                   HINTS["friction_clamp"])
+    for case in graded:
         friction, j, mu = case["friction"], case["j"], case["mu"]
-        if friction is None or j is None:
-            continue
         stop, jt = friction["stop"], friction["jt"]
         bound = mu * j  # with your own j, so a mistake in step 4 does not show here
         want = max(-bound, min(bound, stop))

@@ -4,7 +4,9 @@ Each probe calls one of the student's functions on a set of configurations
 chosen so that together they exercise every term of the lesson's formulas,
 and returns plain data: what the student's function gave and what the
 lesson's formula gives on the same inputs (the reference is exact arithmetic
-on the same numbers, so the checks compare with a tight tolerance). The checks
+on the same numbers, so the checks compare with a tight tolerance). The
+lesson's answers are added in the grader only (`judging`, checker/probe_kit.py),
+from the inputs as they were before the student's function got them. The checks
 in checker/labs/tumbling_crates/checks.py read this data in the grading process and name
 the first configuration that differs.
 
@@ -25,9 +27,10 @@ import os
 from pygame import Vector2
 
 from lesson11.physics2d import Body, box_points, centre_of, cross, edge_normals, relative_velocity  # noqa: F401
-from lesson11.physics2d import apply_impulse as reference_apply_impulse
+from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
-from ...probe_kit import _plain, drawn_sat_pairs, reference_sat, sat_answer, sat_pairs, with_reference_steps
+from ...probe_kit import _plain, drawn_sat_pairs, judging, reference, reference_sat, sat_answer, sat_pairs, twin
+from ...probe_kit import with_reference_steps
 from ...probe_kit import axis_overlaps, box, ngon  # noqa: F401 (the checks and the corpora read them here)
 from ...tape import run_rng
 
@@ -39,7 +42,7 @@ SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.
 
 def probe_sat(module, lab_path):
     """The student's sat() on every pair, both orders, beside the lesson's answer and the shorter-way-out one."""
-    return _sat_cases(module.sat, drawn_sat_pairs(run_rng(module, "sat")))
+    return _sat_cases(module, module.sat, drawn_sat_pairs(run_rng(module, "sat")))
 
 
 def probe_sat_step2(module, lab_path):
@@ -48,22 +51,22 @@ def probe_sat_step2(module, lab_path):
     None when the step markers cannot be found (the checks then use probe_sat's cases).
     """
     spliced = with_reference_steps(module, lab_path, "sat", (3,))
-    return _sat_cases(spliced, drawn_sat_pairs(run_rng(module, "sat"))) if spliced else None
+    return _sat_cases(module, spliced, drawn_sat_pairs(run_rng(module, "sat"))) if spliced else None
 
 
-def _sat_cases(sat, drawn=()):
+def _sat_cases(module, sat, drawn=()):
     cases = []
     for name, pa, pb in sat_pairs() + list(drawn):
         for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
             got = sat([Vector2(p) for p in first], [Vector2(p) for p in second])
-            cases.append({
-                "pair": name, "order": order,
-                "a": [[p.x, p.y] for p in first], "b": [[p.x, p.y] for p in second],
-                "centre_a": list(centre_of(first)), "centre_b": list(centre_of(second)),
-                "got": sat_answer(got),
-                "lesson": _plain(reference_sat(first, second, "lesson")),
-                "short": _plain(reference_sat(first, second, "short")),
-            })
+            case = {"pair": name, "order": order,
+                    "a": [[p.x, p.y] for p in first], "b": [[p.x, p.y] for p in second],
+                    "centre_a": list(centre_of(first)), "centre_b": list(centre_of(second)),
+                    "got": sat_answer(got)}
+            if judging(module):   # the lesson's answers, in the grader only
+                case.update(lesson=_plain(reference_sat(first, second, "lesson")),
+                            short=_plain(reference_sat(first, second, "short")))
+            cases.append(case)
     return cases
 
 
@@ -132,19 +135,27 @@ def probe_apply_impulse(module, lab_path):
     for name, a, b, impulse, ra, rb in impulse_cases() + drawn_impulse_cases(run_rng(module, "apply_impulse")):
         before = {"a": _state(a), "b": _state(b)}
         inv = {"a": [a.inv_mass, a.inv_inertia], "b": [b.inv_mass, b.inv_inertia]}
-        ref_a, ref_b = crate(1, 1, a.pos, 0), crate(1, 1, b.pos, 0)
-        for ref, body in ((ref_a, a), (ref_b, b)):
-            ref.vel, ref.omega = Vector2(body.vel), body.omega
-            ref.inv_mass, ref.inv_inertia = body.inv_mass, body.inv_inertia
-        reference_apply_impulse(ref_a, ref_b, Vector2(impulse), Vector2(ra), Vector2(rb))
         module.apply_impulse(a, b, Vector2(impulse), Vector2(ra), Vector2(rb))
-        cases.append({
-            "case": name, "impulse": list(impulse), "ra": list(ra), "rb": list(rb), "inv": inv,
-            "cross": {"a": cross(ra, impulse), "b": cross(rb, impulse)},
-            "before": before, "after": {"a": _state(a), "b": _state(b)},
-            "expected": {"a": _state(ref_a), "b": _state(ref_b)},
-        })
+        case = {"case": name, "impulse": list(impulse), "ra": list(ra), "rb": list(rb), "inv": inv,
+                "before": before, "after": {"a": _state(a), "b": _state(b)}}
+        if judging(module):
+            case.update(_impulse_reference(before, inv, impulse, ra, rb))
+        cases.append(case)
     return cases
+
+
+@reference
+def _impulse_reference(before, inv, impulse, ra, rb):
+    """The lesson's apply_impulse on bodies in the `before` state with the `inv` inverse masses and inertias."""
+    bodies = {}
+    for side in ("a", "b"):
+        body = crate(1, 1, (0, 0), 0)
+        body.vel, body.omega = Vector2(before[side]["vel"]), before[side]["omega"]
+        body.inv_mass, body.inv_inertia = inv[side]
+        bodies[side] = body
+    lesson_apply_impulse(bodies["a"], bodies["b"], Vector2(impulse), Vector2(ra), Vector2(rb))
+    return {"cross": {"a": cross(ra, impulse), "b": cross(rb, impulse)},
+            "expected": {side: _state(body) for side, body in bodies.items()}}
 
 
 # ---------------------------------------------------------------- resolve (steps 4 and 5)
@@ -185,6 +196,7 @@ def resolve_cases():
     ]
 
 
+@reference
 def _k_forms(a, b, ra, rb, n):
     """The effective mass k of the lesson, and the k's of plausible mistakes (to name what is missing)."""
     ima, imb, ia, ib = a.inv_mass, b.inv_mass, a.inv_inertia, b.inv_inertia
@@ -213,7 +225,9 @@ def probe_resolve(module, lab_path):
     the normal impulse j the student applied, and for friction: the state after the
     student's normal impulse, the impulse jt that would stop the slip, mu, and the
     friction impulse the student applied. The library's apply_impulse applies each
-    impulse, so the student's own apply_impulse (step 6) does not matter here.
+    impulse, so the student's own apply_impulse (step 6) does not matter here. Every
+    reference number is computed from twins of the bodies taken before resolve() runs,
+    so a resolve() that changes a body's inertia or friction does not change the lesson's answer.
     """
     cases = []
     resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
@@ -222,37 +236,41 @@ def probe_resolve(module, lab_path):
         for name, a, b, normal, point in resolve_cases():
             calls = []
 
-            def recorder(a_, b_, impulse, ra_, rb_, calls=calls):
-                ra_, rb_ = Vector2(ra_), Vector2(rb_)
-                rel = relative_velocity(a_, b_, ra_, rb_)
-                calls.append({"impulse": Vector2(impulse), "ra": ra_, "rb": rb_, "rel_before": rel})
-                reference_apply_impulse(a_, b_, Vector2(impulse), ra_, rb_)
+            def stand_in(a_, b_, impulse, ra_, rb_, calls=calls):
+                calls.append({"impulse": Vector2(impulse), "ra": Vector2(ra_), "rb": Vector2(rb_)})
+                lesson_apply_impulse(a_, b_, Vector2(impulse), Vector2(ra_), Vector2(rb_))
 
-            module.apply_impulse = recorder
-            ra, rb = point - a.pos, point - b.pos
-            vn = relative_velocity(a, b, ra, rb).dot(normal)
-            e = min(a.restitution, b.restitution) if vn < -resting else 0.0
+            module.apply_impulse = stand_in
+            given = (twin(a), twin(b))   # the bodies as resolve() gets them
             module.resolve(a, b, Vector2(normal), Vector2(point))
-            cases.append(_resolve_case(name, a, b, normal, ra, rb, vn, e, calls))
+            if judging(module):
+                cases.append(_resolve_case(name, *given, normal, point, resting, calls))
     finally:
         module.apply_impulse = own
     return cases
 
 
-def _resolve_case(name, a, b, normal, ra, rb, vn, e, calls):
-    """Plain data for one resolve() case (see probe_resolve)."""
+@reference
+def _resolve_case(name, a, b, normal, point, resting, calls):
+    """Plain data for one resolve() case (see probe_resolve); a and b: the bodies before resolve() ran."""
+    ra, rb = point - a.pos, point - b.pos
+    vn = relative_velocity(a, b, ra, rb).dot(normal)
+    e = min(a.restitution, b.restitution) if vn < -resting else 0.0
     forms = _k_forms(a, b, ra, rb, normal)
     case = {"case": name, "vn": vn, "e": e, "k": forms, "calls": len(calls),
             "mu": math.sqrt(a.friction * b.friction), "masses": [a.mass, b.mass],
             "j": None, "j_off_normal": 0.0, "friction": None}
     if not calls:
         return case
-    first = calls[0]["impulse"]
-    case["j"] = first.dot(normal)
-    case["j_off_normal"] = (first - normal * case["j"]).length()
+    first = calls[0]
+    case["j"] = first["impulse"].dot(normal)
+    case["j_off_normal"] = (first["impulse"] - normal * case["j"]).length()
+    # the state after the student's normal impulse, from the bodies as given (not as resolve() left them)
+    a, b = twin(a), twin(b)
+    lesson_apply_impulse(a, b, Vector2(first["impulse"]), Vector2(first["ra"]), Vector2(first["rb"]))
     if len(calls) >= 2:
         second = calls[1]
-        rel = second["rel_before"]
+        rel = relative_velocity(a, b, second["ra"], second["rb"])
         tangent = rel - normal * rel.dot(normal)
         if tangent.length_squared() > 1e-12:
             t = tangent.normalize()
