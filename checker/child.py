@@ -39,6 +39,8 @@ import threading
 import time
 import types
 
+from checker.source import read as read_source   # imported here, so the zygote has it warm
+
 sys.dont_write_bytecode = True
 
 MODULE_NAME = "lab_under_test"
@@ -127,10 +129,13 @@ def describe(exc, lab_path, _format_exception=traceback.format_exception):
 
 
 def load_lab(lab_path, copy_path):
-    """Compile and run the lab's source as module MODULE_NAME; returns the module."""
-    with open(copy_path, "rb") as handle:   # the copy in the work folder (the child may not read the original)
-        source = handle.read()
-    code = compile(source, lab_path, "exec", dont_inherit=True)
+    """Compile and run the lab's source as module MODULE_NAME; returns the module.
+
+    It compiles the text the grader read and numbered (checker/source.py), never the bytes under a coding
+    of the file's choosing, so the lines the grader's rules read are the lines that run. It reads the copy
+    in the work folder (the child may not read the original); the grader checks the original is unchanged.
+    """
+    code = compile(read_source(copy_path), lab_path, "exec", dont_inherit=True)
     module = types.ModuleType(MODULE_NAME)
     module.__file__ = copy_path  # the lab sees a copy, never the submitted file
     sys.modules[MODULE_NAME] = module

@@ -1,6 +1,8 @@
 """What the checks of every lab share: accounts of failed runs, and numbers shown beside their bounds."""
 import re
 
+from . import source
+
 
 def describe_run_failure(run, lab_name, what):
     """A one-paragraph account of a run that did not finish: crash, exit, timeout, flood or memory."""
@@ -46,10 +48,9 @@ def _timeout_line(trace, lab_path):
     if found is None:
         return None
     try:
-        with open(lab_path, encoding="utf-8", errors="replace") as handle:
-            lines = handle.read().splitlines()
+        lines = source.lines(source.read(lab_path))
         return found, lines[found - 1].strip() if 0 < found <= len(lines) else ""
-    except OSError:
+    except (OSError, source.SourceError):
         return found, ""
 
 

@@ -4,7 +4,7 @@ A path on the command line is a file (any file: it is one entry) or a folder
 (every `*.py` file under it is one entry, hidden files and folders and
 __pycache__, .git, venv, .venv, node_modules, __MACOSX skipped). An entry
 that cannot be graded (a dangling symbolic link, a link loop, an unreadable
-file, a file that is not UTF-8, a `.py` that is no lab, ...) is kept with its
+file, a file that is not UTF-8 or declares another coding, a `.py` that is no lab, ...) is kept with its
 reason, so it becomes a row of every output instead of vanishing or stopping
 the batch. Only a path that does not exist at all, or a folder with no `.py`
 file in it, is a usage error (the command line is wrong, nothing is graded).
@@ -12,13 +12,11 @@ file in it, is a usage error (the command line is wrong, nothing is graded).
 Nothing here writes anything: files are only stat()ed and read.
 """
 import errno
-import io
 import os
 import stat
-import tokenize
 from dataclasses import dataclass
 
-from . import labs
+from . import labs, source
 from .labs import identify
 
 SKIP_DIRS = {"__pycache__", ".git", ".venv", "venv", "node_modules", "__MACOSX"}
@@ -40,21 +38,6 @@ class Entry:
 
 def known_labs():
     return ", ".join(lab.title for lab in labs.LABS)
-
-
-def decode(raw):
-    """(text, "") for Python source in UTF-8 (or the encoding its coding line declares), else ("", reason)."""
-    try:
-        encoding, _ = tokenize.detect_encoding(io.BytesIO(raw).readline)
-        return raw.decode(encoding), ""
-    except (SyntaxError, LookupError, UnicodeDecodeError) as exc:
-        try:
-            raw.decode("utf-8")
-        except UnicodeDecodeError as bad:
-            line = raw[:bad.start].count(b"\n") + 1
-            return "", (f"not UTF-8 text: byte 0x{raw[bad.start]:02x} on line {line} cannot be read; "
-                        f"save the file as UTF-8")
-        return "", f"not readable as Python source: {exc}"
 
 
 def examine(path):
@@ -89,9 +72,11 @@ def examine(path):
             raw = handle.read(MAX_BYTES + 1)
     except OSError as exc:
         return Entry(path, by_name, f"cannot read: {exc.strerror}", real)
-    text, problem = decode(raw)
-    if problem:
-        return Entry(path, by_name, problem, real)
+    try:   # the compiler's reading (checker/source.py): a coding other than UTF-8 or uncounted line breaks refused
+        text = source.decode(raw, "the file")
+        source.check(text, "the file")
+    except source.SourceError as exc:
+        return Entry(path, by_name, str(exc), real)
     lab = identify(path, text)
     if lab is None:
         what = "" if path.lower().endswith(".py") else "not a .py file, and "

@@ -7,7 +7,8 @@ A lab file is graded in two stages, each in isolated child processes:
 All children of all files share one pool of `jobs` worker slots, so a class
 folder keeps every core busy; a freed slot goes to the waiting run expected
 to take longest (probes first, then scenes by their lab's SCENE_SECONDS). A file's source is read once (the checker never
-writes to it); if the file changes while it is graded the result is an error.
+writes to it), as the compiler reads it (checker/source.py: a file declaring another coding than UTF-8 is an
+error); if the file changes while it is graded the result is an error.
 """
 import hashlib
 import heapq
@@ -19,7 +20,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
 
-from . import probing, step_rules
+from . import probing, source, step_rules
 from .checks import ERROR, FAIL, PASS, skipped_all
 from .sandbox import Limits, run_child
 
@@ -162,9 +163,14 @@ class Grader:
         with open(path, "rb") as handle:
             raw = handle.read()
         digest = hashlib.sha256(raw).hexdigest()
-        sub = Submission(path=path, name=os.path.basename(path), source=raw.decode("utf-8", "replace"),
-                         options=dict(self.options))
-        sub.flags = step_rules.scan_lab(sub.source, lab.module)   # the steps' code, read before any of it runs
+        name = os.path.basename(path)
+        try:   # the text and lines the compiler reads (the child compiles this same text)
+            text = source.decode(raw, name)
+            source.check(text, name)
+        except source.SourceError as exc:
+            return LabReport(given, lab, skipped_all(lab.checks, f"{exc}."), time.monotonic() - start)
+        sub = Submission(path=path, name=name, source=text, options=dict(self.options))
+        sub.flags = step_rules.scan_lab(sub.source, lab.module, path)   # the steps' code, read before any of it runs
         sub.function_steps = probing.steps_by_function(lab)
         settings = probing.settings_for(lab, sub.source, self.seed)
         sub.probe = self.run(path, "probe", settings)

@@ -21,8 +21,14 @@ submission's line and, where there is one, the handout's), `added_imports` and
 """
 import ast
 import difflib
+import functools
+import io
 import re
+import string
+import tokenize
 from dataclasses import dataclass, field
+
+from .source import lines as split_lines
 
 START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+)\b.*---\s*$")
 END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---\s*$")
@@ -30,7 +36,11 @@ MAX_PROBLEMS = 4
 
 
 class MarkerError(ValueError):
-    """The step markers are missing, repeated or out of order."""
+    """The step markers are missing, repeated or out of order; `line`: the 1-based line where it shows, if known."""
+
+    def __init__(self, message, line=None):
+        super().__init__(message)
+        self.line = line
 
 
 @dataclass
@@ -46,13 +56,33 @@ HARMLESS_CALLS = frozenset({"str", "repr", "format", "len", "round", "abs", "int
 PRINT_KEYWORDS = frozenset({"sep", "end", "flush"})   # not file=: printing goes to the output, nowhere else
 
 
+def reaching_fields(template):
+    """The replacement fields of a str.format template that read an attribute or an item: ["0.gi_frame", "0[k]"].
+
+    Such a field reads attributes named in a string, where no rule on the syntax tree sees them.
+    A template str.format would reject is [] (it reads nothing).
+    """
+    try:
+        parsed = list(string.Formatter().parse(template))
+    except ValueError:
+        return []
+    found = []
+    for _, name, spec, _ in parsed:
+        if name and ("." in name or "[" in name):
+            found.append(name)
+        if spec:
+            found += reaching_fields(spec)     # a nested field: "{0:{1.x}}"
+    return found
+
+
 def _harmless_call(call):
-    """str(), repr(), format(), len(), round(), abs(), int(), float(), type(), or "...".format(...)."""
+    """str(), repr(), format(), len(), round(), abs(), int(), float(), type(), or "...".format(...) whose
+    fields read no attribute or item."""
     func = call.func
     if isinstance(func, ast.Name):
         return func.id in HARMLESS_CALLS
     return isinstance(func, ast.Attribute) and func.attr == "format" and isinstance(func.value, ast.Constant) \
-        and isinstance(func.value.value, str)
+        and isinstance(func.value.value, str) and not reaching_fields(func.value.value)
 
 
 def is_debug_print(node):
@@ -73,29 +103,49 @@ def is_debug_print(node):
     return True
 
 
+@functools.lru_cache(maxsize=32)
+def _comment_lines(text):
+    """The 1-based lines of `text` on which a comment starts, as Python's tokenizer reads them; None when the
+    text does not tokenize (the checks that compile it say so)."""
+    try:
+        return frozenset(token.start[0] for token in tokenize.generate_tokens(io.StringIO(text).readline)
+                         if token.type == tokenize.COMMENT)
+    except (tokenize.TokenError, SyntaxError, ValueError, RecursionError, MemoryError):
+        return None
+
+
 def step_regions(lines):
-    """{step: (start line index, end line index, indent)} of the marked regions (0-based marker lines)."""
+    """{step: (start line index, end line index, indent)} of the marked regions (0-based marker lines).
+
+    `lines`: the file's lines as Python counts them (checker/source.py lines()), never str.splitlines().
+    A marker counts only as the comment it looks like: one inside a string literal is a MarkerError.
+    """
     regions, open_step = {}, None
+    comments = _comment_lines("".join(line.rstrip("\r\n") + "\n" for line in lines))   # lines may keep their ends
     for index, line in enumerate(lines):
         start, end = START.match(line), END.match(line)
+        if (start or end) and comments is not None and index + 1 not in comments:
+            raise MarkerError(f"line {index + 1} looks like a step marker but is inside a string, not a comment",
+                              index + 1)
         if start:
             step = int(start.group("step"))
             if open_step is not None:
                 raise MarkerError(f"step {open_step}'s region has no `# --- end of step {open_step} ---` line "
-                                  f"before step {step} starts (line {index + 1})")
+                                  f"before step {step} starts (line {index + 1})", index + 1)
             if step in regions:
-                raise MarkerError(f"the `# --- step {step}` marker appears twice (line {index + 1})")
+                raise MarkerError(f"the `# --- step {step}` marker appears twice (line {index + 1})", index + 1)
             open_step = step
             regions[step] = [index, None, start.group("indent")]
         elif end:
             step = int(end.group("step"))
             if open_step != step:
                 raise MarkerError(f"line {index + 1} ends step {step}, but step {step} was not started "
-                                  "just before it")
+                                  "just before it", index + 1)
             regions[step][1] = index
             open_step = None
     if open_step is not None:
-        raise MarkerError(f"step {open_step}'s region has no `# --- end of step {open_step} ---` line")
+        raise MarkerError(f"step {open_step}'s region has no `# --- end of step {open_step} ---` line",
+                          regions[open_step][0] + 1)
     return {step: tuple(region) for step, region in regions.items()}
 
 
@@ -105,7 +155,7 @@ def blank_steps(source):
     Line numbers outside the regions shift; returns (text, line map) where the
     map takes a line of the new text (1-based) to the line of `source`.
     """
-    lines = source.splitlines()
+    lines = split_lines(source)
     regions = step_regions(lines)
     out, origin = [], []
     skip_until = -1
@@ -256,7 +306,7 @@ def compare(submission, starter, submission_name="the file", starter_name="the h
     mine.body = kept
     if _dump(mine) == _dump(theirs):
         return Comparison(True, [], added)
-    sub_lines, start_lines = submission.splitlines(), starter.splitlines()
+    sub_lines, start_lines = split_lines(submission), split_lines(starter)
     differences = []
     _diff(mine.body, theirs.body, differences)
     problems, warnings = [], []

@@ -8,7 +8,7 @@ hint it is given.
 import ast
 import math
 
-from . import handout
+from . import handout, source
 from .checks import Error, Fail, Hint
 from .common import describe_function_error, describe_run_failure
 
@@ -51,10 +51,10 @@ def handout_unchanged(sub, starter_path, hint):
     With the --allow-edits option a difference is a warning message instead.
     """
     try:
-        with open(starter_path, encoding="utf-8") as handle:
-            starter = handle.read()
-    except OSError as exc:
-        raise Error(f"the checker cannot read the handout {starter_path} ({exc.strerror}) to compare with; "
+        starter = source.read(starter_path)
+    except (OSError, source.SourceError) as exc:
+        reason = getattr(exc, "strerror", None) or exc
+        raise Error(f"the checker cannot read the handout {starter_path} ({reason}) to compare with; "
                     "reinstall the lab bundle.")
     try:
         comparison = handout.compare(sub.source, starter, sub.name, "the handout")

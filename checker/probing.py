@@ -15,6 +15,7 @@ import importlib
 import secrets
 
 from . import tape
+from . import source as source_text
 from .handout import MarkerError, step_regions
 
 _STARTERS = {}   # starter path -> (its compiled code, its step functions)
@@ -27,7 +28,7 @@ def regions_by_function(source):
     A region of comments only (a starter's TODO) may lie after the function's last statement, so a
     function reaches to the next top-level statement.
     """
-    lines = source.splitlines()
+    lines = source_text.lines(source)
     regions = step_regions(lines)
     body = ast.parse(source).body
     out = {}
@@ -50,15 +51,13 @@ def steps_by_function(lab):
     path = getattr(lab.module, "STARTER", None)
     if not path:
         return {}
-    with open(path, encoding="utf-8") as handle:
-        return regions_by_function(handle.read())
+    return regions_by_function(source_text.read(path))
 
 
 def _starter(path):
     """(compiled starter, its step functions), read once per process."""
     if path not in _STARTERS:
-        with open(path, encoding="utf-8") as handle:
-            source = handle.read()
+        source = source_text.read(path)
         _STARTERS[path] = (compile(source, path, "exec"), step_functions(source))
     return _STARTERS[path]
 
@@ -71,7 +70,7 @@ def splice_source(mine, theirs, function, steps):
     when the function or the steps' markers cannot be found.
     """
     try:
-        mine, theirs = mine.splitlines(), theirs.splitlines()
+        mine, theirs = source_text.lines(mine), source_text.lines(theirs)
         my_regions, their_regions = step_regions(mine), step_regions(theirs)
         tree = ast.parse("\n".join(mine))
     except (MarkerError, SyntaxError, ValueError):
@@ -101,9 +100,8 @@ def settings_for(lab, source, seed=None):
     splices = {}
     for function, wanted, solution in getattr(probes, "SPLICES", ()):
         try:
-            with open(solution, encoding="utf-8") as handle:
-                theirs = handle.read()
-        except OSError:
+            theirs = source_text.read(solution)
+        except (OSError, source_text.SourceError):
             continue
         spliced = splice_source(source, theirs, function, wanted)
         if spliced:

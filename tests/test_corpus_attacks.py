@@ -180,23 +180,10 @@ def test_every_table_holds_the_fixed_inputs_of_its_probe(lab):
 
 # ---------------------------------------------------------------- the checker's verdicts
 
-# Holes open on main today, each a strict xfail naming its mechanism of issue 35 and the branch expected to close
-# it (strict: the test fails once the hole is closed, so its mark must go). Scores today: see the report of
-# branch i35-attacks. READING, PROBES and SAFE are the three branches.
-READING = "i35-reading (one reading of the file, star imports, stdlib steps)"
-PROBES = "i35-probes (references out of the child, replay of installed hooks only, no vacuous pass, probe fixes)"
-SAFE = "i35-safe (safe by default: unprivileged child, work folder with the lab file alone)"
-OPEN = {
-    **{f"{lab}_m1_line_breaks": f"mechanism 1: the checker numbers lines with str.splitlines(), Python does not; "
-                                f"{READING}" for lab in ("tc", "ms", "br", "bu", "sc")},
-    **{f"{lab}_m2_unicode_escape": f"mechanism 2: the checker reads UTF-8, the child compiles under the declared "
-                                   f"coding; {READING}" for lab in ("tc", "ms", "br", "bu", "sc")},
-    **{f"{lab}_m6_star_solution": f"mechanism 6: `from solutions.<lab> import *` replaces the step functions; "
-                                  f"{READING}" for lab in ("tc", "ms", "br", "bu", "sc")},
-    **{name: f"mechanism 10: a pure standard-library module in a step is flagged (a false fail); {READING}"
-       for name in ("ms_m10_cmath_corners", "ms_m10_itertools_centroid", "tc_m10_itertools_axes",
-                    "sc_m10_itertools_wake")},
-}
+# Holes open, each a strict xfail naming its mechanism of issue 35 and the branch expected to close it (strict: the
+# test fails once the hole is closed, so its mark must go). None is open now: i35-probes, i35-safe and i35-reading
+# closed mechanisms 1-10.
+OPEN = {}
 # with --child-user nobody: no open hole (branch i35-safe made the zygote import what a scene needs).
 OPEN_AS_CHILD_USER = {}
 
@@ -219,6 +206,10 @@ def test_each_entry_gets_its_verdict(mode, entry, graded):
     assert row["lab"] == entry.lab, f"{entry.name} was graded as {row['lab']}"
     checks = {c["id"]: c for c in row["criteria"]}
     lab = corpus.LABS[entry.lab]
+    if entry.kind == "coding":   # refused before any check: the file is not the UTF-8 text Python would compile
+        assert row["status"] == "error" and row["score"] == 0 and not row["criteria"], _show(row)
+        assert "save it as UTF-8 and remove the line" in row["message"], row["message"]
+        return
     assert set(lab.FUNCTION_CHECKS) <= set(checks), f"{entry.name}: missing checks\n{_show(row)}"
     if entry.target is None:
         wanted = tuple(checks) if entry.all_checks else NON_FUNCTION + tuple(lab.FUNCTION_CHECKS)
@@ -249,7 +240,7 @@ def test_without_the_step_rules_the_replay_still_fails_tables_and_forgery(tmp_pa
     forbidden construct in a step (the tables) or that work on the child (the forgeries) still fail on the
     grader's own replay and drawn inputs. The real procedure has the rules on; this shows the replay holds alone."""
     from checker import cli, step_rules
-    monkeypatch.setattr(step_rules, "scan_lab", lambda source, module: [])
+    monkeypatch.setattr(step_rules, "scan_lab", lambda source, module, path=None: [])
     chosen = [e for e in corpus.ENTRIES if e.kind in ("table", "forge")]
     paths = corpus.write(tmp_path, chosen)
     monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")

@@ -5,6 +5,7 @@
   - each attack, written into a real step: flagged with its step, line and rule;
   - a flagged step fails its check through the command line, with the line and the lab's advice.
 """
+import ast
 import importlib
 import json
 import os
@@ -13,7 +14,7 @@ import sys
 
 import pytest
 
-from checker import labs, step_rules
+from checker import handout, labs, step_rules
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -293,3 +294,171 @@ def test_the_main_guard_in_another_style_is_not_flagged():
     assert solution.count('if __name__ == "__main__":') == 1
     source = solution.replace('if __name__ == "__main__":', "if __name__ == '__main__':")
     assert step_rules.scan_lab(source, lab.module) == []
+
+
+# ---------------------------------------------------------------- issue 35: star imports, closed and side modules,
+# the pure standard-library modules, format strings
+
+@pytest.mark.parametrize("added", [
+    "from solutions.tumbling_crates import *\n",
+    "from lesson11.physics2d import *\n",
+    "from math import *\n",                       # harmless names, but `*` can rebind any name a step reads
+    "from starters.tumbling_crates_starter import *\n",
+])
+def test_a_star_import_anywhere_fails_every_step_naming_its_line(added):
+    lab = lab_by_id("tumbling_crates")
+    solution = read("solutions/tumbling_crates.py")
+    line = solution.count("\n") + 2
+    found = step_rules.scan_lab(solution + "\n" + added, lab.module)
+    assert {(b.step, b.line, b.rule) for b in found} == {(step, line, "outside") for step in (2, 3, 4, 5, 6)}
+    assert found[0].message.startswith(f"line {line} imports every name of ")
+
+
+@pytest.mark.parametrize("added", ["import solutions.tumbling_crates as answers\n",
+                                   "from solutions import tumbling_crates\n",
+                                   "from starters.tumbling_crates_starter import main as handout_main\n",
+                                   "from pkgutil import resolve_name\n",          # imports by a string
+                                   "import lab_under_test\n",                      # the lab's own module in the child
+                                   "import timeit\n"])                             # runs code from a string
+def test_solutions_starters_and_import_by_string_are_closed_modules(added):
+    lab = lab_by_id("tumbling_crates")
+    found = step_rules.scan_lab(added + read("solutions/tumbling_crates.py"), lab.module)
+    assert {(b.step, b.line, b.rule) for b in found} == {(step, 1, "outside") for step in (2, 3, 4, 5, 6)}
+
+
+@pytest.mark.parametrize("side, added", [
+    ("crate_utils.py", "import crate_utils\n"),
+    ("crate_utils.py", "from crate_utils import helper\n"),
+    ("helpers/__init__.py", "import helpers.more\n"),
+    ("cmath.py", "import cmath\n"),             # a free module's name, shadowed by a file beside the lab
+    ("notes.cpython-311-x86_64-linux-gnu.so", "import notes\n"),
+])
+def test_an_import_of_a_module_beside_the_submission_fails_every_step(tmp_path, side, added):
+    lab = lab_by_id("tumbling_crates")
+    (tmp_path / side).parent.mkdir(parents=True, exist_ok=True)
+    (tmp_path / side).write_text("x = 1\n")
+    path = str(tmp_path / "tumbling_crates.py")
+    source = added + read("solutions/tumbling_crates.py")
+    found = step_rules.scan_lab(source, lab.module, path)
+    assert {(b.step, b.line, b.rule) for b in found} == {(step, 1, "outside") for step in (2, 3, 4, 5, 6)}
+    assert "from the submission's own folder" in found[0].message
+    assert [b for b in step_rules.scan_lab(source, lab.module) if "own folder" in b.what] == []   # no folder given
+
+
+def test_the_handout_s_own_imports_are_no_side_module(tmp_path):
+    """A lab file at the project's top sits beside lesson11/: the handout's own `from lesson11 import ...` is fine."""
+    lab = lab_by_id("tumbling_crates")
+    (tmp_path / "lesson11").mkdir()
+    (tmp_path / "pygame.py").write_text("")
+    (tmp_path / "unused.py").write_text("")
+    assert step_rules.scan_lab(read("solutions/tumbling_crates.py"), lab.module, str(tmp_path / "lab.py")) == []
+
+
+FREE_STEPS = [   # honest uses of the pure standard-library modules (tumbling crates step 2, before the real code)
+    "import cmath\nz = cmath.exp(1j * cmath.pi / 4)\nangle = cmath.phase(z)",
+    "import itertools\nfor u, v in itertools.pairwise(edge_normals(pa)):\n    pass",
+    "from itertools import chain, pairwise\nboth = list(chain(edge_normals(pa), edge_normals(pb)))",
+    "import functools\nimport operator\ntotal = functools.reduce(operator.add, [1, 2, 3])",
+    "from fractions import Fraction\nhalf = Fraction(1, 2)",
+    "import statistics as st\nmiddle = st.mean([1.0, 2.0])",
+    "import math\nd = math.dist((0, 0), (3, 4))",                  # import math inside a step, too
+    "import itertools as it\npick = it.islice\ntools = [it, math]",  # itertools and math may be passed around
+    "label = f'{pa!r:>10}' + '{:.2f} {}'.format(1.5, 'x') + '%(a)s' % {'a': 1}",
+]
+
+
+@pytest.mark.parametrize("code", FREE_STEPS)
+def test_the_pure_standard_library_is_allowed_in_a_step(code):
+    lab = lab_by_id("tumbling_crates")
+    solution = read("solutions/tumbling_crates.py")
+    source, _ = in_step(solution, 2, code + "\n" + step_code(solution, 2))
+    assert step_rules.scan_lab(source, lab.module) == []
+
+
+def test_a_free_module_imported_at_the_top_is_allowed_in_a_step():
+    lab = lab_by_id("more_shapes")
+    solution = read("solutions/more_shapes.py").replace("import math\n", "import cmath\nimport math\n", 1)
+    source, _ = in_step(solution, 2, "return [Vector2(radius * cmath.exp(2j * cmath.pi * k / sides).real,\n"
+                                     "                radius * cmath.exp(2j * cmath.pi * k / sides).imag)\n"
+                                     "        for k in range(sides)]")
+    assert step_rules.scan_lab(source, lab.module) == []
+
+
+@pytest.mark.parametrize("code, rule", [
+    ("import statistics\nm = statistics.sys.modules", "module"),          # a module among a free module's names
+    ("import fractions as f\nm = f.sys", "module"),
+    ("from statistics import sys", "import"),
+    ("import operator\nget = operator.attrgetter('gi_frame')", "module"),   # getattr by a string
+    ("from operator import methodcaller", "import"),
+    ("import functools\nfunctools.update_wrapper(pa, pb, ('gi_frame',), ())", "module"),
+    ("import statistics\nkeep = [statistics]", "module"),                  # passed on, its attributes reach further
+    ("import operator\nf = (lambda m: m)(operator)", "module"),
+    ("import os", "import"),
+    ("from lesson11 import physics2d", "import"),
+    ("text = '{0.gi_frame.f_back.f_locals}'.format((lambda: (yield))())", "format"),
+    ("text = '{0[sat]}'.format({'sat': 1})", "format"),
+    ("text = '{0:{1.x}}'.format(1, pa)", "format"),                        # a nested field
+    ("text = '{g.gi_frame}'.format_map({'g': pa})", "format"),
+    ("template = '{0.' + 'gi_frame}'\ntext = template.format(pa)", "format"),   # a template built at run time
+    ("show = str.format\ntext = show('{}', pa)", "format"),
+    ("match '{0.gi_frame}':\n    case str(format=f):\n        text = f(pa)", "format"),
+])
+def test_what_reaches_further_than_a_pure_module_or_through_a_format_string_is_flagged(code, rule):
+    lab = lab_by_id("tumbling_crates")
+    solution = read("solutions/tumbling_crates.py")
+    source, first = in_step(solution, 2, code + "\n" + step_code(solution, 2))
+    found = step_rules.scan_lab(source, lab.module)
+    assert any(b.rule == rule and b.step == 2 and first <= b.line < first + len(code.splitlines()) for b in found), \
+        [(b.line, b.rule, b.what) for b in found]
+
+
+def test_a_debug_print_outside_the_steps_may_not_format_an_attribute():
+    """handout.is_debug_print: '{0.x}'.format(v) reads an attribute by a string; the f-string does not."""
+    assert handout.is_debug_print(ast.parse("print('{:.1f} {}'.format(1.0, a.b), f'{a.b}')").body[0])
+    assert not handout.is_debug_print(ast.parse("print('{0.gi_frame}'.format(g))").body[0])
+    assert handout.reaching_fields("{0.x} {1[k]} {{0.y}} {:>{w.z}}") == ["0.x", "1[k]", "w.z"]
+    assert handout.reaching_fields("{") == []
+
+
+def test_broken_or_missing_markers_leave_no_step_unchecked():
+    """A stray end marker (all regions unknown) or a step's markers removed: the code the rules cannot find as the
+    step fails that step, naming the markers (the library call below would pass its check otherwise)."""
+    lab = lab_by_id("tumbling_crates")
+    delegating, first = in_step(read("solutions/tumbling_crates.py"), 2, "return World().sat(pa, pb)")
+    stray = delegating.replace("def main():", "# --- end of step 2 ---\ndef main():")
+    line = stray.splitlines().index("# --- end of step 2 ---") + 1
+    found = step_rules.scan_lab(stray, lab.module)
+    assert {(b.step, b.line) for b in found} == {(step, line) for step in (2, 3, 4, 5, 6)}
+    assert found[0].message.startswith(f"line {line} breaks the step markers (line {line} ends step 2")
+    lines = delegating.splitlines(keepends=True)
+    unmarked = "".join(text for text in lines if "step 2:" not in text and "end of step 2 " not in text)
+    found = step_rules.scan_lab(unmarked, lab.module)
+    assert [(b.step, b.rule) for b in found] == [(2, "outside")]
+    assert found[0].message.startswith("the file has no markers for step 2 (keep `# --- step 2: ... ---`")
+
+
+@pytest.mark.parametrize("added, flagged", [
+    ("spy = '{0.gi_frame.f_back.f_locals}'.format\n", True),     # a frame read through a format field
+    ("spy = '{0.__globals__}'\n", True),
+    ("template = 'x'\nshow = template.format\n", True),            # a template built at run time
+    ("label = '{0.x} {1[2]}'.format\n", False),                     # fields, but nothing that reaches further
+])
+def test_a_format_string_outside_the_steps_that_reaches_a_frame_fails_every_step(added, flagged):
+    lab = lab_by_id("tumbling_crates")
+    found = step_rules.scan_lab(read("solutions/tumbling_crates.py") + "\n" + added, lab.module)
+    assert ({b.step for b in found} == {2, 3, 4, 5, 6}) == flagged and (found == []) != flagged
+
+
+def test_a_marker_inside_a_string_is_no_marker():
+    """An end marker inside a string literal (the real one removed) would end the region before the step's code:
+    the markers are read as the comments they must be, so every step fails naming the line."""
+    lab = lab_by_id("tumbling_crates")
+    source, first = in_step(read("solutions/tumbling_crates.py"), 2,
+                            's = """\n    # --- end of step 2 ---\n"""\nreturn World().sat(pa, pb)')
+    real = source.rindex("    # --- end of step 2 ---\n")
+    source = source[:real] + source[real + len("    # --- end of step 2 ---\n"):]
+    found = step_rules.scan_lab(source, lab.module)
+    assert {(b.step, b.line) for b in found} == {(step, first + 1) for step in (2, 3, 4, 5, 6)}
+    assert "looks like a step marker but is inside a string" in found[0].message
+    with pytest.raises(handout.MarkerError, match="inside a string"):
+        handout.compare(source, read("starters/tumbling_crates_starter.py"))
