@@ -110,8 +110,9 @@ def settings_for(lab, source, seed=None):
             "seed": secrets.randbelow(2 ** 31) if seed is None else seed}
 
 
-def _error(message):
-    return {"kind": "exception", "message": message, "line": None, "text": None, "traceback": ""}
+def _error(message, kind="exception"):
+    """An error record as the child writes one; kind "report": the grader's own account of what the child reported."""
+    return {"kind": kind, "message": message, "line": None, "text": None, "traceback": ""}
 
 
 def judge(lab, path, settings, child):
@@ -144,19 +145,19 @@ def judge(lab, path, settings, child):
         if len(record["tape"]) > MAX_TAPE:   # no probe makes that many calls: refuse before replaying any
             functions[name] = {"ok": False, "error": _error(
                 f"the child reported {len(record['tape'])} calls for the probe of {function}(), more than the "
-                f"checker's probe makes (at most {MAX_TAPE}): the child's report was changed")}
+                f"checker's probe makes (at most {MAX_TAPE}): the child's report was changed", "report")}
             continue
         try:
             replay = tape.Replayer(namespace, steps, record["tape"], constants, settings.get("seed", 0))
             data = probe(replay, path)
         except (tape.StudentRaised, tape.TapeEnded) as exc:
             functions[name] = {"ok": False, "error": child_error or _error(
-                f"{function}() stopped in the child, but the child gave no account of the error ({exc})")}
+                f"{function}() stopped in the child, but the child gave no account of the error ({exc})", "report")}
             continue
         except tape.TapeMismatch as exc:
             functions[name] = {"ok": False, "error": _error(
                 f"the checker could not replay what {function}() did ({exc}): the code outside the steps "
-                "does not behave like the handout's, or the child's report was changed")}
+                "does not behave like the handout's, or the child's report was changed", "report")}
             continue
         except Exception as exc:  # noqa: BLE001 - the probe's own code failed on what the function returned
             functions[name] = {"ok": False, "error": child_error or _error(f"{type(exc).__name__}: {exc}")}
@@ -165,7 +166,7 @@ def judge(lab, path, settings, child):
             functions[name] = {"ok": False, "error": child_error}
         elif not replay.finished():
             functions[name] = {"ok": False, "error": _error(
-                f"the child reported more calls of {function}() than the checker's probe makes")}
+                f"the child reported more calls of {function}() than the checker's probe makes", "report")}
         else:
             functions[name] = {"ok": True, "data": data, "changed_arguments": replay.changed(pure),
                                "changed_fields": replay.tampered()}

@@ -1073,27 +1073,38 @@ HIDDEN = {
 }
 BACKSLASH_N = "\\" + "n"   # the two characters a unicode_escape file decodes to a line break
 
-# 5: the child's own json.dumps adds, to the first call of every probe's tape, an event naming draw_text (a
+# 5: the child's tapes (those taken, through run_probe's frame, and those to come, through tape.Recorder.take)
+# get, at the first call of each, an event naming draw_text (a
 # function of the handout no probe installs; `main` would run the whole handout in the grader). It is put
 # in by one step function (FORGER: its steps are flagged, the forgery runs when a probe calls it); the
 # other step functions are the solution's, and their checks must come out as a tape mismatch.
 FOREIGN_EVENT = """
-json = __import__("json")
-if not hasattr(json.dumps, "forged"):
-    real = json.dumps
+sys = __import__("sys")
+tape = sys.modules.get("checker.tape")
+if tape is not None and not hasattr(tape.Recorder.take, "forged"):
+    def add_event(entries):
+        for entry in entries:
+            if isinstance(entry, dict) and entry.get("k") == "call":
+                entry["events"] = [{"hook": "draw_text", "state": None,
+                                    "args": {"t": [{"t": []}, {"d": {}}]}}] + list(entry.get("events") or [])
+                return
 
-    def forge(value, *args, **kwargs):
-        if isinstance(value, dict) and isinstance(value.get("probe"), dict):
-            for record in (value["probe"].get("tapes") or {}).values():
-                for entry in record.get("tape") or []:
-                    if isinstance(entry, dict) and entry.get("k") == "call":
-                        entry["events"] = [{"hook": "draw_text", "state": None,
-                                            "args": {"t": [{"t": []}, {"d": {}}]}}] + list(entry.get("events") or [])
-                        break
-        return real(value, *args, **kwargs)
+    frame = sys._getframe()
+    while frame is not None:   # the tapes taken before this call, in run_probe's result
+        found = frame.f_locals.get("result")
+        if isinstance(found, dict) and isinstance(found.get("tapes"), dict):
+            for record in found["tapes"].values():
+                add_event(record.get("tape") or [])
+        frame = frame.f_back
+    real = tape.Recorder.take
 
-    forge.forged = True
-    json.dumps = forge
+    def take(self):   # and the tapes taken after it
+        out = real(self)
+        add_event(out)
+        return out
+
+    take.forged = True
+    tape.Recorder.take = take
 """
 FORGER = {"tumbling_crates": (4, ("sat_axes", "apply_impulse_spin")),
           "more_shapes": (5, ("polygon_corners", "centroid", "inertia_sum")),
@@ -1159,9 +1170,9 @@ def _issue35(lab):
                mechanism=2),
         attack(f"{short}_m5_foreign_hook", lab, "foreign_hook",
                {forger: _code(FOREIGN_EVENT) + "\n" + FILES_SOLUTION_STEPS[lab][forger]}, forged,
-               f"step {forger} (the solution's, flagged) patches the child's json.dumps to add to every tape an "
-               "event naming draw_text, a handout function no probe installs: the solution's other steps must come "
-               "out as a tape mismatch, never data or a call in the grader", mechanism=5, message="could not replay"),
+               f"step {forger} (the solution's, flagged) patches the child's tape.Recorder.take to add to every tape "
+               "an event naming draw_text, a handout function no probe installs: the solution's other steps must "
+               "come out as a tape mismatch, never data or a call in the grader", mechanism=5, message="could not replay"),
         attack(f"{short}_m6_star_solution", lab, "star_import", undone, module.FUNCTION_CHECKS,
                f"the steps are the starter's; `from solutions.{lab} import *` after the defs replaces every step "
                "function with the solution's", edits=((MAIN_GUARD, f"\n\nfrom solutions.{lab} import *  # noqa\n"
