@@ -167,8 +167,10 @@ def _start(lab_path, task, settings_path, result_fd, work, env, limits):
     result_fd: the write end of the pipe the child writes its result to (the parent reads the other end).
     """
     if zygote_enabled():
-        client = _zygote_client()
-        if client is not None:
+        for _ in range(1 + ZYGOTE_RESTARTS):   # a zygote that fails to fork is replaced (_zygote_client) and asked again
+            client = _zygote_client()
+            if client is None:
+                break
             proc = client.spawn(["checker.child", lab_path, task, settings_path, "fd:3"], work, env, limits, result_fd)
             if proc is not None:
                 return proc
@@ -338,12 +340,15 @@ class ZygoteClient:
 _zygote = None          # this process's ZygoteClient, or False once it could not be started
 _zygote_owner = None    # the pid that started it (a forked grader starts its own)
 _zygote_lock = threading.Lock()
+_retired = []           # zygotes that broke and were replaced: their runs go on, they are stopped at exit
+ZYGOTE_RESTARTS = 2     # how many times a broken zygote is replaced before children start with subprocess
 
 
 def _start_locked():
     global _zygote, _zygote_owner
     if _zygote_owner != os.getpid():
         _zygote_owner = os.getpid()
+        _retired.clear()   # a forked grader's: its parent's zygotes are not its own
         try:
             _zygote = ZygoteClient()
         except OSError:
@@ -363,9 +368,20 @@ def start_zygote():
 
 
 def _zygote_client():
-    """The zygote of this process, started on first use and ready; None if it could not be started or broke."""
+    """The zygote of this process, started on first use and ready; None if it could not be started or broke.
+
+    A zygote that broke (it did not answer in time on a busy machine, say) is replaced by a new one up to
+    ZYGOTE_RESTARTS times: the subprocess path it would fall back to cannot run as a child user who may
+    not read Python's own files (checker/users.py)."""
+    global _zygote
     with _zygote_lock:
         _start_locked()
+        if _zygote and _zygote.broken and len(_retired) < ZYGOTE_RESTARTS:
+            _retired.append(_zygote)   # not closed now: closing it would end the runs it still has
+            try:
+                _zygote = ZygoteClient()
+            except OSError:
+                _zygote = False
         if _zygote and not _zygote.broken and _zygote.wait_ready():
             return _zygote
         return None
@@ -375,9 +391,12 @@ def stop_zygote():
     """Stop this process's zygote if it started one (also done at exit); the next run starts a new one."""
     global _zygote, _zygote_owner
     with _zygote_lock:
-        if _zygote and _zygote_owner == os.getpid():  # broken or not
-            _zygote.close()
+        if _zygote_owner == os.getpid():
+            for zygote in [_zygote, *_retired]:   # broken or not
+                if zygote:
+                    zygote.close()
         _zygote, _zygote_owner = None, None
+        _retired.clear()
 
 
 atexit.register(stop_zygote)

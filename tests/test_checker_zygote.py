@@ -163,13 +163,27 @@ def test_raw_flood_is_killed_through_the_zygote(zygote, lab):
     assert len(run.stdout) <= 64 * 1024
 
 
-def test_a_dead_zygote_means_subprocess_again(zygote, lab):
-    zygote.process.kill()
-    zygote.process.wait()
+def test_a_dead_zygote_is_replaced_and_then_subprocess_again(zygote, lab):
+    """A zygote that dies (or stops answering on a busy machine) is replaced by a new one, ZYGOTE_RESTARTS
+    times in a grading run: the subprocess path cannot run a child user who may not read Python's files.
+    After that, children start with subprocess."""
+    pids = [zygote.process.pid]
+    for _ in range(sandbox.ZYGOTE_RESTARTS):
+        sandbox._zygote.process.kill()
+        sandbox._zygote.process.wait()
+        run = probe(lab(PARENT), Limits(timeout=5))
+        assert run.status == "done" and run.returncode == 0, run
+        assert sandbox._zygote.process.pid not in pids   # a new zygote forked it
+        assert run.stdout.strip() == f"parent {sandbox._zygote.process.pid}"
+        pids.append(sandbox._zygote.process.pid)
+    sandbox._zygote.process.kill()
+    sandbox._zygote.process.wait()
     run = probe(lab(PARENT), Limits(timeout=5))
     assert run.status == "done" and run.returncode == 0, run
     assert run.stdout.strip() == f"parent {os.getpid()}"  # started by subprocess from this process
     assert sandbox._zygote_client() is None
+    sandbox.stop_zygote()
+    assert sandbox._retired == []
 
 
 def test_checker_zygote_0_means_subprocess(monkeypatch, lab):

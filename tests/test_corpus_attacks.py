@@ -251,4 +251,5 @@ def test_without_the_step_rules_the_replay_still_fails_tables_and_forgery(tmp_pa
     for entry in chosen:
         checks = {c["id"]: c for c in rows[entry.name]["criteria"]}
         assert rows[entry.name]["flags"] == []
+        assert set(entry.target) <= set(checks), f"{entry.name} was not graded:\n{_show(rows[entry.name])}"
         assert all(checks[t]["status"] != "pass" for t in entry.target), (entry.name, checks[entry.target[0]])
