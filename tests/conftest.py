@@ -14,6 +14,8 @@ os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 # order (most tests first) handed out the 10⁵-step file last, and it ran alone at the end while the other
 # worker idled. The first two go one to each worker; the third waits behind the first on its worker.
 LONGEST_FIRST = (
+    "test_checker_portable.py",         # every corpus graded again through the portable path (no zygote)
+    "test_corpus_attacks.py",           # 166 attacks and their honest files, two grading modes
     "test_stability_long.py",           # the 10⁵-step busy scene (slow): one process, nothing parallel inside
     "test_corpus_tumbling_crates.py",   # 73 files graded by one checker run (the checker's own 2 jobs)
     "test_stability_dynamics.py",       # the base-8 pyramid (slow), the resting pile, the 10-box stack
