@@ -18,6 +18,7 @@ import sys
 
 DEFAULT_CHILD_USER = "nobody"
 OPT_OUT = "root"     # --child-user root: the child runs as the grader's own user (root)
+PRIVATE = ("solutions", "starters")   # the project's folders a grader keeps from the child's user (the answers)
 FIX = "install Python where that user can read it, choose another --child-user, or --child-user root to opt out"
 
 
@@ -153,6 +154,8 @@ def unreadable_import(error, user, path):
     name = message.split("No module named ", 1)[1].strip().strip("'\"")
     import importlib.machinery
     top = name.split(".")[0]
+    if top in PRIVATE:   # kept from the child on purpose: importing it is the file's doing, not our failure
+        return None
     try:
         spec = importlib.machinery.PathFinder.find_spec(top, path)
     except (ImportError, ValueError):

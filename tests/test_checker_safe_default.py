@@ -140,6 +140,25 @@ def test_an_import_nobody_cannot_read_is_the_checkers_line_and_a_missing_module_
     assert graded["missing.py"]["message"] == ""   # graded: the student's own error
 
 
+def test_an_import_of_the_answers_kept_from_the_child_stays_the_files_error(tmp_path):
+    """Gradescope and PrairieLearn keep solutions/ from the child's user (mode 700): a file importing them
+    gets the student's ModuleNotFoundError (and its step flags), not the checker's 'cannot import' line.
+    Emulated here: a solutions/ folder the user cannot enter, on the child's path."""
+    private = tmp_path / "project"
+    (private / "solutions").mkdir(parents=True)
+    (private / "solutions" / "tumbling_crates.py").write_text("X = 1\n", encoding="utf-8")
+    (private / "solutions").chmod(0o700)
+    (private / "shared").mkdir()
+    (private / "shared" / "__init__.py").write_text("", encoding="utf-8")
+    (private / "shared").chmod(0o700)
+    error = {"message": "ModuleNotFoundError: No module named 'solutions.tumbling_crates'"}
+    assert users.unreadable_import(error, "nobody", [str(private)]) is None
+    other = users.unreadable_import({"message": "ModuleNotFoundError: No module named 'shared'"}, "nobody",
+                                    [str(private)])
+    if users.blocked(str(private / "shared"), "nobody"):   # the control: any other unreadable module is ours
+        assert other.startswith("the checker cannot import 'shared' as user 'nobody': ")
+
+
 # ---------------------------------------------------------------- the child's folder and path
 
 @pytest.mark.parametrize("user", ["default", "root"])
