@@ -351,9 +351,9 @@ def main(argv):
         flush()
 
     if portable and limits.user:   # the POSIX path drops root before the lab's interpreter starts; here, now,
-        from checker import sandbox, zygote   # after importing what a lab needs, as the zygote does
+        from checker import users, zygote   # after importing what a lab needs, as the zygote does
         zygote.warm_up()
-        sandbox.drop_user(limits.user)
+        users.drop_user(limits.user)
     save()
     try:
         module = load_lab(lab_path, copy_path)

@@ -139,15 +139,6 @@ def write_notes(fd, notes):
         os.write(fd, (json.dumps({"limits_skipped": notes}) + "\n").encode())
 
 
-def drop_user(user):
-    """Run as `user` from now on (groups first, then group, then user); the caller must be root."""
-    import pwd
-    entry = pwd.getpwnam(user)
-    os.setgroups([])
-    os.setgid(entry.pw_gid)
-    os.setuid(entry.pw_uid)
-
-
 def _limit_child(limits, note_fd=None):
     """The POSIX child's set-up after fork: its own session, the rlimits (notes of refused ones to note_fd),
     and last the student's user."""
@@ -157,7 +148,7 @@ def _limit_child(limits, note_fd=None):
         if note_fd is not None:
             write_notes(note_fd, notes)
         if limits.user:   # last: drop root for the student's user
-            drop_user(limits.user)
+            users.drop_user(limits.user)
     return apply
 
 

@@ -111,23 +111,25 @@ def cannot_run_python(user, where=None):
     return f"the checker cannot run Python as user {user!r}{because}; {FIX}"
 
 
+def drop_user(user):
+    """Run as `user` from now on (groups first, then group, then user); the caller must be root."""
+    entry = _entry(user)
+    os.setgroups([])
+    os.setgid(entry.pw_gid)
+    os.setuid(entry.pw_uid)
+
+
 @functools.lru_cache(maxsize=None)
 def python_problem(user, project):
     """None if `user` can start this Python and import the child (the subprocess path); else the one line.
 
     Starts `python -c "import checker.child"` once as that user (cached per user).
     """
-    entry = _entry(user)
-
-    def drop():
-        os.setgroups([])
-        os.setgid(entry.pw_gid)
-        os.setuid(entry.pw_uid)
-
     env = dict(os.environ, PYTHONPATH=project, PYTHONDONTWRITEBYTECODE="1")
     try:
         probe = subprocess.run([sys.executable, "-c", "import checker.child"], cwd="/", env=env,
-                               stdin=subprocess.DEVNULL, capture_output=True, timeout=60, preexec_fn=drop)
+                               stdin=subprocess.DEVNULL, capture_output=True, timeout=60,
+                               preexec_fn=lambda: drop_user(user))
     except (OSError, subprocess.SubprocessError):
         return cannot_run_python(user)
     if probe.returncode == 0:
