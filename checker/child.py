@@ -39,6 +39,7 @@ import threading
 import time
 import types
 
+from checker.sandbox import STDOUT_FILE
 from checker.source import read as read_source   # imported here, so the zygote has it warm
 
 sys.dont_write_bytecode = True
@@ -287,8 +288,8 @@ def run_scenario(module, settings):
         runtime.write_record()
 
 
-# the checker's own files in the work folder (lab_stdout.txt: the lab's stdout on the portable path)
-RESERVED = ("settings.json", "record.json", "timeout_traceback.txt", "lab_stdout.txt")
+# the checker's own files in the work folder (STDOUT_FILE: the lab's stdout on the portable path)
+RESERVED = ("settings.json", "record.json", "timeout_traceback.txt", STDOUT_FILE)
 
 
 def copy_name(lab_path):
