@@ -2,24 +2,30 @@
 
 In the style of check50: a lab's checks are plain functions registered in
 order with @registry.check(...). A check's docstring is the description the
-student sees. A check receives the submission (what was run and recorded) and,
-after it, what each check it depends on returned, in the order of `depends`:
+student sees. A check takes only what it reads: the submission (what was run
+and recorded) when its first parameter is named `sub`, then the value of each
+check in `depends`, in that order. Checks in `after` only gate: they must pass
+first, but their values are not passed.
 
     @CHECKS.check(depends=["loads"])
     def sat_axes(sub, probe):        # probe: what `loads` returned
         ...
         return Passed("10.00 px along (1, 0)", value=cases)   # or just a value
 
+    @CHECKS.check(depends=["runs"], after=["sat_axes"])
+    def pile_stable(records):        # records: what `runs` returned; no submission
+        ...
+
 A check passes by returning: a str is shown as its message, `Passed(message,
 value)` shows the message and hands `value` to its dependents, anything else is
 handed on silently. It fails by raising Fail(rationale, hint), or Error(rationale,
 hint) when the lab crashed, looped or broke a limit so nothing could be measured.
-A check whose dependencies did not all pass is skipped, so a crash or a
-mistake is reported once. No state is shared between checks except through
-these return values.
+A check whose prerequisites (`depends` and `after`) did not all pass is skipped,
+naming the earliest of them that did not, so a crash or a mistake is reported once.
+No state is shared between checks except through these return values.
 
 A check registered with `needs_scenarios=True` reads the scene runs; the
-grader runs the scenes only if such a check has every dependency passed
+grader runs the scenes only if such a check has every prerequisite passed
 (`Registry.wants_scenarios`), so a file that fails a function check costs one
 probe run, not five.
 """
@@ -64,16 +70,24 @@ class Passed:
 
 @dataclass
 class Check:
-    """A registered check: id, the function, what it depends on, its weight, and whether it reads the scenes."""
+    """A registered check: id, the function, the checks whose values it takes (`depends`) and those that only gate
+    it (`after`), its weight, whether it reads the scenes, and whether it takes the submission."""
     id: str
     func: object
     depends: tuple
     max_score: float
     needs_scenarios: bool = False
+    after: tuple = ()
+    takes_submission: bool = True
+    prerequisites: tuple = ()   # depends and after, in the registry's order (the first not passed is named)
 
     @property
     def description(self):
         return inspect.cleandoc(self.func.__doc__ or self.id).split("\n\n")[0].replace("\n", " ")
+
+    def call(self, submission, *values):
+        """Run the function on what it takes: the submission if it reads it, then the values of `depends`."""
+        return self.func(*((submission,) if self.takes_submission else ()), *values)
 
 
 @dataclass
@@ -100,14 +114,22 @@ class Registry:
     def __init__(self):
         self.checks = []
 
-    def check(self, depends=(), max_score=1.0, needs_scenarios=False):
-        """Decorator: register the function as the next check, depending on the ids in `depends`."""
+    def check(self, depends=(), max_score=1.0, needs_scenarios=False, after=()):
+        """Decorator: register the function as the next check.
+
+        depends: ids of earlier checks whose values it takes, in order, after the submission (passed only when the
+        first parameter is named `sub`); after: ids of earlier checks that must pass first but whose values it
+        does not take. A signature that does not match is a ValueError here, at import, not a wrong call later.
+        """
         def register(func):
-            known = {c.id for c in self.checks}
-            missing = [d for d in depends if d not in known]
+            order = {c.id: index for index, c in enumerate(self.checks)}
+            missing = [d for d in (*depends, *after) if d not in order]
             if missing:
                 raise ValueError(f"check {func.__name__} depends on unknown or later checks {missing}")
-            self.checks.append(Check(func.__name__, func, tuple(depends), float(max_score), needs_scenarios))
+            takes_submission = _takes(func, len(depends))
+            prerequisites = tuple(sorted(set(depends) | set(after), key=order.get))
+            self.checks.append(Check(func.__name__, func, tuple(depends), float(max_score), needs_scenarios,
+                                     tuple(after), takes_submission, prerequisites))
             return func
         return register
 
@@ -131,13 +153,13 @@ class Registry:
                 continue
             if stop_at_scenarios and chk.needs_scenarios:
                 break
-            blocked = [d for d in chk.depends if state.results[d].status != PASS]
+            blocked = [d for d in chk.prerequisites if state.results[d].status != PASS]
             if blocked:
                 state.add(Result(chk.id, chk.description, SKIP, max_score=chk.max_score,
                                  message=f"skipped: needs {needed(self.by_id(blocked[0]))} to pass first"))
                 continue
             try:
-                returned = chk.func(submission, *(state.values[d] for d in chk.depends))
+                returned = chk.call(submission, *(state.values[d] for d in chk.depends))
             except Error as exc:
                 state.add(state.failed(chk, ERROR, exc))
                 continue
@@ -154,10 +176,24 @@ class Registry:
         return state
 
     def wants_scenarios(self, state):
-        """True when some check that reads the scenes has all of its dependencies passed."""
+        """True when some check that reads the scenes has all of its prerequisites passed."""
         return any(chk.needs_scenarios and all(d in state.results and state.results[d].status == PASS
-                                               for d in chk.depends)
+                                               for d in chk.prerequisites)
                    for chk in self.checks)
+
+
+def _takes(func, values):
+    """True when `func` takes the submission: its first parameter is named `sub`. ValueError unless the other
+    parameters take exactly `values` values (one per check in `depends`)."""
+    params = list(inspect.signature(func).parameters.values())
+    takes_submission = bool(params) and params[0].name == "sub"
+    rest = params[1:] if takes_submission else params
+    positional = [p for p in rest if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    if len(positional) != len(rest) or len(positional) != values:
+        raise ValueError(f"check {func.__name__} takes {[p.name for p in rest]} but depends on {values} check(s): "
+                         "give one parameter per check in `depends` (and `sub` first to read the submission); "
+                         "put checks that only gate in `after`")
+    return takes_submission
 
 
 class RunState:

@@ -1,5 +1,6 @@
 """Unit tests of the checker's pieces that need no child process: the handout comparison, the check
-registry (dependencies hand on values, a hint is shown once), and how numbers are shown beside bounds."""
+registry (dependencies hand on values, `after` only gates, no check takes a value it does not read, a hint
+is shown once), and how numbers are shown beside bounds."""
 import os
 
 import pytest
@@ -180,6 +181,99 @@ def test_a_check_cannot_depend_on_a_later_one():
         @registry.check(depends=["later"])
         def early(sub, value):
             """Early."""
+
+
+def test_a_check_after_another_is_gated_by_it_but_not_handed_its_value():
+    registry, calls = Registry(), []
+
+    @registry.check()
+    def first(sub):
+        """First."""
+        return Passed("first", value=41)
+
+    @registry.check(after=["first"])
+    def gated(sub):                      # takes the submission only
+        """Gated."""
+        calls.append(("gated", sub))
+        return Passed("gated", value=[1, 2])
+
+    @registry.check(depends=["gated"], after=["first"])
+    def reader(values):                  # takes gated's value only: no submission
+        """Reader."""
+        calls.append(("reader", values))
+
+    results = registry.run("the submission").ordered(registry)
+    assert [r.status for r in results] == [PASS, PASS, PASS]
+    assert calls == [("gated", "the submission"), ("reader", [1, 2])]
+    assert registry.by_id("reader").prerequisites == ("first", "gated")
+
+
+def test_a_gated_check_is_skipped_naming_the_earliest_prerequisite_that_did_not_pass():
+    registry = Registry()
+
+    @registry.check()
+    def loads(sub):
+        """Loads."""
+        raise Fail("it crashed")
+
+    @registry.check(depends=["loads"])
+    def step(sub, functions):
+        """Step 2: a step."""
+
+    @registry.check(depends=["step"], after=["loads"], needs_scenarios=True)   # loads comes first in the registry
+    def scene(value):
+        """A scene."""
+
+    state = registry.run("the submission", stop_at_scenarios=True)
+    assert not registry.wants_scenarios(state)
+    results = registry.run("the submission", state=state).ordered(registry)
+    assert [r.status for r in results] == [FAIL, SKIP, SKIP]
+    assert results[1].message == results[2].message == "skipped: needs 'loads' to pass first"
+
+
+@pytest.mark.parametrize("signature", ["sub, value, extra", "sub", "*values", "sub, *, value"])
+def test_a_check_whose_parameters_do_not_match_its_dependencies_is_refused_at_registration(signature):
+    registry = Registry()
+
+    @registry.check()
+    def first(sub):
+        """First."""
+
+    namespace = {}
+    exec(f'def second({signature}):\n    "Second."\n', namespace)
+    with pytest.raises(ValueError, match="one parameter per check in `depends`"):
+        registry.check(depends=["first"])(namespace["second"])
+
+
+def _unused_parameters(func):
+    """The parameters of `func` its body never reads (by name, anywhere in it, nested functions included)."""
+    import ast
+    import inspect
+    import textwrap
+    node = ast.parse(textwrap.dedent(inspect.getsource(func))).body[0]
+    arguments = node.args
+    names = [a.arg for a in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)]
+    names += [a.arg for a in (arguments.vararg, arguments.kwarg) if a is not None]
+    read = {n.id for n in ast.walk(node) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)}
+    return [name for name in names if name not in read]
+
+
+def test_the_unused_parameter_finder_sees_a_parameter_that_is_never_read():
+    def check(sub, functions, *passed):     # the old `runs`: took every dependency's value, read one
+        return sub.name
+    assert _unused_parameters(check) == ["functions", "passed"]
+
+    def reads_all(sub, functions):
+        return sub.name, functions
+    assert _unused_parameters(reads_all) == []
+
+
+def test_no_check_of_any_lab_takes_a_value_it_does_not_read():
+    """Checks take only what they read: a dependency that only gates is declared in `after`, not passed in."""
+    from checker.labs import LABS
+    unused = {(lab.id, check.id): _unused_parameters(check.func) for lab in LABS for check in lab.checks.checks}
+    assert {key: names for key, names in unused.items() if names} == {}
+    assert len(unused) == sum(len(lab.checks.checks) for lab in LABS) >= 5 * 10   # every check was inspected
 
 
 # ---------------------------------------------------------------- numbers beside their bounds

@@ -112,7 +112,7 @@ def test_nan_or_infinity_in_a_scene_record_fails_runs_and_never_raises(lab_id, f
                                 scenarios={name: RunResult(status="done", record=record) for name in scenes})
     check = lab.checks.by_id("runs")
     with pytest.raises((Fail, Error)) as raised:
-        check.func(sub, *([None] * len(check.depends)))
+        check.call(sub, *([None] * len(check.depends)))
     assert "infinite or NaN" in str(raised.value.rationale) or "cannot be what the lab runtime wrote" in \
         str(raised.value.rationale), raised.value.rationale
 

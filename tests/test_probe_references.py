@@ -209,7 +209,7 @@ def _run_check(checks, check_id, data, *values):
     from types import SimpleNamespace
     sub = SimpleNamespace(flags=(), function_steps={}, name="lab.py", source="")
     functions = {probe: {"ok": True, "data": data} for probe in ("resolve", "sat", "sat_step2")}
-    return checks.CHECKS.by_id(check_id).func(sub, functions, *values)
+    return checks.CHECKS.by_id(check_id).call(sub, functions, *values)
 
 
 def test_sat_normal_fails_when_no_pair_is_a_hit():

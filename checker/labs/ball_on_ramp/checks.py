@@ -177,14 +177,14 @@ def loads(sub):
                              "contact_point, resolve and main; the checker calls them."))
 
 
-@CHECKS.check(depends=["loads"])
-def handout_unchanged(sub, functions):
+@CHECKS.check(after=["loads"])
+def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
     return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
 
 
-@CHECKS.check(depends=["loads"])
-def runtime_lines(sub, functions):
+@CHECKS.check(after=["loads"])
+def runtime_lines(sub):
     """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
     lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
 
@@ -430,9 +430,9 @@ def friction_rolls(sub, functions):
 
 # ---------------------------------------------------------------- the scenes and the lesson's criteria
 
-@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines", "closest_point", "inside_case", "push_out_split",
-                       "ball_inertia", "contact_on_surface", "friction_rolls"], needs_scenarios=True)
-def runs(sub, functions, handout_note, runtime, closest, inside, split, inertia, contact, friction):
+@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "closest_point", "inside_case", "push_out_split",
+                     "ball_inertia", "contact_on_surface", "friction_rolls"], needs_scenarios=True)
+def runs(sub):
     """main() runs each of the checker's three scenes to the end."""
     runs = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in runs.items():
@@ -448,7 +448,7 @@ def _sunk(depth, where, frame):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def rolls_without_slipping(sub, records):
+def rolls_without_slipping(records):
     """On the 22° ramp (mu 0.6) the ball rolls without slipping, |ω r - v| <= 2 % of v, at a = ⅔ g sin θ (criterion 1)."""
     roll = scenes.measure_roll(records["ramp"], 0)
     if roll["left_ramp"]:
@@ -466,7 +466,7 @@ def rolls_without_slipping(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def slides_without_friction(sub, records):
+def slides_without_friction(records):
     """On a frictionless ramp the ball slides at a = g sin θ (within 1 %) and does not spin (criterion 2)."""
     slide = scenes.measure_roll(records["ramp"], 1)
     if slide["left_ramp"]:
@@ -485,7 +485,7 @@ def slides_without_friction(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def knocks_crate_over(sub, records):
+def knocks_crate_over(records):
     """The ball rolls off the ramp and knocks a tall crate over, never sinking more than 1 px into anything (criterion 3)."""
     knock = scenes.measure_knock(records["knock"])
     _sunk(knock["depth"], knock["depth_into"], knock["depth_frame"])
@@ -498,7 +498,7 @@ def knocks_crate_over(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pushed_out_of_crate(sub, records):
+def pushed_out_of_crate(records):
     """A ball started with its center inside a crate is pushed out of the crate, not through it (criterion 4)."""
     inside = scenes.measure_inside(records["inside"])
     if inside["side"] == "far":

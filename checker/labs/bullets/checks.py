@@ -169,14 +169,14 @@ def loads(sub):
                              "apply_mode, make_wall, make_bullet and main; the checker calls them."))
 
 
-@CHECKS.check(depends=["loads"])
-def handout_unchanged(sub, functions):
+@CHECKS.check(after=["loads"])
+def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
     return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
 
 
-@CHECKS.check(depends=["loads"])
-def runtime_lines(sub, functions):
+@CHECKS.check(after=["loads"])
+def runtime_lines(sub):
     """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
     lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
 
@@ -324,8 +324,8 @@ FUNCTION_CHECKS = ["toi_matches_root", "bounding_circle", "broad_test", "swept_m
 
 # ---------------------------------------------------------------- the scene and the criteria
 
-@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines"] + FUNCTION_CHECKS, needs_scenarios=True)
-def runs(sub, functions, *passed):
+@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines"] + FUNCTION_CHECKS, needs_scenarios=True)
+def runs(sub):
     """main() runs the lab's scene in CCD mode with six bullets fired, and no bullet passes the wall."""
     run = lab_checks.scene_records(sub, SCENARIOS, HINTS["crash"], HINTS["runtime"])["scene"]
     frames = run.record["records"]
@@ -340,8 +340,8 @@ def runs(sub, functions, *passed):
     return f"{len(frames)} frames, {max(len(f['bodies']) for f in frames) - 5} bullets at most, none past the wall"
 
 
-@CHECKS.check(depends=["loads"] + FUNCTION_CHECKS, max_score=2)
-def ccd_never_tunnels(sub, functions, *passed):
+@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
+def ccd_never_tunnels(sub, functions):
     """With CCD no bullet tunnels through the 4 px wall at any speed from 3000 to 12000 px/s (>= 100 shots; criterion 1)."""
     shots = _function(sub, functions, "shots", "swept_move", None)
     total = shots["per_speed"] * len(shots["ccd"])
@@ -356,8 +356,8 @@ def ccd_never_tunnels(sub, functions, *passed):
             f"({shots['ccd_seconds'] * 1000:.0f} ms of physics)")
 
 
-@CHECKS.check(depends=["loads"] + FUNCTION_CHECKS, max_score=2)
-def substeps_still_tunnel(sub, functions, *passed):
+@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
+def substeps_still_tunnel(sub, functions):
     """With sub-stepping x8 alone some bullets still tunnel at 12000 px/s: the lab shows the lesson's point (criterion 2)."""
     shots = _function(sub, functions, "shots", "swept_move", None)
     if shots["x8"] == 0:
@@ -369,8 +369,8 @@ def substeps_still_tunnel(sub, functions, *passed):
             f"{shots['ccd_seconds'] * 1000:.0f} ms for {shots['per_speed'] * len(shots['ccd'])})")
 
 
-@CHECKS.check(depends=["loads"] + FUNCTION_CHECKS, max_score=2)
-def crate_momentum(sub, functions, *passed):
+@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
+def crate_momentum(sub, functions):
     """A bullet hitting a free crate with CCD gives it the lesson's momentum, M (1 + e) m v / (m + M), within 5 % (criterion 4)."""
     hit = _function(sub, functions, "crate_hit", "swept_move", None)
     got = math.hypot(*hit["got"])

@@ -155,14 +155,14 @@ def loads(sub):
                              "sat, build and main; the checker calls them."))
 
 
-@CHECKS.check(depends=["loads"])
-def handout_unchanged(sub, functions):
+@CHECKS.check(after=["loads"])
+def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
     return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
 
 
-@CHECKS.check(depends=["loads"])
-def runtime_lines(sub, functions):
+@CHECKS.check(after=["loads"])
+def runtime_lines(sub):
     """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
     lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
 
@@ -380,8 +380,8 @@ def parallel_axes(sub, functions):
 
 # ---------------------------------------------------------------- the inertia criterion, on the lab's own bodies
 
-@CHECKS.check(depends=["loads", "polygon_corners", "centroid", "inertia_sum"], max_score=2)
-def bodies_inertia(sub, functions, corners, centre, inertia):
+@CHECKS.check(depends=["loads"], after=["polygon_corners", "centroid", "inertia_sum"], max_score=2)
+def bodies_inertia(sub, functions):
     """Each shape the lab builds is centred on its centroid and has the analytic inertia of a regular polygon,
     m r² (2 + cos(2π/n)) / 6, or of a box, m (w² + h²) / 12, within 0.1 %."""
     cases = _function(sub, functions, "bodies", "build", None)
@@ -404,9 +404,9 @@ def bodies_inertia(sub, functions, corners, centre, inertia):
 
 # ---------------------------------------------------------------- the scenes
 
-@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines", "parallel_axes", "bodies_inertia"],
+@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "parallel_axes", "bodies_inertia"],
               needs_scenarios=True)
-def runs(sub, functions, handout_note, runtime, axes, inertia):
+def runs(sub):
     """main() runs each of the checker's two scenes to the end, with the course's gravity."""
     records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in records.items():
@@ -445,7 +445,7 @@ def _comes_to_rest(shape, what, turn, turn_words):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def triangle_tips(sub, records):
+def triangle_tips(records):
     """A triangle dropped on a corner falls onto a side and comes to rest."""
     record = records["solo"].record
     _escaped(metrics.summary(record), "a triangle dropped on its corner did not land")
@@ -455,7 +455,7 @@ def triangle_tips(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def hexagon_tips(sub, records):
+def hexagon_tips(records):
     """A hexagon pushed along the floor tips over its corners and stops, on a side."""
     record = records["solo"].record
     _escaped(metrics.summary(record), "a hexagon pushed along the floor did not stay on it")
@@ -467,7 +467,7 @@ def hexagon_tips(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pile_stable(sub, records):
+def pile_stable(records):
     """Shapes of every kind piled together neither sink into the floor or each other nor jitter."""
     record = records["pile"].record
     _escaped(metrics.summary(record, scenes.PILE_TAIL), "the pile of seven shapes fell apart")
@@ -485,7 +485,7 @@ def pile_stable(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def ramp_holds(sub, records):
+def ramp_holds(records):
     """A pentagon and a hexagon set on the 22° ramp stay put."""
     record = records["solo"].record
     arrays = metrics.dynamic_arrays(record)

@@ -117,14 +117,14 @@ def loads(sub):
                              "calls them."))
 
 
-@CHECKS.check(depends=["loads"])
-def handout_unchanged(sub, functions):
+@CHECKS.check(after=["loads"])
+def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
     return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
 
 
-@CHECKS.check(depends=["loads"])
-def runtime_lines(sub, functions):
+@CHECKS.check(after=["loads"])
+def runtime_lines(sub):
     """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
     lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
 
@@ -224,8 +224,8 @@ def wakes_on_contact(sub, functions):
 
 # ---------------------------------------------------------------- the cost criterion
 
-@CHECKS.check(depends=["loads", "timer_rule", "skips_sleepers", "wakes_on_contact"], max_score=2)
-def narrow_work(sub, functions, timer, moves, wake):
+@CHECKS.check(depends=["loads"], after=["timer_rule", "skips_sleepers", "wakes_on_contact"], max_score=2)
+def narrow_work(sub, functions):
     """With a 40-crate pile asleep a step does at most a tenth of the narrow-phase tests of the same pile awake."""
     data = _function(sub, functions, "narrow_work", "build", None)
     awake, asleep = data["awake"], data["asleep"]
@@ -247,9 +247,9 @@ def narrow_work(sub, functions, timer, moves, wake):
 
 # ---------------------------------------------------------------- the scene
 
-@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines", "timer_rule", "skips_sleepers",
-                       "wakes_on_contact"], needs_scenarios=True)
-def runs(sub, functions, handout_note, runtime, timer, moves, wake):
+@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "timer_rule", "skips_sleepers",
+                     "wakes_on_contact"], needs_scenarios=True)
+def runs(sub):
     """main() runs the checker's scene to the end."""
     records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in records.items():
@@ -259,7 +259,7 @@ def runs(sub, functions, handout_note, runtime, timer, moves, wake):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pile_sleeps(sub, records):
+def pile_sleeps(records):
     """A loose pile of four crates settles and falls asleep within 2 s of settling, without sinking."""
     pile = scenes.measure_loose(records["sleep"].record)
     if pile["settled"] is None:
@@ -278,7 +278,7 @@ def pile_sleeps(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def no_sleep_in_air(sub, records):
+def no_sleep_in_air(records):
     """A crate thrown straight up does not fall asleep at the top of its flight (or anywhere in the air)."""
     throw = scenes.measure_throw(records["sleep"].record)
     if throw["height"] < THROW_HEIGHT:
@@ -292,7 +292,7 @@ def no_sleep_in_air(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def drop_wakes_pile(sub, records):
+def drop_wakes_pile(records):
     """A crate dropped on a sleeping pile wakes what it touches, and the pile settles and sleeps again without
     sinking or jumping."""
     drop = scenes.measure_drop(records["sleep"].record)

@@ -27,8 +27,8 @@ from . import probes
 from . import scenes
 from ... import lab_checks
 from ... import records as metrics
-from ...checks import Error, Fail, Hint, Passed, Registry
-from ...common import describe_run_failure, shown
+from ...checks import Fail, Hint, Passed, Registry
+from ...common import shown
 
 TITLE = "Tumbling Crates"
 PROBES = "checker.labs.tumbling_crates.probes"
@@ -179,14 +179,14 @@ def loads(sub):
                              "function names: sat, apply_impulse, resolve and main; the checker calls them."))
 
 
-@CHECKS.check(depends=["loads"])
-def handout_unchanged(sub, functions):
+@CHECKS.check(after=["loads"])
+def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
     return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
 
 
-@CHECKS.check(depends=["loads"])
-def runtime_lines(sub, functions):
+@CHECKS.check(after=["loads"])
+def runtime_lines(sub):
     """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
     lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
 
@@ -456,28 +456,14 @@ def apply_impulse_spin(sub, functions):
 
 # ---------------------------------------------------------------- the scenes and the lesson's criteria
 
-@CHECKS.check(depends=["loads", "handout_unchanged", "runtime_lines", "sat_normal", "resolve_k", "resolve_friction",
-                       "apply_impulse_spin"], needs_scenarios=True)
-def runs(sub, functions, handout_note, runtime, sat_cases, resolve_cases, friction, spin):
+@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "sat_normal", "resolve_k", "resolve_friction",
+                     "apply_impulse_spin"], needs_scenarios=True)
+def runs(sub):
     """main() runs each of the checker's four scenes to the end, with the course's gravity."""
-    records = {}
-    for name in scenes.SCENARIOS:
-        run = sub.scenarios.get(name)
-        if run is None:
-            raise Error(f"the '{name}' scene was not run (the time limit for the whole run ran out).")
-        if run.status != "done":
-            raise Error(describe_run_failure(run, sub.name, f"main() in the '{name}' scene"), HINTS["crash"])
-        frames = (run.record or {}).get("records") or []
-        if not frames:
-            raise Fail(f"the '{name}' scene recorded no frames: main() returned before its loop ran, or the loop "
-                       "does not call lab.record(...).", HINTS["runtime"])
-        problem = lab_checks.record_problem(run.record, scenes.SCENARIOS[name]())
-        if problem:
-            raise Error(f"the '{name}' scene's record cannot be what the lab runtime wrote: {problem}. The checker "
-                        "does not grade it.", HINTS["runtime"])
-        if not metrics.finite(frames):
+    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
+    for name, run in records.items():
+        if not metrics.finite(run.record["records"]):
             raise Fail(f"in the '{name}' scene a crate's position or speed became infinite or NaN.", HINTS["settle"])
-        records[name] = run
     gravity = metrics.free_fall(records["corner"].record)
     if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
         raise Fail(f"crates fall with {gravity:.1f} px/s² in the corner scene; the course's gravity is "
@@ -501,7 +487,7 @@ def _escaped(summary, what):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def corner_tips(sub, records):
+def corner_tips(records):
     """A crate that lands on a corner tips over onto a flat side and comes to rest (criterion 1)."""
     record = records["corner"].record
     _escaped(metrics.summary(record), "two crates dropped on a corner did not land")
@@ -520,7 +506,7 @@ def corner_tips(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def ramp_holds(sub, records):
+def ramp_holds(records):
     """Crates set on the 22° ramp (friction 0.6) stay put (criterion 2)."""
     record = records["ramp"].record
     summary = metrics.summary(record)
@@ -535,7 +521,7 @@ def ramp_holds(sub, records):
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pile_stable(sub, records):
+def pile_stable(records):
     """A pile of a dozen crates neither sinks into the floor nor jitters apart (criterion 3)."""
     record = records["pile"].record
     _escaped(metrics.summary(record), "the pile of 12 crates fell apart")
@@ -556,7 +542,7 @@ LINE = re.compile(r"Simulated\s+(-?[\d.]+)\s*s\s+with\s+(\d+)\s+crates?;\s*fast 
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def fast_movers_zero(sub, records):
+def fast_movers_zero(records):
     """After four clicked drops the program prints `fast movers now: 0`, matching the simulation (criterion 4)."""
     run = records["own_scene"]
     frames = run.record["records"]
