@@ -41,6 +41,7 @@ class Submission:
     function_steps: dict = field(default_factory=dict)   # step function name -> its steps (the starter's)
     scenarios: dict = field(default_factory=dict)
     options: dict = field(default_factory=dict)
+    starter: str = ""   # path of the lab's handout, which the code outside the steps must match
 
 
 @dataclass
@@ -169,8 +170,8 @@ class Grader:
             source.check(text, name)
         except source.SourceError as exc:
             return LabReport(given, lab, skipped_all(lab.checks, f"{exc}."), time.monotonic() - start)
-        sub = Submission(path=path, name=name, source=text, options=dict(self.options))
-        sub.flags = step_rules.scan_lab(sub.source, lab.module, path)   # the steps' code, read before any of it runs
+        sub = Submission(path=path, name=name, source=text, options=dict(self.options), starter=lab.starter)
+        sub.flags = step_rules.scan_lab(sub.source, lab, path)   # the steps' code, read before any of it runs
         sub.function_steps = probing.steps_by_function(lab)
         settings = probing.settings_for(lab, sub.source, self.seed)
         sub.probe = self.run(path, "probe", settings)

@@ -45,11 +45,13 @@ def loaded(sub, crash_hint, names_hint):
     return run.result["probe"]["functions"]
 
 
-def handout_unchanged(sub, starter_path, hint):
-    """A message when the code outside the step regions is the starter's; Fail (with hint) listing differences.
+def handout_unchanged(sub, hint):
+    """A message when the code outside the step regions is the starter's (sub.starter); Fail (with hint) listing
+    differences.
 
     With the --allow-edits option a difference is a warning message instead.
     """
+    starter_path = sub.starter
     try:
         starter = source.read(starter_path)
     except (OSError, source.SourceError) as exc:

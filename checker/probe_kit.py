@@ -31,7 +31,7 @@ def twin(body):
     return copied
 
 
-def with_reference_steps(module, lab_path, function, steps, solution=None):
+def with_reference_steps(module, lab_path, function, steps):
     """The lab's `function` with the inside of each step in `steps` taken from the solution, or None.
 
     Grading step 2 with the solution's step 3 (and so on) tells a mistake in one step from a

@@ -47,11 +47,8 @@ def step_functions(source):
 
 
 def steps_by_function(lab):
-    """{step function name: [its steps]} from the lab's starter ({} without one)."""
-    path = getattr(lab.module, "STARTER", None)
-    if not path:
-        return {}
-    return regions_by_function(source_text.read(path))
+    """{step function name: [its steps]} from the lab's starter."""
+    return regions_by_function(source_text.read(lab.starter))
 
 
 def _starter(path):
@@ -95,12 +92,11 @@ def splice_source(mine, theirs, function, steps):
 def settings_for(lab, source, seed=None):
     """The probe run's settings: the probe module, the step functions, the splices and the run's seed."""
     probes = importlib.import_module(lab.probes)
-    starter = getattr(lab.module, "STARTER", None)
-    steps = _starter(starter)[1] if starter else list(getattr(probes, "STEP_FUNCTIONS", ()))
+    steps = _starter(lab.starter)[1]
     splices = {}
-    for function, wanted, solution in getattr(probes, "SPLICES", ()):
+    for function, wanted in getattr(probes, "SPLICES", ()):
         try:
-            theirs = source_text.read(solution)
+            theirs = source_text.read(lab.solution)
         except (OSError, source_text.SourceError):
             continue
         spliced = splice_source(source, theirs, function, wanted)
@@ -123,7 +119,6 @@ def judge(lab, path, settings, child):
     fit the parent's own inputs is an error naming that, never data.
     """
     probes = importlib.import_module(lab.probes)
-    starter = getattr(lab.module, "STARTER", None)
     tapes = child.get("tapes") if isinstance(child, dict) else None
     missing = child.get("missing") if isinstance(child, dict) else None
     constants = child.get("constants", {}) if isinstance(child, dict) else None
@@ -134,8 +129,7 @@ def judge(lab, path, settings, child):
     steps = settings["steps"]
     pure = set(getattr(probes, "PURE", ()))   # step functions that must leave their arguments as they got them
     namespace = {"__name__": "lab_handout", "__builtins__": __builtins__}
-    if starter:
-        exec(_starter(starter)[0], namespace)
+    exec(_starter(lab.starter)[0], namespace)
     functions = {}
     for name, (function, probe) in probes.PROBES.items():
         record = tapes.get(name)

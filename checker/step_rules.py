@@ -506,18 +506,18 @@ def describe(breach, advice=""):
     return f"line {breach.line} (step {breach.step}) {breach.what} (`{breach.text}`): {tail}."
 
 
-def scan_lab(source, lab_module, path=None):
-    """scan() with the lab's own rules (its STEP_LIBRARY, STEP_ALLOWED, STARTER and STEP_ADVICE), messages filled in.
+def scan_lab(source, lab, path=None):
+    """scan() with the lab's own rules (its module's STEP_LIBRARY, STEP_ALLOWED and STEP_ADVICE, its starter),
+    messages filled in.
 
-    path: the submission's own path (the modules beside it are flagged when imported), None when unknown.
+    lab: a checker.labs.Lab. path: the submission's own path (the modules beside it are flagged when imported),
+    None when unknown.
     """
-    starter = None
-    starter_path = getattr(lab_module, "STARTER", None)
-    if starter_path:
-        try:
-            starter = read_source(starter_path)
-        except (OSError, SourceError):
-            starter = None
+    lab_module = lab.module
+    try:
+        starter = read_source(lab.starter)
+    except (OSError, SourceError):
+        starter = None
     advice = getattr(lab_module, "STEP_ADVICE", {})
     return [Breach(b.step, b.line, b.rule, b.what, b.text, describe(b, advice.get(b.step, "")))
             for b in scan(source, getattr(lab_module, "STEP_LIBRARY", {}), starter,

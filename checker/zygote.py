@@ -292,7 +292,7 @@ def _handout_imports():
     names = []
     for lab in labs.LABS:
         try:
-            with open(lab.module.STARTER, "rb") as handle:
+            with open(lab.starter, "rb") as handle:
                 tree = ast.parse(handle.read())
         except (OSError, SyntaxError, ValueError, AttributeError):
             continue

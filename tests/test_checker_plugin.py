@@ -1,13 +1,13 @@
-"""A lab is one module: a new lab is graded without touching child.py, grade.py, cli.py or report.py.
+"""A lab is one folder: a new lab is graded without touching child.py, grade.py, cli.py or report.py.
 
-The test writes a toy lab's checks module, probe module and starter (the handout: the parent
-replays the probe's calls of the step functions through it) into a fresh folder of checker/labs/,
-as a real lab is added, and a student file into a temporary folder; it adds one row to checker.labs.LABS for this process only, and grades the
+The test writes a toy lab's checks, probes and scenes modules into a fresh folder of checker/labs/,
+as a real lab is added, and its starter (the handout: the parent replays the probe's calls of the step
+functions through it) where the lab's id puts it, under a temporary root (starters/<id>_starter.py);
+it adds the lab, found from its id, to checker.labs.LABS for this process only, and grades the
 toy file with the command line in-process: the probe runs in the child (which imports the
-lab's probe module by the name the lab gives), a scene runs under the lab runtime, and the
+lab's probe module by the name its id gives), a scene runs under the lab runtime, and the
 checks receive what the checks they depend on returned.
 """
-import importlib
 import json
 import os
 import shutil
@@ -52,24 +52,27 @@ PROBES = {"double": ("double", probe_double)}
 
 STARTER = STUDENT.replace("    return 2 * x\n", "    return None\n")
 
+SCENES = '''
+"""The toy lab's scene."""
+
+
+def short():
+    return {"frames": 5, "fps": 60}
+
+
+SCENARIOS = {"short": short}
+'''
+
 CHECKS = '''
 """The toy lab's checks."""
-import os
-
 from checker.checks import Fail, Passed, Registry
 
 TITLE = "Toy Lab"
-PROBES = __name__.rsplit(".", 1)[0] + ".probes"   # this lab's probe module, beside this one
-STARTER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "toy_starter.py")  # the handout: its step functions
 CHECKS = Registry()
 
 
 def recognise(path, source):
     return "toy lab" in source.lower()
-
-
-def scenarios():
-    return {"short": {"frames": 5, "fps": 60}}
 
 
 @CHECKS.check()
@@ -101,35 +104,40 @@ def runs(sub, total):
 
 @pytest.fixture
 def toy_lab(tmp_path, monkeypatch):
-    """The toy lab registered for this process; returns the student file's path.
+    """The toy lab registered for this process; returns its Lab (its id is its folder's name) and the student file.
 
-    Its modules go where a real lab's do, a folder of checker/labs/ (a fresh name, removed afterwards):
-    the child has only the project on its path, never the student's folder, where they once sat."""
-    folder = os.path.join(os.path.dirname(labs.__file__), f"_toy_{uuid.uuid4().hex[:12]}")
-    package = f"checker.labs.{os.path.basename(folder)}"
+    Its modules go where a real lab's do, a folder of checker/labs/ (a fresh name, removed afterwards; a
+    leading _ keeps other tests' registries from finding it): the child has only the project on its path,
+    never the student's folder, where they once sat."""
+    lab_id = f"_toy_{uuid.uuid4().hex[:12]}"
+    folder = os.path.join(os.path.dirname(labs.__file__), lab_id)
+    package = f"checker.labs.{lab_id}"
     os.mkdir(folder)
     try:
         for name, text in (("__init__.py", ""), ("probes.py", textwrap.dedent(PROBES)),
-                           ("checks.py", textwrap.dedent(CHECKS)), ("toy_starter.py", STARTER)):
+                           ("checks.py", textwrap.dedent(CHECKS)), ("scenes.py", textwrap.dedent(SCENES))):
             with open(os.path.join(folder, name), "w", encoding="utf-8") as handle:
                 handle.write(text)
+        (tmp_path / "starters").mkdir()
+        (tmp_path / "starters" / f"{lab_id}_starter.py").write_text(STARTER, encoding="utf-8")
         student = tmp_path / "toy.py"
         student.write_text(STUDENT, encoding="utf-8")
-        module = importlib.import_module(package + ".checks")
-        monkeypatch.setattr(labs, "LABS", labs.LABS + (labs.Lab("toy_lab", module.TITLE, module),))
-        yield student
+        lab = labs.Lab(lab_id, root=str(tmp_path))
+        monkeypatch.setattr(labs, "LABS", labs.LABS + (lab,))
+        yield lab, student
     finally:
         shutil.rmtree(folder, ignore_errors=True)
         for name in [name for name in sys.modules if name.startswith(package)]:
             sys.modules.pop(name, None)
 
 
-def test_a_new_lab_is_graded_with_one_module_and_one_row(toy_lab, capsys):
-    status = cli.main(["--json", "--quiet", str(toy_lab)])
+def test_a_new_lab_is_graded_from_its_folder(toy_lab, capsys):
+    toy, student = toy_lab
+    status = cli.main(["--json", "--quiet", str(student)])
     document = json.loads(capsys.readouterr().out)
     assert status == 0, document
     (lab,) = document["labs"]
-    assert lab["lab"] == "toy_lab" and lab["title"] == "Toy Lab" and lab["score"] == lab["max_score"] == 4
+    assert lab["lab"] == toy.id and lab["title"] == "Toy Lab" and lab["score"] == lab["max_score"] == 4
     messages = {c["id"]: c["message"] for c in lab["criteria"]}
     assert messages["doubles"] == "double doubles"
     assert messages["runs"] == "5 frames; the doubles summed to -1"  # the value `doubles` handed on
@@ -137,4 +145,4 @@ def test_a_new_lab_is_graded_with_one_module_and_one_row(toy_lab, capsys):
 
 def test_list_shows_the_new_lab(toy_lab, capsys):
     assert cli.main(["--list"]) == 0
-    assert "Toy Lab (toy_lab): 3 checks, 4 points" in capsys.readouterr().out
+    assert f"Toy Lab ({toy_lab[0].id}): 3 checks, 4 points" in capsys.readouterr().out

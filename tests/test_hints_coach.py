@@ -48,13 +48,13 @@ def handed_out(code, hint):
 
 @pytest.mark.parametrize("lab", labs.LABS, ids=lambda lab: lab.id)
 def test_no_hint_repeats_the_solutions_code(lab):
-    code = step_code(lab.module.SOLUTION)
-    assert code, f"{lab.id}: no step code found in {lab.module.SOLUTION}"
+    code = step_code(lab.solution)
+    assert code, f"{lab.id}: no step code found in {lab.solution}"
     leaks = {key: handed_out(code, f"{hint.title} {hint.text}") for key, hint in lab.module.HINTS.items()}
     assert {key: part for key, part in leaks.items() if part} == {}
 
 
 def test_the_rule_catches_a_hint_that_hands_out_a_line():
-    code = step_code(labs.LABS[0].module.SOLUTION)
+    code = step_code(labs.LABS[0].solution)
     assert handed_out(code, "add the spin terms: ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia, or else")
     assert handed_out(code, "keep jt within [-μ j, μ j]") is None

@@ -79,7 +79,7 @@ def test_every_registered_lab_is_in_the_table():
     from checker.labs import LABS as REGISTERED
     assert {lab.id for lab in REGISTERED} == set(LABS)
     for lab in REGISTERED:
-        assert (lab.module.SOLUTION, lab.module.STARTER) == LABS[lab.id][:2]
+        assert (lab.solution, lab.starter) == LABS[lab.id][:2]
 
 
 @pytest.mark.parametrize("lab", LABS)

@@ -157,7 +157,7 @@ def test_odd_line_breaks_shift_no_region():
     attack = shifted(in_step(read("solutions/tumbling_crates.py"), 2, "return World().sat(pa, pb)"), "def sat(")
     code_line = next(node.lineno for node in ast.walk(ast.parse(attack))
                      if isinstance(node, ast.Attribute) and node.attr == "sat")
-    assert {(b.line, b.rule) for b in step_rules.scan_lab(attack, crates.module)} == {(code_line, "library"),
+    assert {(b.line, b.rule) for b in step_rules.scan_lab(attack, crates)} == {(code_line, "library"),
                                                                                        (code_line, "reach")}
     regions = handout.step_regions(source.lines(attack))
     assert regions[2][0] + 1 < code_line < regions[2][1] + 1     # the compiler's line is inside step 2's markers

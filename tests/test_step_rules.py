@@ -59,7 +59,7 @@ def test_no_corpus_entry_solution_or_starter_is_flagged(lab_id):
     sources = {e.name: corpus.build(e.name) for e in corpus.ENTRIES}
     sources["solution"] = read(f"solutions/{lab_id}.py")
     sources["starter"] = read(f"starters/{lab_id}_starter.py")
-    flagged = {name: [(b.line, b.rule, b.text) for b in step_rules.scan_lab(text, lab.module)]
+    flagged = {name: [(b.line, b.rule, b.text) for b in step_rules.scan_lab(text, lab)]
                for name, text in sources.items()}
     assert len(sources) >= 10
     assert {name: found for name, found in flagged.items() if found} == {}
@@ -157,7 +157,7 @@ ATTACKS = [   # (lab, step, code, the rule that must flag it)
 def test_an_attack_is_flagged_with_its_step_line_and_rule(lab_id, step, code, rule):
     lab = lab_by_id(lab_id)
     source, first = in_step(read(f"solutions/{lab_id}.py"), step, code)
-    found = step_rules.scan_lab(source, lab.module)
+    found = step_rules.scan_lab(source, lab)
     assert any(b.rule == rule and b.step == step and first <= b.line < first + len(code.splitlines())
                for b in found), [(b.line, b.rule) for b in found]
     breach = next(b for b in found if b.rule == rule)
@@ -193,7 +193,7 @@ def test_ways_of_writing_a_step_are_not_flagged(code):
     lab = lab_by_id("tumbling_crates")
     solution = read("solutions/tumbling_crates.py")
     source, _ = in_step(solution, 2, code + "\n" + step_code(solution, 2))
-    assert step_rules.scan_lab(source, lab.module) == []
+    assert step_rules.scan_lab(source, lab) == []
 
 
 def test_no_nesting_that_python_compiles_hides_a_breach():
@@ -202,7 +202,7 @@ def test_no_nesting_that_python_compiles_hides_a_breach():
     code = "x = " + " + ".join(["1"] * 2500) + "\nreturn World().sat(pa, pb)"
     source, first = in_step(read("solutions/tumbling_crates.py"), 2, code)
     compile(source, "deep.py", "exec")
-    assert {(b.line, b.rule) for b in step_rules.scan_lab(source, lab.module)} == {(first + 1, "library"),
+    assert {(b.line, b.rule) for b in step_rules.scan_lab(source, lab)} == {(first + 1, "library"),
                                                                                    (first + 1, "reach")}
 
 
@@ -230,12 +230,12 @@ def test_an_import_added_outside_the_steps_and_used_inside_is_flagged_but_math_i
     lab = lab_by_id("tumbling_crates")
     solution = read("solutions/tumbling_crates.py")
     source, first = in_step("from lesson11.physics2d import sat as ref\n" + solution, 2, "return ref(pa, pb)")
-    found = step_rules.scan_lab(source, lab.module)
+    found = step_rules.scan_lab(source, lab)
     assert (first, "import") in [(b.line, b.rule) for b in found]                  # used in step 2
     assert {b.step for b in found if b.line == 1 and b.rule == "outside"} == {2, 3, 4, 5, 6}   # and imported
     source, _ = in_step("from math import hypot\n" + solution, 2,
                         "d = hypot(1, 2) + math.sqrt(4)\nv = pygame.Vector2(1, 0)\n" + step_code(solution, 2))
-    assert step_rules.scan_lab(source, lab.module) == []
+    assert step_rules.scan_lab(source, lab) == []
 
 
 def step_code(source, step):
@@ -277,7 +277,7 @@ def test_a_flagged_step_fails_its_check_through_the_command_line(tmp_path):
 def test_code_outside_the_steps_that_can_replace_a_step_function_fails_those_steps(added, steps):
     """Delegation outside the steps: rebinding a step function (or anything that can) after the handout's def."""
     lab = lab_by_id("tumbling_crates")
-    found = step_rules.scan_lab(read("solutions/tumbling_crates.py") + "\n" + added, lab.module)
+    found = step_rules.scan_lab(read("solutions/tumbling_crates.py") + "\n" + added, lab)
     assert {b.step for b in found if b.rule == "outside"} == steps
     assert all("keep the handout's code around the steps" in b.message for b in found)
 
@@ -285,7 +285,7 @@ def test_code_outside_the_steps_that_can_replace_a_step_function_fails_those_ste
 def test_an_added_import_of_a_harmless_module_is_not_flagged():
     lab = lab_by_id("tumbling_crates")
     for added in ("import numpy as np\n", "from math import hypot\n", "import random as rnd\n"):
-        assert step_rules.scan_lab(added + read("solutions/tumbling_crates.py"), lab.module) == []
+        assert step_rules.scan_lab(added + read("solutions/tumbling_crates.py"), lab) == []
 
 
 def test_the_main_guard_in_another_style_is_not_flagged():
@@ -293,7 +293,7 @@ def test_the_main_guard_in_another_style_is_not_flagged():
     solution = read("solutions/tumbling_crates.py")
     assert solution.count('if __name__ == "__main__":') == 1
     source = solution.replace('if __name__ == "__main__":', "if __name__ == '__main__':")
-    assert step_rules.scan_lab(source, lab.module) == []
+    assert step_rules.scan_lab(source, lab) == []
 
 
 # ---------------------------------------------------------------- issue 35: star imports, closed and side modules,
@@ -309,7 +309,7 @@ def test_a_star_import_anywhere_fails_every_step_naming_its_line(added):
     lab = lab_by_id("tumbling_crates")
     solution = read("solutions/tumbling_crates.py")
     line = solution.count("\n") + 2
-    found = step_rules.scan_lab(solution + "\n" + added, lab.module)
+    found = step_rules.scan_lab(solution + "\n" + added, lab)
     assert {(b.step, b.line, b.rule) for b in found} == {(step, line, "outside") for step in (2, 3, 4, 5, 6)}
     assert found[0].message.startswith(f"line {line} imports every name of ")
 
@@ -322,7 +322,7 @@ def test_a_star_import_anywhere_fails_every_step_naming_its_line(added):
                                    "import timeit\n"])                             # runs code from a string
 def test_solutions_starters_and_import_by_string_are_closed_modules(added):
     lab = lab_by_id("tumbling_crates")
-    found = step_rules.scan_lab(added + read("solutions/tumbling_crates.py"), lab.module)
+    found = step_rules.scan_lab(added + read("solutions/tumbling_crates.py"), lab)
     assert {(b.step, b.line, b.rule) for b in found} == {(step, 1, "outside") for step in (2, 3, 4, 5, 6)}
 
 
@@ -339,10 +339,10 @@ def test_an_import_of_a_module_beside_the_submission_fails_every_step(tmp_path, 
     (tmp_path / side).write_text("x = 1\n")
     path = str(tmp_path / "tumbling_crates.py")
     source = added + read("solutions/tumbling_crates.py")
-    found = step_rules.scan_lab(source, lab.module, path)
+    found = step_rules.scan_lab(source, lab, path)
     assert {(b.step, b.line, b.rule) for b in found} == {(step, 1, "outside") for step in (2, 3, 4, 5, 6)}
     assert "from the submission's own folder" in found[0].message
-    assert [b for b in step_rules.scan_lab(source, lab.module) if "own folder" in b.what] == []   # no folder given
+    assert [b for b in step_rules.scan_lab(source, lab) if "own folder" in b.what] == []   # no folder given
 
 
 def test_the_handout_s_own_imports_are_no_side_module(tmp_path):
@@ -351,7 +351,7 @@ def test_the_handout_s_own_imports_are_no_side_module(tmp_path):
     (tmp_path / "lesson11").mkdir()
     (tmp_path / "pygame.py").write_text("")
     (tmp_path / "unused.py").write_text("")
-    assert step_rules.scan_lab(read("solutions/tumbling_crates.py"), lab.module, str(tmp_path / "lab.py")) == []
+    assert step_rules.scan_lab(read("solutions/tumbling_crates.py"), lab, str(tmp_path / "lab.py")) == []
 
 
 FREE_STEPS = [   # honest uses of the pure standard-library modules (tumbling crates step 2, before the real code)
@@ -372,7 +372,7 @@ def test_the_pure_standard_library_is_allowed_in_a_step(code):
     lab = lab_by_id("tumbling_crates")
     solution = read("solutions/tumbling_crates.py")
     source, _ = in_step(solution, 2, code + "\n" + step_code(solution, 2))
-    assert step_rules.scan_lab(source, lab.module) == []
+    assert step_rules.scan_lab(source, lab) == []
 
 
 def test_a_free_module_imported_at_the_top_is_allowed_in_a_step():
@@ -381,7 +381,7 @@ def test_a_free_module_imported_at_the_top_is_allowed_in_a_step():
     source, _ = in_step(solution, 2, "return [Vector2(radius * cmath.exp(2j * cmath.pi * k / sides).real,\n"
                                      "                radius * cmath.exp(2j * cmath.pi * k / sides).imag)\n"
                                      "        for k in range(sides)]")
-    assert step_rules.scan_lab(source, lab.module) == []
+    assert step_rules.scan_lab(source, lab) == []
 
 
 @pytest.mark.parametrize("code, rule", [
@@ -407,7 +407,7 @@ def test_what_reaches_further_than_a_pure_module_or_through_a_format_string_is_f
     lab = lab_by_id("tumbling_crates")
     solution = read("solutions/tumbling_crates.py")
     source, first = in_step(solution, 2, code + "\n" + step_code(solution, 2))
-    found = step_rules.scan_lab(source, lab.module)
+    found = step_rules.scan_lab(source, lab)
     assert any(b.rule == rule and b.step == 2 and first <= b.line < first + len(code.splitlines()) for b in found), \
         [(b.line, b.rule, b.what) for b in found]
 
@@ -427,12 +427,12 @@ def test_broken_or_missing_markers_leave_no_step_unchecked():
     delegating, first = in_step(read("solutions/tumbling_crates.py"), 2, "return World().sat(pa, pb)")
     stray = delegating.replace("def main():", "# --- end of step 2 ---\ndef main():")
     line = stray.splitlines().index("# --- end of step 2 ---") + 1
-    found = step_rules.scan_lab(stray, lab.module)
+    found = step_rules.scan_lab(stray, lab)
     assert {(b.step, b.line) for b in found} == {(step, line) for step in (2, 3, 4, 5, 6)}
     assert found[0].message.startswith(f"line {line} breaks the step markers (line {line} ends step 2")
     lines = delegating.splitlines(keepends=True)
     unmarked = "".join(text for text in lines if "step 2:" not in text and "end of step 2 " not in text)
-    found = step_rules.scan_lab(unmarked, lab.module)
+    found = step_rules.scan_lab(unmarked, lab)
     assert [(b.step, b.rule) for b in found] == [(2, "outside")]
     assert found[0].message.startswith("the file has no markers for step 2 (keep `# --- step 2: ... ---`")
 
@@ -445,7 +445,7 @@ def test_broken_or_missing_markers_leave_no_step_unchecked():
 ])
 def test_a_format_string_outside_the_steps_that_reaches_a_frame_fails_every_step(added, flagged):
     lab = lab_by_id("tumbling_crates")
-    found = step_rules.scan_lab(read("solutions/tumbling_crates.py") + "\n" + added, lab.module)
+    found = step_rules.scan_lab(read("solutions/tumbling_crates.py") + "\n" + added, lab)
     assert ({b.step for b in found} == {2, 3, 4, 5, 6}) == flagged and (found == []) != flagged
 
 
@@ -457,7 +457,7 @@ def test_a_marker_inside_a_string_is_no_marker():
                             's = """\n    # --- end of step 2 ---\n"""\nreturn World().sat(pa, pb)')
     real = source.rindex("    # --- end of step 2 ---\n")
     source = source[:real] + source[real + len("    # --- end of step 2 ---\n"):]
-    found = step_rules.scan_lab(source, lab.module)
+    found = step_rules.scan_lab(source, lab)
     assert {(b.step, b.line) for b in found} == {(step, first + 1) for step in (2, 3, 4, 5, 6)}
     assert "looks like a step marker but is inside a string" in found[0].message
     with pytest.raises(handout.MarkerError, match="inside a string"):

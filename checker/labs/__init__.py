@@ -1,33 +1,69 @@
-"""The lab registry: which labs the checker knows, and how it tells which lab a file is.
+"""The lab registry: which labs the checker knows, found by convention, and how it tells which lab a file is.
 
-Each lab is one folder, checker/labs/<lab>/:
-  checks.py  its checks (CHECKS, TITLE, STARTER, SOLUTION, PROBES, STEP_LIBRARY, STEP_ADVICE,
-             recognise(path, source), scenarios(), and optionally PICTURE_SCENES {check id: scene
-             names} for --pictures and SCENE_SECONDS {scene name: CPU s of the solution's run}, so
-             the grader starts the longest scenes first);
-  probes.py  the inputs and references of its probes (REQUIRED, PROBES {name: (function, probe)},
-             SPLICES): they run in the child to record a tape and again in the grader to judge it
-             (checker/tape.py, checker/probing.py);
-  scenes.py  its scenes' settings.
-STARTER is the handout: its functions holding a step region are the student's, and the grader
-replays the probes' calls of them through its code. Helpers several labs share are in
-checker/probe_kit.py and checker/lab_checks.py. To add a lab, add its folder and one row to LABS.
+A lab is its id and the files named from it (Lab below finds each one; no lab spells a path):
+  checker/labs/<id>/checks.py  its checks (CHECKS, TITLE, STEP_LIBRARY, STEP_ADVICE, recognise(path, source),
+                               and optionally PICTURE_SCENES {check id: scene names} for --pictures and
+                               SCENE_SECONDS {scene name: CPU s of the solution's run}, so the grader starts
+                               the longest scenes first);
+  checker/labs/<id>/probes.py  the inputs and references of its probes (REQUIRED, PROBES {name: (function,
+                               probe)}, SPLICES): they run in the child to record a tape and again in the
+                               grader to judge it (checker/tape.py, checker/probing.py);
+  checker/labs/<id>/scenes.py  its scenes: SCENARIOS {name: settings builder}, and what they measure;
+  starters/<id>_starter.py     the handout: its functions holding a step region are the student's, and the
+                               grader replays the probes' calls of them through its code;
+  solutions/<id>.py            the reference solution (probes splice its steps in; --pictures draws its runs).
+To add a lab, add those files: every folder here holding a checks.py is a lab. Helpers several labs share are
+in checker/probe_kit.py and checker/lab_checks.py.
 """
+import importlib
+import os
 from dataclasses import dataclass
 
-from .ball_on_ramp import checks as ball_on_ramp
-from .bullets import checks as bullets
-from .more_shapes import checks as more_shapes
-from .sleeping_crates import checks as sleeping_crates
-from .tumbling_crates import checks as tumbling_crates
+from ..sandbox import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ORDER = ("tumbling_crates", "more_shapes", "ball_on_ramp", "bullets", "sleeping_crates")   # the lesson's order;
+# a lab not named here comes after these, by id (the order of --list and of identify())
 
 
 @dataclass(frozen=True)
 class Lab:
-    """One lab: its id (used in JSON and CSV), its title, and the module holding its checks."""
+    """One lab, found from its id (used in JSON and CSV): its modules under checker/labs/<id>/, its starter and
+    solution under `root` (the project; a test may give another folder)."""
     id: str
-    title: str
-    module: object
+    root: str = PROJECT_ROOT
+
+    def _module(self, name):
+        return importlib.import_module(f"{__name__}.{self.id}.{name}")
+
+    @property
+    def module(self):
+        """The module holding the lab's checks (checker/labs/<id>/checks.py)."""
+        return self._module("checks")
+
+    @property
+    def scenes(self):
+        """The module holding the lab's scenes (checker/labs/<id>/scenes.py)."""
+        return self._module("scenes")
+
+    @property
+    def probes(self):
+        """Import name of the module whose probes the child process runs on this lab's functions."""
+        return f"{__name__}.{self.id}.probes"
+
+    @property
+    def starter(self):
+        """Path of the lab's handout, starters/<id>_starter.py."""
+        return os.path.join(self.root, "starters", f"{self.id}_starter.py")
+
+    @property
+    def solution(self):
+        """Path of the lab's reference solution, solutions/<id>.py."""
+        return os.path.join(self.root, "solutions", f"{self.id}.py")
+
+    @property
+    def title(self):
+        return self.module.TITLE
 
     @property
     def checks(self):
@@ -37,7 +73,8 @@ class Lab:
         return self.module.recognise(path, source)
 
     def scenarios(self):
-        return self.module.scenarios()
+        """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
+        return {name: build() for name, build in self.scenes.SCENARIOS.items()}
 
     def scene_seconds(self, name, settings):
         """How long (CPU s) scene `name` is expected to run, for the grader's longest-first order.
@@ -61,24 +98,15 @@ class Lab:
         scene the 'runs' check reads, else the lab's first scene."""
         return (self.picture_scenes.get("runs") or tuple(self.scenarios()) or (None,))[0]
 
-    @property
-    def solution(self):
-        """Path of the lab's reference solution (its module's SOLUTION), or None."""
-        return getattr(self.module, "SOLUTION", None)
 
-    @property
-    def probes(self):
-        """Import name of the module whose probes the child process runs on this lab's functions."""
-        return self.module.PROBES
+def found(folder=HERE):
+    """The ids of the labs in `folder`: its sub-folders holding a checks.py, in ORDER, then the others by id."""
+    ids = sorted(name for name in os.listdir(folder)
+                 if not name.startswith(("_", ".")) and os.path.isfile(os.path.join(folder, name, "checks.py")))
+    return sorted(ids, key=lambda lab_id: (ORDER.index(lab_id) if lab_id in ORDER else len(ORDER), lab_id))
 
 
-LABS = (
-    Lab("tumbling_crates", tumbling_crates.TITLE, tumbling_crates),
-    Lab("more_shapes", more_shapes.TITLE, more_shapes),
-    Lab("ball_on_ramp", ball_on_ramp.TITLE, ball_on_ramp),
-    Lab("bullets", bullets.TITLE, bullets),
-    Lab("sleeping_crates", sleeping_crates.TITLE, sleeping_crates),
-)
+LABS = tuple(Lab(lab_id) for lab_id in found())
 
 
 def identify(path, source):

@@ -20,7 +20,6 @@ sliding within 1 %, sinking at most 1 px) or was set from what
 solutions/ball_on_ramp.py measures in the same scene, noted beside it.
 """
 import math
-import os
 
 from . import probes
 from . import scenes
@@ -30,11 +29,7 @@ from ...common import shown
 from ...records import finite
 
 TITLE = "Ball on the Ramp"
-PROBES = "checker.labs.ball_on_ramp.probes"
 REQUIRED = probes.REQUIRED
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-STARTER = os.path.join(ROOT, "starters", "ball_on_ramp_starter.py")
-SOLUTION = os.path.join(ROOT, "solutions", "ball_on_ramp.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("closest_on_segment",), 3: ("circle_polygon",), 4: ("separate", "lesson_separate"),
                 5: ("inertia", "inv_inertia", "Circle", "Body"), 6: ("circle_contact_point", "circle_point"),
@@ -140,11 +135,6 @@ def recognise(path, source):
 SCENE_SECONDS = {"knock": 0.8, "ramp": 0.3, "inside": 0.3}
 
 
-def scenarios():
-    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
-    return {name: build() for name, build in scenes.SCENARIOS.items()}
-
-
 # ---------------------------------------------------------------- helpers
 
 def _close(got, want):
@@ -180,7 +170,7 @@ def loads(sub):
 @CHECKS.check(after=["loads"])
 def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+    return lab_checks.handout_unchanged(sub, HINTS["handout"])
 
 
 @CHECKS.check(after=["loads"])

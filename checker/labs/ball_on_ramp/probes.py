@@ -22,7 +22,6 @@ from the inputs as they were before the student's function got them.
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
 import math
-import os
 
 from pygame import Vector2
 
@@ -35,7 +34,6 @@ from ...tape import run_rng
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
 RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
 SLOP, PERCENT = 0.5, 0.4   # px, share: the handout's push-out constants
-SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))), "solutions", "ball_on_ramp.py")
 RAMP_ANGLE = 22.0      # degrees
 
 
@@ -225,7 +223,7 @@ def probe_circle_outside(module, lab_path):
 
     Falls back to the student's own circle_polygon when the markers cannot be found.
     """
-    function = with_reference_steps(module, lab_path, "circle_polygon", (3,), solution=SOLUTION) or \
+    function = with_reference_steps(module, lab_path, "circle_polygon", (3,)) or \
         module.circle_polygon
     return _circle_cases(module, function, outside_cases())
 
@@ -473,8 +471,8 @@ def _resolve_reference(a, b, normal, point, resting):
             "ra": list(point - a.pos), "rb": list(point - b.pos)}
 
 
-# the spliced functions the probes use: (function, the solution's steps put in it, the solution)
-SPLICES = (("circle_polygon", (3,), SOLUTION),)
+# the spliced functions the probes use: (function, the lab's solution's steps put in it)
+SPLICES = (("circle_polygon", (3,)),)
 
 # the step functions that answer a question and must leave their arguments as they got them (the grader
 # fails one that changes them in place, whatever it returns: checker/lab_checks.function_data)

@@ -1,1 +1,1 @@
-"""The Bullets lab: checks.py (its checks), probes.py (its probes' inputs and references)."""
+"""The Bullets lab: checks.py (its checks), probes.py (its probes' inputs and references), scenes.py (its scene)."""

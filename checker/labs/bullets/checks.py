@@ -22,19 +22,15 @@ px/s; some tunnel with sub-steps x8 at 12000 px/s; 1e-9 s; 5 %); what
 solutions/bullets.py measures is noted beside each.
 """
 import math
-import os
 
 from . import probes
+from . import scenes
 from ... import lab_checks
 from ...checks import Fail, Hint, Passed, Registry
-from ...records import FPS, SEED, finite
+from ...records import finite
 
 TITLE = "Bullets"
-PROBES = "checker.labs.bullets.probes"
 REQUIRED = probes.REQUIRED
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-STARTER = os.path.join(ROOT, "starters", "bullets_starter.py")
-SOLUTION = os.path.join(ROOT, "solutions", "bullets.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("circle_toi",), 3: ("bounding_radius",), 4: ("time_of_impact", "circle_toi"),
                 5: ("swept_move", "time_of_impact")}
@@ -108,25 +104,9 @@ def recognise(path, source):
     return name.startswith("bullets") or source.lstrip().startswith('"""Bullets:')
 
 
-def scene_scenario():
-    """The lab's own scene in CCD mode (key 5), 6 bullets fired at the wall and the crates, 0.5 s."""
-    clicks = [(300, 250), (600, 100), (260, 545), (600, 400), (390, 480), (600, 250)]
-    script = [{"frame": 1, "type": "key", "key": "5"}]
-    script += [{"frame": 2 + 3 * i, "type": "click", "pos": list(pos)} for i, pos in enumerate(clicks)]
-    return {"frames": 30, "fps": FPS, "seed": SEED, "record_every": 1, "script": script}
-
-
-SCENARIOS = {"scene": scene_scenario}
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"scene": 0.2}
-
-
-def scenarios():
-    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
-    return {name: build() for name, build in SCENARIOS.items()}
 
 
 # ---------------------------------------------------------------- helpers
@@ -172,7 +152,7 @@ def loads(sub):
 @CHECKS.check(after=["loads"])
 def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+    return lab_checks.handout_unchanged(sub, HINTS["handout"])
 
 
 @CHECKS.check(after=["loads"])
@@ -327,7 +307,7 @@ FUNCTION_CHECKS = ["toi_matches_root", "bounding_circle", "broad_test", "swept_m
 @CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines"] + FUNCTION_CHECKS, needs_scenarios=True)
 def runs(sub):
     """main() runs the lab's scene in CCD mode with six bullets fired, and no bullet passes the wall."""
-    run = lab_checks.scene_records(sub, SCENARIOS, HINTS["crash"], HINTS["runtime"])["scene"]
+    run = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])["scene"]
     frames = run.record["records"]
     if not finite(frames):
         raise Fail("in the scene a body's position or speed became infinite or NaN.", HINTS["watch"])

@@ -19,7 +19,6 @@ Every bound of the criteria was set from what solutions/more_shapes.py
 measures in the same scene, with the measured value noted next to it.
 """
 import math
-import os
 
 from ... import lab_checks
 from ... import records as metrics
@@ -28,10 +27,6 @@ from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 
 TITLE = "More Shapes"
-PROBES = "checker.labs.more_shapes.probes"
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-STARTER = os.path.join(ROOT, "starters", "more_shapes_starter.py")
-SOLUTION = os.path.join(ROOT, "solutions", "more_shapes.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("regular_polygon",),
                 3: ("polygon_centroid", "polygon_area", "convex_polygon", "Polygon", "Body", "from_world_points"),
@@ -119,11 +114,6 @@ def recognise(path, source):
 SCENE_SECONDS = {"solo": 1.9, "pile": 1.8}
 
 
-def scenarios():
-    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
-    return {name: build() for name, build in scenes.SCENARIOS.items()}
-
-
 # ---------------------------------------------------------------- helpers
 
 def _close(got, want, scale=1.0):
@@ -158,7 +148,7 @@ def loads(sub):
 @CHECKS.check(after=["loads"])
 def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+    return lab_checks.handout_unchanged(sub, HINTS["handout"])
 
 
 @CHECKS.check(after=["loads"])

@@ -17,7 +17,6 @@ function check passes.
 Every bound of the criteria was set from what solutions/sleeping_crates.py
 measures in the same scene, with the measured value noted next to it.
 """
-import os
 
 from ... import lab_checks
 from ... import records as metrics
@@ -26,10 +25,6 @@ from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 
 TITLE = "Sleeping Crates"
-PROBES = "checker.labs.sleeping_crates.probes"
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
-SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("sleep_timer", "sleep_timer_of_world", "update_sleep"), 3: ("moves", "moves_of_world"),
                 4: ("wake_on_contact", "wake_of_world", "wake", "wake_pair")}
@@ -98,11 +93,6 @@ def recognise(path, source):
 SCENE_SECONDS = {"sleep": 1.4}
 
 
-def scenarios():
-    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
-    return {name: build() for name, build in scenes.SCENARIOS.items()}
-
-
 def _function(sub, functions, probe, function, step):
     return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
 
@@ -120,7 +110,7 @@ def loads(sub):
 @CHECKS.check(after=["loads"])
 def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+    return lab_checks.handout_unchanged(sub, HINTS["handout"])
 
 
 @CHECKS.check(after=["loads"])

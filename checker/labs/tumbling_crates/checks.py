@@ -20,7 +20,6 @@ with the measured value noted next to it.
 """
 import ast
 import math
-import os
 import re
 
 from . import probes
@@ -31,11 +30,7 @@ from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 
 TITLE = "Tumbling Crates"
-PROBES = "checker.labs.tumbling_crates.probes"
 REQUIRED = probes.REQUIRED
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
-SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("sat",), 3: ("sat",), 4: ("resolve", "lesson_resolve", "effective_mass_inverse"),
                 5: ("resolve", "lesson_resolve"), 6: ("apply_impulse",)}
@@ -151,11 +146,6 @@ def recognise(path, source):
 SCENE_SECONDS = {"pile": 4.6, "own_scene": 3.3, "ramp": 1.5, "corner": 0.9}
 
 
-def scenarios():
-    """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
-    return {name: build() for name, build in scenes.SCENARIOS.items()}
-
-
 # ---------------------------------------------------------------- helpers
 
 def _close(got, want):
@@ -182,7 +172,7 @@ def loads(sub):
 @CHECKS.check(after=["loads"])
 def handout_unchanged(sub):
     """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, STARTER, HINTS["handout"])
+    return lab_checks.handout_unchanged(sub, HINTS["handout"])
 
 
 @CHECKS.check(after=["loads"])

@@ -22,7 +22,6 @@ the first configuration that differs.
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
 import math
-import os
 
 from pygame import Vector2
 
@@ -36,8 +35,6 @@ from ...tape import run_rng
 
 REQUIRED = ("sat", "apply_impulse", "resolve", "main")
 RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
-SOLUTION = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))), "solutions",
-                        "tumbling_crates.py")
 
 
 def probe_sat(module, lab_path):
@@ -295,8 +292,8 @@ def _resolve_case(name, a, b, normal, point, resting, calls):
     return case
 
 
-# the spliced functions the probes use: (function, the solution's steps put in it, the solution)
-SPLICES = (("sat", (3,), SOLUTION),)
+# the spliced functions the probes use: (function, the lab's solution's steps put in it)
+SPLICES = (("sat", (3,)),)
 
 # the step functions that answer a question and must leave their arguments as they got them (the grader
 # fails one that changes them in place, whatever it returns: checker/lab_checks.function_data)

@@ -1,0 +1,63 @@
+"""Labs by convention: a lab is its id, and every file of it is found from that id by one function.
+
+checker/labs/__init__.py's Lab finds a lab's checks, probes and scenes (checker/labs/<id>/), its
+starter (starters/<id>_starter.py) and its solution (solutions/<id>.py); the registry is every folder
+of checker/labs holding a checks.py. No lab spells a path of its own.
+"""
+import ast
+import glob
+import os
+
+from checker import labs
+
+ROOT = labs.PROJECT_ROOT
+LAB_FILES = ("__init__.py", "checks.py", "probes.py", "scenes.py")
+
+
+def test_every_folder_holding_checks_is_a_registered_lab_in_the_lessons_order():
+    folders = sorted(os.path.basename(os.path.dirname(path))
+                     for path in glob.glob(os.path.join(labs.HERE, "*", "checks.py"))
+                     if not os.path.basename(os.path.dirname(path)).startswith("_"))
+    assert sorted(lab.id for lab in labs.LABS) == folders and len(folders) >= 5
+    assert [lab.id for lab in labs.LABS][:len(labs.ORDER)] == list(labs.ORDER)
+
+
+def test_a_lab_folder_not_in_the_lessons_order_is_found_after_the_others(tmp_path):
+    for lab_id in ("zeta", "alpha", "bullets", "tumbling_crates"):
+        (tmp_path / lab_id).mkdir()
+        (tmp_path / lab_id / "checks.py").write_text("")
+    (tmp_path / "_toy").mkdir()
+    (tmp_path / "_toy" / "checks.py").write_text("")     # a leading _ is never a lab
+    (tmp_path / "notes").mkdir()                        # a folder without checks.py is not one either
+    assert labs.found(str(tmp_path)) == ["tumbling_crates", "bullets", "alpha", "zeta"]
+
+
+def test_every_lab_has_the_same_files_found_from_its_id():
+    for lab in labs.LABS:
+        folder = os.path.join(labs.HERE, lab.id)
+        assert sorted(name for name in os.listdir(folder) if name.endswith(".py")) == sorted(LAB_FILES), lab.id
+        assert lab.starter == os.path.join(ROOT, "starters", f"{lab.id}_starter.py") and os.path.isfile(lab.starter)
+        assert lab.solution == os.path.join(ROOT, "solutions", f"{lab.id}.py") and os.path.isfile(lab.solution)
+        assert lab.probes == f"checker.labs.{lab.id}.probes"
+        assert lab.module.__name__ == f"checker.labs.{lab.id}.checks"
+        assert lab.scenes.__name__ == f"checker.labs.{lab.id}.scenes" and lab.scenarios()
+        assert set(lab.scenarios()) == set(lab.scenes.SCENARIOS), lab.id
+
+
+def test_no_lab_spells_a_path_of_its_own():
+    """No ROOT, STARTER, SOLUTION or PROBES in a lab's modules, and no path built from their own __file__."""
+    for path in sorted(glob.glob(os.path.join(labs.HERE, "*", "*.py"))):
+        with open(path, encoding="utf-8") as handle:
+            text = handle.read()
+        assigned = {target.id for node in ast.walk(ast.parse(text)) if isinstance(node, ast.Assign)
+                    for target in node.targets if isinstance(target, ast.Name)}
+        assert not assigned & {"ROOT", "STARTER", "SOLUTION"}, path
+        assert "PROBES" not in assigned or path.endswith("probes.py"), path   # probes.py's PROBES is its table
+        assert "__file__" not in text and "os.path.dirname(os.path.dirname(os.path.dirname" not in text, path
+
+
+def test_a_lab_under_another_root_finds_its_starter_and_solution_there(tmp_path):
+    lab = labs.Lab("tumbling_crates", root=str(tmp_path))
+    assert lab.starter == str(tmp_path / "starters" / "tumbling_crates_starter.py")
+    assert lab.solution == str(tmp_path / "solutions" / "tumbling_crates.py")
+    assert lab.module is labs.LABS[0].module      # its modules are still checker/labs/<id>/
