@@ -4,7 +4,7 @@ Used by tests/test_lab_*.py and tests/test_runtime.py. The child is the plain
 `python LAB.py` a student runs, with LESSON11_LAB_SETTINGS naming a settings
 file and SDL's dummy drivers, so the file's `if __name__ == "__main__"` path
 is the one under test. Measurements of a record (speed, floor penetration,
-overlaps, flat error) are the checker's: checker/labs/tumbling_crates/scenes.py.
+overlaps, flat error) are the checker's: lesson11/records.py and lesson11/crate_scenes.py.
 
 Scene geometry of Tumbling Crates (px; y grows downward): the floor's top face
 is at y = 560 (a 900 × 40 box centred at (450, 580)); the ramp is a 420 × 24

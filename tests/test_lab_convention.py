@@ -61,3 +61,31 @@ def test_a_lab_under_another_root_finds_its_starter_and_solution_there(tmp_path)
     assert lab.starter == str(tmp_path / "starters" / "tumbling_crates_starter.py")
     assert lab.solution == str(tmp_path / "solutions" / "tumbling_crates.py")
     assert lab.module is labs.LABS[0].module      # its modules are still checker/labs/<id>/
+
+
+def _imported_modules(path):
+    """The modules a Python file imports (absolute names; relative imports as written, with their dots)."""
+    with open(path, encoding="utf-8") as handle:
+        tree = ast.parse(handle.read())
+    names = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names.update(alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            names.add("." * node.level + (node.module or ""))
+    return names
+
+
+def test_nothing_in_lesson11_imports_the_checker():
+    """The checker may import lesson11 (the scenes it shares with the bench: lesson11/crate_scenes.py, records.py),
+    never the other way round: the bench measures the checker's scenes without importing the checker."""
+    paths = glob.glob(os.path.join(ROOT, "lesson11", "**", "*.py"), recursive=True)
+    assert any(path.endswith(os.path.join("bench", "default_probe.py")) for path in paths)
+    importing = {os.path.relpath(path, ROOT): sorted(name for name in _imported_modules(path)
+                                                     if name == "checker" or name.startswith("checker."))
+                 for path in paths}
+    assert {path: names for path, names in importing.items() if names} == {}
+
+
+def test_the_import_finder_sees_a_checker_import():
+    assert "checker" in _imported_modules(__file__)   # this file's `from checker import labs`

@@ -11,7 +11,7 @@ import math
 import pytest
 from pygame import Vector2
 
-from checker.records import flat_error, floor_penetration, max_pair_overlap, speed
+from lesson11.records import flat_error, floor_penetration, max_pair_overlap, speed
 from lab_run import FAST_MOVER, FPS, RAMP_ANGLE, SLOPE, SOLUTION, clicks, pile_settings, ramp_crate, run_lab
 
 FLOOR, RAMP = 0, 1

@@ -275,8 +275,8 @@ def test_solve_first_e05_disc_rebounds_at_half_its_impact_speed():
 def test_solve_first_crates_rest_on_the_lab_ramp():
     """The checker's ramp scene (three crates at rest on the lab's 22° ramp, μ 0.6), 3 s, with the library's resolve."""
     import math
-    from checker.labs.tumbling_crates.scenes import ramp_scenario
-    from checker.records import RAMP_ANGLE
+    from lesson11.crate_scenes import ramp_scenario
+    from lesson11.records import RAMP_ANGLE
     from pygame import Vector2
     statics = [Body(box_points(900, 40), (450, 580), 0), Body(box_points(420, 24), (230, 380), 0, angle=RAMP_ANGLE),
                Body(box_points(30, 600), (910, 300), 0)]

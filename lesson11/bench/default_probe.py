@@ -5,7 +5,7 @@
 For each setting, World's default sub-steps and iterations are swapped for the
 run (solve-first, the lab's order) and the Tumbling Crates solution runs in
 this process under the lab runtime, as the checker runs it, in:
-  corner, ramp, bricks, own    the checker's four scenes (checker/labs/tumbling_crates/scenes.py)
+  corner, ramp, bricks, own    the checker's four scenes (lesson11/crate_scenes.py)
   pile 12                      the lab's 12-crate clicked pile (tests/lab_run.pile_settings)
   pile 14                      the same with 14 clicks: a denser pile
 Each figure is shown against its checker bound as value (bound/value, the
@@ -26,9 +26,8 @@ os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
-from checker.labs.tumbling_crates import scenes  # noqa: E402
-from checker import records as metrics  # noqa: E402
-from checker.labs.tumbling_crates import checks as lab  # noqa: E402
+from lesson11 import crate_scenes as scenes  # noqa: E402  (the checker's scenes and bounds)
+from lesson11 import records as metrics  # noqa: E402
 from lesson11 import runtime  # noqa: E402
 from lesson11.physics2d import World  # noqa: E402
 
@@ -116,20 +115,21 @@ def row(substeps, iterations):
         corner, clock = run_lab(scenes.corner_scenario())
         cpu += clock.seconds
         crates = scenes.measure_corner(corner)
-        cells["corner rest"], m = fmt(max(c["rest_speed"] for c in crates), lab.REST_SPEED)
+        cells["corner rest"], m = fmt(max(c["rest_speed"] for c in crates), scenes.REST_SPEED)
         margins.append(m)
         ramp, clock = run_lab(scenes.ramp_scenario())
         cpu += clock.seconds
-        cells["ramp slide 3 s"], m = fmt(max(abs(c["slid"]) for c in metrics.measure_ramp(ramp)), lab.RAMP_SLIDE)
+        cells["ramp slide 3 s"], m = fmt(max(abs(c["slid"]) for c in metrics.measure_ramp(ramp)), scenes.RAMP_SLIDE)
         margins.append(m)
-        cells["ramp speed"], m = fmt(metrics.summary(ramp)["tail_speed"], lab.RAMP_SPEED)
+        cells["ramp speed"], m = fmt(metrics.summary(ramp)["tail_speed"], scenes.RAMP_SPEED)
         margins.append(m)
         bricks, clock = run_lab(scenes.pile_scenario())
         cpu += clock.seconds
         pile = metrics.measure_pile(bricks)
-        for name, key, bound in (("bricks speed", "tail_speed", lab.PILE_SPEED), ("bricks drift", "drift", lab.PILE_DRIFT),
-                                 ("bricks floor", "floor_penetration", lab.PENETRATION),
-                                 ("bricks overlap", "pair_overlap", lab.PAIR_OVERLAP)):
+        for name, key, bound in (("bricks speed", "tail_speed", scenes.PILE_SPEED),
+                                 ("bricks drift", "drift", scenes.PILE_DRIFT),
+                                 ("bricks floor", "floor_penetration", scenes.PENETRATION),
+                                 ("bricks overlap", "pair_overlap", scenes.PAIR_OVERLAP)):
             cells[name], m = fmt(pile[key], bound)
             margins.append(m)
         own, clock = run_lab(scenes.own_scene_scenario())

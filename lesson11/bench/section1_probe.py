@@ -3,7 +3,7 @@
     python -m lesson11.bench.section1_probe [move-first|solve-first ...]
 
 Rows (units px, s; targets from issue 10 §1):
-  ramp     the checker's ramp scene (checker/labs/tumbling_crates/scenes.ramp_scenario, 3 crates, 3 s, run
+  ramp     the checker's ramp scene (lesson11/crate_scenes.ramp_scenario, 3 crates, 3 s, run
            through solutions/tumbling_crates.py as the checker runs it): largest slide (px), target <= 1
   pile     the lab's 12-crate pile (tests/lab_run.pile_settings: a dozen clicks, 4 s of settling):
            top speed over the last second (px/s), target < 5; deepest corner below the floor over
@@ -29,8 +29,8 @@ os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
-from checker.labs.tumbling_crates import scenes  # noqa: E402
-from checker import records as metrics  # noqa: E402
+from lesson11 import crate_scenes as scenes  # noqa: E402  (the checker's scenes)
+from lesson11 import records as metrics  # noqa: E402
 from lesson11 import runtime  # noqa: E402
 from lesson11.bench import solver_probe as probe  # noqa: E402
 from lesson11.physics2d import World  # noqa: E402

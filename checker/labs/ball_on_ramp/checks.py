@@ -26,7 +26,7 @@ from . import scenes
 from ... import lab_checks
 from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
-from ...records import finite
+from lesson11.records import finite
 
 TITLE = "Ball on the Ramp"
 REQUIRED = probes.REQUIRED

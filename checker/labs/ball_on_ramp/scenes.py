@@ -14,8 +14,8 @@ import math
 
 from pygame import Vector2
 
-from ...records import (FLOOR_TOP, FPS, RAMP_ANGLE, RAMP_CENTRE, RAMP_THICKNESS, SEED, body_track,
-                      circle_depth, deepest_circle_overlap, dynamic, fitted_acceleration)
+from lesson11.records import (FLOOR_TOP, FPS, RAMP_ANGLE, RAMP_CENTRE, RAMP_THICKNESS, SEED, body_track,
+                              circle_depth, deepest_circle_overlap, dynamic, fitted_acceleration)
 
 GRAVITY = 980.0                   # px/s²
 RADIUS = 20.0                     # px, every ball of the scenes

@@ -27,7 +27,7 @@ from . import probes
 from . import scenes
 from ... import lab_checks
 from ...checks import Fail, Hint, Passed, Registry
-from ...records import finite
+from lesson11.records import finite
 
 TITLE = "Bullets"
 REQUIRED = probes.REQUIRED

@@ -4,7 +4,7 @@ The criteria come from the probe (the lab's own BulletWorld, wall and modes, ste
 process, checker/labs/bullets/probes.py); this one scene (main() with scripted keys and clicks) is
 what the `runs` check reads and --pictures draws.
 """
-from ...records import FPS, SEED
+from lesson11.records import FPS, SEED
 
 
 def scene_scenario():

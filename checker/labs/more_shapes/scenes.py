@@ -18,7 +18,7 @@ import math
 
 from pygame import Vector2
 
-from ... import records as metrics
+from lesson11 import records as metrics
 
 FPS = metrics.FPS
 SEED = metrics.SEED

@@ -17,7 +17,7 @@ Scenario items are the lab's own crate descriptions ({"w", "h", "pos", "angle",
 """
 import math
 
-from ... import records as metrics
+from lesson11 import records as metrics
 
 FPS = metrics.FPS
 SEED = metrics.SEED

@@ -15,7 +15,7 @@ written. The scenes run only when every function check passes (the criteria
 depend on them), so a mistake is reported once, under its own step.
 
 Every bound of the criteria was set from what solutions/tumbling_crates.py
-measures in the same scenario (checker/labs/tumbling_crates/scenes.py has the scenes),
+measures in the same scenario (lesson11/crate_scenes.py has the scenes and the bounds),
 with the measured value noted next to it.
 """
 import ast
@@ -25,7 +25,10 @@ import re
 from . import probes
 from . import scenes
 from ... import lab_checks
-from ... import records as metrics
+from lesson11 import records as metrics
+from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TURN, PAIR_OVERLAP, PENETRATION,
+                                   PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
+                                   TIPPED_FLAT)
 from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 
@@ -47,22 +50,7 @@ ABS = 1e-7      # absolute floor of the same (px, px/s, rad/s, impulse units)
 TOUCHING = 1e-6  # px: a depth this small for shapes exactly touching counts as "apart"
 
 # ---------------------------------------------------------------- bounds (measured on the solution)
-TIPPED_FLAT = math.radians(6)   # rad from flat at the end; solution: 0.02°-0.11°
-MIN_TURN = 0.3                  # rad turned while tipping; solution: 0.50-0.55 (the drop angles are 0.5, 0.55)
-REST_SPEED = 5.0                # px/s over the last 0.5 s; solution: 0.002
-REST_OMEGA = 0.2                # rad/s over the last 0.5 s; solution: 0.0000
-PENETRATION = 1.0               # px below the floor's top face; solution: corner 0.33, pile 0.57 (no push-out: 1.5)
-PAIR_OVERLAP = 2.0              # px between two crates in the pile; solution: 0.62 (no push-out: 2.8)
-# The ramp: physics2d's World solves the contacts before it moves the bodies (order="solve-first"),
-# so friction cancels each step's pull down the slope before the move and a crate at rest stays
-# put (the lesson text's order, move-first, let it creep g·sin(22°)·dt = 3.06 px/s: 9.2-10.3 px).
-RAMP_SLIDE = 1.0                # px along the slope in 3 s; solution: 0.29
-RAMP_SPEED = 2.0                # px/s in the last second; solution: 0.65
-PILE_SPEED = 10.0               # px/s in the last second; solution: 4.65 (a pile is chaotic: margin 2x)
-PILE_DRIFT = 3.0                # px a crate's centre may move during the last second; solution: 0.27
-EXPLODED = 1500.0               # px/s: faster than any fall in these scenes (free fall from the top: ~1100)
-GRAVITY = 980.0                 # px/s², the course's gravity
-GRAVITY_TOLERANCE = 0.01        # relative; the solution measures the free fall within 1e-9
+# beside the scenes they were measured on, in lesson11/crate_scenes.py (imported above)
 
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {

@@ -1,4 +1,4 @@
-"""What every lab's checker measures in a recorded run: the shared scene geometry and the record metrics.
+"""What a recorded run measures, for every lab's checker and the bench: the shared scene geometry and the metrics.
 
 A record is what lesson11.runtime writes: {"records": [frame, ...]}, each frame
 {"frame", "contacts", "touching", "bodies": [{"static", "pos", "vel", "angle",
