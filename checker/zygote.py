@@ -32,10 +32,8 @@ import sys
 
 WARM_MODULES = ("pygame", "pygame.font", "pygame.freetype", "pygame.sysfont", "pygame.pkgdata", "pygame.sprite",
                 "pygame.surfarray", "pygame.sndarray", "numpy", "lesson11.runtime", "lesson11.panel",
-                "lesson11.physics2d", "lesson11.physics2d.draw", "checker.child", "checker.tape",
-                "checker.labs.tumbling_crates.probes", "checker.labs.more_shapes.probes",
-                "checker.labs.ball_on_ramp.probes", "checker.labs.bullets.probes",
-                "checker.labs.sleeping_crates.probes")
+                "lesson11.physics2d", "lesson11.physics2d.draw", "checker.child", "checker.tape")
+# and every lab's probe module (_lab_probes: found as the registry finds the labs, so a new lab needs no row here)
 # the standard library a step or a lab may import (item 7 of issue 35 allows the pure ones in steps), and what
 # the child's own error and timing paths import late: all imported here, so a child that runs as another user
 # never opens a file of Python's after it switched (its interpreter may sit where that user cannot enter)
@@ -276,13 +274,20 @@ def warm_up():
     """
     import importlib
     importlib.import_module("checker.sandbox")
-    for name in WARM_MODULES + WARM_STDLIB + _handout_imports():
+    required = WARM_MODULES + _lab_probes()
+    for name in required + WARM_STDLIB + _handout_imports():
         try:
             importlib.import_module(name)
         except ImportError:
-            if name in WARM_MODULES:
+            if name in required:
                 raise
     _keep_package_data()
+
+
+def _lab_probes():
+    """The import name of every lab's probe module (checker/labs/<id>/probes.py)."""
+    from checker import labs
+    return tuple(lab.probes for lab in labs.LABS)
 
 
 def _handout_imports():

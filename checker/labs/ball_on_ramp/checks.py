@@ -21,7 +21,6 @@ solutions/ball_on_ramp.py measures in the same scene, noted beside it.
 """
 import math
 
-from . import probes
 from . import scenes
 from ... import lab_checks
 from ...checks import Fail, Hint, Passed, Registry
@@ -29,7 +28,6 @@ from ...common import shown
 from lesson11.records import finite
 
 TITLE = "Ball on the Ramp"
-REQUIRED = probes.REQUIRED
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("closest_on_segment",), 3: ("circle_polygon",), 4: ("separate", "lesson_separate"),
                 5: ("inertia", "inv_inertia", "Circle", "Body"), 6: ("circle_contact_point", "circle_point"),

@@ -1,10 +1,10 @@
 """The Ball on the Ramp scenarios: where the checker puts balls and crates, and what it measures.
 
-The scene's geometry is Tumbling Crates' (checker/records.py): the
+The scene's geometry is Tumbling Crates' (lesson11/records.py): the
 floor's top face at y = 560 px, the 420 × 24 px ramp centred at (230, 380)
 turned 22° (its right end lower), the wall just off the right edge. The lab's
 build(item) makes a ball from an item with "r" (px) and a crate from one with
-"w" and "h". The measurements reuse checker/records.py's record metrics
+"w" and "h". The measurements reuse lesson11/records.py's record metrics
 (body_track, fitted_acceleration, deepest_circle_overlap, circle_depth, ...).
 
 Kept short on purpose: the three scenes together simulate 4.5 s, so grading a

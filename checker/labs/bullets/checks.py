@@ -23,14 +23,12 @@ solutions/bullets.py measures is noted beside each.
 """
 import math
 
-from . import probes
 from . import scenes
 from ... import lab_checks
 from ...checks import Fail, Hint, Passed, Registry
 from lesson11.records import finite
 
 TITLE = "Bullets"
-REQUIRED = probes.REQUIRED
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("circle_toi",), 3: ("bounding_radius",), 4: ("time_of_impact", "circle_toi"),
                 5: ("swept_move", "time_of_impact")}

@@ -1,6 +1,6 @@
 """The More Shapes scenes: which shapes the checker sets where, and what it measures.
 
-Scene geometry is Tumbling Crates' (checker/records.py): the floor's
+Scene geometry is Tumbling Crates' (lesson11/records.py): the floor's
 top face at y = 560 px, the 420 × 24 px ramp centred at (230, 380) turned 22°,
 the wall just off the right edge; y grows downward, a positive angle turns
 clockwise on screen. Scenario items are the lab's own shape descriptions
@@ -11,7 +11,7 @@ Two scenes keep grading cheap (each is one child process):
   solo  (3 s): an equilateral triangle dropped on a corner, a hexagon pushed along the
         floor, a pentagon and a hexagon set at rest on the ramp. They never meet.
   pile  (1.5 s): seven shapes of every kind stacked loosely over the floor's right half.
-The measurements reuse checker/records.py's metrics (summary, measure_ramp,
+The measurements reuse lesson11/records.py's metrics (summary, measure_ramp,
 measure_pile, free_fall, dynamic_arrays, resting_side_error).
 """
 import math

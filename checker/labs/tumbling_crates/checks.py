@@ -33,7 +33,6 @@ from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 
 TITLE = "Tumbling Crates"
-REQUIRED = probes.REQUIRED
 # the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
 STEP_LIBRARY = {2: ("sat",), 3: ("sat",), 4: ("resolve", "lesson_resolve", "effective_mass_inverse"),
                 5: ("resolve", "lesson_resolve"), 6: ("apply_impulse",)}
