@@ -91,8 +91,9 @@ HINTS = {
                     "again from the starter if you are unsure what changed."),
     "runtime": lab_checks.RUNTIME_HINT,
     "sinking": Hint(6, "the push-out after the impulses",
-                    "Shapes sink: the overlap is not being removed. The World's push-out (separate) must stay on, "
-                    "and each body's corners must be centred on its centroid (step 3)."),
+                    "Shapes end up deeper in the floor or in each other than the pile allows: the overlap the "
+                    "impulses leave is not being removed. The World's push-out (separate) must stay on, as "
+                    "handed out."),
     "settle": Hint(6, "watch them settle",
                    "Shapes keep moving where they should rest. Press D and watch the contact points, the normals "
                    "and the centre-of-mass dots while they settle; the function checks above all pass, so compare "

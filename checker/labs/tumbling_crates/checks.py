@@ -87,27 +87,33 @@ HINTS = {
                       "Vector2 first, the overlap in px second (the handout's last line returns best_axis, "
                       "best_depth)."),
     "normal_flipped": Hint(3, "the normal must point from A to B",
-                           "Crates are shot apart (or pulled into each other) because the normal points the wrong "
-                           "way about half the time. Check the dot product of the axis with center_b - center_a: "
-                           "when it is negative, turn the axis round (the axis, not the depth)."),
+                           "An edge normal (-e.y, e.x) of a crate or of the floor points INTO its polygon (the "
+                           "corners run clockwise on screen), so without the flip the normal is wrong exactly when "
+                           "the axis is A's: every floor contact (the floor is body 0), and the crates fall through "
+                           "the floor. With the test the wrong way round they sink into it instead. Check the dot "
+                           "product of the axis with center_b - center_a: when it is negative, turn the axis round "
+                           "(the axis, not the depth)."),
     "k_spin": Hint(4, "the spin terms of the effective mass",
                    "A corner hit should feel lighter: k needs both spin terms, (ra × n)² / I_A and (rb × n)² / "
-                   "I_B, beside the two inverse masses, or the impulse is the wrong size and corners bounce and "
-                   "crates slide off the ramp."),
+                   "I_B, beside the two inverse masses, or the impulse is too big for a hit at a corner: corner "
+                   "landings kick, crates bounce about and can be thrown out of the window."),
     "friction_clamp": Hint(5, "Coulomb's clamp on friction",
-                           "If a glancing touch stops a crate dead, the friction impulse isn't clamped: friction may "
+                           "If a crate thrown along the floor stops dead, the friction impulse isn't clamped: friction may "
                            "never be bigger than μ times the normal impulse j (Coulomb's law), so keep jt within "
                            "[-μ j, μ j]. Inside that range, leave jt as it is."),
     "friction_sign": Hint(5, "the sign of the friction impulse",
-                          "If sliding crates spin up instead of slowing down, a sign in the friction or spin update "
-                          "is flipped: jt = -rel·t / kt opposes the slip, and the clamp must keep its sign."),
+                          "If friction drives sliding crates on instead of braking them (they spin faster and faster "
+                          "and are thrown out of the window), the friction impulse has the wrong sign: jt = "
+                          "-rel·t / kt opposes the slip, and clamping to [-μ j, μ j] leaves that sign as it is."),
     "spin_missing": Hint(6, "the two spin updates in apply_impulse",
-                         "If crates land but never tip over, the spin lines in apply_impulse are missing: each "
+                         "If crates freeze on their corners (they land and never turn), the spin lines in "
+                         "apply_impulse are missing: each "
                          "body's spin changes by its lever arm crossed with the impulse (r × P), times its inverse "
                          "inertia; A uses -=, B uses +=, exactly like the velocity lines."),
     "spin_swapped": Hint(6, "the signs of the spin updates",
                          "The spin lines in apply_impulse have swapped signs: A uses -=, B uses +=, exactly like the "
-                         "velocity lines. With the wrong signs corners spin the wrong way and crates fly off."),
+                         "velocity lines. With the signs swapped every touch spins a crate faster, and crates fly "
+                         "off."),
     "spin_terms": Hint(6, "the two spin updates in apply_impulse",
                        "Each body's spin changes by its own lever arm crossed with the impulse (ra × P for A, "
                        "rb × P for B), times its own inverse inertia; A uses -=, B uses +=, exactly like the "
