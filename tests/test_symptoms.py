@@ -192,6 +192,13 @@ def br_held(r):
     assert max_spin(r.frames) < 0.1 and math.hypot(*ball["vel"]) < 5
 
 
+def br_spins_backwards(r):
+    ball = dynamic(r.frames[-1])[0]
+    sol = dynamic(solution_run("ball_on_ramp", ball_scene("ramp")).frames[-1])[0]
+    assert ball["omega"] * sol["omega"] < 0 and abs(abs(ball["omega"]) - abs(sol["omega"])) < 0.05 * abs(sol["omega"])
+    assert abs(math.hypot(*ball["vel"]) - math.hypot(*sol["vel"])) < 0.02 * math.hypot(*sol["vel"])
+
+
 def br_slides(r):
     from checker.labs.ball_on_ramp.scenes import SLIDING, measure_roll
     assert max(abs(b["omega"]) for f in r.frames for b in dynamic(f)[:1]) < 0.1
@@ -262,6 +269,8 @@ CASES = {
                       "inside", br_shoved),
     "ring": ([("    return 0.5 * mass * radius ** 2\n", "    return mass * radius ** 2\n")], "ramp", br_rolls_slower),
     "contact_at_centre": ([("    return center + normal * radius\n", "    return center\n")], "ramp", br_held),
+    "contact_behind": ([("    return center + normal * radius\n", "    return center - normal * radius\n")], "ramp",
+                       br_spins_backwards),
     "no_friction": ([("    jt = max(-mu * j, min(mu * j, jt))  # Coulomb: |friction| <= mu * normal impulse\n"
                       "    apply_impulse(a, b, t * jt, ra, rb)\n", "")], "ramp", br_slides),
     "jt_flipped": ([("    jt = -rel.dot(t) / kt  # the impulse that would stop the slip\n",

@@ -65,26 +65,29 @@ HINTS = {
     "clamp": Hint(2, "clamp t to the segment",
                   "The closest point of an EDGE is not the closest point of its infinite line: compute "
                   "t = (p - a)·ab / (ab·ab), then keep t within [0, 1] before you build the point a + ab t. "
-                  "Without the clamp a ball near a corner touches the edge's line far beyond the polygon."),
+                  "Without the clamp a ball near a corner touches the edge's line far beyond the polygon: a ball "
+                  "rolling off the ramp's end stops in mid-air there."),
     "closest": Hint(2, "the closest point on one edge",
                     "Project p onto the edge: t = (p - a)·ab / (ab·ab) (divide by the squared length, so t runs "
                     "from 0 at a to 1 at b), clamp t to [0, 1]; the point is a + ab t."),
     "inside": Hint(3, "the center inside: push out the other way",
                    "When the ball's center is already inside the polygon, the nearest edge is its way out, and "
                    "the normal (from the ball into the polygon) must point away from that edge: return "
-                   "-offset / dist (flipped) and the depth radius + dist. Unflipped, the push drives the ball on "
-                   "through the polygon."),
+                   "-offset / dist (flipped) and the depth radius + dist. Unflipped, the push drives the ball "
+                   "further in, and a ball started inside a crate stays inside the crate."),
     "split": Hint(4, "split the push-out by inverse mass",
                   "The push is shared by inverse mass: each body's share is its own 1/m over the total "
                   "1/m_A + 1/m_B, A moving back along the normal and B forward, so the shares add up to the "
-                  "push. A static floor (1/m = 0) never moves, and a light ball moves more than a heavy crate."),
+                  "push. A static floor (1/m = 0) never moves, and a light ball moves more than a heavy crate; "
+                  "with the shares swapped the heavy crate is shoved and the light ball hardly moves."),
     "inertia": Hint(5, "a solid disc's moment of inertia",
                     "A solid disc (the ball) has I = ½ m r², half of a ring's m r²: mass near the center is easy "
-                    "to spin. The wrong I changes how fast the ball rolls down the ramp (a = g sin θ / (1 + I / m r²))."),
+                    "to spin. The wrong I changes how fast the ball rolls down the ramp (a = g sin θ / (1 + I / m r²)): "
+                    "with a ring's m r² it rolls a quarter slower."),
     "contact": Hint(6, "the contact point on the ball's surface",
                     "A contact pushes on the ball where it touches: on its surface, center + normal * radius (the "
-                    "normal points out of the ball). At the center, friction has no lever arm and the ball slides "
-                    "without ever turning; on the wrong side it spins backwards."),
+                    "normal points out of the ball). At the center, friction has no lever arm: the ball never "
+                    "turns, and friction holds it where it lands; on the far side it spins the wrong way."),
     "friction_missing": Hint(7, "friction makes it roll",
                              "Without a friction impulse the ball slides down the ramp like an ice cube. Find kt "
                              "along the tangent (with both spin terms), the impulse -(rel · t) / kt that would stop "

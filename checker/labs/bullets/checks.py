@@ -66,11 +66,12 @@ HINTS = {
                       "the touching lies in the past) or later than dt."),
     "toi_touching": Hint(2, "already touching",
                          "When c = |dp|² - (r1 + r2)² <= 0 the circles already overlap: return 0.0 (the impact is "
-                         "now) before solving the quadratic; its roots are then on both sides of 0."),
+                         "now) before solving the quadratic; its roots are then on both sides of 0. Without it, a "
+                         "bullet inside a crate's or the wall's bounding circle is never tested, and bullets tunnel."),
     "bounding": Hint(3, "the bounding circle holds every corner",
                      "The bounding circle around the crate's centre must reach its farthest corner: the largest "
                      "centre.distance_to(p) over the points. Half the width or the nearest corner leaves corners "
-                     "outside, and a bullet aimed at a corner is skipped by the broad test."),
+                     "outside, and a bullet aimed at a corner is skipped by the broad test: it tunnels."),
     "broad": Hint(4, "the broad test before the exact test",
                   "First test the bullet, with its own radius, against the crate's bounding circle (the crate "
                   "held still) with circle_toi(). Only when that finds no contact this step (None; 0.0 is a hit "
@@ -82,7 +83,8 @@ HINTS = {
     "swept": Hint(5, "move to the impact, resolve, spend the rest",
                   "Move the bullet along its velocity to where it is at the time of impact t; resolve there, at "
                   "the point of the bullet's surface that touches the other body (one radius from its centre "
-                  "along the normal); then move it for the rest of the step, dt - t, with its NEW velocity."),
+                  "along the normal); then move it for the rest of the step, dt - t, with its NEW velocity. "
+                  "Without the resolve, or moved the whole step first, bullets tunnel through the wall."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
                     "everything else (the constants, the wall, the modes, BulletWorld, the `# lab runtime` lines) "

@@ -69,21 +69,24 @@ HINTS = {
     "corners": Hint(2, "a regular polygon's corners",
                     "Put corner k on the circle at angle θk = 2πk / sides: (radius cos θk, radius sin θk) for k = 0 "
                     "to sides - 1, so corner 0 is (radius, 0) and there are exactly `sides` corners. Angles in "
-                    "radians (math.cos takes radians)."),
+                    "radians (math.cos takes radians): in degrees the corners go round more than once, the outline "
+                    "crosses itself and the window never opens."),
     "centroid": Hint(3, "the area-weighted centroid",
                      "polygon_inertia only works when the points are centred on the centroid, the centre of mass "
                      "of the solid shape. That is not the average of the corners: weight each edge's term by its "
                      "area, C = Σ (a + b) (a × b) / (6 A) over the edges a→b, with A the signed shoelace area "
-                     "polygon_area(points) (its sign makes either winding work)."),
+                     "polygon_area(points) (its sign makes either winding work). Without the division by 6 A a "
+                     "house vanishes: its corners land thousands of px from its centre."),
     "inertia": Hint(4, "the triangle-fan sum",
                     "Cut the polygon into triangles (0, a, b), one per edge a→b. Each weighs |a × b| (twice its "
                     "area) and contributes a·a + a·b + b·b; I = mass × Σ |a × b| (a·a + a·b + b·b) / (6 Σ |a × b|). "
-                    "Check: a 30 × 20 box of mass 2 gives 216.67, as m (w² + h²) / 12 does."),
+                    "Check: a 30 × 20 box of mass 2 gives 216.67, as m (w² + h²) / 12 does. Without the 6 shapes "
+                    "are six times too hard to turn: a pushed hexagon hardly tips."),
     "axes": Hint(5, "skip parallel axes, keep every direction",
                  "SAT must test every edge direction of both shapes, but parallel normals (the same line, pointing "
                  "either way) cast the same shadows: keep an edge normal only if |axis × kept| > PARALLEL for "
                  "every axis kept so far. A box has 2 directions, a hexagon 3; skipping a direction that is not "
-                 "parallel makes SAT miss gaps."),
+                 "parallel makes SAT miss gaps: a shape falling past another's corner stops in mid-air."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
                     "else (the shapes, build(), sat(), the scene, the World, the `# lab runtime` lines, the final "

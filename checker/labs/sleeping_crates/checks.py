@@ -57,7 +57,8 @@ HINTS = {
                   "(spin has a sign), the timer grows by dt: the seconds it has been calm. As soon as either is at "
                   "or above its "
                   "threshold return 0.0: the timer starts again, so a crate that is slow for one instant (at the "
-                  "top of a throw) never reaches SLEEP_AFTER. dt is in seconds, not frames."),
+                  "top of a throw) never reaches SLEEP_AFTER; otherwise a crate thrown up hangs in the air, asleep "
+                  "at the top of its throw. dt is in seconds, not frames."),
     "moves": Hint(3, "skip sleeping bodies",
                   "moves(body) is True only for a body the World must integrate: dynamic (body.inv_mass != 0) and "
                   "awake (not body.asleep). A static body and a sleeping body both return False, so a pair of them "
@@ -66,7 +67,8 @@ HINTS = {
                  "Return a list of the bodies to wake: a sleeping body whose partner is dynamic (inv_mass != 0) and "
                  "awake. Check both orders (a sleeping, b awake, and the other way round). The floor and walls "
                  "never wake anything (a crate sleeps on the floor), two sleeping crates leave each other asleep, "
-                 "and an awake body is not 'woken'. Return [] when nothing wakes."),
+                 "and an awake body is not 'woken'. Return [] when nothing wakes. A pile that is never woken is "
+                 "shoved down by a crate dropped on it: its crates sink into the floor."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
                     "else (the thresholds, build(), the scene, the World and its hooks, the `# lab runtime` lines, "
