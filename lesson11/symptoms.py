@@ -68,7 +68,7 @@ TABLE = (
             "thrown out of the window", "thrown_out"),
     Symptom("tumbling_crates", "friction_unclamped", 5, "no clamp: `jt` left as it is",
             "a crate thrown along the floor at 400 px/s stops dead within about 30 px, tripping over its front "
-            "corner, instead of sliding about 130 px", "stop_dead"),
+            "corner, instead of sliding about 135 px", "stop_dead"),
     Symptom("tumbling_crates", "friction_flipped", 5, "the clamped `jt` with its sign flipped",
             "friction drives the slide instead of braking it: crates spin up to 47 rad/s and are thrown out of "
             "the window", "thrown_out"),
@@ -122,11 +122,11 @@ TABLE = (
             "a crate thrown up hangs in the air: it falls asleep at the top of its throw, about 80 px above "
             "the floor", "hang"),
     Symptom("sleeping_crates", "timer_or", 2, "`or` instead of `and` between the two thresholds",
-            "a crate thrown up hangs in the air: at the top of its throw it is slow enough, and not spinning",
-            "hang"),
+            "a crate thrown up hangs in the air: it does not spin, so with `or` it counts as calm all through "
+            "its throw and falls asleep in flight", "hang"),
     Symptom("sleeping_crates", "moves_ignores_sleep", 3, "`moves()` ignores `asleep`",
-            "looks right: the crates stay where they fell asleep (the World keeps them still), but the pile "
-            "never gets cheaper; the checker counts the contact tests", "looks_right"),
+            "looks right: the sleeping crates still look asleep and stay put, but they are simulated all the "
+            "same, so the pile never gets cheaper; the checker counts the contact tests", "looks_right"),
     Symptom("sleeping_crates", "never_wakes", 4, "`wake_on_contact()` wakes nobody",
             "a crate dropped on the sleeping pile shoves its crates down: they sink about 35 px into the floor",
             "sink"),
