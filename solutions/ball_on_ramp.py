@@ -54,6 +54,12 @@ def closest_on_segment(p, a, b):
     """
     ab = b - a
     # --- step 2: the closest point on one edge ---
+    # BEGIN PROMPT
+    # Step 2 (lesson: "Circles, Polygons and Fast Objects"): project p onto the edge's line,
+    # t = (p - a)·ab / (ab·ab), then clamp t to [0, 1] so the point stays between a and b,
+    # and return a + ab * t.
+    # starter: return pygame.Vector2(math.inf, math.inf)  # until you write step 2, no edge is near the ball: it falls through
+    # END PROMPT
     t = (p - a).dot(ab) / ab.dot(ab)
     t = max(0.0, min(1.0, t))
     return a + ab * t
@@ -76,6 +82,11 @@ def circle_polygon(center, radius, points):
     if dist < 1e-9:  # the center exactly on the outline: push away from the polygon's middle
         return (centre_of(points) - center).normalize(), radius
     # --- step 3: the center inside the polygon ---
+    # BEGIN PROMPT
+    # Step 3 (same section): if the center is already inside the polygon (inside(center, points)),
+    # the nearest edge is the ball's way out, so the push must go the other way: return the
+    # normal -offset / dist and the depth radius + dist (the ball leaves through that edge).
+    # END PROMPT
     if inside(center, points):
         return -offset / dist, radius + dist
     # --- end of step 3 ---
@@ -96,6 +107,11 @@ def separate(a, b, normal, depth):
         return  # two static bodies
     push = max(depth - SLOP, 0.0) * PERCENT
     # --- step 4: split the push-out by inverse mass ---
+    # BEGIN PROMPT
+    # Step 4 (same section): split the push by inverse mass. Move A back along the normal by
+    # push * a.inv_mass / total and B forward by push * b.inv_mass / total, so a static body
+    # never moves and a light body moves more than a heavy one.
+    # END PROMPT
     a.pos -= normal * (push * a.inv_mass / total)
     b.pos += normal * (push * b.inv_mass / total)
     # --- end of step 4 ---
@@ -104,6 +120,11 @@ def separate(a, b, normal, depth):
 def disc_inertia(mass, radius):
     """Moment of inertia (mass·px²) of a solid disc about its center: I = ½ m r²."""
     # --- step 5: the ball's moment of inertia ---
+    # BEGIN PROMPT
+    # Step 5 (lesson: "Spin: Angular Velocity and Inertia"): return the moment of inertia of a
+    # solid disc of this mass and radius, I = ½ m r².
+    # starter: return math.inf  # until you write step 5, the ball is impossible to turn
+    # END PROMPT
     return 0.5 * mass * radius ** 2
     # --- end of step 5 ---
 
@@ -115,6 +136,11 @@ def contact_point(center, radius, normal, depth):
     point is center + normal * radius. depth (px) is the overlap there.
     """
     # --- step 6: the contact point on the ball's surface ---
+    # BEGIN PROMPT
+    # Step 6 (lesson: "Depth, Direction and Contact Points"): a contact pushes on the ball's
+    # surface, not at its center: return the point radius px from the center along the normal.
+    # starter: return center  # until you write step 6, every push acts at the ball's center: it never turns
+    # END PROMPT
     return center + normal * radius
     # --- end of step 6 ---
 
@@ -145,6 +171,11 @@ def resolve(a, b, normal, point):
     t = tangent.normalize()
     mu = math.sqrt(a.friction * b.friction)
     # --- step 7: friction at the contact point makes the ball roll ---
+    # BEGIN PROMPT
+    # Step 7 (lesson: "Impulses That Spin, and Friction"): the friction impulse. Compute kt like
+    # k but along t (with both spin terms), jt = -rel·t / kt, clamp it to [-mu * j, mu * j]
+    # (Coulomb), and apply t * jt at the contact with apply_impulse, so it turns the ball.
+    # END PROMPT
     rat, rbt = cross(ra, t), cross(rb, t)
     kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
     jt = -rel.dot(t) / kt  # the impulse that would stop the slip

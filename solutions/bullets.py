@@ -71,6 +71,13 @@ def circle_toi(p1, v1, r1, p2, v2, r2, dt):
     dp, dv = p2 - p1, v2 - v1
     reach = r1 + r2
     # --- step 2: the time of impact of two circles ---
+    # BEGIN PROMPT
+    # Step 2 (lesson: "Tunneling"): c = dp·dp - reach²; return 0.0 when c <= 0 (already touching).
+    # Then a = dv·dv, b = 2 dp·dv and the discriminant b² - 4ac: return None when a == 0 (no
+    # relative motion) or the discriminant is negative (the paths miss). Otherwise take the EARLIER
+    # root t = (-b - √(b² - 4ac)) / 2a and return it only if 0 <= t <= dt, else None.
+    # starter: return None  # until you write step 2, nothing is ever hit: bullets fly through everything under CCD
+    # END PROMPT
     c = dp.dot(dp) - reach * reach
     if c <= 0:
         return 0.0  # already touching
@@ -87,6 +94,12 @@ def circle_toi(p1, v1, r1, p2, v2, r2, dt):
 def bounding_radius(points, centre):
     """The radius (px) of the smallest circle around `centre` that holds every point of the outline."""
     # --- step 3: the crate's bounding circle ---
+    # BEGIN PROMPT
+    # Step 3 (lesson: "Going Further"): the bounding circle around `centre` must hold every
+    # point: return the largest distance from centre to a point of the outline
+    # (centre.distance_to(p)).
+    # starter: return math.inf  # until you write step 3, every bounding circle is endless
+    # END PROMPT
     return max(centre.distance_to(p) for p in points)
     # --- end of step 3 ---
 
@@ -108,6 +121,12 @@ def time_of_impact(bullet, other, dt):
         return t, (gap.normalize() if gap.length_squared() > 0 else Vector2(1, 0))
     points = other.world_points()
     # --- step 4: the broad test against the bounding circle ---
+    # BEGIN PROMPT
+    # Step 4 (lesson: "Going Further"): the broad test. Call circle_toi() for the bullet
+    # (pos, vel, radius) against the crate's bounding circle: centre other.pos, not moving
+    # (Vector2()), radius bounding_radius(points, other.pos), over dt. If it finds no contact (None, not merely 0.0), the bullet cannot reach the crate this
+    # step: return None at once, before the exact swept test below.
+    # END PROMPT
     if circle_toi(bullet.pos, bullet.vel, bullet.radius, other.pos, Vector2(), bounding_radius(points, other.pos),
                   dt) is None:
         return None  # out of reach of the bounding circle: no polygon test needed
@@ -138,6 +157,13 @@ def swept_move(world, bullet, dt):
         return
     t, normal, other = first
     # --- step 5: move to the impact, resolve there, spend the rest of the step ---
+    # BEGIN PROMPT
+    # Step 5 (lesson: "Tunneling"): move the bullet to its time of impact
+    # (bullet.pos += bullet.vel * t), resolve the hit there with world.resolve(bullet, other, normal, point), the point being on the bullet's surface
+    # (bullet.pos + normal * bullet.radius), then spend the rest of the step, dt - t, moving with
+    # the bullet's NEW velocity.
+    # starter: bullet.pos += bullet.vel * dt  # until you write step 5, a bullet ignores the impact it found
+    # END PROMPT
     bullet.pos += bullet.vel * t
     world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
     bullet.pos += bullet.vel * (dt - t)

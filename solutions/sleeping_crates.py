@@ -60,6 +60,11 @@ def sleep_timer(timer, speed, spin, dt):
     reaches SLEEP_AFTER.
     """
     # --- step 2: the sleep timer ---
+    # BEGIN PROMPT
+    # Step 2 (the sleep timer): while the crate is calm (speed < SLEEP_SPEED and |spin| < SLEEP_SPIN)
+    # return timer + dt; one step above either threshold starts the timer again from 0.
+    # starter: return 0.0
+    # END PROMPT
     if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
         return timer + dt
     return 0.0
@@ -74,6 +79,11 @@ def moves(body):
     body moves, so a sleeping pile on the floor costs no contact tests.
     """
     # --- step 3: skip sleeping bodies ---
+    # BEGIN PROMPT
+    # Step 3 (skip sleeping bodies): static bodies (inv_mass 0) never move, and a sleeping body
+    # (body.asleep) must not move either: return False for both.
+    # starter: return body.inv_mass != 0
+    # END PROMPT
     return body.inv_mass != 0 and not body.asleep
     # --- end of step 3 ---
 
@@ -87,6 +97,11 @@ def wake_on_contact(a, b):
     each body returned together with the island it fell asleep with.
     """
     # --- step 4: wake on contact ---
+    # BEGIN PROMPT
+    # Step 4 (wake on contact): return a list of the bodies of the pair to wake: a sleeping body
+    # whose partner is dynamic and awake. The floor and walls wake nothing; [] if nothing wakes.
+    # starter: return []
+    # END PROMPT
     woken = []
     for sleeper, other in ((a, b), (b, a)):
         if sleeper.asleep and other.inv_mass != 0 and not other.asleep:

@@ -47,6 +47,13 @@ def sat(pa, pb):
     """
     best_axis, best_depth = None, math.inf
     # --- step 2: the SAT loop ---
+    # BEGIN PROMPT
+    # Step 2 (lesson: "The Separating Axis Theorem"): loop over the edge normals of
+    # both polygons (edge_normals); project pa and pb onto each axis (project). A gap
+    # on any axis means they are apart: return None. Otherwise keep the axis with
+    # the smallest overlap in best_axis and its overlap in best_depth.
+    # starter: return None  # until you write step 2, nothing ever collides
+    # END PROMPT
     for axis in edge_normals(pa) + edge_normals(pb):
         min_a, max_a = project(pa, axis)
         min_b, max_b = project(pb, axis)
@@ -57,6 +64,11 @@ def sat(pa, pb):
             best_axis, best_depth = axis, overlap
     # --- end of step 2 ---
     # --- step 3: make the normal point from A to B ---
+    # BEGIN PROMPT
+    # Step 3 (lesson: "Depth, Direction and Contact Points"): the axis may point either
+    # way. If it points from B towards A (compare it with centre_of(pb) - centre_of(pa)),
+    # turn it round, so the normal always points from A to B.
+    # END PROMPT
     if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:
         best_axis = -best_axis
     # --- end of step 3 ---
@@ -68,6 +80,11 @@ def apply_impulse(a, b, impulse, ra, rb):
     a.vel -= impulse * a.inv_mass
     b.vel += impulse * b.inv_mass
     # --- step 6: the two spin updates ---
+    # BEGIN PROMPT
+    # Step 6 (same section): the impulse also changes the spin. Update a.omega and
+    # b.omega with cross(ra, impulse) and cross(rb, impulse) times each inverse inertia,
+    # with the same signs as the two velocity lines above (A -=, B +=).
+    # END PROMPT
     a.omega -= cross(ra, impulse) * a.inv_inertia
     b.omega += cross(rb, impulse) * b.inv_inertia
     # --- end of step 6 ---
@@ -83,6 +100,10 @@ def resolve(a, b, normal, point):
     ran, rbn = cross(ra, normal), cross(rb, normal)
     k = a.inv_mass + b.inv_mass
     # --- step 4: the spin terms of the effective mass ---
+    # BEGIN PROMPT
+    # Step 4 (lesson: "Impulses That Spin, and Friction"): add each body's spin term
+    # to k: (ra × n)² / I_A and (rb × n)² / I_B, using ran, rbn and inv_inertia.
+    # END PROMPT
     k += ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia
     # --- end of step 4 ---
     e = min(a.restitution, b.restitution) if vn < -RESTING_SPEED else 0.0
@@ -98,6 +119,10 @@ def resolve(a, b, normal, point):
         jt = -rel.dot(t) / kt  # the impulse that would stop the sliding
         mu = math.sqrt(a.friction * b.friction)
         # --- step 5: Coulomb's law, |jt| <= mu * j ---
+        # BEGIN PROMPT
+        # Step 5 (same section): Coulomb's law. Friction may never be bigger than mu
+        # times the normal impulse j: keep jt between -mu * j and mu * j.
+        # END PROMPT
         jt = max(-mu * j, min(mu * j, jt))
         # --- end of step 5 ---
         apply_impulse(a, b, t * jt, ra, rb)

@@ -1,9 +1,12 @@
 """Every lab's starter is its solution with the student's steps left to write (one table, LABS).
 
 Step regions are the lines between `# --- step N: ... ---` and
-`# --- end of step N ---`. Outside them the two files must be identical line
-by line (module docstring included); inside, the solution has code and the
-starter only comments and the one-line placeholders that keep it running.
+`# --- end of step N ---`. The solution is the lab's one source: each region
+opens with its prompt block, and `python -m checker assign` (checker/assign.py)
+writes the starter from it; the committed starter must be byte for byte what
+it writes. Outside the regions the two files are then identical line by line
+(module docstring included); inside, the solution has code and the starter
+only comments and the one-line placeholders that keep it running.
 How each starter runs as handed out is tested here for Tumbling Crates and
 in test_more_shapes_starter.py / test_ball_on_ramp_starter.py for the others.
 """
@@ -12,6 +15,7 @@ import re
 
 import pytest
 
+from checker import assign, source
 from lab_run import HEIGHT, ROOT, SOLUTION, STARTER, clicks, run_lab
 
 START = re.compile(r"^\s*# --- step (\d): .+ ---$")
@@ -80,6 +84,16 @@ def test_every_registered_lab_is_in_the_table():
     assert {lab.id for lab in REGISTERED} == set(LABS)
     for lab in REGISTERED:
         assert (lab.module.SOLUTION, lab.module.STARTER) == LABS[lab.id][:2]
+
+
+@pytest.mark.parametrize("lab", LABS)
+def test_the_committed_starter_is_exactly_what_assign_writes(lab):
+    solution, starter = LABS[lab][:2]
+    with open(starter, "rb") as handle:
+        committed = handle.read()
+    written = assign.starter_text(source.read(solution), os.path.relpath(solution, ROOT)).encode("utf-8")
+    assert committed == written, (f"{os.path.relpath(starter, ROOT)} drifted from its solution: edit "
+                                  f"{os.path.relpath(solution, ROOT)} and run `python -m checker assign`")
 
 
 @pytest.mark.parametrize("lab", LABS)
