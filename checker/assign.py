@@ -24,8 +24,10 @@ copied byte for byte, so the two files cannot drift apart outside the steps.
     python -m checker assign --out DIR       write the starters into DIR (never over a file already there)
 
 Bad annotations (a region or a prompt opened and not closed, a prompt
-outside a step region, code in a prompt) are one line naming the file and
-line; that lab's starter is not written, the others are.
+outside a step region or missing from one, code in a prompt, a `# starter:`
+line outside a prompt) are one line naming the file and line; that lab's
+starter is not written, the others are. A starter is written atomically and
+keeps the permissions of the file it replaces.
 """
 import argparse
 import difflib
@@ -75,7 +77,11 @@ def _prompts(lines, regions, name):
                 raise AssignError(f"{name}, line {index + 1}: `# END PROMPT` without a `# BEGIN PROMPT` before it")
             prompts[step_at[open_at]] = (open_at, index)
             open_at = None
-        elif open_at is not None:
+        elif open_at is None:
+            if CODE.match(line) and index + 1 in comments:
+                raise AssignError(f"{name}, line {index + 1}: a `# starter:` line outside a prompt (it belongs "
+                                  "between `# BEGIN PROMPT` and `# END PROMPT`)")
+        else:
             if index not in step_at or step_at[index] != step_at[open_at]:
                 raise AssignError(f"{name}, line {open_at + 1}: the prompt is not closed (`# END PROMPT`) "
                                   f"before step {step_at[open_at]}'s region ends")
@@ -159,12 +165,24 @@ def _summary(committed, wanted):
     return f"{changed} line(s) differ, the first at line {first + 1}"
 
 
+def _mode(path):
+    """The permission bits `path` has, or those a new file gets (0o666 less the umask): mkstemp's are 0o600."""
+    try:
+        return os.stat(path).st_mode & 0o777
+    except OSError:
+        umask = os.umask(0)
+        os.umask(umask)
+        return 0o666 & ~umask
+
+
 def _write(path, data):
     """Write bytes atomically (a temporary file beside it, then a rename): never half a starter."""
+    mode = _mode(path)
     handle, temporary = tempfile.mkstemp(dir=os.path.dirname(path), prefix=".assign-", suffix=".tmp")
     try:
         with os.fdopen(handle, "wb") as out:
             out.write(data)
+        os.chmod(temporary, mode)
         os.replace(temporary, path)
     except BaseException:
         if os.path.exists(temporary):

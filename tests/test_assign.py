@@ -7,6 +7,9 @@ annotations, each refused with one line naming the file and the line.
 """
 import os
 import shutil
+import stat
+import subprocess
+import sys
 
 import pytest
 
@@ -102,6 +105,8 @@ BAD = {
                                       "    return 2 * x\n"), 11, "second prompt"),
     "prompt marker in a string": (_with("    return 2 * x\n", "    return '''\n    # BEGIN PROMPT\n'''\n"), 12,
                                   "inside a string"),
+    "placeholder outside a prompt": (_with("    return 2 * x\n", "    # starter: return 0\n    return 2 * x\n"), 11,
+                                     "outside a prompt"),
     "starter that is not Python": (_with("# starter: return None", "# starter: return (None"), None,
                                    "not Python"),
 }
@@ -188,3 +193,24 @@ def test_a_copy_of_the_project_that_drifted_fails_check(tmp_path, capsys):
     assert cli.main(["assign", "--check", "--out", str(out)]) == 1
     (line,) = capsys.readouterr().out.strip().splitlines()
     assert "bullets_starter.py differs" in line and "1 line(s) differ" in line
+
+
+def test_a_rewritten_starter_keeps_its_permissions(labs):
+    """mkstemp makes 0o600 files: a starter rewritten through one must still be readable as before."""
+    solutions, starters = labs
+    target = starters / "good_starter.py"
+    os.chmod(target, 0o644)
+    assert assign.run([str(solutions / "good.py")]) == 0
+    assert stat.S_IMODE(os.stat(target).st_mode) == 0o644
+
+
+def test_the_command_as_a_maintainer_types_it(tmp_path):
+    """`python -m checker assign --check --out DIR` in a child process: the real entry point (no zygote started)."""
+    out = tmp_path / "starters"
+    shutil.copytree(assign.STARTERS, out)
+    command = [sys.executable, "-m", "checker", "assign", "--check", "--out", str(out)]
+    done = subprocess.run(command, cwd=assign.ROOT, capture_output=True, text=True, timeout=120)
+    assert (done.returncode, done.stdout, done.stderr) == (0, "", "")
+    os.remove(out / "more_shapes_starter.py")
+    done = subprocess.run(command, cwd=assign.ROOT, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 1 and done.stdout.count("\n") == 1 and "more_shapes_starter.py is missing" in done.stdout

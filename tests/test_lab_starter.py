@@ -123,6 +123,35 @@ def test_starter_regions_hold_no_solution_code(lab, step):
     assert comments and comments[0].startswith(f"# Step {step} "), "the region's comment names its step"
 
 
+def lesson_headings():
+    """The headings of the student's lesson, lesson11/README.md, without their #s."""
+    with open(os.path.join(ROOT, "lesson11", "README.md"), encoding="utf-8") as handle:
+        return {line.lstrip("#").strip() for line in handle if line.startswith("#")}
+
+
+@pytest.mark.parametrize("lab", LABS)
+def test_step_comments_cite_sections_the_lesson_has(lab):
+    """Each step's comment names a heading of lesson11/README.md, as written there (not the seed's names)."""
+    _, starter, placeholders, _ = LABS[lab]
+    regions = split_regions(starter)[1]
+    headings = lesson_headings()
+    for step in placeholders:
+        cited = re.findall(r'lesson: "([^"]+)"', " ".join(line.strip("# ") for line in regions[step]))
+        assert cited, f"step {step}'s comment cites no section of the lesson"
+        assert set(cited) <= headings, f"step {step} cites {set(cited) - headings}, not a heading of the lesson"
+
+
+@pytest.mark.parametrize("lab, step", STEPS)
+def test_every_placeholder_says_to_replace_it(lab, step):
+    _, starter, placeholders, _ = LABS[lab]
+    with open(starter, encoding="utf-8") as handle:
+        header = handle.read().split('"""')[1]
+    assert "replace that line with your code" in header and "wasted" in " ".join(header.split())
+    for line in split_regions(starter)[1][step]:
+        if line.strip() and not line.strip().startswith("#"):   # a placeholder: what it stands in for, and to replace it
+            assert f"  # until you write step {step}, " in line and line.endswith(": replace this placeholder"), line
+
+
 @pytest.mark.parametrize("lab", LABS)
 def test_starter_comments_number_every_step(lab):
     _, starter, _, steps = LABS[lab]
