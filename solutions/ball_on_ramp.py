@@ -1,4 +1,4 @@
-"""Ball on the Ramp: a Lesson 11 lab ("Going Further").
+"""Ball on the Ramp: a Lesson 11 lab ("Going further").
 
 A solid ball rolls down the crates lab's 22° ramp, drops onto the floor
 and knocks crates over. Your circle_polygon() finds where the ball touches a

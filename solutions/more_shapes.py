@@ -1,4 +1,4 @@
-"""More Shapes: a Lesson 11 "Going Further" exercise.
+"""More Shapes: a Lesson 11 "Going further" exercise.
 
 Triangles, pentagons, hexagons and little houses join the crates of the
 lesson's project, on the same floor, 22° ramp and wall. The physics is the lesson's:

@@ -1,4 +1,4 @@
-"""Sleeping Crates: a Lesson 11 "Going Further" exercise.
+"""Sleeping Crates: a Lesson 11 "Going further" exercise.
 
 Forty crates in a pile cost the World a contact search over every pair, five
 times a step, even when nothing in the pile moves. Sleeping stops paying for

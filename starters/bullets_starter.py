@@ -1,4 +1,4 @@
-"""Bullets: a Lesson 11 lab ("Going Further").
+"""Bullets: a Lesson 11 lab ("Going further").
 
 A gun on the left fires small, fast circles at a 4 px wall and at crates on
 the floor. Checked only where they are once per step, the bullets jump
