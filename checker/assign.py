@@ -198,7 +198,7 @@ def run(paths, out=None, check=False, stdout=None, stderr=None):
     """
     stdout, stderr = stdout or sys.stdout, stderr or sys.stderr
     folder = os.path.abspath(out or STARTERS)
-    own = folder == os.path.abspath(STARTERS)
+    own = os.path.realpath(folder) == os.path.realpath(STARTERS)
     if not check and not os.path.isdir(folder):
         print(f"checker assign: error: --out {out}: no such folder", file=stderr)
         return 2

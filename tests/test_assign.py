@@ -71,6 +71,8 @@ def test_a_prompt_becomes_the_region_and_everything_else_is_copied():
 
 
 def test_line_ends_are_kept_byte_for_byte():
+    """On Windows a checkout with core.autocrlf gives solution and starter CRLF ends alike; assign keeps each line's
+    end, so --check holds there too (emulated here by converting the text, not by a Windows checkout)."""
     crlf = SOLUTION.replace("\n", "\r\n")
     assert assign.starter_text(crlf, "lab.py") == STARTER.replace("\n", "\r\n")
     assert assign.starter_text(SOLUTION.rstrip("\n"), "lab.py") == STARTER.rstrip("\n")
@@ -148,6 +150,14 @@ def test_default_rewrites_only_the_starters_and_one_bad_file_is_one_error(labs, 
     assert (starters / "notes.txt").read_text(encoding="utf-8") == "mine\n"
     assert len(err.strip().splitlines()) == 1 and "broken.py, line 23" in err
     assert "good_starter.py: written" in out
+
+
+def test_a_missing_solution_is_one_error_row(labs, capsys):
+    solutions, starters = labs
+    assert cli.main(["assign", str(solutions / "gone.py"), str(solutions / "good.py")]) == 1
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert "gone.py: cannot read it" in line
+    assert (starters / "good_starter.py").read_text(encoding="utf-8") == STARTER
 
 
 def test_check_writes_nothing_and_names_each_drift_in_one_line(labs, capsys):
