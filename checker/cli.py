@@ -213,6 +213,9 @@ def main(argv=None):
     if argv[:1] == ["package"]:  # python -m checker package PLATFORM --out ...: see checker/package.py
         from . import package
         return package.main(argv[1:])
+    if argv[:1] == ["assign"]:  # python -m checker assign [--check] [--out DIR]: see checker/assign.py
+        from . import assign
+        return assign.main(argv[1:])
     try:
         args = parse_args(argv)
         if args.list:

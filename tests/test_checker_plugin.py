@@ -1,6 +1,7 @@
 """A lab is one module: a new lab is graded without touching child.py, grade.py, cli.py or report.py.
 
-The test writes a toy lab's checks module, probe module and starter (the handout: the parent
+The test writes a toy lab's checks module, probe module and starter (the handout, written from the toy's
+annotated solution by checker/assign.py as every lab's is: the parent
 replays the probe's calls of the step functions through it) into a fresh folder of checker/labs/,
 as a real lab is added, and a student file into a temporary folder; it adds one row to checker.labs.LABS for this process only, and grades the
 toy file with the command line in-process: the probe runs in the child (which imports the
@@ -17,15 +18,20 @@ import uuid
 
 import pytest
 
-from checker import cli, labs
+from checker import assign, cli, labs
 
-STUDENT = '''
+# the toy lab's one source, annotated as a real lab's solution is (checker/assign.py); the student hands it in
+SOLUTION = '''
 """Toy Lab: a made-up exercise for the plug-in test."""
 from lesson11 import runtime as lab
 
 
 def double(x):
     # --- step 1: double x ---
+    # BEGIN PROMPT
+    # Step 1: return twice x.
+    # starter: return None  # placeholder: replace this line with your step 1
+    # END PROMPT
     return 2 * x
     # --- end of step 1 ---
 
@@ -50,7 +56,7 @@ def probe_double(module, lab_path):
 PROBES = {"double": ("double", probe_double)}
 '''
 
-STARTER = STUDENT.replace("    return 2 * x\n", "    return None\n")
+STARTER = assign.starter_text(SOLUTION, "the toy lab's solution")   # made the way every lab's starter is
 
 CHECKS = '''
 """The toy lab's checks."""
@@ -114,7 +120,7 @@ def toy_lab(tmp_path, monkeypatch):
             with open(os.path.join(folder, name), "w", encoding="utf-8") as handle:
                 handle.write(text)
         student = tmp_path / "toy.py"
-        student.write_text(STUDENT, encoding="utf-8")
+        student.write_text(SOLUTION, encoding="utf-8")
         module = importlib.import_module(package + ".checks")
         monkeypatch.setattr(labs, "LABS", labs.LABS + (labs.Lab("toy_lab", module.TITLE, module),))
         yield student

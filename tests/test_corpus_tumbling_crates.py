@@ -98,7 +98,8 @@ def test_each_entry_builds_from_the_starter_and_wrong_ones_differ_from_the_corre
     source = corpus.build(entry.name)  # raises AssertionError naming the entry when an edit no longer fits
     compile(source, entry.name + ".py", "exec")
     assert "Tumbling Crates" in source.split('"""')[1], "the checker recognises the lab by its docstring's title"
-    assert "return None  # until you write step 2" not in source or entry.name == "sat_placeholder_left"
+    placeholders = [line for line in source.splitlines() if line.strip().startswith("return None  # until you write")]
+    assert not placeholders or entry.name == "sat_placeholder_left"   # (the solution's prompt quotes it as a comment)
     reference = corpus.build("correct_solution_steps")
     if entry.check != "pass":
         assert source != reference
