@@ -56,6 +56,7 @@ class Entry(NamedTuple):
     step: object         # the lesson step the failing check's hint names (None for correct / outside)
     status: tuple        # accepted statuses of that check
     why: str
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
 
 
 def _code(text):

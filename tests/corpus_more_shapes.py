@@ -54,6 +54,7 @@ class Entry(NamedTuple):
     status: tuple        # accepted statuses of that check
     also: tuple          # other checks this mistake may fail too
     why: str             # the input that shows the mistake, or why a correct variant is correct
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
 
 
 def _code(text):

@@ -70,6 +70,7 @@ class Entry(NamedTuple):
     status: tuple        # accepted statuses of that check: ("fail",), ("error",) or both
     also: tuple          # other non-function checks this mistake may fail too (e.g. runtime_lines)
     why: str             # the input that shows the mistake, or why a correct variant is correct
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
 
 
 def _code(text):
