@@ -25,6 +25,7 @@ import os
 from . import probes
 from . import scenes
 from ... import lab_checks
+from ...causes import consistent_mistake
 from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 from ...records import finite
@@ -198,17 +199,6 @@ CLOSEST_MISTAKES = {
     "undivided": ("t = (p - a)·ab is not divided by ab·ab = |ab|²", "closest"),
     "from_b": ("t is measured from b, (p - b)·ab, where the lesson measures from a, (p - a)·ab", "closest"),
 }
-
-
-def consistent_mistake(cases, matches, first):
-    """The one name among `first`'s mistakes whose answer matches the student's in every case, else None.
-
-    A wrong value is explained by a formula only when no case tells them apart, and only one formula
-    fits: two that give the same values on every case are not told apart, so neither is named.
-    `matches(case, name)` says whether the student's answer in `case` is that of mistake `name`.
-    """
-    fitting = [name for name in first if all(matches(case, name) for case in cases)]
-    return fitting[0] if len(fitting) == 1 else None
 
 
 @CHECKS.check(depends=["loads"])
