@@ -192,7 +192,7 @@ def _toi_ok(got, want):
 
 # the known wrong roots of step 2, by the name the probe gives their times (probes._toi_reference)
 TOI_MISTAKES = {
-    "no_two": "that is what (-b - √disc) / a gives in every case, twice the first-contact time (past dt, None): the 2 "
+    "no_two": "that is what (-b - √disc) / a gives in every case, twice the first-contact time: the 2 "
               "of 2a is missing",
     "four": "that is what (-b - √disc) / (4a) gives in every case, half the first-contact time: divide by 2a",
     "a_unsquared": "that is the root with a = |dv|; the quadratic's a is dv·dv = |dv|²",
