@@ -236,7 +236,8 @@ WRONG = [
             den += area2
         return 6 * den / (mass * num)
     """}, why="the triangle's 433.5 comes back as 0.0023"),
-    wrong("axes_not_unit", "builds the edge normals by hand, (-edge.y, edge.x), never normalised", "parallel_axes", {5: """
+    wrong("axes_not_unit", "builds the edge normals by hand, (-edge.y, edge.x), never normalised", "parallel_axes",
+          {5: """
         for points in (pa, pb):
             for i, a in enumerate(points):
                 edge = points[(i + 1) % len(points)] - a

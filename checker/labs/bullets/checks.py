@@ -269,7 +269,8 @@ def bounding_circle(sub, functions):
             continue
         text = f"for {case['case']}, bounding_radius() returned {_time(got).replace(' s', ' px')}; expected the " \
                f"farthest corner's distance, {want:.3f} px"
-        named = consistent_mistake(cases, lambda c, name: isinstance(c["got"], float) and _close(c["got"], c["forms"][name]),
+        named = consistent_mistake(cases, lambda c, name: isinstance(c["got"], float)
+                                   and _close(c["got"], c["forms"][name]),
                                    [name for name, value in case["forms"].items() if not _close(value, want)])
         if named:
             text += f": {BOUNDING_MISTAKES[named].format(want=want, want_sq=want * want)}"
@@ -321,9 +322,9 @@ SWEPT_TEXT = {
     "stops": "the bullet stopped at the impact: the rest of the step (dt - t) was not spent",
     "old_velocity": "the bullet was resolved at the impact but spent the step with its velocity from before the hit "
                     "(it went on through)",
-    "no_impulse": "nothing changed at the impact, as if no impulse was applied: either resolve() was not called there, "
-                  "or it was given the normal reversed (resolve(..., -normal, ...)), so it saw the bodies moving apart; "
-                  "the normal time_of_impact gives points from the bullet into the other body",
+    "no_impulse": "nothing changed at the impact, as if no impulse was applied: either resolve() was not called "
+                  "there, or it was given the normal reversed (resolve(..., -normal, ...)), so it saw the bodies "
+                  "moving apart; the normal time_of_impact gives points from the bullet into the other body",
     "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
     "far_side": "the impulse was applied on the far side of the bullet; the contact point is on the bullet's "
                 "surface towards the crate, bullet.pos + normal * radius, and its lever arm sets the crate's spin",

@@ -195,7 +195,8 @@ def _corner_mistake(case, got):
 CORNER_MISTAKES = {
     "degrees": "these are the corners at θk = 360k / sides taken as radians: math.cos and math.sin take radians, "
                "θk = 2πk / sides",
-    "half_turn": "these are the corners at θk = πk / sides, spread over half a turn: θk = 2πk / sides (π instead of 2π)",
+    "half_turn": "these are the corners at θk = πk / sides, spread over half a turn: θk = 2πk / sides "
+                 "(π instead of 2π)",
     "sin_cos": "your x and y are swapped: x = radius cos θk, y = radius sin θk (yours takes x from sin, y from cos)",
 }
 
