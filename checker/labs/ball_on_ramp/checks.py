@@ -25,7 +25,7 @@ import os
 from . import probes
 from . import scenes
 from ... import lab_checks
-from ...causes import consistent_mistake
+from ...causes import arguments_hint, consistent_mistake
 from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 from ...records import finite
@@ -436,7 +436,7 @@ def friction_rolls(sub, functions):
             raise Fail(f"in '{case['case']}', resolve() changed its argument {name} in place (to {_vec(now)}): the "
                        f"World goes on using the contact's {name} for its other contact points and the push-out. Make "
                        f"new vectors (normal.rotate(90) is a new vector; t = normal then t.rotate_ip(...) turns the "
-                       f"caller's).", HINTS["friction_missing"])
+                       f"caller's).", arguments_hint(7, "resolve"))
     for case in cases:
         got, variants = case["got"], case["variants"]
         if _state_matches(got, variants["right"]):

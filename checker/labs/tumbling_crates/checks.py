@@ -26,7 +26,7 @@ import re
 from . import probes
 from . import scenes
 from ... import lab_checks
-from ...causes import consistent_mistake
+from ...causes import arguments_hint, consistent_mistake
 from ... import records as metrics
 from ...checks import Error, Fail, Hint, Passed, Registry
 from ...common import describe_run_failure, shown
@@ -415,7 +415,7 @@ def resolve_friction(sub, functions):
     """Step 5: resolve() clamps friction with Coulomb's law, |jt| <= mu j, and leaves smaller jt alone."""
     cases = _function(sub, functions, "resolve", "resolve", 5)
     _unchanged_arguments(cases, "resolve", "the World goes on using the contact's {name} for its other contact "
-                         "points and the push-out", HINTS["friction_clamp"])
+                         "points and the push-out", arguments_hint(5, "resolve"))
     graded = [case for case in cases if case["friction"] is not None and case["j"] is not None]
     if not graded:   # nothing to compare is no pass: a resolve() that returns before step 4 applies no impulse
         said = "applied no impulse" if all(case["calls"] == 0 for case in cases) else "left no slip to stop"
@@ -486,7 +486,7 @@ def apply_impulse_spin(sub, functions):
     """Step 6: apply_impulse() changes both spins, A by -(ra × P)/I_A and B by +(rb × P)/I_B."""
     cases = _function(sub, functions, "apply_impulse", "apply_impulse", 6)
     _unchanged_arguments(cases, "apply_impulse", "resolve() goes on using its {name} for the friction impulse",
-                         HINTS["spin_terms"])
+                         arguments_hint(6, "apply_impulse"))
     for case in cases:
         for body in ("a", "b"):
             before, after, want = case["before"][body], case["after"][body], case["expected"][body]
