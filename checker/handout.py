@@ -274,8 +274,9 @@ def _diff(mine, theirs, out):
 
 
 def _code_part(text):
-    """A line without its comment (roughly: from the first #), to tell a changed line from a changed comment."""
-    return text.split("#", 1)[0].strip()
+    """A line without its comment (roughly: from the first #) and its spaces, to tell a changed line from a
+    changed comment or a reformatted one."""
+    return "".join(text.split("#", 1)[0].split())
 
 
 def _differing_lines(x, y, my_origin, their_origin, sub_lines, start_lines):
