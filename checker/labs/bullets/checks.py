@@ -26,6 +26,7 @@ import os
 
 from . import probes
 from ... import lab_checks
+from ...causes import consistent_mistake
 from ...checks import Fail, Hint, Passed, Registry
 from ...records import FPS, SEED, finite
 
@@ -191,6 +192,22 @@ def _toi_ok(got, want):
     return isinstance(got, float) and abs(got - want) <= TOI_TOLERANCE
 
 
+# the known wrong roots of step 2, by the name the probe gives their times (probes._toi_reference)
+TOI_MISTAKES = {
+    "no_two": "that is what (-b - √disc) / a gives in every case, twice the first-contact time: the 2 "
+              "of 2a is missing",
+    "four": "that is what (-b - √disc) / (4a) gives in every case, half the first-contact time: divide by 2a",
+    "a_unsquared": "that is the root with a = |dv|; the quadratic's a is dv·dv = |dv|²",
+}
+
+
+def _toi_mistake(cases, case):
+    """The sentence of the known wrong root that gives the student's time in every case, or ''."""
+    named = consistent_mistake(cases, lambda c, name: _toi_ok(c["got"], c["forms"][name]),
+                               [name for name, value in case["forms"].items() if not _toi_ok(value, case["want"])])
+    return TOI_MISTAKES.get(named, "")
+
+
 @CHECKS.check(depends=["loads"], max_score=2)
 def toi_matches_root(sub, functions):
     """Step 2: circle_toi() equals the analytic first-contact time within 1e-9 s (head-on, glancing, already
@@ -220,6 +237,8 @@ def toi_matches_root(sub, functions):
             elif got > case["dt"]:
                 text += f": later than this step's dt = {case['dt']:.4g} s"
             hint = HINTS["toi_apart"]
+        elif _toi_mistake(cases, case):
+            text += f": {_toi_mistake(cases, case)}"
         elif want is not None and got is None:
             text += ": the circles do touch within the step"
         raise Fail(text + ".", hint)
@@ -228,6 +247,19 @@ def toi_matches_root(sub, functions):
 
 
 # ---------------------------------------------------------------- step 3: bounding_radius
+
+# the known wrong bounding radii, by the name the probe gives their values (probes._bounding_reference)
+BOUNDING_MISTAKES = {
+    "squared": "that is the squared distance ({want:.2f}² = {want_sq:.1f}): take the distance itself, its square root",
+    "from_origin": "that is the farthest corner's distance from (0, 0); measure from the crate's centre, "
+                   "centre.distance_to(p)",
+    "half_side": "that is the largest |x| or |y| offset from the centre (half a side), not a distance: a corner is "
+                 "farther",
+    "half_width": "that is the largest |x - centre.x| (half the width), not a distance: a corner is farther",
+    "nearest": "that is the nearest corner's distance; the circle must reach the farthest (max, not min)",
+    "average": "that is the average distance to the corners; the circle must reach the farthest (max)",
+}
+
 
 @CHECKS.check(depends=["loads"])
 def bounding_circle(sub, functions):
@@ -239,7 +271,12 @@ def bounding_circle(sub, functions):
             continue
         text = f"for {case['case']}, bounding_radius() returned {_time(got).replace(' s', ' px')}; expected the " \
                f"farthest corner's distance, {want:.3f} px"
-        if isinstance(got, float) and got < want:
+        named = consistent_mistake(cases, lambda c, name: isinstance(c["got"], float)
+                                   and _close(c["got"], c["forms"][name]),
+                                   [name for name, value in case["forms"].items() if not _close(value, want)])
+        if named:
+            text += f": {BOUNDING_MISTAKES[named].format(want=want, want_sq=want * want)}"
+        elif isinstance(got, float) and got < want:
             text += ": corners stick out of that circle, so bullets aimed at them are skipped"
         raise Fail(text + ".", HINTS["bounding"])
     return Passed(f"the bounding circle reaches the farthest corner in all {len(cases)} shapes", value=cases)
@@ -285,12 +322,23 @@ def broad_test(sub, functions):
 
 SWEPT_TEXT = {
     "stops": "the bullet stopped at the impact: the rest of the step (dt - t) was not spent",
-    "old_velocity": "the bullet spent the step with its velocity from before the hit (it went on through)",
-    "no_resolve": "the bullet moved on through without a resolve() at the impact",
+    "old_velocity": "the bullet was resolved at the impact but spent the step with its velocity from before the hit "
+                    "(it went on through)",
+    "no_impulse": "nothing changed at the impact, as if no impulse was applied: either resolve() was not called "
+                  "there, or it was given the normal reversed (resolve(..., -normal, ...)), so it saw the bodies "
+                  "moving apart; the normal time_of_impact gives points from the bullet into the other body",
     "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
     "far_side": "the impulse was applied on the far side of the bullet; the contact point is on the bullet's "
                 "surface towards the crate, bullet.pos + normal * radius, and its lever arm sets the crate's spin",
 }
+
+
+def _same_outcome(got, want):
+    """The bullet's position and velocity and every other body's position, velocity and spin agree."""
+    return _same_point(got["bullet"]["pos"], want["bullet"]["pos"]) and \
+        _same_point(got["bullet"]["vel"], want["bullet"]["vel"]) and len(got["others"]) == len(want["others"]) and \
+        all(_same_point(g["vel"], w["vel"]) and _same_point(g["pos"], w["pos"])
+            and _close(g.get("omega", 0.0), w.get("omega", 0.0)) for g, w in zip(got["others"], want["others"]))
 
 
 @CHECKS.check(depends=["loads"])
@@ -299,14 +347,12 @@ def swept_move_resolves(sub, functions):
     cases = _function(sub, functions, "swept_move", "swept_move", 5)
     for case in cases:
         got, want = case["got"], case["want"]
-        ok = _same_point(got["bullet"]["pos"], want["bullet"]["pos"]) and \
-            _same_point(got["bullet"]["vel"], want["bullet"]["vel"]) and \
-            all(_same_point(g["vel"], w["vel"]) and _same_point(g["pos"], w["pos"])
-                and _close(g.get("omega", 0.0), w.get("omega", 0.0))
-                for g, w in zip(got["others"], want["others"]))
-        if ok:
+        if _same_outcome(got, want):
             continue
-        named = next((key for key, pos in case["variants"].items() if _same_point(got["bullet"]["pos"], pos)), None)
+        # a case without a hit has no mistakes' outcomes: there every mistake moves the bullet as the lesson does
+        named = consistent_mistake(cases, lambda c, key: _same_outcome(c["got"], c["variants"].get(key, c["want"])),
+                                   [key for key, outcome in case["variants"].items()
+                                    if not _same_outcome(outcome, want)])
         where = f"in '{case['case']}'" + (f" (impact at t = {case['t'] * 1000:.3f} ms)" if case["t"] is not None else "")
         text = (f"{where}, after swept_move() the bullet is at {_vec(got['bullet']['pos'])} moving "
                 f"{_vec(got['bullet']['vel'])} px/s; expected {_vec(want['bullet']['pos'])} moving "
