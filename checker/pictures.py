@@ -27,6 +27,9 @@ import re
 import threading
 from dataclasses import dataclass
 
+# the video driver the user's environment named (None: SDL picks the desktop's), before the pictures' own default:
+# --show (checker/show.py) opens its window with it
+USER_VIDEO_DRIVER = os.environ.get("SDL_VIDEODRIVER")
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")

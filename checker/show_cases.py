@@ -1,0 +1,260 @@
+"""The failing cases of a function check, drawn (python -m checker FILE --show).
+
+The data are the probe's, judged on the grading side (checker/probing.py): each case holds the
+inputs, the student's answer ("got", recorded in the child) and the lesson's (computed here). Nothing
+of the student's code runs in this process.
+
+  SatCase      a pair of shapes, every candidate axis with both shadows (lesson11/explorer.py's drawing),
+               the lesson's axis and depth (yellow, the explorer's MTV) and the student's (magenta)
+  ImpulseCase  the two bodies around the contact, the impulse, each body's velocity change as arrows
+               (the lesson's and the student's) and its spin change as arcs
+
+failing_cases(lab, result, functions) -> [case], each with draw(surface), key(key) and lines().
+"""
+import math
+
+import pygame
+from pygame import Vector2
+
+from lesson11.physics2d import Body, centre_of
+
+TOUCHING = 1e-6     # px: a depth this small for shapes exactly touching counts as apart (the labs' own)
+CLOSE = 1e-7        # relative and absolute: the function checks' tolerance
+STUDENT = (235, 70, 200)   # the student's answer: magenta (the lesson's stays the explorer's yellow)
+LESSON = (250, 220, 80)
+TEXT = (230, 230, 230)
+SIZE = (900, 600)
+
+
+def _close(got, want):
+    return abs(got - want) <= CLOSE + CLOSE * abs(want)
+
+
+def _font(size=22):
+    if not pygame.font.get_init():
+        pygame.font.init()
+    return pygame.font.Font(None, size)
+
+
+def _vec(v):
+    return f"({v[0] + 0.0:.2f}, {v[1] + 0.0:.2f})"
+
+
+def _arrow(surface, colour, start, end, width=3):
+    from lesson11.explorer import draw_arrow
+    draw_arrow(surface, colour, start, end, width)
+
+
+# ---------------------------------------------------------------- SAT
+
+def sat_wrong(case, check_id):
+    """True when the student's sat() answer for this case is not the lesson's (as the check judges it):
+    apart / overlapping, the depth (either accepted depth), the axis up to sign; for sat_normal, also a
+    normal pointing from B to A or a negative depth."""
+    got, want, short = case.get("got"), case.get("lesson"), case.get("short")
+    if got is not None and "bad" in got:
+        return True
+    if want is None:
+        return got is not None and abs(got["depth"]) > TOUCHING
+    if got is None:
+        return True
+    matches = [ref for ref in (want, short) if ref and _close(abs(got["depth"]), ref["depth"])]
+    if not matches:
+        return True
+    ref = matches[0]["normal"]
+    if abs(abs(got["normal"][0] * ref[0] + got["normal"][1] * ref[1]) - 1) > 1e-6:
+        return True
+    if check_id == "sat_normal":
+        towards_b = ((case["centre_b"][0] - case["centre_a"][0]) * got["normal"][0]
+                     + (case["centre_b"][1] - case["centre_a"][1]) * got["normal"][1])
+        return got["depth"] < 0 or towards_b < 0
+    return False
+
+
+def _body(points, shift, colour):
+    """A mass-0 Body whose world corners are `points` moved by `shift` (px)."""
+    centre = centre_of([Vector2(p) for p in points])
+    local = [Vector2(p) - centre for p in points]
+    return Body(local, centre + shift, 0, color=colour)
+
+
+class SatCase:
+    """One sat() case drawn as the SAT explorer draws two boxes, with both answers."""
+
+    kind = "sat"
+
+    def __init__(self, case, number, count):
+        from lesson11 import explorer
+        self.case, self.number, self.count = case, number, count
+        _font()   # the explorer's fonts need pygame.font ready
+        self.view = explorer.Explorer(*SIZE)
+        a, b = case["a"], case["b"]
+        middle = (centre_of([Vector2(p) for p in a]) + centre_of([Vector2(p) for p in b])) / 2
+        shift = Vector2(SIZE[0] / 2, SIZE[1] / 2 + 20) - middle
+        self.shift = shift
+        self.view.blue = _body(a, shift, explorer.BLUE)
+        self.view.orange = _body(b, shift, explorer.ORANGE)
+        self.view.axis_index = self._best_axis()
+
+    def _best_axis(self):
+        """The axis of the lesson's answer (the smallest overlap), or the first that shows a gap."""
+        hit = self.view.hit()
+        axes = self.view.axes()
+        for index, (_, _, normal) in enumerate(axes):
+            if hit is None and self.view.separates(normal):
+                return index
+            if hit is not None and abs(abs(normal.dot(hit[0])) - 1) < 1e-9:
+                return index
+        return 0
+
+    def key(self, key):
+        """N / Space: the next candidate axis."""
+        if key in (pygame.K_n, pygame.K_SPACE):
+            self.view.next_axis()
+            return True
+        return False
+
+    def answers(self):
+        """(the student's answer, the lesson's) as text."""
+        def said(hit):
+            if hit is None:
+                return "apart (None)"
+            if "bad" in hit:
+                return f"returned {hit['bad']}"
+            return f"depth {hit['depth']:.2f} px along {_vec(hit['normal'])}"
+        return said(self.case.get("got")), said(self.case.get("lesson"))
+
+    def lines(self):
+        yours, lesson = self.answers()
+        order = " with A and B swapped" if self.case.get("order") == "B, A" else ""
+        return [f"failing case {self.number} of {self.count}: '{self.case.get('pair')}'{order}  (blue A, orange B)",
+                f"yours (magenta): {yours}", f"the lesson's (yellow): {lesson}"]
+
+    def draw(self, surface):
+        self.view.draw(surface)
+        got = self.case.get("got")
+        if got is not None and "bad" not in got:
+            normal, depth = Vector2(got["normal"]), got["depth"]
+            orange = self.view.orange
+            ghost = [p + normal * depth for p in orange.world_points()]
+            pygame.draw.polygon(surface, STUDENT, ghost, 2)
+            _arrow(surface, STUDENT, orange.pos, orange.pos + normal * max(abs(depth), 12) *
+                   (1 if depth >= 0 else -1), 3)
+        _footer(surface, self.lines(), "N/Space: next axis   [ ]: previous/next case   Tab: the scene   Esc: quit")
+
+
+def _footer(surface, lines, help_text):
+    """The case's text lines at the bottom of the case view, over a dark band."""
+    font = _font()
+    top = SIZE[1] - 30 - 24 * len(lines)
+    pygame.draw.rect(surface, (16, 18, 24), (0, top - 6, SIZE[0], SIZE[1] - top + 6))
+    for row, line in enumerate(lines):
+        colour = STUDENT if line.startswith("yours") else LESSON if line.startswith("the lesson") else TEXT
+        surface.blit(font.render(line, True, colour), (20, top + 24 * row))
+    surface.blit(font.render(help_text, True, (160, 165, 180)), (20, SIZE[1] - 26))
+
+
+# ---------------------------------------------------------------- apply_impulse
+
+def impulse_wrong(case):
+    """True when the student's velocities or spins after apply_impulse differ from the lesson's."""
+    for side in ("a", "b"):
+        after, want = case["after"][side], case["expected"][side]
+        if not all(_close(g, w) for g, w in zip(after["vel"], want["vel"])) or \
+                not _close(after["omega"], want["omega"]):
+            return True
+    return False
+
+
+class ImpulseCase:
+    """One apply_impulse() case: the contact, the impulse, each body's velocity and spin change, both answers."""
+
+    kind = "impulse"
+    SCALE = 3.0     # screen px per px of lever arm
+    ARROW = 0.6     # screen px per px/s of velocity change
+
+    def __init__(self, case, number, count):
+        self.case, self.number, self.count = case, number, count
+
+    def key(self, key):
+        return False
+
+    def changes(self, side):
+        """(the student's (Δv, Δω), the lesson's) for body `side` ("a" or "b")."""
+        before, after, want = self.case["before"][side], self.case["after"][side], self.case["expected"][side]
+
+        def delta(state):
+            return (Vector2(state["vel"]) - Vector2(before["vel"]), state["omega"] - before["omega"])
+        return delta(after), delta(want)
+
+    def lines(self):
+        out = [f"failing case {self.number} of {self.count}: '{self.case['case']}'"]
+        for side in ("a", "b"):
+            (dv, dw), (lv, lw) = self.changes(side)
+            out.append(f"yours {side.upper()}: dv {_vec(dv)} px/s, dw {dw:+.4g} rad/s")
+            out.append(f"the lesson's {side.upper()}: dv {_vec(lv)} px/s, dw {lw:+.4g} rad/s")
+        return out
+
+    def draw(self, surface):
+        surface.fill((24, 26, 34))
+        font = _font()
+        contact = Vector2(SIZE[0] / 2, 230)
+        impulse = Vector2(self.case["impulse"])
+        longest = max([d.length() for side in ("a", "b") for d, _ in self.changes(side)] + [1e-9])
+        scale = min(self.ARROW, 160 / longest)   # the longest arrow at most 160 px
+        for side, colour in (("a", (70, 130, 235)), ("b", (245, 150, 40))):
+            centre = contact - Vector2(self.case["r" + side]) * self.SCALE
+            pygame.draw.circle(surface, colour, centre, 10)
+            pygame.draw.line(surface, colour, centre, contact, 1)
+            surface.blit(font.render(side.upper(), True, colour), centre + Vector2(12, -22))
+            (dv, dw), (lv, lw) = self.changes(side)
+            _arrow(surface, LESSON, centre, centre + lv * scale, 5)
+            _arrow(surface, STUDENT, centre, centre + dv * scale, 2)
+            for spin, colour_, radius in ((lw, LESSON, 26), (dw, STUDENT, 34)):
+                _spin_arc(surface, colour_, centre, radius, spin)
+        pygame.draw.circle(surface, (235, 80, 80), contact, 5)
+        if impulse.length() > 0:
+            _arrow(surface, TEXT, contact, contact + impulse.normalize() * 60, 2)
+            surface.blit(font.render("impulse P", True, TEXT), contact + impulse.normalize() * 66)
+        _footer(surface, self.lines(), "arrows: velocity change (same scale), arcs: spin change   [ ]: case   Tab: scene")
+
+
+def _spin_arc(surface, colour, centre, radius, spin):
+    """An arc around `centre` whose length shows a spin change (rad/s; clockwise on screen when positive)."""
+    if abs(spin) < 1e-12:
+        return
+    sweep = max(min(abs(spin), 6.0), 0.15)
+    rect = pygame.Rect(0, 0, 2 * radius, 2 * radius)
+    rect.center = (round(centre.x), round(centre.y))
+    start = -math.pi / 2
+    if spin > 0:
+        pygame.draw.arc(surface, colour, rect, -sweep + start + math.pi, start + math.pi, 3)
+    else:
+        pygame.draw.arc(surface, colour, rect, start, start + sweep, 3)
+
+
+# ---------------------------------------------------------------- which cases, per check
+
+SAT_PROBES = {"sat_axes": ("sat_step2", "sat"), "sat_normal": ("sat",)}
+IMPULSE_PROBES = {"apply_impulse_spin": "apply_impulse"}
+
+
+def _data(functions, name):
+    entry = functions.get(name) or {}
+    return entry.get("data") if entry.get("ok") else None
+
+
+def failing_cases(lab, result, functions):
+    """The failing cases of a failed function check, as drawable cases ([] for other checks or no data)."""
+    if result.status not in ("fail", "error"):
+        return []
+    for name in SAT_PROBES.get(result.id, ()):
+        data = _data(functions, name)
+        if data:
+            wrong = [case for case in data if "lesson" in case and sat_wrong(case, result.id)]
+            return [SatCase(case, k + 1, len(wrong)) for k, case in enumerate(wrong)]
+    if result.id in IMPULSE_PROBES:
+        data = _data(functions, IMPULSE_PROBES[result.id]) or []
+        wrong = [case for case in data if "expected" in case and impulse_wrong(case)]
+        return [ImpulseCase(case, k + 1, len(wrong)) for k, case in enumerate(wrong)]
+    return []
