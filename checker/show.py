@@ -87,12 +87,14 @@ class Quantity:
     """What a check measures per frame: a label with its unit, how to measure a frame, its bound.
 
     measure: a frame -> a number, or a class taking the run's frames (a measure relative to the start);
-    bound: the check's bound in the same unit, or None; above: True when exceeding the bound fails.
+    bound: the check's bound in the same unit, or None; above: True when exceeding the bound fails;
+    at_end: True when the check judges the run's end only (a frame before it may exceed the bound).
     """
     label: str
     measure: object
     bound: float | None = None
     above: bool = True
+    at_end: bool = False
 
 
 def _bound(lab, name, default=None, scale=1.0):
@@ -114,7 +116,8 @@ def series_for(lab, check_id):
         "rolls_without_slipping": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
         "slides_without_friction": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
         "knocks_crate_over": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
-        "pushed_out_of_crate": Quantity("ball into the crate (px)", ball_depth, _bound(lab, "INSIDE_DEPTH")),
+        "pushed_out_of_crate": Quantity("ball into the crate (px)", ball_depth, _bound(lab, "INSIDE_DEPTH"),
+                                        at_end=True),
         "pile_sleeps": Quantity("crates awake", awake_count, 0.0),
         "no_sleep_in_air": Quantity("crates awake", awake_count),
         "drop_wakes_pile": Quantity("crates awake", awake_count),
@@ -215,6 +218,8 @@ def target(row, check_id=None):
 def _first_crossing(frames, values, quantity):
     if quantity is None or quantity.bound is None:
         return None
+    if quantity.at_end:
+        frames, values = frames[-1:], values[-1:]
     for frame, value in zip(frames, values):
         if (value > quantity.bound) if quantity.above else False:
             return frame["frame"]
@@ -316,9 +321,10 @@ def display_problem(environ=None, platform=None):
     return "" if environ.get("DISPLAY") or environ.get("WAYLAND_DISPLAY") else NO_DISPLAY
 
 
-def main(args, entries, events=None, frames=None, out=sys.stdout, err=sys.stderr):
+def main(args, entries, events=None, frames=None, out=None, err=None):
     """Run --show for the command line (one entry); returns the exit status. events / frames: for tests
     (an event source and a frame limit, checker/show_view.py)."""
+    out, err = out or sys.stdout, err or sys.stderr
     entry = entries[0]
     if not entry.gradable:
         print(f"checker: {entry.path}: not graded: {entry.problem}", file=err)

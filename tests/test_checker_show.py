@@ -1,0 +1,223 @@
+"""python -m checker FILE --show (issue 30), driven headless as a student would use it.
+
+The tests set SDL's dummy video and audio drivers themselves and script the keys through the viewer's
+event source (checker/show_view.py run(events=...)); a real desktop window differs only in that
+pygame.event.get() delivers the keys. For every lab one file of its mistake corpus (tests/corpus_<lab>.py)
+with one wrong step is shown: --show opens on that step's check, the student's replayed run is the
+graded record frame for frame, the ghost is the solution's run (a run of solutions/<lab>.py made here
+independently), and the failing frame the summary names is the first frame where the student's bodies
+are visibly (> 1 px) away from the solution's, which J lands on. Each lab costs one grading (probe and
+one scene), one grading more to compare with and the solution's scene: about 5-15 CPU s.
+"""
+import importlib
+import math
+import os
+import sys
+
+import pytest
+
+os.environ["SDL_VIDEODRIVER"] = "dummy"
+os.environ["SDL_AUDIODRIVER"] = "dummy"
+import pygame  # noqa: E402
+
+from checker import cli, labs, pictures, records, show, show_cases, show_view  # noqa: E402
+from checker.grade import Grader  # noqa: E402
+from checker.sandbox import Limits, run_child  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+SEED = 3
+# lab id -> (corpus entry with one wrong step, the check --show must open on)
+WRONG_STEP = {
+    "tumbling_crates": ("spin_missing", "apply_impulse_spin"),
+    "more_shapes": ("inertia_missing_six", "inertia_sum"),
+    "ball_on_ramp": ("inertia_ring", "ball_inertia"),
+    "bullets": ("swept_whole_step_after", "swept_move_resolves"),
+    "sleeping_crates": ("timer_counts_frames", "timer_rule"),
+}
+
+
+def key(k):
+    return pygame.event.Event(pygame.KEYDOWN, key=k, mod=0, unicode="")
+
+
+def scripted(*frames):
+    """An event source: the i-th call returns frames[i] (a list of events), then nothing."""
+    queue = list(frames)
+    return lambda: queue.pop(0) if queue else []
+
+
+def lab_of(lab_id):
+    return next(lab for lab in labs.LABS if lab.id == lab_id)
+
+
+def wrong_file(folder, lab_id):
+    corpus = importlib.import_module(f"corpus_{lab_id}")
+    name, check = WRONG_STEP[lab_id]
+    entry = next(e for e in corpus.WRONG if e.name == name)
+    assert entry.check == check   # the corpus's own verdict for this file
+    path = os.path.join(folder, f"{lab_id}.py")
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(corpus.build(name))
+    return path
+
+
+def distance(frame, other):
+    """Largest distance (px) between bodies of the same index in two recorded frames (computed here)."""
+    if len(frame["bodies"]) != len(other["bodies"]):
+        return math.inf
+    return max(math.hypot(a["pos"][0] - b["pos"][0], a["pos"][1] - b["pos"][1])
+               for a, b in zip(frame["bodies"], other["bodies"]))
+
+
+@pytest.fixture(scope="module", params=sorted(WRONG_STEP))
+def shown(request, tmp_path_factory):
+    lab = lab_of(request.param)
+    path = wrong_file(str(tmp_path_factory.mktemp(request.param)), request.param)
+    row, replay, problem = show.prepare(path, lab, seed=SEED)
+    assert problem == "" and replay is not None
+    return lab, path, row, replay
+
+
+def test_opens_on_the_wrong_steps_check(shown):
+    lab, path, row, replay = shown
+    expected = WRONG_STEP[lab.id][1]
+    first_failed = next(r for r in row.results if r.status in ("fail", "error"))
+    assert replay.check.id == expected == first_failed.id
+    assert replay.seed == row.seed == SEED
+    assert any(f"--seed {SEED}" in line for line in replay.summary())
+
+
+def test_replay_is_the_graded_record_frame_for_frame(shown):
+    lab, path, row, replay = shown
+    graded = Grader(keep_records=True, seed=SEED).grade(path, lab)   # the checker's own grading, again
+    assert replay.scene in graded.records, (replay.scene, list(graded.records))
+    recorded = graded.records[replay.scene]["records"]
+    assert len(replay.frames) == len(recorded) > 10
+    pygame.display.init()
+    pygame.font.init()
+    viewer = show_view.Viewer(replay)
+    viewer.playing = False
+    for k, frame in enumerate(recorded):   # O steps one recorded frame at a time
+        assert viewer.frame == frame, f"frame {frame['frame']} differs"
+        viewer.handle(key(pygame.K_o))
+    assert viewer.frame == recorded[-1]
+
+
+def test_ghost_is_the_solutions_run(shown):
+    lab, path, row, replay = shown
+    settings = lab.scenarios()[replay.scene]
+    solution = run_child(lab.solution, "scenario", dict(settings, probes=lab.probes), Limits()).record["records"]
+    assert replay.reference == solution
+    pygame.display.init()
+    pygame.font.init()
+    viewer = show_view.Viewer(replay)
+    viewer.handle(key(pygame.K_j))
+    assert viewer.reference_frame["frame"] == viewer.frame["frame"]   # lockstep
+    surface = pygame.Surface(show_view.SIZE)
+    viewer.draw(surface)
+    ghost = next(b for b in viewer.reference_frame["bodies"] if not b["static"])
+    if ghost["points"]:   # the solution's outline passes through the middle of its first edge
+        a, b = ghost["points"][0], ghost["points"][1]
+        middle = (round((a[0] + b[0]) / 2), round((a[1] + b[1]) / 2))
+    else:                 # a circle: through its rightmost point
+        middle = (round(ghost["pos"][0] + ghost["radius"] - 1), round(ghost["pos"][1]))
+    around = {tuple(surface.get_at((middle[0] + dx, middle[1] + dy)))[:3] for dx in (-1, 0, 1) for dy in (-1, 0, 1)}
+    assert show_view.GHOST in around
+
+
+def test_jump_lands_on_the_first_frame_that_differs_from_the_solution(shown):
+    lab, path, row, replay = shown
+    named = replay.fail_frame
+    assert named is not None and any(f"failing frame {named} " in line for line in replay.summary())
+    before = [f for f in replay.frames if f["frame"] < named]
+    at = next(f for f in replay.frames if f["frame"] == named)
+    assert distance(at, replay.reference_at(named)) > show.VISIBLE
+    assert all(distance(f, replay.reference_at(f["frame"])) <= show.VISIBLE for f in before)
+    viewer = show_view.run(replay, events=scripted([], [key(pygame.K_p)], [key(pygame.K_j)], []), frames=4)
+    assert viewer.frame["frame"] == named and not viewer.playing
+
+
+def test_keys_pause_step_and_toggle(shown):
+    lab, path, row, replay = shown
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_p)], [key(pygame.K_o)], [key(pygame.K_o)],
+                                                   [key(pygame.K_g)], []), frames=6)
+    assert viewer.index == 2 and not viewer.playing and viewer.side_by_side
+    viewer = show_view.run(replay, events=scripted([], [], [], [pygame.event.Event(pygame.QUIT)]), frames=50)
+    assert viewer.index == 3   # played three frames (lockstep with the display), then the window closed
+
+
+# ---------------------------------------------------------------- a behaviour check
+
+def test_failed_behaviour_check_jumps_to_the_frame_it_judges(tmp_path):
+    """Ball on the Ramp with the push-out's SLOP raised to 6 px (as tests/test_checker_pictures.py): every
+    function check passes, pushed_out_of_crate fails at the end of the 'inside' scene."""
+    from test_checker_pictures import slop_file
+    lab = lab_of("ball_on_ramp")
+    row, replay, problem = show.prepare(slop_file(str(tmp_path)), lab, seed=SEED, options={"allow_edits": True})
+    assert replay.check.id == "pushed_out_of_crate" and replay.graded and replay.scene == "inside"
+    assert replay.quantity.bound == lab.module.INSIDE_DEPTH
+    last = replay.frames[-1]
+    ball = next(b for b in last["bodies"] if b.get("radius"))
+    crate_depth = max(records.circle_depth(ball["pos"], ball["radius"], b["points"])
+                      for b in last["bodies"] if len(b["points"]) >= 3)
+    assert replay.fail_frame == last["frame"] and crate_depth > lab.module.INSIDE_DEPTH
+    assert replay.values[-1] == pytest.approx(crate_depth)
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_j)]), frames=2)
+    assert viewer.frame["frame"] == replay.fail_frame
+
+
+# ---------------------------------------------------------------- a function case drawn
+
+def test_sat_case_draws_both_answers(tmp_path):
+    corpus = importlib.import_module("corpus_tumbling_crates")
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(corpus.build("sat_largest_overlap"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("tumbling_crates"), seed=SEED)
+    assert replay.check.id == "sat_axes" and replay.cases
+    assert all(isinstance(c, show_cases.SatCase) for c in replay.cases)
+    viewer = show_view.run(replay, events=scripted([]), frames=1)
+    assert viewer.showing_cases   # a failed function check opens on its cases
+    case = replay.cases[0]
+    yours, lesson = case.answers()
+    assert case.case["got"]["depth"] > case.case["lesson"]["depth"] + 1e-6   # the largest overlap, not the smallest
+    assert f"{case.case['got']['depth']:.2f}" in yours and f"{case.case['lesson']['depth']:.2f}" in lesson
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900, 2) for y in range(0, 600, 2)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+    axis = case.view.axis_index
+    case.key(pygame.K_n)
+    assert case.view.axis_index == (axis + 1) % len(case.view.axes())
+
+
+# ---------------------------------------------------------------- the command line
+
+def test_no_display_is_refused_cleanly(monkeypatch, capsys, tmp_path):
+    monkeypatch.setattr(pictures, "USER_VIDEO_DRIVER", None)
+    monkeypatch.delenv("DISPLAY", raising=False)
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    monkeypatch.setattr(sys, "platform", "linux")
+    target = tmp_path / "tumbling_crates.py"
+    target.write_text("# tumbling crates\n", encoding="utf-8")
+    assert cli.main([str(target), "--show"]) == 2
+    assert capsys.readouterr().err.strip() == "checker: error: no display: use --pictures DIR"
+    assert show.display_problem({"DISPLAY": ":0"}, "linux") == ""
+    assert show.display_problem({}, "win32") == ""
+
+
+def test_a_file_that_does_not_load_gets_its_load_error(tmp_path, capsys):
+    target = tmp_path / "tumbling_crates.py"
+    target.write_text("import no_such_module_anywhere\n", encoding="utf-8")
+
+    class Args:
+        show, seed, timeout, memory, max_output, child_user, allow_edits = "", SEED, 20.0, 768, 256, None, False
+
+    from checker.entries import discover
+    entries, _ = discover([str(target)])
+    opened = []
+    status = show.main(Args, entries, events=lambda: opened.append(1) or [], frames=1)
+    out = capsys.readouterr().out
+    assert status == 1 and not opened   # no window
+    assert "no_such_module_anywhere" in out and ":( The file imports" in out
+    assert "--show: the file does not load" in out
