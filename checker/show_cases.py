@@ -8,6 +8,7 @@ of the student's code runs in this process.
                the lesson's axis and depth (yellow, the explorer's MTV) and the student's (magenta)
   ImpulseCase  the two bodies around the contact, the impulse, each body's velocity change as arrows
                (the lesson's and the student's) and its spin change as arcs
+  PolygonCase  an outline with the student's centroid and the lesson's, or both radii of gyration (inertia)
 
 failing_cases(lab, result, functions) -> [case], each with draw(surface), key(key) and lines().
 """
@@ -233,10 +234,92 @@ def _spin_arc(surface, colour, centre, radius, spin):
         pygame.draw.arc(surface, colour, rect, start, start + sweep, 3)
 
 
+# ---------------------------------------------------------------- polygon_centroid and polygon_inertia
+
+def _fit(points, box=(120, 90, 660, 380)):
+    """(scale, offset) that fit the outline's points into `box` (left, top, width, height; screen px)."""
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    width, height = max(max(xs) - min(xs), 1e-9), max(max(ys) - min(ys), 1e-9)
+    scale = min(box[2] / width, box[3] / height)
+    offset = Vector2(box[0] + box[2] / 2, box[1] + box[3] / 2) - Vector2((max(xs) + min(xs)) / 2,
+                                                                         (max(ys) + min(ys)) / 2) * scale
+    return scale, offset
+
+
+def _cross(surface, colour, at, size=8, width=3):
+    pygame.draw.line(surface, colour, at - Vector2(size, size), at + Vector2(size, size), width)
+    pygame.draw.line(surface, colour, at - Vector2(size, -size), at + Vector2(size, -size), width)
+
+
+class PolygonCase:
+    """One polygon_centroid() or polygon_inertia() case: the outline (fitted to the window) with the student's
+    point and the lesson's (centroid), or both radii of gyration sqrt(I / m) as circles around (0, 0) (inertia)."""
+
+    kind = "polygon"
+
+    def __init__(self, case, number, count, what):
+        self.case, self.number, self.count, self.what = case, number, count, what
+
+    def key(self, key):
+        return False
+
+    def lines(self):
+        got, want = self.case["got"], self.case["want"]
+        head = f"failing case {self.number} of {self.count}: {self.case['case']}"
+        if self.what == "centroid":
+            said = got if isinstance(got, str) else _vec(got)
+            return [head, f"yours (magenta): centroid {said}", f"the lesson's (yellow): centroid {_vec(want)} "
+                    f"(grey: the average of the corners {_vec(self.case['average'])})"]
+        mass = self.case["mass"]
+        said = got if isinstance(got, str) else f"{got:.5g} (radius of gyration {math.sqrt(abs(got) / mass):.2f} px)"
+        return [head, f"yours (magenta): I = {said}",
+                f"the lesson's (yellow): I = {want:.5g} (radius of gyration {math.sqrt(want / mass):.2f} px), "
+                f"mass {mass:.3g}"]
+
+    def draw(self, surface):
+        surface.fill((24, 26, 34))
+        points = self.case["points"]
+        got, want = self.case["got"], self.case["want"]
+        if self.what == "centroid":
+            extra = [want] + ([got] if not isinstance(got, str) and all(abs(v) < 1e6 for v in got) else [])
+        else:
+            radii = [math.sqrt(want / self.case["mass"])]
+            if not isinstance(got, str) and 0 <= got / self.case["mass"] < 1e12:
+                radii.append(math.sqrt(got / self.case["mass"]))
+            extra = [(r * sx, r * sy) for r in radii for sx, sy in ((1, 1), (-1, -1))]
+        scale, offset = _fit(list(points) + extra)
+        corners = [Vector2(p) * scale + offset for p in points]
+        pygame.draw.polygon(surface, (70, 130, 235), corners)
+        pygame.draw.polygon(surface, TEXT, corners, 2)
+        if self.what == "centroid":
+            _cross(surface, (150, 155, 170), Vector2(self.case["average"]) * scale + offset, 6, 2)
+            _cross(surface, LESSON, Vector2(want) * scale + offset, 10, 4)
+            if not isinstance(got, str):
+                _cross(surface, STUDENT, Vector2(got) * scale + offset, 8, 2)
+        else:
+            centre = offset
+            pygame.draw.circle(surface, LESSON, centre, max(2, radii[0] * scale), 4)
+            if len(radii) > 1:
+                pygame.draw.circle(surface, STUDENT, centre, max(2, radii[1] * scale), 2)
+        _footer(surface, self.lines(), "[ ]: previous/next case   Tab: the scene   Esc: quit")
+
+
+def polygon_wrong(case, what):
+    """True when the student's centroid or inertia differs from the lesson's (relative 1e-7 of the outline's size)."""
+    got, want = case.get("got"), case.get("want")
+    if isinstance(got, str) or got is None:
+        return True
+    if what == "centroid":
+        size = max(abs(v) for p in case["points"] for v in p) or 1.0
+        return any(abs(g - w) > CLOSE * size + CLOSE * abs(w) for g, w in zip(got, want))
+    return not _close(got, want)
+
+
 # ---------------------------------------------------------------- which cases, per check
 
 SAT_PROBES = {"sat_axes": ("sat_step2", "sat"), "sat_normal": ("sat",)}
 IMPULSE_PROBES = {"apply_impulse_spin": "apply_impulse"}
+POLYGON_PROBES = {"centroid": ("polygon_centroid", "centroid"), "inertia_sum": ("polygon_inertia", "inertia")}
 
 
 def _data(functions, name):
@@ -253,6 +336,11 @@ def failing_cases(lab, result, functions):
         if data:
             wrong = [case for case in data if "lesson" in case and sat_wrong(case, result.id)]
             return [SatCase(case, k + 1, len(wrong)) for k, case in enumerate(wrong)]
+    if result.id in POLYGON_PROBES:
+        name, what = POLYGON_PROBES[result.id]
+        data = _data(functions, name) or []
+        wrong = [case for case in data if "want" in case and polygon_wrong(case, what)]
+        return [PolygonCase(case, k + 1, len(wrong), what) for k, case in enumerate(wrong)]
     if result.id in IMPULSE_PROBES:
         data = _data(functions, IMPULSE_PROBES[result.id]) or []
         wrong = [case for case in data if "expected" in case and impulse_wrong(case)]

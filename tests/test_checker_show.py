@@ -221,3 +221,18 @@ def test_a_file_that_does_not_load_gets_its_load_error(tmp_path, capsys):
     assert status == 1 and not opened   # no window
     assert "no_such_module_anywhere" in out and ":( The file imports" in out
     assert "--show: the file does not load" in out
+
+
+def test_centroid_case_draws_both_points(tmp_path):
+    corpus = importlib.import_module("corpus_more_shapes")
+    path = tmp_path / "more_shapes.py"
+    path.write_text(corpus.build("centroid_average_of_corners"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("more_shapes"), seed=SEED)
+    assert replay.check.id == "centroid" and replay.cases
+    case = replay.cases[0]
+    assert isinstance(case, show_cases.PolygonCase)
+    assert case.case["got"] == pytest.approx(case.case["average"]) and case.case["got"] != case.case["want"]
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 480)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
