@@ -257,12 +257,12 @@ def _scene_choice(row, result, run_scene, reference_record):
     return scene, scene is not None and not ungraded, frames, reference
 
 
-def build_replay(row, result, functions=None, run_scene=None, reference_record=None):
-    """The Replay of one graded row's result: its scene (if any was recorded), the solution's, the quantity."""
-    from . import show_cases
-    lab = row.lab
-    reference_record = reference_record or pictures.reference_record
-    scene, graded, frames, reference = _scene_choice(row, result, run_scene, reference_record)
+def failure(lab, result, frames, reference, graded):
+    """(failing frame or None, why that frame, Quantity or None, its value per frame) for a result's run.
+
+    graded: the frames are the scene the check read (else a scene run ungraded for a function check,
+    whose quantity is the distance from the solution's bodies).
+    """
     quantity = series_for(lab, result.id) if graded else None
     if quantity is None and reference:
         quantity = DIVERGENCE
@@ -273,18 +273,31 @@ def build_replay(row, result, functions=None, run_scene=None, reference_record=N
         values = [measure(f) for f in frames]
     else:
         values = []
+    values = [v if math.isfinite(v) else float("nan") for v in values]
     named = pictures.marked_frame(result) if graded else None
-    fail_frame, reason = named, f"the frame the check names ({result.message})" if named is not None else ""
-    if fail_frame is None and quantity is not None and quantity is not DIVERGENCE:
-        fail_frame = _first_crossing(frames, values, quantity)
-        reason = f"{quantity.label} first beyond {quantity.bound:g}" if fail_frame is not None else ""
-    if fail_frame is None and reference:
-        fail_frame = _first_difference(frames, reference)
-        reason = (f"the first frame a body is more than {VISIBLE:g} px from the solution's"
-                  if fail_frame is not None else "")
+    if named is not None:
+        return named, f"the frame the check names ({result.message})", quantity, values
+    if quantity is not None and quantity is not DIVERGENCE:
+        crossing = _first_crossing(frames, values, quantity)
+        if crossing is not None:
+            where = "at the end" if quantity.at_end else "first"
+            return crossing, f"{quantity.label} {where} beyond {quantity.bound:g}", quantity, values
+    differs = _first_difference(frames, reference) if reference else None
+    if differs is not None:
+        return differs, f"the first frame a body is more than {VISIBLE:g} px from the solution's", quantity, values
+    return None, "", quantity, values
+
+
+def build_replay(row, result, functions=None, run_scene=None, reference_record=None):
+    """The Replay of one graded row's result: its scene (if any was recorded), the solution's, the quantity."""
+    from . import show_cases
+    lab = row.lab
+    reference_record = reference_record or pictures.reference_record
+    scene, graded, frames, reference = _scene_choice(row, result, run_scene, reference_record)
+    fail_frame, reason, quantity, values = failure(lab, result, frames, reference, graded)
     cases = show_cases.failing_cases(lab, result, functions or {})
-    return Replay(row.path, lab, result, scene, graded, row.seed, frames, reference, quantity,
-                  [v if math.isfinite(v) else float("nan") for v in values], fail_frame, reason, cases)
+    return Replay(row.path, lab, result, scene, graded, row.seed, frames, reference, quantity, values, fail_frame,
+                  reason, cases)
 
 
 def prepare(path, lab, check_id=None, seed=None, limits=None, options=None):
