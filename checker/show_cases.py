@@ -13,6 +13,7 @@ of the student's code runs in this process.
 failing_cases(lab, result, functions) -> [case], each with draw(surface), key(key) and lines().
 """
 import math
+import re
 
 import pygame
 from pygame import Vector2
@@ -79,8 +80,34 @@ def _body(points, shift, colour):
     return Body(local, centre + shift, 0, color=colour)
 
 
+PX = re.compile(r"(-?\d+(?:\.(\d+))?) px")
+SHAPES_SPAN = 220   # screen px the pair of shapes spans when drawn (the probe's shapes are 20-80 px)
+
+
+class ScaledFont:
+    """A pygame Font whose text says "<n> px" in the case's px: the shapes are drawn `scale` times larger, so
+    every length the explorer writes (shadows, overlap, gap, MTV) is divided by `scale` before it is shown."""
+
+    def __init__(self, font, scale):
+        self.font, self.scale = font, scale
+
+    def _unscaled(self, found):
+        decimals = len(found.group(2) or "")
+        return f"{float(found.group(1)) / self.scale:.{decimals}f} px"
+
+    def render(self, text, *args):
+        return self.font.render(PX.sub(self._unscaled, text), *args)
+
+    def __getattr__(self, name):
+        return getattr(self.font, name)
+
+
 class SatCase:
-    """One sat() case drawn as the SAT explorer draws two boxes, with both answers."""
+    """One sat() case drawn as the SAT explorer draws two boxes, with both answers.
+
+    The shapes are drawn `scale` times their size (they span about SHAPES_SPAN px), and every length
+    written on the picture is in the case's own px (ScaledFont).
+    """
 
     kind = "sat"
 
@@ -90,9 +117,14 @@ class SatCase:
         _font()   # the explorer's fonts need pygame.font ready
         self.view = explorer.Explorer(*SIZE)
         a, b = case["a"], case["b"]
+        xs, ys = [p[0] for p in a + b], [p[1] for p in a + b]
+        self.scale = max(1.0, min(6.0, SHAPES_SPAN / max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)))
+        self.view.font = ScaledFont(self.view.font, self.scale)
+        self.view.big_font = ScaledFont(self.view.big_font, self.scale)
+        a = [[v * self.scale for v in p] for p in a]
+        b = [[v * self.scale for v in p] for p in b]
         middle = (centre_of([Vector2(p) for p in a]) + centre_of([Vector2(p) for p in b])) / 2
         shift = Vector2(SIZE[0] / 2, SIZE[1] / 2 + 20) - middle
-        self.shift = shift
         self.view.blue = _body(a, shift, explorer.BLUE)
         self.view.orange = _body(b, shift, explorer.ORANGE)
         self.view.axis_index = self._best_axis()
@@ -128,14 +160,15 @@ class SatCase:
     def lines(self):
         yours, lesson = self.answers()
         order = " with A and B swapped" if self.case.get("order") == "B, A" else ""
-        return [f"failing case {self.number} of {self.count}: '{self.case.get('pair')}'{order}  (blue A, orange B)",
+        return [f"failing case {self.number} of {self.count}: '{self.case.get('pair')}'{order}  (blue A, orange B; "
+                f"drawn x{self.scale:.2g})",
                 f"yours (magenta): {yours}", f"the lesson's (yellow): {lesson}"]
 
     def draw(self, surface):
         self.view.draw(surface)
         got = self.case.get("got")
         if got is not None and "bad" not in got:
-            normal, depth = Vector2(got["normal"]), got["depth"]
+            normal, depth = Vector2(got["normal"]), got["depth"] * self.scale
             orange = self.view.orange
             ghost = [p + normal * depth for p in orange.world_points()]
             pygame.draw.polygon(surface, STUDENT, ghost, 2)

@@ -195,12 +195,12 @@ class Viewer:
     def draw_hud(self, surface):
         replay = self.replay
         mode = "cases" if self.showing_cases and self.case is not None else \
-            "side by side" if self.side_by_side else "ghost: solution in cyan"
+            "side by side" if self.side_by_side else "ghost: the solution in cyan"
         frame = self.frame
         head = f"{replay.lab.title} - {replay.check.id} ({replay.check.status})"
         if frame is not None and not (self.showing_cases and self.case is not None):
-            head += f" | scene '{replay.scene}'{'' if replay.graded else ' (ungraded)'} | frame {frame['frame']}" \
-                    f" t = {frame['frame'] / 60:.2f} s{'' if self.playing else ' | PAUSED'} | {mode}"
+            head += f" | '{replay.scene}'{'' if replay.graded else ' ungraded'} | frame {frame['frame']}" \
+                    f" ({frame['frame'] / 60:.2f} s){'' if self.playing else ' PAUSED'} | {mode}"
             _text(surface, self.font, head, (10, 8))
             _text(surface, self.small, "P pause  O step  Left/Right  J jump to the failing frame  G ghost/side by "
                   "side" + ("  Tab cases" if replay.cases else "") + "  Esc quit", (10, 32), DIM)
