@@ -9,6 +9,8 @@ of the student's code runs in this process.
   ImpulseCase  the two bodies around the contact, the impulse, each body's velocity change as arrows
                (the lesson's and the student's) and its spin change as arcs
   PolygonCase  an outline with the student's centroid and the lesson's, or both radii of gyration (inertia)
+  ToiCase      circle_toi(): both circles' paths, where they are at both times of impact, a bar of the step
+  SweptCase    swept_move(): the bullet's path to the impact and both ends of the step
 
 failing_cases(lab, result, functions) -> [case], each with draw(surface), key(key) and lines().
 """
@@ -348,6 +350,142 @@ def polygon_wrong(case, what):
     return not _close(got, want)
 
 
+# ---------------------------------------------------------------- Bullets: circle_toi and swept_move
+
+def _time(value):
+    """A time answer as text: "None", "12.5 ms", or what was wrong with it."""
+    if value is None:
+        return "None (no hit)"
+    if isinstance(value, dict):
+        return f"returned {value.get('bad')}"
+    return f"{value * 1000:.4g} ms"
+
+
+class ToiCase:
+    """One circle_toi() case: both circles' paths over the step, where they are at the student's time of
+    impact (magenta) and at the lesson's (yellow), and a bar of the step [0, dt] with both times on it.
+    The geometry comes from the probe's fixed cases (checker/labs/bullets/probes.py toi_cases(), grader-side
+    code); a case drawn at random for the run shows the times only."""
+
+    kind = "toi"
+
+    def __init__(self, case, number, count, geometry=None):
+        self.case, self.number, self.count, self.geometry = case, number, count, geometry
+
+    def key(self, key):
+        return False
+
+    def lines(self):
+        return [f"failing case {self.number} of {self.count}: {self.case['case']} (dt = {self.case['dt'] * 1000:.4g} ms)",
+                f"yours (magenta): t = {_time(self.case['got'])}",
+                f"the lesson's (yellow): t = {_time(self.case['want'])}"]
+
+    def draw(self, surface):
+        surface.fill((24, 26, 34))
+        dt = self.case["dt"]
+        times = [(t, colour) for t, colour in ((self.case["want"], LESSON), (self.case["got"], STUDENT))
+                 if isinstance(t, (int, float))]
+        if self.geometry is not None:
+            p1, v1, r1, p2, v2, r2 = self.geometry
+            ends = [p1, p1 + v1 * dt, p2, p2 + v2 * dt]
+            pad = max(r1, r2)
+            scale, offset = _fit([(p.x - pad, p.y - pad) for p in ends] + [(p.x + pad, p.y + pad) for p in ends],
+                                 (80, 60, 740, 300))
+
+            def at(p):
+                return p * scale + offset
+            for p, v, r, colour in ((p1, v1, r1, (70, 130, 235)), (p2, v2, r2, (245, 150, 40))):
+                pygame.draw.line(surface, colour, at(p), at(p + v * dt), 1)
+                pygame.draw.circle(surface, colour, at(p), max(2, r * scale))
+                for t, mark in times:
+                    if -dt <= t <= 2 * dt:
+                        pygame.draw.circle(surface, mark, at(p + v * t), max(2, r * scale), 2)
+        bar = pygame.Rect(80, 400, 740, 8)
+        pygame.draw.rect(surface, (150, 155, 170), bar)
+        font = _font(20)
+        surface.blit(font.render("0", True, TEXT), (bar.left - 4, bar.bottom + 4))
+        surface.blit(font.render("dt", True, TEXT), (bar.right - 8, bar.bottom + 4))
+        for t, colour in times:
+            x = bar.left + max(-0.1, min(1.1, t / dt)) * bar.width
+            pygame.draw.line(surface, colour, (x, bar.top - 14), (x, bar.bottom + 14), 3)
+        _footer(surface, self.lines(), "circles: where both are at each time   [ ]: case   Tab: scene   Esc: quit")
+
+
+class SweptCase:
+    """One swept_move() case: the bullet's path over the step, the impact (at the lesson's time of impact),
+    and where the bullet ends: the student's (magenta) and the lesson's (yellow)."""
+
+    kind = "swept"
+
+    def __init__(self, case, number, count, step):
+        self.case, self.number, self.count, self.step = case, number, count, step
+
+    def key(self, key):
+        return False
+
+    def path(self):
+        """(start, impact or None, lesson's end, student's end) in px, from the probe's data."""
+        variants, t = self.case.get("variants") or {}, self.case.get("t")
+        want = Vector2(self.case["want"]["bullet"]["pos"])
+        got = Vector2(self.case["got"]["bullet"]["pos"])
+        if t is None or "stops" not in variants or "old_velocity" not in variants or self.step - t <= 0:
+            return None, None, want, got
+        impact, through = Vector2(variants["stops"]), Vector2(variants["old_velocity"])
+        velocity = (through - impact) / (self.step - t)
+        return impact - velocity * t, impact, want, got
+
+    def lines(self):
+        t = self.case.get("t")
+        got, want = self.case["got"]["bullet"], self.case["want"]["bullet"]
+        return [f"failing case {self.number} of {self.count}: {self.case['case']}"
+                + (f" (impact at t = {t * 1000:.4g} ms of {self.step * 1000:.4g})" if t is not None else ""),
+                f"yours (magenta): the bullet ends at {_vec(got['pos'])} moving {_vec(got['vel'])} px/s",
+                f"the lesson's (yellow): at {_vec(want['pos'])} moving {_vec(want['vel'])} px/s"]
+
+    def draw(self, surface):
+        surface.fill((24, 26, 34))
+        start, impact, want, got = self.path()
+        points = [p for p in (start, impact, want, got) if p is not None]
+        others = [Vector2(o["pos"]) for o in self.case["want"].get("others", ())]
+        scale, offset = _fit([(p.x, p.y) for p in points] + [(p.x + 10, p.y + 10) for p in points],
+                             (80, 80, 740, 330))
+
+        def at(p):
+            return p * scale + offset
+        for other in others:   # the other bodies' centres (the wall, a crate) as grey crosses
+            _cross(surface, (150, 155, 170), at(other), 8, 2)
+        if start is not None:
+            pygame.draw.line(surface, (150, 155, 170), at(start), at(impact), 2)
+            pygame.draw.circle(surface, (150, 155, 170), at(start), 5, 1)
+            pygame.draw.circle(surface, (235, 80, 80), at(impact), 6)
+            for end, colour in ((want, LESSON), (got, STUDENT)):
+                pygame.draw.line(surface, colour, at(impact), at(end), 2)
+        pygame.draw.circle(surface, LESSON, at(want), 9, 3)
+        pygame.draw.circle(surface, STUDENT, at(got), 6, 2)
+        _footer(surface, self.lines(), "grey: the path to the impact (red)   [ ]: case   Tab: scene   Esc: quit")
+
+
+def toi_wrong(case):
+    got, want = case.get("got"), case.get("want")
+    if isinstance(got, dict) or (got is None) != (want is None):
+        return True
+    return got is not None and abs(got - want) > 1e-9
+
+
+def swept_wrong(case):
+    got, want = case["got"], case["want"]
+    pairs = [(got["bullet"], want["bullet"])] + list(zip(got.get("others", ()), want.get("others", ())))
+    return any(not _close(g, w) for a, b in pairs for key in ("pos", "vel") for g, w in zip(a[key], b[key]))
+
+
+def _toi_geometry(name):
+    from .labs.bullets import probes
+    for case in probes.toi_cases():
+        if case[0] == name:
+            return case[1], case[2], case[3], case[4], case[5], case[6]
+    return None
+
+
 # ---------------------------------------------------------------- which cases, per check
 
 SAT_PROBES = {"sat_axes": ("sat_step2", "sat"), "sat_normal": ("sat",)}
@@ -374,6 +512,13 @@ def failing_cases(lab, result, functions):
         data = _data(functions, name) or []
         wrong = [case for case in data if "want" in case and polygon_wrong(case, what)]
         return [PolygonCase(case, k + 1, len(wrong), what) for k, case in enumerate(wrong)]
+    if result.id == "toi_matches_root":
+        wrong = [case for case in _data(functions, "circle_toi") or [] if "want" in case and toi_wrong(case)]
+        return [ToiCase(case, k + 1, len(wrong), _toi_geometry(case["case"])) for k, case in enumerate(wrong)]
+    if result.id == "swept_move_resolves":
+        from .labs.bullets import probes
+        wrong = [case for case in _data(functions, "swept_move") or [] if "want" in case and swept_wrong(case)]
+        return [SweptCase(case, k + 1, len(wrong), probes.STEP) for k, case in enumerate(wrong)]
     if result.id in IMPULSE_PROBES:
         data = _data(functions, IMPULSE_PROBES[result.id]) or []
         wrong = [case for case in data if "expected" in case and impulse_wrong(case)]

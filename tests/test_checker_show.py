@@ -236,3 +236,42 @@ def test_centroid_case_draws_both_points(tmp_path):
     case.draw(surface)
     colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 480)}
     assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+
+
+CASE_KIND = {"tumbling_crates": show_cases.ImpulseCase, "more_shapes": show_cases.PolygonCase,
+             "bullets": show_cases.SweptCase}
+
+
+def test_failing_cases_draw_both_answers(shown):
+    """A failed function check of a kind --show draws (impulse, inertia, swept move) opens on its cases, and
+    each case shows the student's answer (magenta) and the lesson's (yellow); the other labs' steps have none."""
+    lab, path, row, replay = shown
+    kind = CASE_KIND.get(lab.id)
+    if kind is None:
+        assert replay.cases == []
+        return
+    assert replay.cases and all(isinstance(c, kind) for c in replay.cases)
+    for case in replay.cases[:3]:
+        surface = pygame.Surface(show_view.SCENE)
+        case.draw(surface)
+        colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 470, 2)}
+        assert show_cases.STUDENT in colours and show_cases.LESSON in colours, case.lines()
+        assert case.lines()[1].startswith("yours") and case.lines()[2].startswith("the lesson")
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_RIGHTBRACKET)]), frames=1)
+    assert viewer.showing_cases and viewer.case_index == min(1, len(replay.cases) - 1)
+
+
+def test_time_of_impact_case_shows_both_times(tmp_path):
+    corpus = importlib.import_module("corpus_bullets")
+    path = tmp_path / "bullets.py"
+    path.write_text(corpus.build("toi_later_root"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("bullets"), seed=SEED)
+    assert replay.check.id == "toi_matches_root"
+    case = next(c for c in replay.cases if c.geometry is not None)
+    assert case.case["got"] > case.case["want"]   # the later root
+    yours, lesson = case.lines()[1:3]
+    assert f"{case.case['got'] * 1000:.4g} ms" in yours and f"{case.case['want'] * 1000:.4g} ms" in lesson
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 470)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
