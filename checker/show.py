@@ -63,30 +63,36 @@ def awake_count(frame):
 
 
 class Moved:
-    """How far (px) the dynamic body that moved most is from where it was in the run's first frame."""
+    """How far (px) the dynamic body that moved most is from where it was in the run's first frame.
 
-    def __init__(self, frames):
-        self.start = [b["pos"] for b in metrics.dynamic(frames[0])] if frames else []
+    only: the indices (among the dynamic bodies) of the bodies the check reads (None: all)."""
+
+    def __init__(self, frames, only=None):
+        self.only = only
+        self.start = self._chosen(frames[0]) if frames else []
+
+    def _chosen(self, frame):
+        bodies = metrics.dynamic(frame)
+        return [bodies[i] for i in self.only if i < len(bodies)] if self.only is not None else bodies
 
     def __call__(self, frame):
-        return max([math.dist(a, b["pos"]) for a, b in zip(self.start, metrics.dynamic(frame))] + [0.0])
+        return max([math.dist(a["pos"], b["pos"]) for a, b in zip(self.start, self._chosen(frame))] + [0.0])
 
 
-class Turned:
+class Turned(Moved):
     """How far (degrees) the dynamic body that turned most has turned since the run's first frame."""
 
-    def __init__(self, frames):
-        self.start = [b["angle"] for b in metrics.dynamic(frames[0])] if frames else []
-
     def __call__(self, frame):
-        return max([abs(math.degrees(b["angle"] - a)) for a, b in zip(self.start, metrics.dynamic(frame))] + [0.0])
+        return max([abs(math.degrees(b["angle"] - a["angle"])) for a, b in zip(self.start, self._chosen(frame))]
+                   + [0.0])
 
 
 @dataclass(frozen=True)
 class Quantity:
     """What a check measures per frame: a label with its unit, how to measure a frame, its bound.
 
-    measure: a frame -> a number, or a class taking the run's frames (a measure relative to the start);
+    measure: a frame -> a number, or a class taking the run's frames and `only` (a measure relative to the
+    start, of the dynamic bodies numbered `only`, or all);
     bound: the check's bound in the same unit, or None; above: True when exceeding the bound fails;
     at_end: True when the check judges the run's end only (a frame before it may exceed the bound).
     """
@@ -95,6 +101,7 @@ class Quantity:
     bound: float | None = None
     above: bool = True
     at_end: bool = False
+    only: tuple | None = None
 
 
 def _bound(lab, name, default=None, scale=1.0):
@@ -102,23 +109,32 @@ def _bound(lab, name, default=None, scale=1.0):
     return None if value is None else value * scale
 
 
+def _bodies(lab, name):
+    """The dynamic body indices a lab's scenes module names (More Shapes' TRIANGLE, PUSHED, ON_RAMP), or None."""
+    value = getattr(getattr(lab.module, "scenes", None), name, None)
+    return None if value is None else tuple(value) if isinstance(value, (tuple, list)) else (value,)
+
+
 def series_for(lab, check_id):
     """The Quantity plotted for a check of a lab (a behaviour check's own measure), or None."""
     table = {
         "corner_tips": Quantity("deepest into the floor (px)", sink_depth, _bound(lab, "PENETRATION")),
         "pile_stable": Quantity("deepest into the floor (px)", sink_depth, _bound(lab, "PENETRATION")),
-        "ramp_holds": Quantity("moved since the start (px)", Moved, _bound(lab, "RAMP_SLIDE")),
-        "fast_movers_zero": Quantity("fast movers (> 30 px/s)", fast_count, 0.0),
+        "ramp_holds": Quantity("moved since the start (px)", Moved, _bound(lab, "RAMP_SLIDE"),
+                               only=_bodies(lab, "ON_RAMP")),
+        "fast_movers_zero": Quantity("fast movers (> 30 px/s)", fast_count, 0.0, at_end=True),
         "triangle_tips": Quantity("turned since the start (deg)", Turned,
-                                  _bound(lab, "TRIANGLE_TURN", scale=180 / math.pi), above=False),
+                                  _bound(lab, "TRIANGLE_TURN", scale=180 / math.pi), above=False, at_end=True,
+                                  only=_bodies(lab, "TRIANGLE")),
         "hexagon_tips": Quantity("turned since the start (deg)", Turned,
-                                 _bound(lab, "HEXAGON_TURN", scale=180 / math.pi), above=False),
+                                 _bound(lab, "HEXAGON_TURN", scale=180 / math.pi), above=False, at_end=True,
+                                 only=_bodies(lab, "PUSHED")),
         "rolls_without_slipping": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
         "slides_without_friction": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
         "knocks_crate_over": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
         "pushed_out_of_crate": Quantity("ball into the crate (px)", ball_depth, _bound(lab, "INSIDE_DEPTH"),
                                         at_end=True),
-        "pile_sleeps": Quantity("crates awake", awake_count, 0.0),
+        "pile_sleeps": Quantity("crates awake", awake_count, 0.0, at_end=True),
         "no_sleep_in_air": Quantity("crates awake", awake_count),
         "drop_wakes_pile": Quantity("crates awake", awake_count),
         "runs": Quantity("fastest body (px/s)", top_speed),
@@ -221,7 +237,7 @@ def _first_crossing(frames, values, quantity):
     if quantity.at_end:
         frames, values = frames[-1:], values[-1:]
     for frame, value in zip(frames, values):
-        if (value > quantity.bound) if quantity.above else False:
+        if (value > quantity.bound) if quantity.above else (value < quantity.bound):
             return frame["frame"]
     return None
 
@@ -269,7 +285,7 @@ def failure(lab, result, frames, reference, graded):
     if quantity is DIVERGENCE:
         values = [divergence(f, pictures._nearest(reference, f["frame"])) for f in frames]
     elif quantity is not None:
-        measure = quantity.measure(frames) if isinstance(quantity.measure, type) else quantity.measure
+        measure = quantity.measure(frames, quantity.only) if isinstance(quantity.measure, type) else quantity.measure
         values = [measure(f) for f in frames]
     else:
         values = []

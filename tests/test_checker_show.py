@@ -275,3 +275,20 @@ def test_time_of_impact_case_shows_both_times(tmp_path):
     case.draw(surface)
     colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 470)}
     assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+
+
+@pytest.mark.parametrize("lab_id", sorted(WRONG_STEP))
+def test_every_behaviour_check_has_a_quantity_the_solution_keeps(lab_id):
+    """Each behaviour check with a scene has a quantity for the timeline; where it has a bound, the solution's
+    own run of that scene never passes it (so a failing frame found by the bound is never a false mark)."""
+    lab = lab_of(lab_id)
+    for check_id, scenes in lab.picture_scenes.items():
+        quantity = show.series_for(lab, check_id)
+        assert quantity is not None, (lab_id, check_id)
+        if quantity.bound is None:
+            continue
+        result = type("R", (), {"id": check_id, "message": ""})()
+        for scene in scenes:
+            frames = pictures.reference_record(lab, scene)["records"]
+            fail_frame, why, _, values = show.failure(lab, result, frames, frames, True)
+            assert fail_frame is None, (lab_id, check_id, scene, why, max(values))
