@@ -35,9 +35,8 @@ def _close(got, want):
 
 
 def _font(size=22):
-    if not pygame.font.get_init():
-        pygame.font.init()
-    return pygame.font.Font(None, size)
+    from .pictures import _font as font
+    return font(size)
 
 
 def _vec(v):

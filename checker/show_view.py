@@ -17,6 +17,8 @@ from pygame import Vector2
 
 from lesson11.physics2d.draw import draw_body, draw_contacts
 
+from .pictures import _font
+
 SCENE = (900, 600)          # px: the labs' window
 TIMELINE_H = 130            # px: the timeline under the scene
 SIZE = (SCENE[0], SCENE[1] + TIMELINE_H)
@@ -253,12 +255,6 @@ def _outline(surface, body, colour):
         pygame.draw.circle(surface, colour, body.pos, max(body.radius, 2), 2)
     elif len(body.world_points()) >= 3:
         pygame.draw.polygon(surface, colour, body.world_points(), 2)
-
-
-def _font(size):
-    if not pygame.font.get_init():
-        pygame.font.init()
-    return pygame.font.Font(None, size)
 
 
 def _text(surface, font, words, pos, colour=TEXT):

@@ -292,3 +292,16 @@ def test_every_behaviour_check_has_a_quantity_the_solution_keeps(lab_id):
             frames = pictures.reference_record(lab, scene)["records"]
             fail_frame, why, _, values = show.failure(lab, result, frames, frames, True)
             assert fail_frame is None, (lab_id, check_id, scene, why, max(values))
+
+
+def test_command_line_show_replays_and_returns(tmp_path):
+    """`python -m checker FILE --show --seed N` as typed: with SDL's dummy driver the window plays the replay
+    once and closes (a desktop keeps it open until Esc or the window is closed)."""
+    from test_checker_pictures import run_checker
+    path = wrong_file(str(tmp_path), "tumbling_crates")
+    status, out, err = run_checker(path, "--show", "--seed", str(SEED))
+    assert status == 1, err
+    assert ":( Step 6" in out and f"graded with seed {SEED}" in out
+    assert "--show: apply_impulse_spin (fail)" in out and "failing frame" in out
+    status, out, err = run_checker(path, "--show", "ramp_holds", "--seed", str(SEED))
+    assert status == 1 and "--show: ramp_holds (skip)" in out
