@@ -9,6 +9,8 @@ of the student's code runs in this process.
   ImpulseCase  the two bodies around the contact, the impulse, each body's velocity change as arrows
                (the lesson's and the student's) and its spin change as arcs
   PolygonCase  an outline with the student's centroid and the lesson's, or both radii of gyration (inertia)
+  ResolveCase  resolve(): the contact, both bodies' velocity and spin changes from j n (step 4), the
+               friction impulse against its Coulomb bounds (step 5)
   ToiCase      circle_toi(): both circles' paths, where they are at both times of impact, a bar of the step
   SweptCase    swept_move(): the bullet's path to the impact and both ends of the step
 
@@ -268,6 +270,103 @@ def _spin_arc(surface, colour, centre, radius, spin):
         pygame.draw.arc(surface, colour, rect, start, start + sweep, 3)
 
 
+# ---------------------------------------------------------------- resolve (steps 4 and 5)
+
+def resolve_wrong(case, check_id):
+    """True when the student's resolve() differs from the lesson's on this contact, as the check judges it:
+    the normal impulse j (resolve_k) or the friction impulse jt, clamped to [-mu j, mu j] (resolve_friction)."""
+    if check_id == "resolve_k":
+        return case["j"] is None or not _close(case["j"], -(1 + case["e"]) * case["vn"] / case["k"]["right"])
+    friction = case.get("friction")
+    if friction is None or case["j"] is None:
+        return False
+    bound = case["mu"] * case["j"]
+    return not _close(friction["jt"], max(-bound, min(bound, friction["stop"])))
+
+
+class ResolveCase:
+    """One resolve() contact: both bodies, the contact point and normal; for step 4 each body's velocity
+    change (arrows) and spin change (arcs) from the student's normal impulse j n and the lesson's; for
+    step 5 the friction impulse on a bar from -mu j to mu j, with the impulse that stops the slip.
+    The bodies come from the probe's fixed contacts (checker/labs/tumbling_crates/probes.py resolve_cases())."""
+
+    kind = "resolve"
+
+    def __init__(self, case, number, count, check_id, geometry):
+        self.case, self.number, self.count, self.check_id, self.geometry = case, number, count, check_id, geometry
+
+    def key(self, key):
+        return False
+
+    def lesson_j(self):
+        return -(1 + self.case["e"]) * self.case["vn"] / self.case["k"]["right"]
+
+    def lines(self):
+        head = f"failing case {self.number} of {self.count}: {self.case['case']}"
+        j = self.case["j"]
+        if self.check_id == "resolve_k":
+            return [head, f"yours (magenta): j = {'none applied' if j is None else f'{j:.4g}'}",
+                    f"the lesson's (yellow): j = {self.lesson_j():.4g}, k = {self.case['k']['right']:.4g}"]
+        friction, bound = self.case["friction"], self.case["mu"] * j
+        return [head, f"yours (magenta): jt = {friction['jt']:.4g}",
+                f"the lesson's (yellow): jt = {max(-bound, min(bound, friction['stop'])):.4g} (stopping the slip "
+                f"takes {friction['stop']:.4g}; mu j = {bound:.4g})"]
+
+    def draw(self, surface):
+        surface.fill((24, 26, 34))
+        a, b, normal, point = self.geometry
+        corners = [p for body in (a, b) for p in body.world_points()]
+        scale, offset = _fit([(p.x, p.y) for p in corners], (260, 150, 380, 200))
+
+        def at(p):
+            return Vector2(p) * scale + offset
+        for body, colour in ((a, (70, 130, 235)), (b, (245, 150, 40))):
+            pygame.draw.polygon(surface, colour, [at(p) for p in body.world_points()])
+            pygame.draw.polygon(surface, TEXT, [at(p) for p in body.world_points()], 1)
+        pygame.draw.circle(surface, (235, 80, 80), at(point), 5)
+        _arrow(surface, TEXT, at(point), at(point) + Vector2(normal) * 50, 2)
+        if self.check_id == "resolve_k":
+            self._draw_changes(surface, at, a, b, Vector2(normal), Vector2(point))
+        else:
+            self._draw_friction(surface)
+        _footer(surface, self.lines(), "white: the normal A->B at the contact   [ ]: case   Tab: scene   Esc: quit")
+
+    def _draw_changes(self, surface, at, a, b, normal, point):
+        impulses = [(normal * self.lesson_j(), LESSON, 5)]
+        if self.case["j"] is not None:
+            impulses.append((normal * self.case["j"], STUDENT, 2))
+        changes = [(body, sign * impulse * body.inv_mass, sign * (point - body.pos).cross(impulse) * body.inv_inertia,
+                    colour, width) for impulse, colour, width in impulses for body, sign in ((a, -1), (b, 1))]
+        longest = max([dv.length() for _, dv, _, _, _ in changes] + [1e-9])
+        for body, dv, dw, colour, width in changes:
+            _arrow(surface, colour, at(body.pos), at(body.pos) + dv * (120 / longest), width)
+            _spin_arc(surface, colour, at(body.pos), 22 if colour == LESSON else 30, dw)
+
+    def _draw_friction(self, surface):
+        friction, bound = self.case["friction"], abs(self.case["mu"] * self.case["j"])
+        reach = max(bound, abs(friction["stop"]), abs(friction["jt"]), 1e-9) * 1.1
+        bar = pygame.Rect(100, 400, 700, 6)
+        x_of = lambda v: bar.centerx + v / reach * bar.width / 2   # noqa: E731
+        pygame.draw.rect(surface, (80, 84, 100), bar)
+        pygame.draw.rect(surface, (150, 155, 170), (x_of(-bound), bar.top, x_of(bound) - x_of(-bound), bar.height))
+        font = _font(20)
+        for value, colour, label, rise in ((friction["stop"], TEXT, "stops the slip", 70),
+                                           (max(-bound, min(bound, friction["stop"])), LESSON, "the lesson's", 52),
+                                           (friction["jt"], STUDENT, "yours", 34)):
+            pygame.draw.line(surface, colour, (x_of(value), bar.top - 14), (x_of(value), bar.bottom + 14), 3)
+            surface.blit(font.render(label, True, colour), (x_of(value) - 20, bar.top - rise))
+        surface.blit(font.render("-mu j", True, TEXT), (x_of(-bound) - 16, bar.bottom + 16))
+        surface.blit(font.render("mu j", True, TEXT), (x_of(bound) - 12, bar.bottom + 16))
+
+
+def _resolve_geometry(name):
+    from .labs.tumbling_crates import probes
+    for case in probes.resolve_cases():
+        if case[0] == name:
+            return case[1], case[2], Vector2(case[3]), Vector2(case[4])
+    return None
+
+
 # ---------------------------------------------------------------- polygon_centroid and polygon_inertia
 
 def _fit(points, box=(120, 90, 660, 380)):
@@ -511,6 +610,11 @@ def failing_cases(lab, result, functions):
         data = _data(functions, name) or []
         wrong = [case for case in data if "want" in case and polygon_wrong(case, what)]
         return [PolygonCase(case, k + 1, len(wrong), what) for k, case in enumerate(wrong)]
+    if result.id in ("resolve_k", "resolve_friction") and lab.id == "tumbling_crates":
+        data = _data(functions, "resolve") or []
+        wrong = [case for case in data if resolve_wrong(case, result.id) and _resolve_geometry(case["case"])]
+        return [ResolveCase(case, k + 1, len(wrong), result.id, _resolve_geometry(case["case"]))
+                for k, case in enumerate(wrong)]
     if result.id == "toi_matches_root":
         wrong = [case for case in _data(functions, "circle_toi") or [] if "want" in case and toi_wrong(case)]
         return [ToiCase(case, k + 1, len(wrong), _toi_geometry(case["case"])) for k, case in enumerate(wrong)]

@@ -305,3 +305,18 @@ def test_command_line_show_replays_and_returns(tmp_path):
     assert "--show: apply_impulse_spin (fail)" in out and "failing frame" in out
     status, out, err = run_checker(path, "--show", "ramp_holds", "--seed", str(SEED))
     assert status == 1 and "--show: ramp_holds (skip)" in out
+
+
+def test_resolve_case_draws_both_impulses(tmp_path):
+    corpus = importlib.import_module("corpus_tumbling_crates")
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(corpus.build("k_only_a"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("tumbling_crates"), seed=SEED)
+    assert replay.check.id == "resolve_k" and replay.cases
+    case = replay.cases[0]
+    assert isinstance(case, show_cases.ResolveCase) and case.case["case"] in replay.check.message
+    assert f"j = {case.case['j']:.4g}" in case.lines()[1] and not math.isclose(case.case["j"], case.lesson_j())
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 470)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
