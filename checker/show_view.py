@@ -66,7 +66,9 @@ class RecordedContact:
 
 
 def _finite(body):
-    return all(math.isfinite(v) and abs(v) < 1e6 for v in body["pos"])
+    """True when every coordinate of the body is a number pygame can draw (|v| < 1e6 px)."""
+    values = list(body["pos"]) + [c for p in body.get("points") or () for c in p] + [body.get("radius") or 0.0]
+    return all(math.isfinite(v) and abs(v) < 1e6 for v in values)
 
 
 def bodies_of(frame, scale=1.0, offset=(0, 0)):

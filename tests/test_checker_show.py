@@ -320,3 +320,23 @@ def test_resolve_case_draws_both_impulses(tmp_path):
     case.draw(surface)
     colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 470)}
     assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+
+
+def test_a_record_the_runtime_cannot_have_written_is_not_replayed():
+    """The child writes the record the window replays: one that cannot be lesson11.runtime's (a string where a
+    position belongs) is not drawn, and --show falls back to no scene instead of failing in the parent."""
+    lab = lab_of("tumbling_crates")
+    frames = pictures.reference_record(lab, "corner")["records"]
+    forged = {"records": [dict(frames[0], bodies=[dict(b, pos=["x", 0]) for b in frames[0]["bodies"]])]}
+    assert show.trusted_frames(lab, "corner", forged) == []
+    assert show.trusted_frames(lab, "corner", {"records": frames}) == frames
+
+    class Row:
+        records, preview, seed, path = {"corner": forged}, "corner", SEED, "tumbling_crates.py"
+        results = ()
+    Row.lab = lab
+    result = type("R", (), {"id": "apply_impulse_spin", "status": "fail", "message": "m"})()
+    replay = show.build_replay(Row, result)
+    assert replay.frames == [] and replay.scene is None and replay.fail_frame is None
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_j)]), frames=2)   # draws the "no scene" text
+    assert viewer.frame is None
