@@ -283,14 +283,15 @@ class Arbiter(ReferenceArbiter):
                 c.normal_impulse = c.friction_impulse = 0.0
             if self.mu == 0:
                 c.friction_impulse = 0.0
+        # what every pass reads: the bodies, their motion keys, the normal, the inverse masses, μ
+        self.fixed = (a, b, id(a), id(b), nx, ny, ima, iia, imb, iib, self.mu)
         self.moved = None  # the motion the kept separations belong to (solve)
+        self.bouncing = None  # the points restitution acts on (bounce)
 
     def warm_start(self):
         if collision.READABLE:
             return super().warm_start()
-        a, b = self.a, self.b
-        nx, ny = self.normal
-        ima, iia, imb, iib = a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia
+        a, b, _, _, nx, ny, ima, iia, imb, iib, _ = self.fixed
         (vax, vay), (vbx, vby) = a.vel, b.vel
         wa, wb = a.omega, b.omega
         for c in self.points:
@@ -308,33 +309,33 @@ class Arbiter(ReferenceArbiter):
         b.vel.update(vbx, vby)
         b.omega = wb
 
-    def separations(self, motion):
-        """Each point's separation (px) for this motion, as ReferenceArbiter.separation works it out."""
-        dax, day, ca, sa = motion[id(self.a)]
-        dbx, dby, cb, sb = motion[id(self.b)]
+    def separations(self, motion_a, motion_b):
+        """Per point, what the passes of a sub-step read: (point, separation px as ReferenceArbiter.separation
+        works it out, its anchors rax, ray, rbx, rby, mass_n, mass_t)."""
+        dax, day, ca, sa = motion_a
+        dbx, dby, cb, sb = motion_b
         nx, ny = self.normal
-        found = []
+        rows = []
         for c in self.points:
             rax, ray, rbx, rby = c.anchors
             mx = (dbx + cb * rbx - sb * rby - rbx) - (dax + ca * rax - sa * ray - rax)
             my = (dby + sb * rbx + cb * rby - rby) - (day + sa * rax + ca * ray - ray)
-            found.append(mx * nx + my * ny - c.depth)
-        return found
+            rows.append((c, mx * nx + my * ny - c.depth, rax, ray, rbx, rby, c.mass_normal, c.mass_tangent))
+        return rows
 
     def solve(self, h, soft, use_bias, motion):
         if collision.READABLE:
             return super().solve(h, soft, use_bias, motion)
-        a, b = self.a, self.b
-        moved = (motion[id(a)], motion[id(b)])
-        if self.moved is None or moved[0] is not self.moved[0] or moved[1] is not self.moved[1]:
-            self.moved, self.kept = moved, self.separations(motion)  # World.body_motion makes new tuples on a move
-        nx, ny = self.normal
-        ima, iia, imb, iib = a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia
+        a, b, key_a, key_b, nx, ny, ima, iia, imb, iib, mu = self.fixed
+        motion_a, motion_b = motion[key_a], motion[key_b]
+        moved = self.moved
+        if moved is None or motion_a is not moved[0] or motion_b is not moved[1]:
+            # World.body_motion makes a new tuple for a body that moved: work the separations out again
+            self.moved, self.kept = (motion_a, motion_b), self.separations(motion_a, motion_b)
         (vax, vay), (vbx, vby) = a.vel, b.vel
         wa, wb = a.omega, b.omega
         bias_rate, soft_mass, soft_impulse = soft
-        for c, s in zip(self.points, self.kept):
-            rax, ray, rbx, rby = c.anchors
+        for c, s, rax, ray, rbx, rby, mass_normal, _ in self.kept:
             if s > 0:
                 bias, mass_scale, impulse_scale = s / h, 1.0, 0.0
             elif use_bias:
@@ -346,7 +347,7 @@ class Arbiter(ReferenceArbiter):
                 bias, mass_scale, impulse_scale = 0.0, 1.0, 0.0
             vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
             old = c.normal_impulse
-            new = old + (-c.mass_normal * mass_scale * (vn + bias) - impulse_scale * old)
+            new = old + (-mass_normal * mass_scale * (vn + bias) - impulse_scale * old)
             if 0.0 > new:  # max(new, 0.0)
                 new = 0.0
             c.normal_impulse = new
@@ -360,15 +361,13 @@ class Arbiter(ReferenceArbiter):
             vbx += px * imb
             vby += py * imb
             wb += (rbx * py - rby * px) * iib
-        mu = self.mu
         if mu != 0:
             tx, ty = ny, -nx
-            for c in self.points:
-                rax, ray, rbx, rby = c.anchors
+            for c, _, rax, ray, rbx, rby, _, mass_tangent in self.kept:
                 vt = (vbx - wb * rby - vax + wa * ray) * tx + (vby + wb * rbx - vay - wa * rax) * ty
                 old = c.friction_impulse
                 limit = mu * c.normal_impulse
-                new = old - c.mass_tangent * vt
+                new = old - mass_tangent * vt
                 if not new < limit:  # clamp(new, -limit, limit), as max(-limit, min(limit, new)) picks
                     new = limit
                 if not new > -limit:
@@ -392,12 +391,10 @@ class Arbiter(ReferenceArbiter):
             return super().bounce(resting_speed)
         if self.restitution == 0:
             return
-        a, b = self.a, self.b
-        nx, ny = self.normal
-        ima, iia, imb, iib = a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia
-        for c in self.points:
-            if c.approach >= -resting_speed or c.max_normal_impulse == 0:
-                continue
+        if self.bouncing is None:  # the same points every restitution pass of a step (they change no approach)
+            self.bouncing = [c for c in self.points if not (c.approach >= -resting_speed or c.max_normal_impulse == 0)]
+        a, b, _, _, nx, ny, ima, iia, imb, iib, _ = self.fixed
+        for c in self.bouncing:
             rax, ray, rbx, rby = c.anchors
             (vax, vay), (vbx, vby) = a.vel, b.vel
             wa, wb = a.omega, b.omega
