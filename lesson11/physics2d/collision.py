@@ -440,12 +440,12 @@ def _unit(x, y):
 
 def _best_edge_xy(points, dx, dy):
     """_best_edge on (x, y) pairs and a direction (dx, dy): (v1, v2, the farthest corner)."""
-    distinct, last = [], points[-1]
+    distinct, (lx, ly) = [], points[-1]
     for p in points:  # p != the corner before it, as Vector2's == compares (each coordinate within 1e-6)
-        ex, ey = p[0] - last[0], p[1] - last[1]
-        if ex != ex or abs(ex) >= VECTOR_EPSILON or ey != ey or abs(ey) >= VECTOR_EPSILON:
+        ex, ey = p[0] - lx, p[1] - ly
+        if not (-VECTOR_EPSILON < ex < VECTOR_EPSILON and -VECTOR_EPSILON < ey < VECTOR_EPSILON):
             distinct.append(p)
-        last = p
+        lx, ly = p
     points = distinct or points[:1]
     n = len(points)
     i, top = 0, points[0][0] * dx + points[0][1] * dy
@@ -455,9 +455,10 @@ def _best_edge_xy(points, dx, dy):
             i, top = k, along
     v, before, after = points[i], points[i - 1], points[(i + 1) % n]
     bx, by, ax, ay = v[0] - before[0], v[1] - before[1], v[0] - after[0], v[1] - after[1]
-    if bx * bx + by * by > 0 and ax * ax + ay * ay > 0:
-        (ubx, uby), (uax, uay) = _unit(bx, by), _unit(ax, ay)
-        if abs(ubx * dx + uby * dy) <= abs(uax * dx + uay * dy):
+    to_before, to_after = bx * bx + by * by, ax * ax + ay * ay  # |v - before|², |v - after|²
+    if to_before > 0 and to_after > 0:
+        to_before, to_after = math.sqrt(to_before), math.sqrt(to_after)
+        if abs(bx / to_before * dx + by / to_before * dy) <= abs(ax / to_after * dx + ay / to_after * dy):
             return before, v, v
     return v, after, v
 
