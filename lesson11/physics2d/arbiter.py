@@ -227,7 +227,7 @@ class Arbiter(ReferenceArbiter):
     point's separation is worked out once per sub-step and kept for its passes.
     Inside readable_versions() every method runs the reference's.
     """
-    moved = None  # the bodies' motion the kept separations belong to (solve; prepare forgets it)
+    kept_for = None  # (motion of A, of B, h, soft, use_bias): what the kept pass rows belong to (solve)
 
     def update(self, manifold):
         if collision.READABLE:
@@ -285,7 +285,7 @@ class Arbiter(ReferenceArbiter):
                 c.friction_impulse = 0.0
         # what every pass reads: the bodies, their motion keys, the normal, the inverse masses, μ
         self.fixed = (a, b, id(a), id(b), nx, ny, ima, iia, imb, iib, self.mu)
-        self.moved = None  # the motion the kept separations belong to (solve)
+        self.kept_for = None  # the pass rows are worked out again at the first solve
         self.bouncing = None  # the points restitution acts on (bounce)
 
     def warm_start(self):
@@ -309,35 +309,22 @@ class Arbiter(ReferenceArbiter):
         b.vel.update(vbx, vby)
         b.omega = wb
 
-    def separations(self, motion_a, motion_b):
-        """Per point, what the passes of a sub-step read: (point, separation px as ReferenceArbiter.separation
-        works it out, its anchors rax, ray, rbx, rby, mass_n, mass_t)."""
+    def pass_rows(self, motion_a, motion_b, h, soft, use_bias):
+        """What each pass of a sub-step reads, per point: (point, rax, ray, rbx, rby, bias px/s, -mass_n × the
+        mass scale, the impulse scale, mass_t), from the separation s as ReferenceArbiter.separation works it
+        out and the bias solve() picks for it (the bodies do not move between the passes of a sub-step)."""
         dax, day, ca, sa = motion_a
         dbx, dby, cb, sb = motion_b
         nx, ny = self.normal
+        bias_rate, soft_mass, soft_impulse = soft
         rows = []
         for c in self.points:
             rax, ray, rbx, rby = c.anchors
             mx = (dbx + cb * rbx - sb * rby - rbx) - (dax + ca * rax - sa * ray - rax)
             my = (dby + sb * rbx + cb * rby - rby) - (day + sa * rax + ca * ray - ray)
-            rows.append((c, mx * nx + my * ny - c.depth, rax, ray, rbx, rby, c.mass_normal, c.mass_tangent))
-        return rows
-
-    def solve(self, h, soft, use_bias, motion):
-        if collision.READABLE:
-            return super().solve(h, soft, use_bias, motion)
-        a, b, key_a, key_b, nx, ny, ima, iia, imb, iib, mu = self.fixed
-        motion_a, motion_b = motion[key_a], motion[key_b]
-        moved = self.moved
-        if moved is None or motion_a is not moved[0] or motion_b is not moved[1]:
-            # World.body_motion makes a new tuple for a body that moved: work the separations out again
-            self.moved, self.kept = (motion_a, motion_b), self.separations(motion_a, motion_b)
-        (vax, vay), (vbx, vby) = a.vel, b.vel
-        wa, wb = a.omega, b.omega
-        bias_rate, soft_mass, soft_impulse = soft
-        for c, s, rax, ray, rbx, rby, mass_normal, _ in self.kept:
+            s = mx * nx + my * ny - c.depth
             if s > 0:
-                bias, mass_scale, impulse_scale = s / h, 1.0, 0.0
+                bias, mass_scale, impulse_scale = s / h, 1.0, 0.0  # speculative: close the gap, no more
             elif use_bias:
                 bias = bias_rate * s
                 if -MAX_PUSH > bias:  # max(bias_rate s, -MAX_PUSH), compared as max() compares
@@ -345,9 +332,25 @@ class Arbiter(ReferenceArbiter):
                 mass_scale, impulse_scale = soft_mass, soft_impulse
             else:
                 bias, mass_scale, impulse_scale = 0.0, 1.0, 0.0
+            rows.append((c, rax, ray, rbx, rby, bias, -c.mass_normal * mass_scale, impulse_scale, c.mass_tangent))
+        return rows
+
+    def solve(self, h, soft, use_bias, motion):
+        if collision.READABLE:
+            return super().solve(h, soft, use_bias, motion)
+        a, b, key_a, key_b, nx, ny, ima, iia, imb, iib, mu = self.fixed
+        motion_a, motion_b, kept = motion[key_a], motion[key_b], self.kept_for
+        if kept is None or motion_a is not kept[0] or motion_b is not kept[1] or use_bias is not kept[4] \
+                or soft is not kept[3] or h != kept[2]:
+            # a new sub-step (World.body_motion makes a new tuple for a body that moved) or the relax pass
+            self.kept_for = (motion_a, motion_b, h, soft, use_bias)
+            self.kept = self.pass_rows(motion_a, motion_b, h, soft, use_bias)
+        (vax, vay), (vbx, vby) = a.vel, b.vel
+        wa, wb = a.omega, b.omega
+        for c, rax, ray, rbx, rby, bias, scaled_mass, impulse_scale, _ in self.kept:
             vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
             old = c.normal_impulse
-            new = old + (-mass_normal * mass_scale * (vn + bias) - impulse_scale * old)
+            new = old + (scaled_mass * (vn + bias) - impulse_scale * old)
             if 0.0 > new:  # max(new, 0.0)
                 new = 0.0
             c.normal_impulse = new
@@ -363,7 +366,7 @@ class Arbiter(ReferenceArbiter):
             wb += (rbx * py - rby * px) * iib
         if mu != 0:
             tx, ty = ny, -nx
-            for c, _, rax, ray, rbx, rby, _, mass_tangent in self.kept:
+            for c, rax, ray, rbx, rby, _, _, _, mass_tangent in self.kept:
                 vt = (vbx - wb * rby - vax + wa * ray) * tx + (vby + wb * rbx - vay - wa * rax) * ty
                 old = c.friction_impulse
                 limit = mu * c.normal_impulse
@@ -417,7 +420,7 @@ def readable_versions():
     """Inside the block, the reference solver runs its readable versions: ReferenceArbiter's methods and
     collision's corner_manifold_reference / clip_manifold_reference (the test and the bench compare them).
 
-    A world keeps one version for all its steps: the float Arbiter keeps separations between passes.
+    A world keeps one version for all its steps: the float Arbiter keeps what its passes read between them.
     """
     before = collision.READABLE
     collision.READABLE = True
