@@ -395,9 +395,8 @@ def corner_manifold_reference(pa, pb, normal, margin=0.0):
     more than CORNER_MERGE px away from it ACROSS the normal, |(p - q)·t| with
     t the tangent: two boxes of equal width have their corners on top of each
     other, one above the other by the overlap; those are one contact, not two
-    (measured along the whole distance, a 100:1 pair overlapping 0.5 px got
-    both its points on one side, rocked and sank 4.25 px). Equal depths keep
-    the earlier corner, so rounding cannot swap the answer.
+    (lesson11/bench/README.md has what measuring along the whole distance did).
+    Equal depths keep the earlier corner, so rounding cannot swap the answer.
     The readable reference of corner_manifold (which the World runs).
     """
     found = []
