@@ -29,6 +29,10 @@ Phases of one fixed step dt, with h = dt / substeps (world.py calls them in orde
   after the sub-steps:
   7. restitution: contacts that approached faster than resting_speed and
      pushed get vn = -e·vn(approach), with the total still clamped Pn >= 0
+
+Two versions of the same formulas: ReferenceArbiter (readable, with Vector2)
+and Arbiter (plain floats, what the World runs); inside readable_versions()
+the World runs the readable one, and collision's readable manifolds.
 """
 import contextlib
 import math
@@ -76,8 +80,9 @@ class ReferenceArbiter:
     """The contact between two bodies, kept from step to step: the readable version, with Vector2.
 
     The documented reference of the solver's formulas. The World runs Arbiter,
-    the same formulas on plain floats (2-3× faster); tests/test_arbiter_fast.py
-    holds the two within 1e-9 px, and readable_versions() runs this one.
+    the same formulas on plain floats (lesson11/bench/README.md has the times);
+    tests/test_arbiter_fast.py holds the two within 1e-9 px, and
+    readable_versions() runs this one.
     """
 
     def __init__(self, a, b):
