@@ -228,8 +228,9 @@ class Arbiter(ReferenceArbiter):
     Each line computes what the reference computes, in the same order of
     operations (Vector2's arithmetic is IEEE doubles too), so the two agree to
     the last bit; only the Vector2 objects and calls are gone from the loops.
-    The bodies do not move between the passes of one sub-step, so each
-    point's separation is worked out once per sub-step and kept for its passes.
+    The bodies do not move between the passes of one sub-step, so what each
+    point's passes read (separation, bias, scaled mass) is worked out once per
+    sub-step and kept while the bodies' motion and the pass's settings are the same.
     Inside readable_versions() every method runs the reference's.
     """
     kept_for = None  # (motion of A, of B, h, soft, use_bias): what the kept pass rows belong to (solve)
@@ -344,12 +345,9 @@ class Arbiter(ReferenceArbiter):
         if collision.READABLE:
             return super().solve(h, soft, use_bias, motion)
         a, b, key_a, key_b, nx, ny, ima, iia, imb, iib, mu = self.fixed
-        motion_a, motion_b, kept = motion[key_a], motion[key_b], self.kept_for
-        if kept is None or motion_a is not kept[0] or motion_b is not kept[1] or use_bias is not kept[4] \
-                or soft is not kept[3] or h != kept[2]:
-            # a new sub-step (World.body_motion makes a new tuple for a body that moved) or the relax pass
-            self.kept_for = (motion_a, motion_b, h, soft, use_bias)
-            self.kept = self.pass_rows(motion_a, motion_b, h, soft, use_bias)
+        now = (tuple(motion[key_a]), tuple(motion[key_b]), h, soft, use_bias)
+        if now != self.kept_for:  # a body moved (a new sub-step), or the relax pass: work the rows out again
+            self.kept_for, self.kept = now, self.pass_rows(*now)
         (vax, vay), (vbx, vby) = a.vel, b.vel
         wa, wb = a.omega, b.omega
         for c, rax, ray, rbx, rby, bias, scaled_mass, impulse_scale, _ in self.kept:
