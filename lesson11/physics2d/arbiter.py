@@ -231,6 +231,7 @@ class Arbiter(ReferenceArbiter):
     The bodies do not move between the passes of one sub-step, so what each
     point's passes read (separation, bias, scaled mass) is worked out once per
     sub-step and kept while the bodies' motion and the pass's settings are the same.
+    warm_start and bounce (once a sub-step, and the restitution passes) are the reference's.
     Inside readable_versions() every method runs the reference's.
     """
     kept_for = None  # (motion of A, of B, h, soft, use_bias): what the kept pass rows belong to (solve)
@@ -278,6 +279,7 @@ class Arbiter(ReferenceArbiter):
             else:
                 rax = ray = rbx = rby = 0.0
             c.anchors = (rax, ray, rbx, rby)
+            c.ra, c.rb = Vector2(rax, ray), Vector2(rbx, rby)  # for warm_start and bounce, the reference's
             # 1 / k for n and t, k = 1/mA + 1/mB + (ra × d)² / IA + (rb × d)² / IB (effective_mass_inverse)
             an, bn, at, bt = rax * ny - ray * nx, rbx * ny - rby * nx, rax * ty - ray * tx, rbx * ty - rby * tx
             c.mass_normal = 1 / (ima + imb + an * an * iia + bn * bn * iib)
@@ -292,28 +294,6 @@ class Arbiter(ReferenceArbiter):
         # what every pass reads: the bodies, their motion keys, the normal, the inverse masses, μ
         self.fixed = (a, b, id(a), id(b), nx, ny, ima, iia, imb, iib, self.mu)
         self.kept_for = None  # the pass rows are worked out again at the first solve
-        self.bouncing = None  # the points restitution acts on (bounce)
-
-    def warm_start(self):
-        if collision.READABLE:
-            return super().warm_start()
-        a, b, _, _, nx, ny, ima, iia, imb, iib, _ = self.fixed
-        (vax, vay), (vbx, vby) = a.vel, b.vel
-        wa, wb = a.omega, b.omega
-        for c in self.points:
-            pn, pt = c.normal_impulse, c.friction_impulse
-            px, py = nx * pn + ny * pt, ny * pn + -nx * pt  # P = Pn n + Pt t, t = (n.y, -n.x)
-            rax, ray, rbx, rby = c.anchors
-            vax -= px * ima
-            vay -= py * ima
-            wa -= (rax * py - ray * px) * iia
-            vbx += px * imb
-            vby += py * imb
-            wb += (rbx * py - rby * px) * iib
-        a.vel.update(vax, vay)
-        a.omega = wa
-        b.vel.update(vbx, vby)
-        b.omega = wb
 
     def pass_rows(self, motion_a, motion_b, h, soft, use_bias):
         """What each pass of a sub-step reads, per point: (point, rax, ray, rbx, rby, bias px/s, -mass_n × the
@@ -391,31 +371,6 @@ class Arbiter(ReferenceArbiter):
         a.omega = wa
         b.vel.update(vbx, vby)
         b.omega = wb
-
-    def bounce(self, resting_speed):
-        if collision.READABLE:
-            return super().bounce(resting_speed)
-        if self.restitution == 0:
-            return
-        if self.bouncing is None:  # the same points every restitution pass of a step (they change no approach)
-            self.bouncing = [c for c in self.points if not (c.approach >= -resting_speed or c.max_normal_impulse == 0)]
-        a, b, _, _, nx, ny, ima, iia, imb, iib, _ = self.fixed
-        for c in self.bouncing:
-            rax, ray, rbx, rby = c.anchors
-            (vax, vay), (vbx, vby) = a.vel, b.vel
-            wa, wb = a.omega, b.omega
-            vn = ((vbx + -wb * rby) - (vax + -wa * ray)) * nx + ((vby + wb * rbx) - (vay + wa * rax)) * ny
-            old = c.normal_impulse
-            new = old - c.mass_normal * (vn + self.restitution * c.approach)
-            if 0.0 > new:
-                new = 0.0
-            c.normal_impulse = new
-            p = new - old
-            px, py = nx * p, ny * p
-            a.vel.update(vax - px * ima, vay - py * ima)
-            a.omega = wa - (rax * py - ray * px) * iia
-            b.vel.update(vbx + px * imb, vby + py * imb)
-            b.omega = wb + (rbx * py - rby * px) * iib
 
 
 @contextlib.contextmanager
