@@ -6,7 +6,7 @@
                                                       # (--out-dir writes bench_accuracy_cost_quick.md/.png)
 
 1. tunnelling     a 3 px bullet against a 4 px wall: discrete steps, sub-steps ×2..×16, CCD
-2. iterations     a 10-crate pyramid with 1..20 solver passes (and the accumulated solver, if physics2d has it)
+2. iterations     a 10-crate pyramid with 1..20 solver passes, in the lesson solver and the accumulated one
 3. contact rule   "corners" (the lesson's) against "clip" (edge clipping) on the same piles
 4. effects        the same scene with only the effects it needs, with everything, with "ccd" but no bullet
 5. pymunk         the same piles in pymunk (skipped with a message if pymunk is missing)
@@ -276,7 +276,7 @@ def rule_cases(settings):
 
 
 def pymunk_cases(settings):
-    """Each comparison pile in physics2d (lesson solver: the baseline; accumulated if present) and in pymunk."""
+    """Each comparison pile in physics2d (lesson solver: the baseline; the accumulated solver) and in pymunk."""
     try:
         from .pymunk_pile import PymunkPile
     except ImportError:
@@ -544,7 +544,7 @@ METHOD_NOTES = [
     "would show 0 drift and 0 kinetic energy. The lesson's solver in World's default solve-first order "
     "finds contacts once per sub-step (4 sub-steps a step, plus once at the end of the step) and runs the "
     "passes on them, so its time grows "
-    "with the passes but less than in proportion; the accumulated solver (if present) detects once per step.",
+    "with the passes but less than in proportion; the accumulated solver detects once per step.",
     "The effects study compares final positions with the baseline run of the same scene: 0 px means "
     "bit-for-bit the same simulation, and a round-off difference (below 10⁻⁶ px) the same motion, so any "
     "time saved is pure overhead.",
