@@ -61,9 +61,9 @@ def run_probe(measurement, readable):
 @pytest.mark.parametrize("rule", ["corners", "clip"])
 @pytest.mark.parametrize("pile", ["pyramid4", "stack4", "stack8"])
 def test_accuracy_piles_end_within_1e_9_px(pile, rule):
-    """accuracy_cost's piles (studies 2, 3, 5) in the reference solver, 2 s: readable and float end together."""
+    """accuracy_cost's piles (studies 2, 3, 5) in the reference solver, 1 s: readable and float end together."""
     make = lambda: bench_scenes.pile_world(pile, solver="accumulated", contact_rule=rule)
-    readable, fast = (run_world(make, 240, flag) for flag in (True, False))
+    readable, fast = (run_world(make, 120, flag) for flag in (True, False))
     assert fast.arbiters, "the scene must have contacts, or it tests nothing"
     assert gap(readable.bodies, fast.bodies) <= TOLERANCE
 
@@ -71,6 +71,7 @@ def test_accuracy_piles_end_within_1e_9_px(pile, rule):
 SETTINGS = accuracy_cost.FULL
 
 
+@pytest.mark.slow  # 14 cases, about 25 CPU s: the published durations
 @pytest.mark.parametrize("engine", ["reference corners", "reference clip"])
 @pytest.mark.parametrize("scene", [key for key, *_ in accuracy_cost.solver_scenes(SETTINGS)])
 def test_accuracy_solver_scenes_give_the_same_figures(engine, scene):
