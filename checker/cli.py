@@ -15,6 +15,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
 from . import html_report, outputs, pictures, report, sandbox, users
+from . import show as show_mode
 from .entries import discover, graded_folders
 from .grade import Grader
 from . import labs
@@ -75,6 +76,10 @@ def parse_args(argv):
                              f"(default: {users.DEFAULT_CHILD_USER}; 'root' runs it as root); the grader stays root "
                              "and keeps what only it may read, such as the solutions. A grader that is not root "
                              "runs it as itself")
+    parser.add_argument("--show", nargs="?", const="", default=None, metavar="CHECK",
+                        help="grade one FILE, then replay the first failed check (or CHECK) in a window: the scene "
+                             "as graded beside the solution's, or a failed function check's cases drawn "
+                             "(checker/show.py); with --seed N the probes draw the same inputs again")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     parser.add_argument("--allow-edits", action="store_true",
                         help="code changed outside the steps is a warning, not a failure (the scenes still run)")
@@ -98,6 +103,11 @@ def parse_args(argv):
     for option in ("csv", "gradescope", "gradescope_dir", "pictures", "html"):
         if getattr(args, option) == "":
             parser.error(f"--{option.replace('_', '-')} needs a path, got an empty one")
+    if args.show is not None:
+        extra = [f"--{o.replace('_', '-')}" for o in ("json", "csv", "gradescope", "gradescope_dir", "pictures", "html")
+                 if getattr(args, o)]
+        if extra:
+            parser.error(f"--show opens a window for one file; it does not write {', '.join(extra)}")
     return args
 
 
@@ -213,12 +223,19 @@ def main(argv=None):
     if argv[:1] == ["package"]:  # python -m checker package PLATFORM --out ...: see checker/package.py
         from . import package
         return package.main(argv[1:])
+    if argv[:1] == ["assign"]:  # python -m checker assign [--check] [--out DIR]: see checker/assign.py
+        from . import assign
+        return assign.main(argv[1:])
     try:
         args = parse_args(argv)
         if args.list:
             report.list_labs(labs.LABS, sys.stdout)
             return 0
         entries = plan(args)
+        if args.show is not None and len(entries) != 1:
+            raise UsageError(f"--show replays one file; {len(entries)} were found in {' '.join(args.paths)}")
+        if args.show is not None and show_mode.display_problem():
+            raise UsageError(show_mode.display_problem())
         # without the zygote a POSIX child starts Python as that user, so it must be able to (the portable
         # child starts as the grader and switches user itself once it has imported what a lab needs)
         problem = args.child_user and not sandbox.zygote_enabled() and not sandbox.portable() and \
@@ -229,6 +246,8 @@ def main(argv=None):
         for line in str(exc).splitlines():
             print(f"checker: error: {line}", file=sys.stderr)
         return USAGE
+    if args.show is not None:
+        return show_mode.main(args, entries)
     grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024, args.child_user), args.jobs,
                     args.total_timeout,
                     options={"allow_edits": args.allow_edits}, keep_records=bool(args.pictures or args.html),
@@ -241,6 +260,9 @@ def main(argv=None):
     else:
         for row in rows:
             report.text_report(row, sys.stdout, pictures=links.get(row.path))
+            if getattr(row, "seed", None) is not None and not row.passed:
+                print(f"  graded with seed {row.seed}: python -m checker {row.path} --show --seed {row.seed} "
+                      "replays the first failure\n")
         if len(rows) > 1:
             report.summary_table(rows, sys.stdout)
         for line in written:

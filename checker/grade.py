@@ -205,10 +205,10 @@ class Grader:
         if self.keep_records and not sub.scenarios and self._wants_preview(results):
             # a function check failed, so no scene ran: run the lab's own scene anyway, for a picture only
             # (not graded), so the file that needs a picture most gets one beside the solution's
-            name = lab.preview_scene
-            settings = lab.scenarios().get(name) if name else None
-            run = self.run(path, "scenario", dict(settings, probes=lab.probes), lab.scene_seconds(name, settings)) \
-                if settings is not None else None
+            name = lab.preview_scene   # (scene_settings, not settings: the report's seed is the probe's)
+            scene_settings = lab.scenarios().get(name) if name else None
+            run = self.run(path, "scenario", dict(scene_settings, probes=lab.probes),
+                           lab.scene_seconds(name, scene_settings)) if scene_settings is not None else None
             if run is not None and getattr(run, "record", None) and run.record.get("records"):
                 records[name], preview = run.record, name
         runs = [sub.probe, *sub.scenarios.values()]

@@ -273,6 +273,36 @@ def _diff(mine, theirs, out):
             out.append((None, y))
 
 
+def _code_part(text):
+    """A line without its comment (roughly: from the first #) and its spaces, to tell a changed line from a
+    changed comment or a reformatted one."""
+    return "".join(text.split("#", 1)[0].split())
+
+
+def _differing_lines(x, y, my_origin, their_origin, sub_lines, start_lines):
+    """(submission line, handout line) of the first line where statements x and y (the submission's and the
+    handout's, each spanning lines) differ, so a message quotes the edited line, not the statement's first.
+
+    Lines are compared without their comments first, then as written; where no line differs (the same
+    lines, re-wrapped), the statements' first lines. Only the lines before a step region inside the
+    statement are compared (the step's code is the student's).
+    """
+    def span(node, origin, lines):
+        found = []
+        for i in range(node.lineno, min(node.end_lineno or node.lineno, len(origin)) + 1):
+            if found and (origin[i - 1] != found[-1] + 1 or START.match(lines[found[-1] - 1])):
+                break
+            found.append(origin[i - 1])
+        return found
+    mine, theirs = span(x, my_origin, sub_lines), span(y, their_origin, start_lines)
+    for key in (_code_part, str):
+        for k in range(max(len(mine), len(theirs))):
+            m, t = mine[min(k, len(mine) - 1)], theirs[min(k, len(theirs) - 1)]
+            if key(_text(sub_lines, m, None)) != key(_text(start_lines, t, None)):
+                return m, t
+    return mine[0], theirs[0]
+
+
 def _header(node):
     """The statement without its bodies (to tell an edited `if` line from an edit inside it)."""
     return type(node)(**{f: getattr(node, f) for f in node._fields if f not in BODIES})
@@ -319,6 +349,7 @@ def compare(submission, starter, submission_name="the file", starter_name="the h
         line = my_origin[x.lineno - 1] if x is not None else None
         hand = their_origin[y.lineno - 1] if y is not None else None
         if x is not None and y is not None:
+            line, hand = _differing_lines(x, y, my_origin, their_origin, sub_lines, start_lines)
             mine_text, their_text = _around_difference(_text(sub_lines, line, None), _text(start_lines, hand, None))
             problems.append(f"line {line} `{mine_text}` (the handout has `{their_text}`)")
         elif x is not None:

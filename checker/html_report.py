@@ -108,18 +108,32 @@ def histogram(rows):
     return "\n".join(out)
 
 
-def summary_table(rows, names):
-    """HTML: the sortable table, one row per file (the file name links to its checks below)."""
+def picture_id(index, check_id, number=0):
+    """The HTML id of a file's picture of a check (the summary table and the check's line link to it)."""
+    return f"pic-{index}-{check_id}-{number}"
+
+
+def _picture_links(index, pictures):
+    """HTML: a link to the picture of each failed check that has one ("" when none has)."""
+    return " ".join(f'<a href="#{picture_id(index, check_id)}">{_e(check_id)}</a>'
+                    for check_id, shown in (pictures or {}).items() if shown)
+
+
+def summary_table(rows, names, pictures=None):
+    """HTML: the sortable table, one row per file (the file name links to its checks below, and each failed
+    check's picture is linked). pictures: {row path: {check id: [Picture]}}."""
+    pictures = pictures or {}
     out = ['<table id="summary"><thead><tr><th data-type="text">file</th><th data-type="text">lab</th>'
            '<th data-type="number">score</th><th data-type="text">status</th><th data-type="text">first problem</th>'
-           '<th data-type="number">flagged</th></tr></thead><tbody>']
+           '<th data-type="number">flagged</th><th data-type="text">pictures</th></tr></thead><tbody>']
     for k, row in enumerate(rows):
         name = names[row.path]
         title = row.lab.title if row.lab is not None else ""
         out.append(f'<tr data-index="{k}"><td><a href="#file-{k}">{_e(name)}</a></td><td>{_e(title)}</td>'
                    f'<td class="num" data-sort="{row.score:g}">{row.score:g}/{row.max_score:g}</td>'
                    f'<td class="{row.status}">{row.status}</td><td>{_e(_first_problem(row))}</td>'
-                   f'<td class="num">{len(getattr(row, "flags", ()) or ())}</td></tr>')
+                   f'<td class="num">{len(getattr(row, "flags", ()) or ())}</td>'
+                   f'<td>{_picture_links(k, pictures.get(row.path))}</td></tr>')
     out.append("</tbody></table>")
     return "\n".join(out)
 
@@ -144,9 +158,9 @@ def submission(row, index, pictures, name):
             out.append(f'<div class="msg">{_e(r.message)}</div>')
         if r.hint:
             out.append(f'<div class="hint">hint {_e(r.hint)}</div>')
-        for picture in (pictures or {}).get(r.id, ()):
-            out.append(f'<div class="pic"><img alt="{_e(r.id)}: scene {_e(picture.scene)}" '
-                       f'src="{picture.data_url}"></div>')
+        for number, picture in enumerate((pictures or {}).get(r.id, ())):
+            out.append(f'<div class="pic" id="{picture_id(index, r.id, number)}"><img alt="{_e(r.id)}: scene '
+                       f'{_e(picture.scene)}" src="{picture.data_url}"></div>')
         out.append("</div>")
     out.append("</details>")
     return "\n".join(out)
@@ -170,7 +184,8 @@ def html_text(rows, pictures=None, title="Lesson 11 lab checker: class report"):
         f"<p>{len(rows)} file(s), {len(graded)} graded. {_e(_summary_line(rows))}</p>",
         f"<p>{_e(means or 'No lab files.')}</p>",
         "<h2>Where the class struggled: results per check</h2>", histogram(rows),
-        "<h2>Files</h2><p>Click a heading to sort; click a file to see its checks.</p>", summary_table(rows, names),
+        "<h2>Files</h2><p>Click a heading to sort; click a file to see its checks, a check under pictures to see "
+        "its picture.</p>", summary_table(rows, names, pictures),
         "<h2>Checks of each file</h2>",
     ]
     parts += [submission(row, k, pictures.get(row.path), names[row.path]) for k, row in enumerate(rows)]

@@ -7,9 +7,13 @@ module draws the scene from the recorded frames, headless, with pygame:
 FRAMES frames spread over the run, the bodies' outlines (static grey, moving
 in colours, asleep paler, outlines over the fills), every contact point as a red dot with its normal, and
 under it the lab's reference solution running the same scene (run once per
-process and scene, then cached). When the check's message names a frame
-("... at frame 42 ..."), that frame is one of those shown and is framed in red
-in both rows.
+process and scene, then cached). The pictures follow the failure: the frames
+run from LEAD frames before the failing frame (checker/show.py's failure(): the
+frame the message names, "... at frame 42 ...", else the first frame the check's
+quantity passes its bound, else the first frame the run differs from the
+solution's) to TRAIL frames after it, that frame is framed in red in both rows,
+the tiles are framed on the bodies the failure is about, and the caption names
+the frame and the quantity there.
 
 Nothing here knows a lab: the scenes come from PICTURE_SCENES, the reference
 from the lab module's SOLUTION, the settings from its scenarios().
@@ -27,6 +31,9 @@ import re
 import threading
 from dataclasses import dataclass
 
+# the video driver the user's environment named (None: SDL picks the desktop's), before the pictures' own default:
+# --show (checker/show.py) opens its window with it
+USER_VIDEO_DRIVER = os.environ.get("SDL_VIDEODRIVER")
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
@@ -39,6 +46,7 @@ TILE = (220, 150)          # px of one frame (the 900 × 600 scene drawn at abou
 WORLD = (0, 0, 900, 600)   # px: the labs' window, shown when no body moves
 MARGIN = 40                # px around the moving bodies
 MIN_VIEW = (300, 200)      # px: the smallest part of the scene a tile shows
+LEAD, TRAIL = 30, 30       # frames shown before and after the failing frame (0.5 s each at 60 fps)
 FPS = 60
 LABEL_H = 18
 HEAD_H = 22
@@ -102,13 +110,14 @@ def _font(size):
     return pygame.font.Font(None, size)
 
 
-def _view(frames):
+def _view(frames, focus=None):
     """(left, top, width, height) in px: around every moving body shown (40 px margin, at least MIN_VIEW px),
-    in the tile's shape; the labs' whole window when nothing moves."""
+    or only the bodies whose indices are in `focus` (the bodies the check is about), in the tile's shape;
+    the labs' whole window when nothing moves."""
     xs, ys = [], []
     for frame in frames:
-        for body in frame.get("bodies", ()):
-            if body.get("static"):
+        for index, body in enumerate(frame.get("bodies", ())):
+            if body.get("static") or (focus and index not in focus):
                 continue
             r = body.get("radius") or 0.0
             points = body.get("points") or [body["pos"]]
@@ -131,9 +140,13 @@ def _view(frames):
 
 
 def _pick(frames, marked=None, count=FRAMES):
-    """`count` recorded frames spread evenly from first to last, the marked frame (a frame number) among them."""
+    """`count` recorded frames spread evenly, the marked frame (a frame number) among them: from LEAD frames
+    before the marked frame to TRAIL frames after it (the run's first to last frame when none is marked)."""
     if not frames:
         return []
+    if marked is not None:
+        window = [f for f in frames if marked - LEAD <= f.get("frame", 0) <= marked + TRAIL]
+        frames = window or frames
     n = len(frames)
     indices = sorted({round(i * (n - 1) / max(count - 1, 1)) for i in range(min(count, n))})
     if marked is not None:
@@ -206,11 +219,12 @@ def _draw_frame(surface, rect, frame, view, marked):
         pygame.draw.rect(surface, MARK, rect.inflate(4, 4), 3)
 
 
-def filmstrip(record, reference=None, marked=None, title="", count=FRAMES):
+def filmstrip(record, reference=None, marked=None, title="", count=FRAMES, focus=None):
     """A pygame Surface: the run's frames in a row (and the reference's same frames below), labelled.
 
     record / reference: lesson11.runtime records ({"records": [frame, ...]});
-    marked: the frame number of the failure, if known.
+    marked: the frame number of the failure, if known (the frames then run from a little before it to a
+    little after); focus: the indices of the bodies to frame (None: every moving body).
     """
     frames = (record or {}).get("records") or []
     shown = _pick(frames, marked, count)
@@ -218,7 +232,7 @@ def filmstrip(record, reference=None, marked=None, title="", count=FRAMES):
     rows = [("yours", shown)]
     if ref_frames:
         rows.append(("solution", [_nearest(ref_frames, f.get("frame", 0)) for f in shown]))
-    view = _view(shown + [f for f in rows[-1][1] if f is not None])
+    view = _view(shown + [f for f in rows[-1][1] if f is not None], focus)
     label_w = 70
     width = label_w + len(shown) * (TILE[0] + GAP) + GAP
     height = HEAD_H + len(rows) * (TILE[1] + LABEL_H + GAP) + GAP
@@ -279,8 +293,41 @@ def _scenes_of(report, check_id):
     return ((preview,), True) if preview else ((), False)
 
 
+def focus_bodies(frame, reference):
+    """Indices of the moving bodies a failure is about in a frame: those more than show.VISIBLE px from the
+    solution's body of the same index, else every moving body."""
+    from .show import VISIBLE
+    moving = [i for i, b in enumerate((frame or {}).get("bodies", ())) if not b.get("static")]
+    if reference is None or len(reference.get("bodies", ())) != len(frame.get("bodies", ())):
+        return set(moving)
+    apart = {i for i in moving if _distance(frame["bodies"][i]["pos"], reference["bodies"][i]["pos"]) > VISIBLE}
+    return apart or set(moving)
+
+
+def _distance(a, b):
+    return ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
+
+
+def caption(check_id, scene, title, ungraded, fail_frame, quantity, value):
+    """The filmstrip's title: the check, the scene, the failing frame and the check's quantity there."""
+    head = (f"not graded, to show what {check_id} means: " if ungraded else f"{check_id}: ") + \
+        f"scene '{scene}' ({title})"
+    if fail_frame is not None:
+        head += f"; frame {fail_frame} (t = {fail_frame / FPS:.2f} s)"
+        if quantity is not None and value is not None:
+            bound = f", bound {quantity.bound:g}" if quantity.bound is not None else ""
+            head += f": {quantity.label} {value:.3g}{bound}"
+    return head + "; top: this file, bottom: the solution"
+
+
 def pictures_for(report, check_id, with_reference=True):
-    """[Picture] for one failed behaviour check of a report: one filmstrip per scene it reads ([] otherwise)."""
+    """[Picture] for one failed behaviour check of a report: one filmstrip per scene it reads ([] otherwise).
+
+    Each filmstrip runs from a little before the failing frame to a little after it (checker/show.py's
+    failure(): the frame the message names, or where the check's quantity first passes its bound, or
+    where the run first differs from the solution's), framed on the bodies the failure is about.
+    """
+    from .show import failure
     result = next((r for r in pictured_results(report) if r.id == check_id), None)
     if result is None:
         return []
@@ -291,11 +338,14 @@ def pictures_for(report, check_id, with_reference=True):
         if not record or not record.get("records"):
             continue
         reference = reference_record(report.lab, scene) if with_reference else None
-        title = f"{check_id}: scene '{scene}' ({report.lab.title}); top: this file, bottom: the solution"
-        if ungraded:
-            title = (f"not graded, to show what {check_id} means: scene '{scene}' ({report.lab.title}); top: this "
-                     f"file, bottom: the solution")
-        surface = filmstrip(record, reference, marked_frame(result), title)
+        frames, theirs = record["records"], (reference or {}).get("records") or []
+        fail_frame, _, quantity, values = failure(report.lab, result, frames, theirs, not ungraded)
+        at = min(range(len(frames)), key=lambda i: abs(frames[i]["frame"] - fail_frame)) \
+            if fail_frame is not None else None
+        value = values[at] if at is not None and values else None
+        focus = focus_bodies(frames[at], _nearest(theirs, fail_frame)) if at is not None else None
+        title = caption(check_id, scene, report.lab.title, ungraded, fail_frame, quantity, value)
+        surface = filmstrip(record, reference, fail_frame, title, focus=focus)
         pictures.append(Picture(check_id, scene, png_bytes(surface)))
     return pictures
 

@@ -31,6 +31,12 @@ def twin(body):
     return copied
 
 
+def changed_vectors(given, **originals):
+    """{name: [x, y]} of the vectors in `given` {name: the copy handed to a step function} that no longer equal
+    `originals[name]`: a step that changes a contact's normal or point in place, which its caller goes on using."""
+    return {name: [vector.x, vector.y] for name, vector in given.items() if vector != originals[name]}
+
+
 def with_reference_steps(module, lab_path, function, steps):
     """The lab's `function` with the inside of each step in `steps` taken from the solution, or None.
 

@@ -1,4 +1,4 @@
-"""Sleeping Crates: a Lesson 11 "Going Further" exercise.
+"""Sleeping Crates: a Lesson 11 "Going further" exercise.
 
 Forty crates in a pile cost the World a contact search over every pair, five
 times a step, even when nothing in the pile moves. Sleeping stops paying for
@@ -15,9 +15,16 @@ as the lesson's project hands in sat():
     moves(body)                           which bodies are integrated and tested
     wake_on_contact(a, b)                 for every touching pair: which bodies to wake
 
-The comments "Step 1" to "Step 5" follow the exercise's five steps. Steps 2
-to 4 are the code between the lines `# --- step N: ... ---` and
-`# --- end of step N ---`: yours to write in the starter, done in the solution.
+The comments "Step 1" to "Step 5" follow the exercise's five steps. Steps 2 to
+4 are the code between the lines `# --- step N: ... ---` and
+`# --- end of step N ---`: yours to write in the starter, done in the solution
+(where each step opens with the starter's text for it, between
+`# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
+the lesson (lesson11/README.md) that explains it. In the starter some steps
+hold a placeholder line, marked "replace this placeholder", that keeps the
+file running until you write the step: replace that line with your code. Code
+written above a placeholder left in place is wasted: a placeholder `return`
+hands back its stand-in value unless your code returned first.
 
 Controls: left click drops a crate (up to 40), R resets, D shows contact points
 and normals. Sleeping crates are drawn dimmed; the HUD counts awake and
@@ -60,6 +67,12 @@ def sleep_timer(timer, speed, spin, dt):
     reaches SLEEP_AFTER.
     """
     # --- step 2: the sleep timer ---
+    # BEGIN PROMPT
+    # Step 2 (lesson: "Going further", Sleeping): while the crate is calm (speed < SLEEP_SPEED
+    # and |spin| < SLEEP_SPIN) return timer + dt; one step above either threshold starts the
+    # timer again from 0.
+    # starter: return 0.0  # until you write step 2, no crate ever falls asleep: replace this placeholder
+    # END PROMPT
     if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
         return timer + dt
     return 0.0
@@ -67,13 +80,20 @@ def sleep_timer(timer, speed, spin, dt):
 
 
 def moves(body):
-    """True if the World must integrate this body and test its pairs: it is dynamic and awake.
+    """True if the World must move this body and test its pairs: it is dynamic and awake.
 
     A static body (inv_mass 0) never moves, and a sleeping one (body.asleep)
-    stays where it fell asleep. The World skips every pair in which neither
-    body moves, so a sleeping pile on the floor costs no contact tests.
+    stays where it fell asleep. World.integrate_velocities and
+    World.integrate_positions skip a body for which this is False, and the
+    World skips every pair in which neither body moves, so a sleeping pile on
+    the floor costs no contact tests.
     """
     # --- step 3: skip sleeping bodies ---
+    # BEGIN PROMPT
+    # Step 3 (lesson: "Going further", Sleeping): static bodies (inv_mass 0) never move, and a
+    # sleeping body (body.asleep) must not move either: return False for both.
+    # starter: return body.inv_mass != 0  # until you write step 3, sleeping crates still move: replace this placeholder
+    # END PROMPT
     return body.inv_mass != 0 and not body.asleep
     # --- end of step 3 ---
 
@@ -87,6 +107,12 @@ def wake_on_contact(a, b):
     each body returned together with the island it fell asleep with.
     """
     # --- step 4: wake on contact ---
+    # BEGIN PROMPT
+    # Step 4 (lesson: "Going further", Sleeping): return a list of the bodies of the pair to
+    # wake: a sleeping body whose partner is dynamic and awake. The floor and walls wake
+    # nothing; [] if nothing wakes.
+    # starter: return []  # until you write step 4, no contact wakes a sleeping crate: replace this placeholder
+    # END PROMPT
     woken = []
     for sleeper, other in ((a, b), (b, a)):
         if sleeper.asleep and other.inv_mass != 0 and not other.asleep:

@@ -8,7 +8,14 @@ from lesson11.physics2d.
 
 The comments "Step 1" to "Step 7" follow the exercise's seven steps. Steps 2
 to 6 are the code between the lines `# --- step N: ... ---` and
-`# --- end of step N ---`: yours to write in the starter, done in the solution.
+`# --- end of step N ---`: yours to write in the starter, done in the solution
+(where each step opens with the starter's text for it, between
+`# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
+the lesson (lesson11/README.md) that explains it. In the starter some steps
+hold a placeholder line, marked "replace this placeholder", that keeps the
+file running until you write the step: replace that line with your code. Code
+written above a placeholder left in place is wasted: a placeholder `return`
+hands back its stand-in value unless your code returned first.
 
 Controls: left click drops a crate, R resets, D shows contact points and normals.
 The solver panel (lesson11/panel.py, lines marked `# solver panel`) lists its
@@ -47,6 +54,13 @@ def sat(pa, pb):
     """
     best_axis, best_depth = None, math.inf
     # --- step 2: the SAT loop ---
+    # BEGIN PROMPT
+    # Step 2 (lesson: "2. The Separating Axis Theorem: the flashlight picture"): loop over the
+    # edge normals of both polygons (edge_normals); project pa and pb onto each axis (project).
+    # A gap on any axis means they are apart: return None. Otherwise keep the axis with the
+    # smallest overlap in best_axis and its overlap in best_depth.
+    # starter: return None  # until you write step 2, nothing ever collides: replace this placeholder
+    # END PROMPT
     for axis in edge_normals(pa) + edge_normals(pb):
         min_a, max_a = project(pa, axis)
         min_b, max_b = project(pb, axis)
@@ -57,6 +71,11 @@ def sat(pa, pb):
             best_axis, best_depth = axis, overlap
     # --- end of step 2 ---
     # --- step 3: make the normal point from A to B ---
+    # BEGIN PROMPT
+    # Step 3 (lesson: "3. Depth, direction and contact points"): the axis may point either
+    # way. If it points from B towards A (compare it with centre_of(pb) - centre_of(pa)),
+    # turn it round, so the normal always points from A to B.
+    # END PROMPT
     if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:
         best_axis = -best_axis
     # --- end of step 3 ---
@@ -68,6 +87,11 @@ def apply_impulse(a, b, impulse, ra, rb):
     a.vel -= impulse * a.inv_mass
     b.vel += impulse * b.inv_mass
     # --- step 6: the two spin updates ---
+    # BEGIN PROMPT
+    # Step 6 (lesson: "5. Impulses that spin, and friction"): the impulse also changes the
+    # spin. Update a.omega and b.omega with cross(ra, impulse) and cross(rb, impulse) times
+    # each inverse inertia, with the same signs as the two velocity lines above (A -=, B +=).
+    # END PROMPT
     a.omega -= cross(ra, impulse) * a.inv_inertia
     b.omega += cross(rb, impulse) * b.inv_inertia
     # --- end of step 6 ---
@@ -83,6 +107,10 @@ def resolve(a, b, normal, point):
     ran, rbn = cross(ra, normal), cross(rb, normal)
     k = a.inv_mass + b.inv_mass
     # --- step 4: the spin terms of the effective mass ---
+    # BEGIN PROMPT
+    # Step 4 (lesson: "5. Impulses that spin, and friction"): add each body's spin term
+    # to k: (ra × n)² / I_A and (rb × n)² / I_B, using ran, rbn and inv_inertia.
+    # END PROMPT
     k += ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia
     # --- end of step 4 ---
     e = min(a.restitution, b.restitution) if vn < -RESTING_SPEED else 0.0
@@ -98,6 +126,10 @@ def resolve(a, b, normal, point):
         jt = -rel.dot(t) / kt  # the impulse that would stop the sliding
         mu = math.sqrt(a.friction * b.friction)
         # --- step 5: Coulomb's law, |jt| <= mu * j ---
+        # BEGIN PROMPT
+        # Step 5 (lesson: "5. Impulses that spin, and friction"): Coulomb's law. Friction may
+        # never be bigger than mu times the normal impulse j: keep jt between -mu * j and mu * j.
+        # END PROMPT
         jt = max(-mu * j, min(mu * j, jt))
         # --- end of step 5 ---
         apply_impulse(a, b, t * jt, ra, rb)

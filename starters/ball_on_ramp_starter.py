@@ -1,4 +1,4 @@
-"""Ball on the Ramp: a Lesson 11 lab ("Going Further").
+"""Ball on the Ramp: a Lesson 11 lab ("Going further").
 
 A solid ball rolls down the crates lab's 22° ramp, drops onto the floor
 and knocks crates over. Your circle_polygon() finds where the ball touches a
@@ -8,9 +8,16 @@ where on the ball a contact pushes, and the friction in resolve() turns the
 slide into a roll. Crates against crates use the library's sat(); everything
 else (bodies, the fixed-step world, drawing) comes from lesson11.physics2d.
 
-The comments "Step 1" to "Step 8" follow the exercise. Steps 2 to 7 are the
-code between the lines `# --- step N: ... ---` and `# --- end of step N ---`:
-yours to write in the starter, done in the solution.
+The comments "Step 1" to "Step 8" follow the exercise's eight steps. Steps 2
+to 7 are the code between the lines `# --- step N: ... ---` and
+`# --- end of step N ---`: yours to write in the starter, done in the solution
+(where each step opens with the starter's text for it, between
+`# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
+the lesson (lesson11/README.md) that explains it. In the starter some steps
+hold a placeholder line, marked "replace this placeholder", that keeps the
+file running until you write the step: replace that line with your code. Code
+written above a placeholder left in place is wasted: a placeholder `return`
+hands back its stand-in value unless your code returned first.
 
 Controls: left click drops a ball, right click drops a crate, R resets, D shows
 contact points and normals. The solver panel (lesson11/panel.py, lines marked
@@ -54,10 +61,10 @@ def closest_on_segment(p, a, b):
     """
     ab = b - a
     # --- step 2: the closest point on one edge ---
-    # Step 2 (lesson: "Circles, Polygons and Fast Objects"): project p onto the edge's line,
+    # Step 2 (lesson: "A ball against a polygon"): project p onto the edge's line,
     # t = (p - a)·ab / (ab·ab), then clamp t to [0, 1] so the point stays between a and b,
     # and return a + ab * t.
-    return pygame.Vector2(math.inf, math.inf)  # until you write step 2, no edge is near the ball: it falls through
+    return pygame.Vector2(math.inf, math.inf)  # until you write step 2, the ball falls through: replace this placeholder
     # --- end of step 2 ---
 
 
@@ -77,9 +84,10 @@ def circle_polygon(center, radius, points):
     if dist < 1e-9:  # the center exactly on the outline: push away from the polygon's middle
         return (centre_of(points) - center).normalize(), radius
     # --- step 3: the center inside the polygon ---
-    # Step 3 (same section): if the center is already inside the polygon (inside(center, points)),
-    # the nearest edge is the ball's way out, so the push must go the other way: return the
-    # normal -offset / dist and the depth radius + dist (the ball leaves through that edge).
+    # Step 3 (lesson: "A ball against a polygon"): if the center is already inside the polygon
+    # (inside(center, points)), the nearest edge is the ball's way out, so the push must go the
+    # other way: return the normal -offset / dist and the depth radius + dist (the ball leaves
+    # through that edge).
     # --- end of step 3 ---
     if dist >= radius:
         return None
@@ -98,18 +106,19 @@ def separate(a, b, normal, depth):
         return  # two static bodies
     push = max(depth - SLOP, 0.0) * PERCENT
     # --- step 4: split the push-out by inverse mass ---
-    # Step 4 (same section): split the push by inverse mass. Move A back along the normal by
-    # push * a.inv_mass / total and B forward by push * b.inv_mass / total, so a static body
-    # never moves and a light body moves more than a heavy one.
+    # Step 4 (lesson: "5. Impulses that spin, and friction", the push-out): split the push by
+    # inverse mass. Move A back along the normal by push * a.inv_mass / total and B forward by
+    # push * b.inv_mass / total, so a static body never moves and a light body moves more than
+    # a heavy one.
     # --- end of step 4 ---
 
 
 def disc_inertia(mass, radius):
     """Moment of inertia (mass·px²) of a solid disc about its center: I = ½ m r²."""
     # --- step 5: the ball's moment of inertia ---
-    # Step 5 (lesson: "Spin: Angular Velocity and Inertia"): return the moment of inertia of a
-    # solid disc of this mass and radius, I = ½ m r².
-    return math.inf  # until you write step 5, the ball is impossible to turn
+    # Step 5 (lesson: "4. Spin: angular velocity and moment of inertia"): return the moment of
+    # inertia of a solid disc of this mass and radius, I = ½ m r².
+    return math.inf  # until you write step 5, the ball cannot turn: replace this placeholder
     # --- end of step 5 ---
 
 
@@ -120,9 +129,9 @@ def contact_point(center, radius, normal, depth):
     point is center + normal * radius. depth (px) is the overlap there.
     """
     # --- step 6: the contact point on the ball's surface ---
-    # Step 6 (lesson: "Depth, Direction and Contact Points"): a contact pushes on the ball's
+    # Step 6 (lesson: "3. Depth, direction and contact points"): a contact pushes on the ball's
     # surface, not at its center: return the point radius px from the center along the normal.
-    return center  # until you write step 6, every push acts at the ball's center: it never turns
+    return center  # until you write step 6, every push acts at the center (no turning): replace this placeholder
     # --- end of step 6 ---
 
 
@@ -152,8 +161,8 @@ def resolve(a, b, normal, point):
     t = tangent.normalize()
     mu = math.sqrt(a.friction * b.friction)
     # --- step 7: friction at the contact point makes the ball roll ---
-    # Step 7 (lesson: "Impulses That Spin, and Friction"): the friction impulse. Compute kt like
-    # k but along t (with both spin terms), jt = -rel·t / kt, clamp it to [-mu * j, mu * j]
+    # Step 7 (lesson: "5. Impulses that spin, and friction"): the friction impulse. Compute kt
+    # like k but along t (with both spin terms), jt = -rel·t / kt, clamp it to [-mu * j, mu * j]
     # (Coulomb), and apply t * jt at the contact with apply_impulse, so it turns the ball.
     # --- end of step 7 ---
 

@@ -1,4 +1,4 @@
-"""Bullets: a Lesson 11 lab ("Going Further").
+"""Bullets: a Lesson 11 lab ("Going further").
 
 A gun on the left fires small, fast circles at a 4 px wall and at crates on
 the floor. Checked only where they are once per step, the bullets jump
@@ -11,9 +11,17 @@ hit there and spends the rest of the step with the new velocity. Everything
 else (bodies, the fixed-step world, the swept face-and-corner test
 circle_polygon_toi, drawing) comes from lesson11.physics2d.
 
-The comments "Step 1" to "Step 6" follow the exercise. Steps 2 to 5 are the
-code between the lines `# --- step N: ... ---` and `# --- end of step N ---`:
-yours to write in the starter, done in the solution.
+The comments "Step 1" to "Step 6" follow the exercise's six steps. Steps 2 to
+5 are the code between the lines `# --- step N: ... ---` and
+`# --- end of step N ---`: yours to write in the starter, done in the solution
+(where each step opens with the starter's text for it, between
+`# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
+the lesson (lesson11/README.md) that explains it. In the starter some steps
+hold a placeholder line, marked "replace this placeholder", that keeps the
+file running until you write the step: replace that line with your code. Code
+written above a placeholder left in place is wasted: a placeholder `return`
+hands back its stand-in value unless your code returned first, and a
+placeholder move or assignment runs again after yours.
 
 Controls: click fires a bullet from the gun towards the mouse. Keys 1-5 choose
 how bullets move: 1 plain steps, 2 / 3 / 4 sub-stepping ×2 / ×4 / ×8, 5
@@ -71,21 +79,22 @@ def circle_toi(p1, v1, r1, p2, v2, r2, dt):
     dp, dv = p2 - p1, v2 - v1
     reach = r1 + r2
     # --- step 2: the time of impact of two circles ---
-    # Step 2 (lesson: "Tunneling"): c = dp·dp - reach²; return 0.0 when c <= 0 (already touching).
-    # Then a = dv·dv, b = 2 dp·dv and the discriminant b² - 4ac: return None when a == 0 (no
-    # relative motion) or the discriminant is negative (the paths miss). Otherwise take the EARLIER
-    # root t = (-b - √(b² - 4ac)) / 2a and return it only if 0 <= t <= dt, else None.
-    return None  # until you write step 2, nothing is ever hit: bullets fly through everything under CCD
+    # Step 2 (lesson: "Tunnelling, sub-stepping and continuous collision detection"):
+    # c = dp·dp - reach²; return 0.0 when c <= 0 (already touching). Then a = dv·dv,
+    # b = 2 dp·dv and the discriminant b² - 4ac: return None when a == 0 (no relative motion)
+    # or the discriminant is negative (the paths miss). Otherwise take the EARLIER root
+    # t = (-b - √(b² - 4ac)) / 2a and return it only if 0 <= t <= dt, else None.
+    return None  # until you write step 2, nothing is ever hit under CCD: replace this placeholder
     # --- end of step 2 ---
 
 
 def bounding_radius(points, centre):
     """The radius (px) of the smallest circle around `centre` that holds every point of the outline."""
     # --- step 3: the crate's bounding circle ---
-    # Step 3 (lesson: "Going Further"): the bounding circle around `centre` must hold every
-    # point: return the largest distance from centre to a point of the outline
+    # Step 3 (lesson: "Going further", Bullets): the bounding circle around `centre` must hold
+    # every point: return the largest distance from centre to a point of the outline
     # (centre.distance_to(p)).
-    return math.inf  # until you write step 3, every bounding circle is endless
+    return math.inf  # until you write step 3, every bounding circle is endless: replace this placeholder
     # --- end of step 3 ---
 
 
@@ -106,10 +115,11 @@ def time_of_impact(bullet, other, dt):
         return t, (gap.normalize() if gap.length_squared() > 0 else Vector2(1, 0))
     points = other.world_points()
     # --- step 4: the broad test against the bounding circle ---
-    # Step 4 (lesson: "Going Further"): the broad test. Call circle_toi() for the bullet
-    # (pos, vel, radius) against the crate's bounding circle: centre other.pos, not moving
-    # (Vector2()), radius bounding_radius(points, other.pos), over dt. If it finds no contact (None, not merely 0.0), the bullet cannot reach the crate this
-    # step: return None at once, before the exact swept test below.
+    # Step 4 (lesson: "Going further", Bullets): the broad test. Call circle_toi() for the
+    # bullet (pos, vel, radius) against the crate's bounding circle: centre other.pos, not
+    # moving (Vector2()), radius bounding_radius(points, other.pos), over dt. If it finds no
+    # contact (None, not merely 0.0), the bullet cannot reach the crate this step: return None
+    # at once, before the exact swept test below.
     # --- end of step 4 ---
     return circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, points, dt)
 
@@ -122,7 +132,9 @@ def swept_move(world, bullet, dt):
     the bullet moves v t to where it touches, world.resolve() changes the
     velocities at the contact point (on the bullet's surface along the normal),
     and the bullet spends the remaining dt - t moving with its new velocity.
-    (One impact per step: a second hit within the same step is found next step.)
+    One impact per step: that remaining move is not swept, so after a rebound
+    the bullet can pass into or through a second body within the same step
+    unseen (the next step's sweep starts from wherever it ended).
     """
     first = None
     for other in world.bodies:
@@ -137,11 +149,12 @@ def swept_move(world, bullet, dt):
         return
     t, normal, other = first
     # --- step 5: move to the impact, resolve there, spend the rest of the step ---
-    # Step 5 (lesson: "Tunneling"): move the bullet to its time of impact
-    # (bullet.pos += bullet.vel * t), resolve the hit there with world.resolve(bullet, other, normal, point), the point being on the bullet's surface
+    # Step 5 (lesson: "Tunnelling, sub-stepping and continuous collision detection"): move the
+    # bullet to its time of impact (bullet.pos += bullet.vel * t), resolve the hit there with
+    # world.resolve(bullet, other, normal, point), the point being on the bullet's surface
     # (bullet.pos + normal * bullet.radius), then spend the rest of the step, dt - t, moving with
-    # the bullet's NEW velocity.
-    bullet.pos += bullet.vel * dt  # until you write step 5, a bullet ignores the impact it found
+    # the bullet's NEW velocity. Replace the placeholder below: left in, it moves the bullet again.
+    bullet.pos += bullet.vel * dt  # until you write step 5, the bullet ignores the impact: replace this placeholder
     # --- end of step 5 ---
 
 

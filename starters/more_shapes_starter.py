@@ -1,4 +1,4 @@
-"""More Shapes: a Lesson 11 "Going Further" exercise.
+"""More Shapes: a Lesson 11 "Going further" exercise.
 
 Triangles, pentagons, hexagons and little houses join the crates of the
 lesson's project, on the same floor, 22° ramp and wall. The physics is the lesson's:
@@ -10,9 +10,17 @@ area-weighted centroid, computes the moment of inertia by the triangle-fan
 sum, and gives SAT each edge direction once. build() makes every body from
 these functions, so the simulation runs on them.
 
-The comments "Step 1" to "Step 6" follow the exercise's six steps. Steps 2
-to 5 are the code between the lines `# --- step N: ... ---` and
-`# --- end of step N ---`: yours to write in the starter, done in the solution.
+The comments "Step 1" to "Step 6" follow the exercise's six steps. Steps 2 to
+5 are the code between the lines `# --- step N: ... ---` and
+`# --- end of step N ---`: yours to write in the starter, done in the solution
+(where each step opens with the starter's text for it, between
+`# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
+the lesson (lesson11/README.md) that explains it. In the starter some steps
+hold a placeholder line, marked "replace this placeholder", that keeps the
+file running until you write the step: replace that line with your code. Code
+written above a placeholder left in place is wasted: a placeholder `return`
+hands back its stand-in value unless your code returned first, and a
+placeholder move or assignment runs again after yours.
 
 Controls: left click drops the next shape (box, triangle, pentagon, hexagon,
 house, in turn), R resets, D shows contact points, normals and each body's
@@ -59,10 +67,10 @@ def regular_polygon(sides, radius):
     if not isinstance(radius, (int, float)) or not 0 < radius < math.inf:
         raise ValueError(f"a regular polygon needs a positive radius in px, got {radius!r}")
     # --- step 2: a regular polygon's corners ---
-    # Step 2 (lesson: "From Circles to Rotating Polygons"): return the `sides` corners of a
+    # Step 2 (lesson: "1. From circles to rotating polygons"): return the `sides` corners of a
     # regular polygon centred on (0, 0): corner k at angle θk = 2πk / sides (radians), that is
     # Vector2(radius * math.cos(θk), radius * math.sin(θk)), for k = 0, 1, ..., sides - 1.
-    return box_points(radius, radius)  # until you write step 2, every shape is a square
+    return box_points(radius, radius)  # until you write step 2, every shape is a square: replace this placeholder
     # --- end of step 2 ---
 
 
@@ -85,11 +93,11 @@ def polygon_centroid(points):
     if abs(area) < 1e-9:
         raise ValueError("a polygon needs a non-zero area; these points lie on one line")
     # --- step 3: the area-weighted centroid ---
-    # Step 3 (lesson: "Spin: Angular Velocity and Inertia", polygon_inertia needs its points
-    # centred on the centroid): add up (a + b) * cross(a, b) over the edges a -> b (the last
-    # edge runs from the last point back to the first) and return the sum / (6 * area).
+    # Step 3 (lesson: "4. Spin: angular velocity and moment of inertia": polygon_inertia needs
+    # the points centred on the centroid): add up (a + b) * cross(a, b) over the edges a -> b
+    # (the last edge runs from the last point back to the first) and return the sum / (6 * area).
     # Not the average of the corners: each edge's term is weighted by its triangle's area.
-    return Vector2()  # until you write step 3, no shape is moved
+    return Vector2()  # until you write step 3, no outline is centred: replace this placeholder
     # --- end of step 3 ---
 
 
@@ -113,10 +121,11 @@ def polygon_inertia(points, mass):
     if not isinstance(mass, (int, float)) or not 0 < mass < math.inf:
         raise ValueError(f"polygon_inertia needs a positive mass, got {mass!r}")
     # --- step 4: the triangle-fan sum ---
-    # Step 4 (lesson: "Spin: Angular Velocity and Inertia", polygon_inertia): the triangle-fan
-    # sum. For each edge a -> b, the triangle (0, a, b) weighs area2 = |a × b| and adds
-    # area2 * (a·a + a·b + b·b); return mass * (that sum) / (6 * the sum of the weights).
-    return 1e9  # until you write step 4, shapes hardly turn
+    # Step 4 (lesson: "4. Spin: angular velocity and moment of inertia", the convex polygon
+    # row): the triangle-fan sum. For each edge a -> b, the triangle (0, a, b) weighs
+    # area2 = |a × b| and adds area2 * (a·a + a·b + b·b); return mass * (that sum) / (6 * the
+    # sum of the weights).
+    return 1e9  # until you write step 4, shapes hardly turn: replace this placeholder
     # --- end of step 4 ---
 
 
@@ -130,11 +139,12 @@ def separating_axes(pa, pb):
     """
     axes = []
     # --- step 5: skip parallel axes ---
-    # Step 5 (lesson: "Common Questions", should I skip parallel axes?): go through
+    # Step 5 (lesson: "Common questions", Should I skip parallel axes?): go through
     # edge_normals(pa) + edge_normals(pb) and append an axis to `axes` only if it is not
     # parallel to any axis already there: abs(cross(axis, kept)) > PARALLEL for every kept.
-    # Parallel normals (pointing the same way or opposite) give the same shadows.
-    axes = edge_normals(pa) + edge_normals(pb)  # until you write step 5, every edge is tested
+    # Parallel normals (pointing the same way or opposite) give the same shadows. Replace the
+    # placeholder below: left in, it throws away the axes you collected.
+    axes = edge_normals(pa) + edge_normals(pb)  # until you write step 5, every edge is tested: replace this placeholder
     # --- end of step 5 ---
     return axes
 

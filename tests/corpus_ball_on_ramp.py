@@ -30,7 +30,7 @@ import textwrap
 from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus_files import CorpusFiles  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
 
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -59,6 +59,7 @@ class Entry(NamedTuple):
     step: object         # the lesson step the failing check's hint names (None for correct / outside)
     status: tuple        # accepted statuses of that check
     why: str
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
 
 
 def _code(text):
@@ -190,6 +191,44 @@ WRONG = [
         jt = -tangent_speed / kt
         apply_impulse(a, b, t * jt, ra, rb)
     """}, status=("error",), why="NameError on the first slipping contact"),
+    # ---- issue 33: files whose first message once stated a cause they do not have
+    wrong("closest_returns_t", "returns the clamped t itself instead of the point a + ab t", "closest_point", {2: """
+        t = (p - a).dot(ab) / ab.dot(ab)
+        return max(0.0, min(1.0, t))
+    """}, why="a number is no point (it was shown as the point (t, t))"),
+    wrong("closest_no_division", "t = (p - a)·ab, never divided by ab·ab", "closest_point", {2: """
+        t = (p - a).dot(ab)
+        t = max(0.0, min(1.0, t))
+        return a + ab * t
+    """}, why="t is |ab|² times too big; on long edges that clamps like t / |ab| would, a sub-pixel edge tells them "
+              "apart (it was told 't is divided by |ab|')"),
+    wrong("friction_kt_is_k", "divides by the normal's k instead of kt", "friction_rolls", {7: """
+        jt = -rel.dot(t) / k
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="for a ball on a static surface k has no spin term, so kt = k looks like kt without its spin terms; "
+              "a ball hitting a crate off its centre tells them apart"),
+    wrong("friction_bodies_swapped", "apply_impulse(b, a, ...): the bodies swapped in the friction impulse",
+          "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(b, a, t * jt, ra, rb)
+    """}, why="the ball gets -t jt (it was told about the sign of jt), and at the other body's lever arm"),
+    wrong("friction_tangent_rotates_normal", "makes its own tangent by rotating the contact's normal in place",
+          "friction_rolls", {7: """
+        t = normal
+        t.rotate_ip(90)
+        if rel.dot(t) > 0:
+            t = -t
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="every impulse is right, but the caller's normal turns a quarter turn: the World's next contact "
+              "point uses it (once caught only by the scenes, 'the function checks above all pass', step 8)"),
     # ---- outside the steps
     wrong("world_hook_removed", "drops circle_polygon=circle_polygon from the World (the library's test runs)",
           "handout_unchanged", edits=[("                 circle_polygon=circle_polygon, circle_point=contact_point)",
@@ -244,7 +283,55 @@ CORRECT = [
             jt = math.copysign(mu * j, jt)
         apply_impulse(a, b, t * jt, ra, rb)
     """}, why="the same Coulomb clamp written as an if"),
+    correct("correct_tangent_from_normal", "its own tangent: a turned copy of the normal (normal.rotate(90)), "
+            "pointing against the slip", {7: """
+                tangent = normal.rotate(90)
+                if rel.dot(tangent) > 0:
+                    tangent = -tangent
+                rat, rbt = cross(ra, tangent), cross(rb, tangent)
+                kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+                jt = -rel.dot(tangent) / kt
+                jt = max(-mu * j, min(mu * j, jt))
+                apply_impulse(a, b, tangent * jt, ra, rb)
+            """}, why="rotate() makes a new vector; in 2D the unit tangent is ± the turned normal, either sign works "
+                      "once jt's sign follows it"),
 ]
+
+# the words each wrong entry's first message must contain: it names the mistake, not only the step (issue 33)
+SAYS = {
+    "closest_not_clamped": ("not clamped",),
+    "closest_divides_by_length": ("divided by |ab|",),
+    "closest_p_minus_b": ("from b",),
+    "closest_moves_the_corner": ("in place",),
+    "closest_returns_t": ("returned the number",),
+    "closest_no_division": ("not divided",),
+    "inside_not_flipped": ("towards the nearest edge",),
+    "inside_shallow_depth": ("radius - dist",),
+    "push_not_split": ("whole push",),
+    "push_halved": ("halved",),
+    "push_shares_swapped": ("swapped",),
+    "push_missing_total": ("without dividing by the total",),
+    "split_scales_the_normal": ("changed its argument normal",),
+    "inertia_ring": ("ring",),
+    "inertia_ignores_mass": ("mass is left out",),
+    "inertia_sphere": ("sphere",),
+    "contact_at_centre": ("the ball's center",),
+    "contact_halfway": ("halfway",),
+    "contact_far_side": ("far side",),
+    "friction_sign_flipped": ("along the slip",),
+    "friction_not_clamped": ("not clamped",),
+    "friction_kt_no_spin": ("lacks the spin terms",),
+    "friction_at_centre": ("changes no spin",),
+    "friction_velocity_only": ("changes no spin",),
+    "friction_crashes": ("NameError",),
+    "friction_kt_is_k": ("kt = k",),
+    "friction_bodies_swapped": ("apply_impulse(b, a",),
+    "friction_tangent_rotates_normal": ("changed its argument normal",),
+    "world_hook_removed": ("circle_polygon=circle_polygon",),
+    "inertia_bypassed": ("disc_inertia(mass, radius)",),
+    "slop_zeroed": ("SLOP = 0.0",),
+}
+WRONG = with_says(WRONG, SAYS)
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

@@ -30,7 +30,7 @@ import textwrap
 from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus_files import CorpusFiles  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
 
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -56,6 +56,7 @@ class Entry(NamedTuple):
     step: object         # the lesson step the failing check's hint names (None for correct / outside)
     status: tuple        # accepted statuses of that check
     why: str
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
 
 
 def _code(text):
@@ -106,6 +107,13 @@ WRONG = [
         t = (-b - math.sqrt(disc)) / (2 * a)
         return t if 0 <= t <= dt else None
     """}, why="the head-on time comes out thousands of times too large (or no contact at all)"),
+    wrong("toi_twice", "divides by a instead of 2a: the time comes out twice too long", "toi_matches_root",
+          {2: TOI_HEAD + """
+        if a == 0 or disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / a
+        return t if 0 <= t <= dt else None
+    """}, why="head-on at 3000 px/s: 35.3 ms instead of 17.7 ms, past dt, so None"),
     wrong("toi_no_past_check", "no early-out for circles moving apart (negative t returned)", "toi_matches_root",
           {2: TOI_HEAD + """
         if a == 0 or disc < 0:
@@ -149,6 +157,14 @@ WRONG = [
         return t if 0 <= t <= dt else None
     """}, status=("error", "fail"), why="ZeroDivisionError for two circles moving together"),
     # ---- step 3: bounding_radius
+    # issue 33: values that name their formula
+    wrong("bounding_squared", "the farthest corner's squared distance (no square root)", "bounding_circle", {3: """
+        return max((p - centre).length_squared() for p in points)
+    """}, why="a 40 x 40 crate gets 800 = 28.28² px"),
+    wrong("bounding_from_origin", "the farthest corner's distance from (0, 0), not from the centre", "bounding_circle",
+          {3: """
+        return max(p.length() for p in points)
+    """}, why="a crate at (380, 540) gets 680 px"),
     wrong("bounding_half_width", "half the width (largest |x - centre.x|)", "bounding_circle", {3: """
         return max(abs(p.x - centre.x) for p in points)
     """}, why="a 40 x 40 crate gets 20 px instead of 28.3: its corners stick out"),
@@ -193,6 +209,13 @@ WRONG = [
         bullet.pos += bullet.vel * t
         world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
     """}, why="the bullet stays stuck at the wall's face for the rest of the step"),
+    wrong("swept_normal_reversed", "resolves with the normal reversed, resolve(..., -normal, ...)",
+          "swept_move_resolves", {5: """
+        bullet.pos += bullet.vel * t
+        world.resolve(bullet, other, -normal, bullet.pos + normal * bullet.radius)
+        bullet.pos += bullet.vel * (dt - t)
+    """}, why="resolve() sees the bodies moving apart and does nothing: the bullet goes on through (it was told it "
+              "'kept its velocity from before the hit', which is another mistake)"),
     wrong("swept_old_velocity", "spends the rest of the step with the velocity from before the hit",
           "swept_move_resolves", {5: """
         velocity = Vector2(bullet.vel)
@@ -257,6 +280,37 @@ CORRECT = [
         bullet.pos = bullet.pos + bullet.vel * remaining
     """}, why="the same three moves in other words"),
 ]
+
+# the words each wrong entry's first message must contain: it names the mistake, not only the step (issue 33)
+SAYS = {
+    "toi_later_root": ("later root",),
+    "toi_disc_sign_flipped": ("math domain error",),
+    "toi_a_not_squared": ("a = |dv|",),
+    "toi_twice": ("twice the first-contact time",),
+    "toi_no_past_check": ("negative time",),
+    "toi_no_touching_case": ("already overlap",),
+    "toi_ignores_dt": ("later than this step's dt",),
+    "toi_b_sign": ("do touch within the step",),
+    "toi_parallel_crash": ("division by zero",),
+    "bounding_squared": ("squared distance",),
+    "bounding_from_origin": ("from (0, 0)",),
+    "bounding_half_width": ("half the width",),
+    "bounding_nearest_corner": ("nearest corner",),
+    "bounding_average": ("average distance",),
+    "broad_test_missing": ("broad test should have returned None",),
+    "broad_zero_is_falsy": ("gave up on a crate",),
+    "broad_inverted": ("gave up on a crate",),
+    "broad_without_bullet_radius": ("gave up on a crate",),
+    "swept_contact_far_side": ("far side of the bullet",),
+    "swept_stops_at_impact": ("stopped at the impact",),
+    "swept_old_velocity": ("velocity from before the hit",),
+    "swept_normal_reversed": ("normal reversed",),
+    "swept_whole_step_after": ("whole dt more",),
+    "swept_resolve_before_move": ("expected (456.00, 240.00)",),
+    "wall_thickened": ("WALL_WIDTH = 20.0",),
+    "world_not_hooked": ("swept_move",),
+}
+WRONG = with_says(WRONG, SAYS)
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

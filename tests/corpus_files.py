@@ -69,3 +69,13 @@ class CorpusFiles:
                 handle.write(self.build(name, starter, solution))
             paths[name] = path
         return paths
+
+
+def with_says(entries, says):
+    """`entries` with each wrong one's `says` (the words its first message must contain) from the dict `says`.
+
+    Every wrong entry must be in `says` and every name in `says` must be an entry (a renamed entry shows).
+    """
+    names = {entry.name for entry in entries if entry.check != "pass"}
+    assert names == set(says), f"SAYS and the wrong entries differ: {sorted(names ^ set(says))}"
+    return [entry._replace(says=tuple(says[entry.name])) if entry.name in says else entry for entry in entries]

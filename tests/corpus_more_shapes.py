@@ -26,7 +26,7 @@ import textwrap
 from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus_files import CorpusFiles  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "more_shapes_starter.py")
@@ -54,6 +54,7 @@ class Entry(NamedTuple):
     status: tuple        # accepted statuses of that check
     also: tuple          # other checks this mistake may fail too
     why: str             # the input that shows the mistake, or why a correct variant is correct
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
 
 
 def _code(text):
@@ -212,6 +213,38 @@ WRONG = [
             if not axes or abs(cross(axis, axes[-1])) > PARALLEL:
                 axes.append(axis)
     """}, why="a hexagon's fourth normal is compared with the third, not with its twin the first"),
+    # ---------------------------------------------------------------- issue 33: values that name their formula
+    wrong("corners_half_turn", "θk = πk / sides: π where 2π belongs", "polygon_corners", {2: """
+        return [Vector2(radius * math.cos(math.pi * k / sides), radius * math.sin(math.pi * k / sides))
+                for k in range(sides)]
+    """}, why="the corners spread over half a turn: the triangle's corner 1 lands at 60°, not 120°"),
+    wrong("centroid_xy_swapped", "sums the y coordinates into x and the x ones into y", "centroid", {3: """
+        cx = cy = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            w = cross(a, b)
+            cx += (a.y + b.y) * w
+            cy += (a.x + b.x) * w
+        return Vector2(cx, cy) / (6 * area)
+    """}, why="the house's centroid (30, -20.42) comes back as (-20.42, 30)"),
+    wrong("inertia_returns_inverse", "returns 1 / I (the inverse inertia) instead of I", "inertia_sum", {4: """
+        num = den = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            area2 = abs(cross(a, b))
+            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
+            den += area2
+        return 6 * den / (mass * num)
+    """}, why="the triangle's 433.5 comes back as 0.0023"),
+    wrong("axes_not_unit", "builds the edge normals by hand, (-edge.y, edge.x), never normalised", "parallel_axes",
+          {5: """
+        for points in (pa, pb):
+            for i, a in enumerate(points):
+                edge = points[(i + 1) % len(points)] - a
+                axis = Vector2(-edge.y, edge.x)
+                if all(abs(cross(axis, kept)) > PARALLEL for kept in axes):
+                    axes.append(axis)
+    """}, why="a 60 px edge gives an axis of length 60: the shadows (and the depth) come out 60 times too long"),
     # ---------------------------------------------------------------- outside the steps
     wrong("outside_library_inertia", "build() lets Body compute the inertia (the student's polygon_inertia unused)",
           "handout_unchanged", edits=[(
@@ -331,6 +364,39 @@ CORRECT = [
     """}, why="the same directions in another order and sense: sat() turns its normal from A to B anyway, "
               "and no two directions tie for the smallest overlap"),
 ]
+
+# the words each wrong entry's first message must contain: it names the mistake, not only the step (issue 33)
+SAYS = {
+    "corners_in_degrees": ("360k / sides taken as radians",),
+    "corners_one_too_many": ("4 corners",),
+    "corners_sin_cos_swapped": ("x and y are swapped",),
+    "corners_diameter": ("0.5 × radius",),
+    "corners_half_turn": ("π instead of 2π",),
+    "centroid_average_of_corners": ("average of the corners",),
+    "centroid_abs_area": ("lost its sign",),
+    "centroid_abs_cross": ("lost its sign",),
+    "centroid_missing_factor": ("2A instead of 6A",),
+    "centroid_no_closing_edge": ("last point back to the first",),
+    "centroid_xy_swapped": ("x and y swapped",),
+    "inertia_missing_six": ("not divided by 6",),
+    "inertia_ignores_mass": ("mass factor is missing",),
+    "inertia_dot_weight": ("weighted by |a · b|",),
+    "inertia_unweighted": ("not weighted by |a × b|",),
+    "inertia_precedence": ("brackets",),
+    "inertia_wrong_sign": ("a·b term is subtracted",),
+    "inertia_returns_inverse": ("1 / I",),
+    "axes_dot_not_cross": ("perpendicular to a kept one",),
+    "axes_same_way_only": ("the opposite way is parallel too",),
+    "axes_cross_without_abs": ("has no abs()",),
+    "axes_only_a": ("only A's edge normals",),
+    "axes_dot_threshold": ("1 - |a · b|",),
+    "axes_last_kept_only": ("last kept axis only",),
+    "axes_not_unit": ("of length",),
+    "outside_library_inertia": ("inertia=polygon_inertia(local, mass)",),
+    "outside_sat_no_flip": ("best_axis) < 0",),
+    "outside_parallel_tolerance": ("PARALLEL = 0.1",),
+}
+WRONG = with_says(WRONG, SAYS)
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

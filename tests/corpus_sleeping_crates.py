@@ -25,7 +25,7 @@ import textwrap
 from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus_files import CorpusFiles  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
@@ -52,6 +52,7 @@ class Entry(NamedTuple):
     status: tuple        # accepted statuses of that check
     also: tuple          # other checks this mistake may fail too
     why: str             # the input that shows the mistake, or why a correct variant is correct
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
 
 
 def _code(text):
@@ -93,6 +94,22 @@ WRONG = [
     wrong("timer_ignores_spin", "looks at the speed only", "timer_rule", {2: """
         return timer + dt if speed < SLEEP_SPEED else 0.0
     """}, why="a slow crate spinning at 0.2 rad/s counts as calm"),
+    # issue 33: two rules that use `and` and were told "`and`, not `or`", and one that forgets the timer
+    wrong("timer_speed_times_dt", "compares speed * dt (px per step) with SLEEP_SPEED (px/s)", "timer_rule", {2: """
+        if speed * dt < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
+            return timer + dt
+        return 0.0
+    """}, why="a crate moving at 6 px/s moves 0.05 px per step: counts as calm (uses `and`; told 'and, not or')"),
+    wrong("timer_spin_vs_sleep_speed", "compares |spin| with SLEEP_SPEED instead of SLEEP_SPIN", "timer_rule", {2: """
+        if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPEED:
+            return timer + dt
+        return 0.0
+    """}, why="a slow crate spinning at 0.2 rad/s counts as calm (uses `and`; told 'and, not or')"),
+    wrong("timer_returns_dt", "returns dt while calm instead of timer + dt", "timer_rule", {2: """
+        if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
+            return dt
+        return 0.0
+    """}, why="a calm crate 0.25 s into its timer goes back to one step's 0.0083 s: it never sleeps"),
     wrong("timer_returns_none", "sets a local timer but returns nothing", "timer_rule", {2: """
         if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
             timer += dt
@@ -176,6 +193,30 @@ CORRECT = [
         return calm_for
     """}, why="the negation of the calm test; the same values"),
 ]
+
+# the words each wrong entry's first message must contain: it names the mistake, not only the step (issue 33)
+SAYS = {
+    "timer_never_resets": ("kept its value",),
+    "timer_counts_frames": ("adds 1",),
+    "timer_signed_spin": ("abs(spin)",),
+    "timer_or": ("`or`",),
+    "timer_ignores_spin": ("speed only",),
+    "timer_speed_times_dt": ("speed * dt",),
+    "timer_spin_vs_sleep_speed": ("|spin| is compared with SLEEP_SPEED",),
+    "timer_returns_dt": ("you return dt, not timer + dt",),
+    "timer_returns_none": ("returned None",),
+    "moves_ignores_static": ("for the floor",),
+    "moves_ignores_sleep": ("for a sleeping crate",),
+    "moves_inverted": ("for an awake crate",),
+    "moves_mass_zero": ("for the floor",),
+    "wake_one_order": ("both orders",),
+    "wake_by_floor": ("floor never wakes",),
+    "wake_both": ("wakes a and b",),
+    "wake_the_awake_one": ("wakes a; it should wake b",),
+    "wake_sets_flag": ("in place",),
+    "outside_no_sleep_effect": ('{"sleep"}',),
+}
+WRONG = with_says(WRONG, SAYS)
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

@@ -39,6 +39,7 @@ from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
+from corpus_files import with_says  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
@@ -70,6 +71,7 @@ class Entry(NamedTuple):
     status: tuple        # accepted statuses of that check: ("fail",), ("error",) or both
     also: tuple          # other non-function checks this mistake may fail too (e.g. runtime_lines)
     why: str             # the input that shows the mistake, or why a correct variant is correct
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
 
 
 def _code(text):
@@ -332,6 +334,11 @@ STEP5_WRONG = [
     wrong("friction_upper_only", "clamps only from above: jt = min(mu * j, jt)", "resolve_friction", {5: """
         jt = min(mu * j, jt)
     """}, why="jt = -rel·t / kt is never positive (t points along the slip), so this clamps nothing: clamp active"),
+    wrong("friction_bound_signed_vn", "clamps to mu * vn, the closing speed with its sign (vn < 0)",
+          "resolve_friction", {5: """
+        jt = max(-mu * vn, min(mu * vn, jt))
+    """}, why="vn < 0, so the clamp always gives +mu|vn|: friction pushes along the slide (it was told 'the clamp "
+              "must keep its sign', which is another mistake)"),
     wrong("friction_abs_loses_sign", "jt = min(abs(jt), mu * j): the size is clamped, the sign lost", "resolve_friction",
           {5: """
         jt = min(abs(jt), mu * j)
@@ -380,6 +387,14 @@ STEP6_WRONG = [
         b.omega += cross(rb, impulse) / b.inertia
     """}, status=("error",),
         why="the same for two dynamic bodies; a static body has inertia 0: ZeroDivisionError"),
+    wrong("spin_rotates_levers_in_place", "turns ra and rb a quarter turn in place to write r × P as a dot product",
+          "apply_impulse_spin", {6: """
+        ra.rotate_ip(90)   # (-ra.y, ra.x) · P = ra × P
+        rb.rotate_ip(90)
+        a.omega -= ra.dot(impulse) * a.inv_inertia
+        b.omega += rb.dot(impulse) * b.inv_inertia
+    """}, why="both spins change rightly, but the caller's lever arms turn: resolve()'s friction impulse after the "
+              "normal one acts at the wrong points"),
 ]
 
 # ================================================================ outside the steps (handout_unchanged)
@@ -436,6 +451,10 @@ OUTSIDE_WRONG = [
 
 CORRECT = [
     correct("correct_solution_steps", "the solution's code in every step (the reference build)"),
+    correct("correct_lever_turned_copy", "r × P written as a turned copy of r dotted with P (ra.rotate(90))", {6: """
+        a.omega -= ra.rotate(90).dot(impulse) * a.inv_inertia
+        b.omega += rb.rotate(90).dot(impulse) * b.inv_inertia
+    """}, why="rotate() makes a new vector: (-r.y, r.x) · P = r × P, the caller's ra and rb stay"),
     correct("correct_styles_a", "gap test on the ends; flip by * -1; k with ** 2, B first; min(max()) clamp; "
             "a.omega = a.omega - ...", {
                 2: """
@@ -604,6 +623,75 @@ CORRECT = [
 ENTRIES = CORRECT + STEP2_WRONG + STEP3_WRONG + STEP4_WRONG + STEP5_WRONG + STEP6_WRONG + OUTSIDE_WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
+
+# the words each wrong entry's first message must contain: it names the mistake, not only the step (issue 33)
+SAYS = {
+    "sat_placeholder_left": ("placeholder",),
+    "sat_only_a_axes": ("B's edge normals",),
+    "sat_a_axes_twice": ("B's edge normals",),
+    "sat_gap_continue": ("shows a gap",),
+    "sat_gap_break": ("TypeError",),
+    "sat_largest_overlap": ("LARGEST overlap",),
+    "sat_one_sided_overlap": ("the smallest overlap is",),
+    "sat_union_extent": ("the smallest overlap is",),
+    "sat_projects_pa_twice": ("the smallest overlap is",),
+    "sat_axis_never_kept": ("TypeError",),
+    "sat_unnormalised_axes": ("the smallest overlap is",),
+    "sat_skips_closing_edge": ("closing edge",),
+    "normal_not_flipped": ("from B to A",),
+    "normal_flip_reversed": ("from B to A",),
+    "normal_centres_reversed": ("from B to A",),
+    "normal_first_vertices": ("from B to A",),
+    "normal_always_flipped": ("from B to A",),
+    "normal_negates_depth": ("not the depth",),
+    "normal_flips_x_only": ("more than the normal's direction",),
+    "k_missing": ("no spin terms",),
+    "k_only_a": ("lacks B's spin term",),
+    "k_only_b": ("lacks A's spin term",),
+    "k_not_squared": ("not squared",),
+    "k_inv_mass": ("inv_mass where inv_inertia belongs",),
+    "k_assigned": ("use k +=",),
+    "k_a_term_with_b_inertia": ("A's spin term uses B's inv_inertia",),
+    "k_minus": ("B's spin term is subtracted",),
+    "k_lever_length": ("|r|²",),
+    "k_divides_inertia": ("ZeroDivisionError",),
+    "friction_missing": ("never clamped",),
+    "friction_bound_normal_speed": ("closing speed |vn|",),
+    "friction_bound_slip_speed": ("relative speed |rel|",),
+    "friction_bound_k": ("mu × k",),
+    "friction_bound_mu": ("mu alone",),
+    "friction_half_bound": ("mu·j / 2",),
+    "friction_always_full": ("full mu·j",),
+    "friction_upper_only": ("clamp from above alone",),
+    "friction_bound_signed_vn": ("closing speed with its sign",),
+    "friction_abs_loses_sign": ("sign flipped", "min(|jt|, mu·j)"),
+    "spin_missing": ("spin update is missing",),
+    "spin_swapped": ("changed the wrong way",),
+    "spin_only_a": ("B's spin did not change",),
+    "spin_only_b": ("A's spin did not change",),
+    "spin_reversed_cross": ("changed the wrong way",),
+    "spin_inv_mass": ("inv_mass where inv_inertia belongs",),
+    "spin_rb_for_a": ("uses rb where ra belongs",),
+    "spin_assigned": ("set to the change",),
+    "spin_both_plus": ("changed the wrong way",),
+    "spin_divides_inertia": ("ZeroDivisionError",),
+    "spin_rotates_levers_in_place": ("changed its argument ra in place",),
+    "outside_gravity_world": ("gravity=(0, 500)",),
+    "outside_gravity_set": ("world.gravity = pygame.Vector2(0, 300)",),
+    "outside_max_crates": ("MAX_CRATES = 4",),
+    "outside_ramp_angle": ("math.radians(12)",),
+    "outside_iterations": ("iterations=20",),
+    "outside_clock_tick": ("clock.tick(60) / 1000",),
+    "outside_print_zero": ("moving = 0",),
+    "outside_fast_mover": ("FAST_MOVER = 1000",),
+    "outside_resting_speed": ("RESTING_SPEED = 300",),
+    "outside_separating_test_removed": ("if vn >= 0:",),
+    "outside_no_push_out": ("separate=lambda",),
+    "outside_friction_sign": ("jt = rel.dot(t) / kt",),
+    "outside_crate_friction": ("friction=1.5",),
+}
+ENTRIES = with_says(ENTRIES, SAYS)
+BY_NAME = {entry.name: entry for entry in ENTRIES}
 WRONG = [entry for entry in ENTRIES if entry.check != "pass"]
 
 

@@ -2,7 +2,7 @@
 
 A corpus module (tests/corpus_<lab>.py) builds plausible student files from
 the lab's current starter. It has ENTRIES (= CORRECT + WRONG; each entry has
-name, what, why, check, step, steps, edits, status and, optionally, also),
+name, what, why, check, step, steps, edits, status, says and, optionally, also),
 STEPS, CHECK_STEP {check id: step}, FUNCTION_CHECKS, SOLUTION, build(name) and
 write_corpus(directory) -> {name: path}; optionally NEEDS_STEPS_2_TO_4, the
 checks that need several steps and so may be skipped when one step is wrong.
@@ -13,7 +13,9 @@ The rules, one test per entry (test_corpus_<lab>.py calls these):
   "error" for a crash), its JSON step is the entry's step and its hint names
   that step; loads passes; a mistake inside the steps leaves handout_unchanged
   and runtime_lines passing; every other function check passes (those in
-  NEEDS_STEPS_2_TO_4 may be skipped); the entry's `also` checks are free. The
+  NEEDS_STEPS_2_TO_4 may be skipped); the entry's `also` checks are free; the
+  named check's message (the file's first message) contains every word of the
+  entry's `says` (issue 33: it names the mistake, not only its step). The
   scenes need every function check, so they are not constrained for a wrong
   entry (a wrong file stops after its probe run).
 """
@@ -64,6 +66,7 @@ def assert_builds(entry, corpus, title):
     source = corpus.build(entry.name)
     compile(source, entry.name + ".py", "exec")
     assert title in source.split('"""')[1], "the checker recognises the lab by its docstring's title"
+    assert_says_words(entry)
     if entry.check == "pass":
         assert entry.step is None and not entry.edits
     elif entry.check == "handout_unchanged":
@@ -90,6 +93,7 @@ def assert_verdict(entry, checks, corpus):
     assert named["status"] in entry.status and named["step"] == entry.step, (
         f"{entry.name} ({entry.what}): expected {entry.check} {'/'.join(entry.status)} naming step {entry.step}; "
         f"got {named['status']} naming step {named['step']}: {named['message']}\nwhy: {entry.why}\n{show(checks)}")
+    assert_names_the_mistake(entry, named)
     if entry.step is not None:
         assert named["hint"].startswith(f"[step {entry.step}: "), named["hint"]
     may_skip = tuple(getattr(corpus, "NEEDS_STEPS_2_TO_4", ()))
@@ -99,3 +103,20 @@ def assert_verdict(entry, checks, corpus):
         allowed = ("pass", "skip") if cid in may_skip else ("pass",)
         assert checks[cid]["status"] in allowed, (f"{entry.name} ({entry.what}) is a mistake for {entry.check}, but "
                                                   f"{cid} is {checks[cid]['status']}:\n{show(checks)}")
+
+
+def assert_says_words(entry):
+    """A wrong entry lists the words its first message must contain (`says`); a correct one lists none."""
+    if entry.check == "pass":
+        assert not entry.says
+    else:
+        assert entry.says and all(isinstance(word, str) and word for word in entry.says), \
+            f"{entry.name}: give the words its first message must contain (SAYS)"
+
+
+def assert_names_the_mistake(entry, named):
+    """The wrong entry's first message (its named check's) contains every word of entry.says, case aside."""
+    message = named["message"].lower()
+    missing = [word for word in entry.says if word.lower() not in message]
+    assert not missing, (f"{entry.name} ({entry.what}): its first message does not say {missing}; it says: "
+                         f"{named['message']}")

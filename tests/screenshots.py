@@ -4,7 +4,8 @@
 
 Runs each lab's solution (and Tumbling Crates' starter) under the lab runtime with SDL's dummy video driver,
 one after another: assets/tumbling_crates.png, tumbling_crates_starter.png, tumbling_crates_panel.png,
-more_shapes.png, ball_on_ramp.png, sleeping_crates.png and bullets.png. Each script can also run alone.
+more_shapes.png, ball_on_ramp.png, sleeping_crates.png and bullets.png, and the two `checker --show` pictures
+(tests/show_shot.py). Each script can also run alone.
 """
 import os
 import sys
@@ -17,12 +18,13 @@ import ball_on_ramp_shot  # noqa: E402
 import bullets_shot  # noqa: E402
 import lab_run  # noqa: E402
 import more_shapes_shot  # noqa: E402
+import show_shot  # noqa: E402
 import sleeping_crates_shot  # noqa: E402
 
 
 def main():
     lab_run.screenshots()
-    for module in (more_shapes_shot, ball_on_ramp_shot, sleeping_crates_shot, bullets_shot):
+    for module in (more_shapes_shot, ball_on_ramp_shot, sleeping_crates_shot, bullets_shot, show_shot):
         module.screenshot()
     return 0
 

@@ -3,9 +3,13 @@
 It checks the benchmark's measured accuracy figures, never its times: the
 machine is shared, so wall time proves nothing here.
 """
+import ast
+from pathlib import Path
+
 import pytest
 
 from lesson11.bench import accuracy_cost as ac
+from lesson11.bench import harness
 from lesson11.bench import scenes
 from lesson11.physics2d.world import LESSON_SUBSTEPS
 
@@ -156,7 +160,7 @@ def test_quick_run_writes_its_own_files_and_never_the_studys(results, tmp_path, 
 def test_quick_run_without_out_dir_writes_nothing_and_says_it_is_a_smoke_run(results, tmp_path, monkeypatch,
                                                                            capsys):
     monkeypatch.setattr(ac, "run", lambda settings, progress=None: results)  # the figures are not the point here
-    monkeypatch.setattr(ac, "default_out_dir", lambda: tmp_path)
+    monkeypatch.setattr(harness, "default_out_dir", lambda: tmp_path)
     assert ac.main(["--quick"]) == 0
     assert list(tmp_path.iterdir()) == []
     out = capsys.readouterr().out
@@ -168,3 +172,35 @@ def test_bad_repeats_is_a_one_line_error(capsys):
         ac.main(["--repeats", "0"])
     assert stop.value.code == 2
     assert "must be a whole number >= 1, got 0" in capsys.readouterr().err
+
+
+def bench_imports(folder):
+    """{module: the lesson11/bench modules it imports, at the top or inside a function} for every module in folder."""
+    modules = {path.stem: path for path in folder.glob("*.py")}
+    graph = {}
+    for name, path in modules.items():
+        found = set()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.level == 1:
+                found.update([node.module.split(".")[0]] if node.module else [alias.name for alias in node.names])
+            elif isinstance(node, ast.ImportFrom) and (node.module or "").startswith("lesson11.bench"):
+                found.update(node.module.split(".")[2:3] or [alias.name for alias in node.names])
+        graph[name] = found & set(modules)
+    return graph
+
+
+def test_no_bench_module_imports_itself_round_a_circle():
+    """Issue 34: accuracy_cost, frontier and plot imported each other; what they share lives in harness.py."""
+    graph = bench_imports(Path(ac.__file__).parent)
+
+    def reachable(start):
+        seen, todo = set(), list(graph[start])
+        while todo:
+            module = todo.pop()
+            if module not in seen:
+                seen.add(module)
+                todo.extend(graph[module])
+        return seen
+
+    assert [module for module in graph if module in reachable(module)] == []
+    assert "harness" in graph["frontier"] and "accuracy_cost" not in graph["frontier"] | graph["plot"]

@@ -10,7 +10,7 @@ import pytest
 from pygame import Vector2
 
 from lesson11.bench import listing
-from lesson11.bench import accuracy_cost as ac
+from lesson11.bench import harness
 from lesson11.bench import speed as sp
 
 FLOOR_TOP = 560.0
@@ -103,7 +103,7 @@ def test_quick_run_writes_only_quick_files_and_labels_itself(quick, tmp_path, mo
 
 def test_quick_run_without_out_dir_writes_nothing(quick, tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(sp, "run", lambda settings, progress=None: quick)
-    monkeypatch.setattr(ac, "default_out_dir", lambda: tmp_path)  # output_folder looks it up there
+    monkeypatch.setattr(harness, "default_out_dir", lambda: tmp_path)  # output_folder looks it up there
     assert sp.main(["--quick"]) == 0
     assert list(tmp_path.iterdir()) == []
     assert capsys.readouterr().out.rstrip().splitlines()[-1].startswith("Smoke run:")

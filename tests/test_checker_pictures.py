@@ -88,7 +88,10 @@ def test_marked_frame_is_read_from_the_message():
     frames = [{"frame": k, "bodies": [], "touching": []} for k in range(1, 101)]
     picked = pictures._pick(frames, 42)
     assert len(picked) == pictures.FRAMES and any(f["frame"] == 42 for f in picked)
-    assert picked[0]["frame"] == 1 and picked[-1]["frame"] == 100
+    # from a little before the failing frame to a little after it (issue 30 item 4)
+    assert picked[0]["frame"] == 42 - pictures.LEAD and picked[-1]["frame"] == 42 + pictures.TRAIL
+    whole = pictures._pick(frames)
+    assert whole[0]["frame"] == 1 and whole[-1]["frame"] == 100
 
 
 def test_passing_file_gets_no_picture():
@@ -193,3 +196,33 @@ def test_a_file_that_does_not_load_gets_no_picture():
             handle.write("raise RuntimeError('boom')\n")
         report = Grader(keep_records=True).grade(path, LAB)
     assert report.preview == "" and pictures.all_pictures([report]) == {}
+
+
+def test_pictures_follow_the_failure(failing, monkeypatch):
+    """Issue 30 item 4: the filmstrip starts a little before the failing frame and ends after it, frames the
+    bodies the check is about, and its caption names the frame and the quantity; the HTML report links it."""
+    from checker import html_report, show
+    frames = failing.records["inside"]["records"]
+    result = next(r for r in failing.results if r.id == "pushed_out_of_crate")
+    reference = pictures.reference_record(LAB, "inside")["records"]
+    fail_frame, why, quantity, values = show.failure(LAB, result, frames, reference, True)
+    assert fail_frame == frames[-1]["frame"] and quantity.bound == LAB.module.INSIDE_DEPTH   # judged at the end
+    drawn = {}
+    original = pictures.filmstrip
+
+    def spy(record, reference=None, marked=None, title="", count=pictures.FRAMES, focus=None):
+        drawn.update(marked=marked, title=title, focus=focus, shown=pictures._pick(record["records"], marked))
+        return original(record, reference, marked, title, count, focus)
+
+    monkeypatch.setattr(pictures, "filmstrip", spy)
+    assert pictures.pictures_for(failing, "pushed_out_of_crate")
+    assert drawn["marked"] == fail_frame
+    assert f"frame {fail_frame} " in drawn["title"] and f"{quantity.label} {values[-1]:.3g}" in drawn["title"]
+    numbers = [f["frame"] for f in drawn["shown"]]
+    assert numbers[0] >= fail_frame - pictures.LEAD and fail_frame in numbers
+    ball = next(i for i, b in enumerate(frames[-1]["bodies"]) if b.get("radius"))
+    assert ball in drawn["focus"]   # the ball, which ends elsewhere than the solution's, is framed
+    made = {failing.path: {"pushed_out_of_crate": pictures.pictures_for(failing, "pushed_out_of_crate")}}
+    page = html_report.html_text([failing], made)
+    anchor = html_report.picture_id(0, "pushed_out_of_crate")
+    assert f'href="#{anchor}"' in page and f'id="{anchor}"' in page

@@ -1,8 +1,9 @@
 """A lab is one folder: a new lab is graded without touching child.py, grade.py, cli.py or report.py.
 
 The test writes a toy lab's checks, probes and scenes modules into a fresh folder of checker/labs/,
-as a real lab is added, and its starter (the handout: the parent replays the probe's calls of the step
-functions through it) where the lab's id puts it, under a temporary root (starters/<id>_starter.py);
+as a real lab is added, and its solution and starter where the lab's id puts them, under a temporary root
+(solutions/<id>.py; starters/<id>_starter.py, the handout, written from the toy's annotated solution by
+checker/assign.py as every lab's is: the parent replays the probe's calls of the step functions through it);
 it adds the lab, found from its id, to checker.labs.LABS for this process only, and grades the
 toy file with the command line in-process: the probe runs in the child (which imports the
 lab's probe module by the name its id gives), a scene runs under the lab runtime, and the
@@ -17,15 +18,20 @@ import uuid
 
 import pytest
 
-from checker import cli, labs
+from checker import assign, cli, labs
 
-STUDENT = '''
+# the toy lab's one source, annotated as a real lab's solution is (checker/assign.py); the student hands it in
+SOLUTION = '''
 """Toy Lab: a made-up exercise for the plug-in test."""
 from lesson11 import runtime as lab
 
 
 def double(x):
     # --- step 1: double x ---
+    # BEGIN PROMPT
+    # Step 1: return twice x.
+    # starter: return None  # placeholder: replace this line with your step 1
+    # END PROMPT
     return 2 * x
     # --- end of step 1 ---
 
@@ -50,7 +56,7 @@ def probe_double(module, lab_path):
 PROBES = {"double": ("double", probe_double)}
 '''
 
-STARTER = STUDENT.replace("    return 2 * x\n", "    return None\n")
+STARTER = assign.starter_text(SOLUTION, "the toy lab's solution")   # made the way every lab's starter is
 
 SCENES = '''
 """The toy lab's scene."""
@@ -121,7 +127,9 @@ def toy_lab(tmp_path, monkeypatch):
         (tmp_path / "starters").mkdir()
         (tmp_path / "starters" / f"{lab_id}_starter.py").write_text(STARTER, encoding="utf-8")
         student = tmp_path / "toy.py"
-        student.write_text(STUDENT, encoding="utf-8")
+        student.write_text(SOLUTION, encoding="utf-8")
+        (tmp_path / "solutions").mkdir()
+        (tmp_path / "solutions" / f"{lab_id}.py").write_text(SOLUTION, encoding="utf-8")
         lab = labs.Lab(lab_id, root=str(tmp_path))
         monkeypatch.setattr(labs, "LABS", labs.LABS + (lab,))
         yield lab, student

@@ -7,7 +7,8 @@ verdict, one test per entry:
 
   correct entry: every check passes;
   wrong entry: the named check has an accepted status ("fail", or "error" for
-  a crash) and its JSON step is the step the mistake is in; loads passes; a
+  a crash) and its JSON step is the step the mistake is in; its message
+  contains the entry's `says` words (it names the mistake); loads passes; a
   mistake inside the steps leaves handout_unchanged and runtime_lines passing;
   every other function check passes, except that a check depending on the
   failing one (sat_normal on sat_axes) may be skipped, a crash may take the
@@ -25,6 +26,7 @@ import sys
 import pytest
 
 import corpus_tumbling_crates as corpus
+import corpus_verdicts as verdicts
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NON_FUNCTION = ("loads", "handout_unchanged", "runtime_lines")
@@ -78,6 +80,7 @@ def test_the_corpus_is_big_enough_and_covers_every_step():
 @pytest.mark.parametrize("entry", corpus.ENTRIES, ids=lambda e: e.name)
 def test_each_entry_is_well_formed(entry):
     assert entry.what and "\n" not in entry.what
+    verdicts.assert_says_words(entry)   # a wrong entry lists the words its first message must contain
     assert entry.check == "pass" or entry.check in corpus.CHECK_STEP, entry.check
     if entry.check == "pass":
         assert entry.step is None and entry.status == ("pass",) and not entry.also
@@ -98,7 +101,8 @@ def test_each_entry_builds_from_the_starter_and_wrong_ones_differ_from_the_corre
     source = corpus.build(entry.name)  # raises AssertionError naming the entry when an edit no longer fits
     compile(source, entry.name + ".py", "exec")
     assert "Tumbling Crates" in source.split('"""')[1], "the checker recognises the lab by its docstring's title"
-    assert "return None  # until you write step 2" not in source or entry.name == "sat_placeholder_left"
+    placeholders = [line for line in source.splitlines() if line.strip().startswith("return None  # until you write")]
+    assert not placeholders or entry.name == "sat_placeholder_left"   # (the solution's prompt quotes it as a comment)
     reference = corpus.build("correct_solution_steps")
     if entry.check != "pass":
         assert source != reference
@@ -138,6 +142,7 @@ def test_the_checker_gives_each_entry_its_verdict(entry, graded):
     assert named["status"] in entry.status and named["step"] == entry.step, (
         f"{entry.name} ({entry.what}): expected {entry.check} {'/'.join(entry.status)} naming step {entry.step}; "
         f"got {named['status']} naming step {named['step']}: {named['message']}\nwhy: {entry.why}\n{_show(checks)}")
+    verdicts.assert_names_the_mistake(entry, named)   # the first message names the mistake (issue 33)
 
     crash = "error" in entry.status
     for cid in NON_FUNCTION + corpus.FUNCTION_CHECKS:

@@ -1,9 +1,12 @@
 """Every lab's starter is its solution with the student's steps left to write (one table, LABS).
 
 Step regions are the lines between `# --- step N: ... ---` and
-`# --- end of step N ---`. Outside them the two files must be identical line
-by line (module docstring included); inside, the solution has code and the
-starter only comments and the one-line placeholders that keep it running.
+`# --- end of step N ---`. The solution is the lab's one source: each region
+opens with its prompt block, and `python -m checker assign` (checker/assign.py)
+writes the starter from it; the committed starter must be byte for byte what
+it writes. Outside the regions the two files are then identical line by line
+(module docstring included); inside, the solution has code and the starter
+only comments and the one-line placeholders that keep it running.
 How each starter runs as handed out is tested here for Tumbling Crates and
 in test_more_shapes_starter.py / test_ball_on_ramp_starter.py for the others.
 """
@@ -12,6 +15,7 @@ import re
 
 import pytest
 
+from checker import assign, source
 from lab_run import HEIGHT, ROOT, SOLUTION, STARTER, clicks, run_lab
 
 START = re.compile(r"^\s*# --- step (\d): .+ ---$")
@@ -83,6 +87,16 @@ def test_every_registered_lab_is_in_the_table():
 
 
 @pytest.mark.parametrize("lab", LABS)
+def test_the_committed_starter_is_exactly_what_assign_writes(lab):
+    solution, starter = LABS[lab][:2]
+    with open(starter, "rb") as handle:
+        committed = handle.read()
+    written = assign.starter_text(source.read(solution), os.path.relpath(solution, ROOT)).encode("utf-8")
+    assert committed == written, (f"{os.path.relpath(starter, ROOT)} drifted from its solution: edit "
+                                  f"{os.path.relpath(solution, ROOT)} and run `python -m checker assign`")
+
+
+@pytest.mark.parametrize("lab", LABS)
 def test_both_files_mark_the_same_student_steps(lab):
     solution, starter, placeholders, _ = LABS[lab]
     assert set(split_regions(solution)[1]) == set(placeholders)
@@ -107,6 +121,35 @@ def test_starter_regions_hold_no_solution_code(lab, step):
     assert set(solution) - set(code_lines(region)), "the starter's region holds the whole solution"
     comments = [line.strip() for line in region if line.strip().startswith("#")]
     assert comments and comments[0].startswith(f"# Step {step} "), "the region's comment names its step"
+
+
+def lesson_headings():
+    """The headings of the student's lesson, lesson11/README.md, without their #s."""
+    with open(os.path.join(ROOT, "lesson11", "README.md"), encoding="utf-8") as handle:
+        return {line.lstrip("#").strip() for line in handle if line.startswith("#")}
+
+
+@pytest.mark.parametrize("lab", LABS)
+def test_step_comments_cite_sections_the_lesson_has(lab):
+    """Each step's comment names a heading of lesson11/README.md, as written there (not the seed's names)."""
+    _, starter, placeholders, _ = LABS[lab]
+    regions = split_regions(starter)[1]
+    headings = lesson_headings()
+    for step in placeholders:
+        cited = re.findall(r'lesson: "([^"]+)"', " ".join(line.strip("# ") for line in regions[step]))
+        assert cited, f"step {step}'s comment cites no section of the lesson"
+        assert set(cited) <= headings, f"step {step} cites {set(cited) - headings}, not a heading of the lesson"
+
+
+@pytest.mark.parametrize("lab, step", STEPS)
+def test_every_placeholder_says_to_replace_it(lab, step):
+    _, starter, placeholders, _ = LABS[lab]
+    with open(starter, encoding="utf-8") as handle:
+        header = handle.read().split('"""')[1]
+    assert "replace that line with your code" in header and "wasted" in " ".join(header.split())
+    for line in split_regions(starter)[1][step]:
+        if line.strip() and not line.strip().startswith("#"):   # a placeholder: what it stands in for, and to replace it
+            assert f"  # until you write step {step}, " in line and line.endswith(": replace this placeholder"), line
 
 
 @pytest.mark.parametrize("lab", LABS)

@@ -44,6 +44,19 @@ def test_the_lessons_five_questions_with_answers_and_one_line_explanations():
     assert "swept paths first touch" in QUESTIONS[4]["choices"][KEY[4]]
 
 
+def test_no_wrong_choice_is_true_of_the_lesson():
+    """Question 2's wrong choices do not describe what the lesson says the library's sat() does (takes the
+    smaller of the two ways out on an axis), which would trap a careful reader; question 3 names k as the
+    INVERSE effective mass, as section 5 does."""
+    second = QUESTIONS[1]
+    wrong_choices = [text for letter, text in second["choices"].items() if letter != second["answer"]]
+    assert not any(word in text for text in wrong_choices for word in ("smaller of the two", "shorter"))
+    assert "inverse effective mass" in QUESTIONS[2]["question"]
+    with open(os.path.join(ROOT, "lesson11", "README.md"), encoding="utf-8") as handle:
+        lesson = handle.read()
+    assert "*inverse* effective mass" in lesson and "is the **inverse** of the *effective mass*" in lesson
+
+
 def test_the_answer_cannot_be_told_by_its_length():
     """Distractors as long as the answer: the right choice is never more than 10 % longer than the longest
     wrong one, and it is the longest choice in at most one question (it was in 4 of 5, 138 characters

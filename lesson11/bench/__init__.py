@@ -6,6 +6,7 @@
     scenes         the scenes it runs and the accuracy figures it measures on them
     pymunk_pile    the pile scenes rebuilt in pymunk (optional: needs the `compare` extra)
     plot           the figure (optional: needs matplotlib, from the `compare` extra)
+    harness        what every benchmark shares: command line, output files, machine note, lockstep
 
 Run the study with `python -m lesson11.bench.accuracy_cost` (a few minutes) or
 add `--quick` for a small run in seconds; the same for `python -m lesson11.bench.speed`.

@@ -6,7 +6,7 @@
                                                       # (--out-dir writes bench_accuracy_cost_quick.md/.png)
 
 1. tunnelling     a 3 px bullet against a 4 px wall: discrete steps, sub-steps ×2..×16, CCD
-2. iterations     a 10-crate pyramid with 1..20 solver passes (and the accumulated solver, if physics2d has it)
+2. iterations     a 10-crate pyramid with 1..20 solver passes, in the lesson solver and the accumulated one
 3. contact rule   "corners" (the lesson's) against "clip" (edge clipping) on the same piles
 4. effects        the same scene with only the effects it needs, with everything, with "ccd" but no bullet
 5. pymunk         the same piles in pymunk (skipped with a message if pymunk is missing)
@@ -27,22 +27,18 @@ cases, so its spread is unknown and its ratios are noise. It says so at the
 top of its report, and it never writes the full study's files: with
 --out-dir it writes bench_accuracy_cost_quick.md and _quick.png (QUICK_NOTE).
 """
-import argparse
 import math
-import os
-import platform
 import statistics
-import subprocess
 import sys
 import time
 from dataclasses import dataclass, field
-from pathlib import Path
 
 from lesson11.physics2d import LESSON_EFFECTS
-from lesson11.physics2d import world as world_module
+from lesson11.physics2d.world import SOLVERS
 
 from . import scenes
 from . import solver_probe
+from .harness import bench_parser, lockstep, machine_note, output_folder, pymunk_version, write_results
 
 FRAME = 1 / 120  # s: the course's fixed step; sub-stepping splits it into n steps
 
@@ -160,20 +156,6 @@ def measure(cases, repeats, progress=None):
     return rows
 
 
-def lockstep(runs):
-    """Advance generator runs one yield each in turn until all have returned; their Measurements, in order."""
-    results = [None] * len(runs)
-    alive = list(range(len(runs)))
-    while alive:
-        for index in list(alive):
-            try:
-                next(runs[index])
-            except StopIteration as done:
-                results[index] = done.value
-                alive.remove(index)
-    return results
-
-
 def step_timed(step, count):
     """Call step() `count` times; return the seconds spent inside the calls."""
     spent = 0.0
@@ -268,15 +250,10 @@ def pile_run(make_pile, seconds):
     return Measurement(accuracy, spent, steps, counters)
 
 
-def solvers():
-    """The physics2d solvers this version offers: ("lesson",) or ("lesson", "accumulated")."""
-    return tuple(getattr(world_module, "SOLVERS", ("lesson",)))
-
-
 def iteration_cases(settings):
-    """The pyramid with each iteration count, for each solver physics2d has; the lesson's 6 is the baseline."""
+    """The pyramid with each iteration count, in each solver; the lesson's 6 is the baseline."""
     cases = []
-    for solver in solvers():
+    for solver in SOLVERS:
         extra = {} if solver == "lesson" else {"solver": solver}
         for n in settings.iterations:
             cases.append(Case("2 iterations", "pyramid4", f"{solver} solver, {n} iteration{'s' if n > 1 else ''}", "ms/step",
@@ -299,7 +276,7 @@ def rule_cases(settings):
 
 
 def pymunk_cases(settings):
-    """Each comparison pile in physics2d (lesson solver: the baseline; accumulated if present) and in pymunk."""
+    """Each comparison pile in physics2d (lesson solver: the baseline; the accumulated solver) and in pymunk."""
     try:
         from .pymunk_pile import PymunkPile
     except ImportError:
@@ -309,10 +286,9 @@ def pymunk_cases(settings):
         cases.append(Case("5 vs pymunk", name, "physics2d, lesson solver, 6 iterations", "ms/step",
                           lambda name=name: pile_run(lambda: Physics2dPile(name), settings.pile_seconds),
                           baseline=True))
-        if "accumulated" in solvers():
-            cases.append(Case("5 vs pymunk", name, "physics2d, accumulated solver, 6 iterations", "ms/step",
-                              lambda name=name: pile_run(lambda: Physics2dPile(name, solver="accumulated"),
-                                                         settings.pile_seconds)))
+        cases.append(Case("5 vs pymunk", name, "physics2d, accumulated solver, 6 iterations", "ms/step",
+                          lambda name=name: pile_run(lambda: Physics2dPile(name, solver="accumulated"),
+                                                     settings.pile_seconds)))
         cases.append(Case("5 vs pymunk", name, f"pymunk {pymunk_version()}, 6 iterations", "ms/step",
                           lambda name=name: pile_run(lambda: PymunkPile(name, iterations=6), settings.pile_seconds)))
     return cases
@@ -558,39 +534,6 @@ def tunnelling_table(rows):
     return "\n".join(lines)
 
 
-def pymunk_version():
-    try:
-        import pymunk
-    except ImportError:
-        return None
-    return pymunk.version
-
-
-def physics2d_note():
-    """Which physics2d was measured: its last git commit, and whether the working tree changes it."""
-    folder = Path(world_module.__file__).resolve().parent
-    try:
-        commit = subprocess.run(["git", "log", "-1", "--format=%h %cs", "--", "."], cwd=folder, capture_output=True,
-                                text=True, encoding="utf-8", errors="replace", timeout=10).stdout.strip()
-        changed = subprocess.run(["git", "status", "--porcelain", "--", "."], cwd=folder, capture_output=True,
-                                 text=True, encoding="utf-8", errors="replace", timeout=10).stdout.strip()
-    except (OSError, subprocess.SubprocessError):
-        return "physics2d: not in a git checkout"
-    if not commit:
-        return "physics2d: not in a git checkout"
-    return f"physics2d at commit {commit}" + (" plus uncommitted changes" if changed else "")
-
-
-def machine_note():
-    """Cores, Python, pygame-ce, pymunk, the platform and the load when the run started."""
-    import pygame
-    loadavg = getattr(os, "getloadavg", None)  # not on Windows
-    load = " / ".join(f"{x:.2f}" for x in loadavg()) if loadavg else "n/a"
-    return (f"{os.cpu_count()} cores · Python {platform.python_version()} · pygame-ce {pygame.version.ver} · "
-            f"pymunk {pymunk_version() or 'not installed'} · {platform.platform()} · load average {load} · "
-            f"{physics2d_note()}")
-
-
 METHOD_NOTES = [
     "Sub-stepping ×n runs n steps of 1/(120 n) s per frame; CCD declares \"ccd\" and marks the circle "
     "`bullet=True`, so World.swept_move finds its time of impact against the wall (held still) with "
@@ -601,7 +544,7 @@ METHOD_NOTES = [
     "would show 0 drift and 0 kinetic energy. The lesson's solver in World's default solve-first order "
     "finds contacts once per sub-step (4 sub-steps a step, plus once at the end of the step) and runs the "
     "passes on them, so its time grows "
-    "with the passes but less than in proportion; the accumulated solver (if present) detects once per step.",
+    "with the passes but less than in proportion; the accumulated solver detects once per step.",
     "The effects study compares final positions with the baseline run of the same scene: 0 px means "
     "bit-for-bit the same simulation, and a round-off difference (below 10⁻⁶ px) the same motion, so any "
     "time saved is pure overhead.",
@@ -634,8 +577,6 @@ def run(settings, progress=None):
               "pymunk": pymunk_cases(settings), "solvers": solver_cases(settings)}
     if not groups["pymunk"]:
         notes.append("Study 5 skipped: pymunk is not installed (pip install -e \".[compare]\").")
-    if "accumulated" not in solvers():
-        notes.append("physics2d has no accumulated solver in this version: study 2 runs the lesson solver only.")
     rows = {}
     for name, cases in groups.items():
         if cases:
@@ -697,75 +638,6 @@ def report(rows, notes, settings, elapsed, mode):
     return "\n".join(parts) + "\n"
 
 
-def default_out_dir():
-    """The repository's assets/ folder when run from a checkout, else ./assets."""
-    repo_assets = Path(__file__).resolve().parents[2] / "assets"
-    return repo_assets if repo_assets.is_dir() else Path("assets")
-
-
-def positive_int(text):
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a whole number >= 1, got {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be a whole number >= 1, got {value}")
-    return value
-
-
-def bench_parser(module, description, files, sizes, unit):
-    """The command line every benchmark shares: --quick, --out-dir, --repeats, --no-plot.
-
-    module: the benchmark's module name; files: the name of its .md/.png (no suffix);
-    sizes: what --quick shrinks (words); unit: what one timing repeat is of (words).
-    """
-    parser = argparse.ArgumentParser(prog=f"python -m lesson11.bench.{module}", description=description)
-    parser.add_argument("--quick", action="store_true",
-                        help=f"smoke run: {sizes}, one repeat, figures not trustworthy; prints only, or with "
-                             f"--out-dir writes {files}_quick.md/.png (never the full run's files)")
-    parser.add_argument("--out-dir", type=Path, default=None,
-                        help=f"where {files}.md/.png go (default: the repository's assets/)")
-    parser.add_argument("--repeats", type=positive_int, default=None, help=f"timing repeats per {unit} (median kept)")
-    parser.add_argument("--no-plot", action="store_true", help="skip the matplotlib figure")
-    return parser
-
-
-def output_folder(args):
-    """Where a benchmark's files go: --out-dir, else assets/ for a full run and nowhere for --quick.
-
-    Returns (folder or None, None), or (None, a one-line error) if --out-dir names a file.
-    """
-    out_dir = args.out_dir if args.out_dir is not None else (None if args.quick else default_out_dir())
-    if out_dir is not None and out_dir.exists() and not out_dir.is_dir():
-        return None, f"--out-dir {out_dir} is a file, not a folder"
-    return out_dir, None
-
-
-def write_results(args, out_dir, files, text, draw, smoke_words):
-    """Write {files}.md (--quick: {files}_quick.md, never the full run's) into out_dir, then the figure.
-
-    draw(path, subtitle) draws the .png and returns its path; it is skipped with
-    --no-plot or without matplotlib. smoke_words open a --quick figure's subtitle.
-    Prints what was written; returns the exit status 0.
-    """
-    if out_dir is None:
-        return 0
-    out_dir.mkdir(parents=True, exist_ok=True)
-    stem = f"{files}_quick" if args.quick else files
-    (out_dir / f"{stem}.md").write_text(text, encoding="utf-8")
-    print(f"wrote {out_dir / f'{stem}.md'}")
-    if args.no_plot:
-        return 0
-    try:
-        import matplotlib  # noqa: F401
-    except ImportError:
-        print("matplotlib is not installed: no plot (pip install -e \".[compare]\")")
-        return 0
-    subtitle = (f"SMOKE RUN (--quick): {smoke_words} · " if args.quick else "full run · ") + machine_note()
-    print(f"wrote {draw(out_dir / f'{stem}.png', subtitle)}")
-    return 0
-
-
 def main(argv=None):
     parser = bench_parser("accuracy_cost", "What accuracy costs in time: tunnelling, iterations, contact rule, "
                                            "declared effects, pymunk, solvers, measured side by side.",
@@ -797,7 +669,7 @@ def main(argv=None):
 
     def draw(path, subtitle):
         from .plot import plot
-        return plot(rows, path, subtitle)
+        return plot(rows, path, subtitle, engine_name)
 
     return write_results(args, out_dir, "bench_accuracy_cost", text, draw, "times and ratios are not measurements")
 

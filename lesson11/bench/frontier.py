@@ -16,16 +16,15 @@ both cheaper and more accurate on it; the plot draws one panel per error with
 the front as a line, and frontier.json (beside this file) keeps the pile's
 figures for the lab panel.
 """
-import argparse
 import json
 import math
-import os
 import sys
 import textwrap
 import time
 from pathlib import Path
 
 from . import solver_probe
+from .harness import bench_parser, default_out_dir, machine_note, output_folder, write_results
 
 STUDY_JSON = Path(__file__).with_name("frontier.json")
 SUBSTEPS = (1, 2, 4, 8)
@@ -248,8 +247,6 @@ def replot(out_dir):
 
 
 def main(argv=None):
-    from .accuracy_cost import bench_parser, default_out_dir, machine_note, output_folder, write_results
-
     parser = bench_parser("frontier", "The frontier: CPU time per step against error for every solver setting.",
                           "bench_frontier", "2 × 2 settings per solver", "setting")
     parser.add_argument("--replot", action="store_true",

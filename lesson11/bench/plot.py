@@ -156,12 +156,7 @@ def _pymunk(ax, rows):
 SOLVER_COLORS = ["tab:red", "tab:orange", "tab:green", "tab:olive", "tab:purple"]
 
 
-def _solver_label(row):
-    from .accuracy_cost import engine_name  # the table's names; imported here to keep plot importable alone
-    return engine_name(row.variant)
-
-
-def _solver_points(ax, rows, measures, title, ylabel, floor):
+def _solver_points(ax, rows, measures, title, ylabel, floor, label):
     """Study 6: one marker per measurement, one colour per solver, at (time × lesson default on that scene, error)."""
     markers = "osD^v<>"
     for color, row in zip(SOLVER_COLORS, rows):
@@ -174,7 +169,7 @@ def _solver_points(ax, rows, measures, title, ylabel, floor):
             ax.scatter([ratio], [max(value, floor)], marker=marker, s=60, color=color, zorder=3,
                        edgecolors="black", linewidths=0.5)
     for color, row in zip(SOLVER_COLORS, rows):
-        ax.scatter([], [], marker="s", s=60, color=color, label=_solver_label(row))
+        ax.scatter([], [], marker="s", s=60, color=color, label=label(row.variant))
     for marker, (name, _, _) in zip(markers, measures):
         ax.scatter([], [], marker=marker, s=60, facecolors="none", edgecolors="black", label=name)
     ax.set_xscale("log")
@@ -187,31 +182,32 @@ def _solver_points(ax, rows, measures, title, ylabel, floor):
     ax.grid(alpha=0.3, which="both")
 
 
-def _solvers_bounce(ax, rows):
+def _solvers_bounce(ax, rows, name):
     measures = [("flat box e=0.5: |rebound/0.5 - 1|", "flat 0.5", lambda a: a["rebound"] and abs(a["rebound"] / 0.5 - 1)),
                 ("flat box e=0.9: |rebound/0.9 - 1|", "flat 0.9", lambda a: a["rebound"] and abs(a["rebound"] / 0.9 - 1)),
                 ("disc e=0.5: |rebound/0.5 - 1|", "disc 0.5", lambda a: a["rebound"] and abs(a["rebound"] / 0.5 - 1)),
                 ("disc e=1: |apex energy - 1|", "disc 1", lambda a: a["apex energy"] and abs(a["apex energy"] - 1))]
     _solver_points(ax, rows, measures, "6a  Solvers: restitution error (0 drawn at 10⁻⁴)",
-                   "relative error (log scale; lower is better)", 1e-4)
+                   "relative error (log scale; lower is better)", 1e-4, name)
 
 
-def _solvers_rest(ax, rows):
+def _solvers_rest(ax, rows, name):
     measures = [("ramp 22°: moved", "ramp", lambda a: a["moved"]),
                 ("10-box stack: largest drift", "stack", lambda a: a["drift"]),
                 ("100:1: deepest overlap", "100:1", lambda a: a["overlap"])]
     _solver_points(ax, rows, measures, f"6b  Solvers: things at rest (0 drawn at {FLOOR:g} px)",
-                   "error (px, log scale; lower is better)", FLOOR)
+                   "error (px, log scale; lower is better)", FLOOR, name)
 
 
-def plot(rows, path, subtitle):
-    """Draw every study present in `rows` (a dict of study name -> list of Row) and save a PNG at `path`."""
+def plot(rows, path, subtitle, name=str):
+    """Draw every study present in `rows` (a dict of study name -> list of Row) and save a PNG at `path`;
+    name(engine) is a solver's name in study 6's legend (accuracy_cost.engine_name, the table's)."""
     fig = plt.figure(figsize=(18, 15.5))
     grid = fig.add_gridspec(3, 6)
     axes = [[fig.add_subplot(grid[r, 2 * c:2 * c + 2]) for c in range(3)] for r in range(2)]
     if "solvers" in rows:
-        _solvers_bounce(fig.add_subplot(grid[2, 0:3]), rows["solvers"])
-        _solvers_rest(fig.add_subplot(grid[2, 3:6]), rows["solvers"])
+        _solvers_bounce(fig.add_subplot(grid[2, 0:3]), rows["solvers"], name)
+        _solvers_rest(fig.add_subplot(grid[2, 3:6]), rows["solvers"], name)
     _tunnelling_by_speed(axes[0][0], rows["tunnelling"])
     _tunnelling_cost(axes[0][1], rows["tunnelling"])
     _iterations(axes[0][2], rows["iterations"])

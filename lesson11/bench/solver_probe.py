@@ -1,6 +1,7 @@
 """Solver probe: the same scenes in the lesson solver, the reference solver and pymunk, side by side.
 
     python -m lesson11.bench.solver_probe          # prints a Markdown table (pymunk rows skipped if missing)
+    python -m lesson11.bench.solver_probe --speed  # the reference solver, readable against float, side by side
 
 Every engine runs 1/120 s steps with the work of 6 passes per step: the lesson
 solver in the lesson text's order (order="move-first") 6 iterations, the reference
@@ -24,11 +25,20 @@ The scene measurements (flat_bounce, disc_bounce, stack, heavy_on_light, ramp_re
 as generators (flat_bounce_run, ...) that yield the scene after each step and return the same
 figures: accuracy_cost's "solvers" study advances them in lockstep, and every scene counts the
 steps it took and the seconds spent inside them (scene.steps, scene.seconds).
+
+--speed times the reference solver's two versions on the brick pile in one run: the readable one
+(arbiter.ReferenceArbiter, collision.corner_manifold_reference / clip_manifold_reference, chosen by
+arbiter.readable_versions) and the float one the World runs. The two piles step in turn, one step
+each, the first alternating, each step timed by the process's CPU clock; each repeat starts both
+piles afresh and the median of the repeats is kept. It also prints how far apart the two piles end.
 """
 import math
+import statistics
+import sys
 import time
 
 from lesson11.physics2d import Body, Circle, Vector2, World, box_points
+from lesson11.physics2d.arbiter import readable_versions
 
 try:
     import pymunk
@@ -327,7 +337,50 @@ def far_pile(engine, seconds=2.0):
     return max((p - q).length() for p, q in zip(*ends)) / FAR
 
 
+SPEED_SETTINGS = {"World default 1×6, corners": dict(solver="accumulated"),
+                  "World default 1×6, clip": dict(solver="accumulated", contact_rule="clip"),
+                  "probe's 3×1, corners": ENGINES["reference corners"],
+                  "probe's 3×1, clip": ENGINES["reference clip"]}
+
+
+def reference_speed(settings, steps=300, repeats=3):
+    """The brick pile in the reference solver, readable and float versions side by side:
+    (readable CPU ms per step, float CPU ms per step, largest difference of any body's position, px)."""
+    runs = []
+    for _ in range(repeats):
+        piles = [make(settings), make(settings)]  # [readable, float]
+        for pile in piles:
+            brick_pile(pile)
+        spent = [0.0, 0.0]
+        for k in range(steps):
+            for which in ((0, 1) if k % 2 == 0 else (1, 0)):
+                start = time.process_time()
+                if which == 0:
+                    with readable_versions():
+                        piles[0].world.step()
+                else:
+                    piles[1].world.step()
+                spent[which] += time.process_time() - start
+        gap = max((p.pos - q.pos).length() for p, q in zip(piles[0].world.bodies, piles[1].world.bodies))
+        runs.append((1000 * spent[0] / steps, 1000 * spent[1] / steps, gap))
+    return statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs), max(r[2] for r in runs)
+
+
+def speed_main(steps=300, repeats=3):
+    """--speed: the table of reference_speed for each of SPEED_SETTINGS."""
+    print(f"Reference solver on the 12-crate brick pile, {steps} steps of 1/120 s, median of {repeats} repeats "
+          f"(CPU ms per step):")
+    print()
+    print("| setting | readable (Vector2) | float | readable / float | positions apart at the end |")
+    print("|---|---:|---:|---:|---:|")
+    for name, settings in SPEED_SETTINGS.items():
+        readable, fast, gap = reference_speed(settings, steps, repeats)
+        print(f"| {name} | {readable:.3f} ms | {fast:.3f} ms | {readable / fast:.2f}× | {gap:.1e} px |", flush=True)
+
+
 def main():
+    if "--speed" in sys.argv[1:]:
+        return speed_main(*([30, 1] if "--quick" in sys.argv[1:] else []))
     engines = list(ENGINES) + (["pymunk"] if pymunk else [])
     print("| engine | flat e=0.5 rebound (spin) | flat e=0.9 rebound (spin) | 10-stack drift 20 s | 100:1 overlap 5 s (on top) | ramp rest 3 s |")
     print("|---|---|---|---|---|---|")

@@ -23,7 +23,7 @@ with N, so the pile's depth stays the same and the cost per body-step should
 stay flat.
 
 Timing follows accuracy_cost.py: only the step() calls are timed; within a repeat the engines advance one step each in
-turn (round-robin, accuracy_cost.lockstep), so a slow moment on the shared
+turn (round-robin, harness.lockstep), so a slow moment on the shared
 machine hits every engine alike; each repeat starts from a fresh copy of the
 snapshot; the median over repeats is kept and every ratio divides two
 medians of the same run. Unlike accuracy_cost.py, the clock is the process's
@@ -46,7 +46,7 @@ from pathlib import Path
 from lesson11.physics2d import Body, World, box_points
 
 from . import listing
-from .accuracy_cost import bench_parser, lockstep, machine_note, output_folder, write_results
+from .harness import bench_parser, lockstep, machine_note, output_folder, write_results
 
 ROOT = Path(__file__).resolve().parents[2]
 SOLUTION = ROOT / "solutions" / "tumbling_crates.py"
@@ -311,7 +311,7 @@ def measure(cases, repeats, progress=None, label=""):
     """Every case `repeats` times from fresh copies of its snapshot, round-robin: {key: Result}.
 
     Within a repeat the cases advance in turn, one chunk of steps each
-    (accuracy_cost.lockstep), and the order rotates between repeats, so the
+    (harness.lockstep), and the order rotates between repeats, so the
     machine's slow moments hit every case alike.
     """
     keys = list(cases)

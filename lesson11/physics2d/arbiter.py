@@ -29,9 +29,15 @@ Phases of one fixed step dt, with h = dt / substeps (world.py calls them in orde
   after the sub-steps:
   7. restitution: contacts that approached faster than resting_speed and
      pushed get vn = -e·vn(approach), with the total still clamped Pn >= 0
+
+Two versions of the same formulas: ReferenceArbiter (readable, with Vector2)
+and Arbiter (plain floats, what the World runs); inside readable_versions()
+the World runs the readable one, and collision's readable manifolds.
 """
+import contextlib
 import math
 
+from . import collision
 from .response import apply_impulse, effective_mass_inverse, relative_velocity
 from .vectors import Vector2
 
@@ -59,6 +65,8 @@ def soft_constants(hertz, damping_ratio, h):
 
 class ContactPoint:
     """One persistent contact point and the impulses accumulated on it (mass·px/s)."""
+    __slots__ = ("point", "depth", "local_a", "normal_impulse", "friction_impulse", "ra", "rb", "anchors",
+                 "mass_normal", "mass_tangent", "approach", "max_normal_impulse")
 
     def __init__(self, point, depth, local_a):
         self.point = point        # world point (px)
@@ -68,8 +76,14 @@ class ContactPoint:
         self.friction_impulse = 0.0
 
 
-class Arbiter:
-    """The contact between two bodies, kept from step to step."""
+class ReferenceArbiter:
+    """The contact between two bodies, kept from step to step: the readable version, with Vector2.
+
+    The documented reference of the solver's formulas. The World runs Arbiter,
+    the same formulas on plain floats (lesson11/bench/README.md has the times);
+    tests/test_arbiter_fast.py holds the two within 1e-9 px, and
+    readable_versions() runs this one.
+    """
 
     def __init__(self, a, b):
         self.a, self.b = a, b
@@ -206,3 +220,169 @@ class Arbiter:
             old = c.normal_impulse
             c.normal_impulse = max(old - c.mass_normal * (vn + self.restitution * c.approach), 0.0)
             apply_impulse(a, b, n * (c.normal_impulse - old), c.ra, c.rb)
+
+
+class Arbiter(ReferenceArbiter):
+    """The contact between two bodies, as the World runs it: ReferenceArbiter's formulas on plain floats.
+
+    Each line computes what the reference computes, in the same order of
+    operations (Vector2's arithmetic is IEEE doubles too), so the two agree to
+    the last bit; only the Vector2 objects and calls are gone from the loops.
+    The bodies do not move between the passes of one sub-step, so what each
+    point's passes read (separation, bias, scaled mass) is worked out once per
+    sub-step and kept while the bodies' motion and the pass's settings are the same.
+    warm_start and bounce (once a sub-step, and the restitution passes) are the reference's.
+    Inside readable_versions() every method runs the reference's.
+    """
+    kept_for = None  # (motion of A, of B, h, soft, use_bias): what the kept pass rows belong to (solve)
+
+    def update(self, manifold):
+        if collision.READABLE:
+            return super().update(manifold)
+        old = self.points
+        self.points = []
+        pos, turn = self.a.pos, -self.a.angle
+        for point, depth in zip(manifold.points, manifold.depths):
+            local_a = (point - pos).rotate_rad(turn)  # pygame's rotation, as the reference (exact quarter turns)
+            lx, ly = local_a
+            contact = ContactPoint(point, depth, local_a)
+            nearest, match = math.inf, None
+            for c in old:  # the first nearest, as min() picks it
+                ox, oy = c.local_a
+                dx, dy = ox - lx, oy - ly
+                distance_squared = dx * dx + dy * dy
+                if distance_squared < nearest:
+                    nearest, match = distance_squared, c
+            if match is not None and math.sqrt(nearest) <= MATCH_DISTANCE:
+                contact.normal_impulse = match.normal_impulse
+                contact.friction_impulse = match.friction_impulse
+            self.points.append(contact)
+        self.normal = manifold.normal
+
+    def prepare(self, world, warm_starting=True):
+        if collision.READABLE:
+            return super().prepare(world, warm_starting)
+        a, b = self.a, self.b
+        nx, ny = self.normal
+        tx, ty = ny, -nx
+        effects = world.effects
+        spin = "rotation" in effects
+        self.mu = math.sqrt(a.friction * b.friction) if "friction" in effects else 0.0
+        self.restitution = min(a.restitution, b.restitution) if "restitution" in effects else 0.0
+        ima, iia, imb, iib = a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia
+        (apx, apy), (bpx, bpy), (vax, vay), (vbx, vby) = a.pos, b.pos, a.vel, b.vel
+        wa, wb = a.omega, b.omega
+        for c in self.points:
+            if spin:
+                px, py = c.point
+                rax, ray, rbx, rby = px - apx, py - apy, px - bpx, py - bpy
+            else:
+                rax = ray = rbx = rby = 0.0
+            c.anchors = (rax, ray, rbx, rby)
+            c.ra, c.rb = Vector2(rax, ray), Vector2(rbx, rby)  # for warm_start and bounce, the reference's
+            # 1 / k for n and t, k = 1/mA + 1/mB + (ra × d)² / IA + (rb × d)² / IB (effective_mass_inverse)
+            an, bn, at, bt = rax * ny - ray * nx, rbx * ny - rby * nx, rax * ty - ray * tx, rbx * ty - rby * tx
+            c.mass_normal = 1 / (ima + imb + an * an * iia + bn * bn * iib)
+            c.mass_tangent = 1 / (ima + imb + at * at * iia + bt * bt * iib)
+            # vn before this step: ((vB + ωB × rb) - (vA + ωA × ra))·n, as relative_velocity adds it up
+            c.approach = ((vbx + -wb * rby) - (vax + -wa * ray)) * nx + ((vby + wb * rbx) - (vay + wa * rax)) * ny
+            c.max_normal_impulse = 0.0
+            if not warm_starting:
+                c.normal_impulse = c.friction_impulse = 0.0
+            if self.mu == 0:
+                c.friction_impulse = 0.0
+        # what every pass reads: the bodies, their motion keys, the normal, the inverse masses, μ
+        self.fixed = (a, b, id(a), id(b), nx, ny, ima, iia, imb, iib, self.mu)
+        self.kept_for = None  # the pass rows are worked out again at the first solve
+
+    def pass_rows(self, motion_a, motion_b, h, soft, use_bias):
+        """What each pass of a sub-step reads, per point: (point, rax, ray, rbx, rby, bias px/s, -mass_n × the
+        mass scale, the impulse scale, mass_t), from the separation s as ReferenceArbiter.separation works it
+        out and the bias solve() picks for it (the bodies do not move between the passes of a sub-step)."""
+        dax, day, ca, sa = motion_a
+        dbx, dby, cb, sb = motion_b
+        nx, ny = self.normal
+        bias_rate, soft_mass, soft_impulse = soft
+        rows = []
+        for c in self.points:
+            rax, ray, rbx, rby = c.anchors
+            mx = (dbx + cb * rbx - sb * rby - rbx) - (dax + ca * rax - sa * ray - rax)
+            my = (dby + sb * rbx + cb * rby - rby) - (day + sa * rax + ca * ray - ray)
+            s = mx * nx + my * ny - c.depth
+            if s > 0:
+                bias, mass_scale, impulse_scale = s / h, 1.0, 0.0  # speculative: close the gap, no more
+            elif use_bias:
+                bias = bias_rate * s
+                if -MAX_PUSH > bias:  # max(bias_rate s, -MAX_PUSH), compared as max() compares
+                    bias = -MAX_PUSH
+                mass_scale, impulse_scale = soft_mass, soft_impulse
+            else:
+                bias, mass_scale, impulse_scale = 0.0, 1.0, 0.0
+            rows.append((c, rax, ray, rbx, rby, bias, -c.mass_normal * mass_scale, impulse_scale, c.mass_tangent))
+        return rows
+
+    def solve(self, h, soft, use_bias, motion):
+        if collision.READABLE:
+            return super().solve(h, soft, use_bias, motion)
+        a, b, key_a, key_b, nx, ny, ima, iia, imb, iib, mu = self.fixed
+        now = (tuple(motion[key_a]), tuple(motion[key_b]), h, soft, use_bias)
+        if now != self.kept_for:  # a body moved (a new sub-step), or the relax pass: work the rows out again
+            self.kept_for, self.kept = now, self.pass_rows(*now)
+        (vax, vay), (vbx, vby) = a.vel, b.vel
+        wa, wb = a.omega, b.omega
+        for c, rax, ray, rbx, rby, bias, scaled_mass, impulse_scale, _ in self.kept:
+            vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
+            old = c.normal_impulse
+            new = old + (scaled_mass * (vn + bias) - impulse_scale * old)
+            if 0.0 > new:  # max(new, 0.0)
+                new = 0.0
+            c.normal_impulse = new
+            p = new - old
+            if p > c.max_normal_impulse:
+                c.max_normal_impulse = p
+            px, py = nx * p, ny * p
+            vax -= px * ima
+            vay -= py * ima
+            wa -= (rax * py - ray * px) * iia
+            vbx += px * imb
+            vby += py * imb
+            wb += (rbx * py - rby * px) * iib
+        if mu != 0:
+            tx, ty = ny, -nx
+            for c, rax, ray, rbx, rby, _, _, _, mass_tangent in self.kept:
+                vt = (vbx - wb * rby - vax + wa * ray) * tx + (vby + wb * rbx - vay - wa * rax) * ty
+                old = c.friction_impulse
+                limit = mu * c.normal_impulse
+                new = old - mass_tangent * vt
+                if not new < limit:  # clamp(new, -limit, limit), as max(-limit, min(limit, new)) picks
+                    new = limit
+                if not new > -limit:
+                    new = -limit
+                c.friction_impulse = new
+                p = new - old
+                px, py = tx * p, ty * p
+                vax -= px * ima
+                vay -= py * ima
+                wa -= (rax * py - ray * px) * iia
+                vbx += px * imb
+                vby += py * imb
+                wb += (rbx * py - rby * px) * iib
+        a.vel.update(vax, vay)
+        a.omega = wa
+        b.vel.update(vbx, vby)
+        b.omega = wb
+
+
+@contextlib.contextmanager
+def readable_versions():
+    """Inside the block, the reference solver runs its readable versions: ReferenceArbiter's methods and
+    collision's corner_manifold_reference / clip_manifold_reference (the test and the bench compare them).
+
+    A world keeps one version for all its steps: the float Arbiter keeps what its passes read between them.
+    """
+    before = collision.READABLE
+    collision.READABLE = True
+    try:
+        yield
+    finally:
+        collision.READABLE = before

@@ -16,6 +16,9 @@ from .vectors import Vector2
 
 TOUCH_TOLERANCE = 1e-6  # px: overlaps this small are "touching", i.e. apart
 CORNER_MERGE = 0.5      # px: corners closer than this are one contact point (corner_manifold)
+VECTOR_EPSILON = 1e-6   # px: pygame's Vector2 == counts points this close in x and in y as one (_best_edge)
+READABLE = False        # True: corner_manifold, clip_manifold and the reference solver's Arbiter run their
+                        # readable Vector2 versions (arbiter.readable_versions sets it, for a block)
 
 
 def edge_normals(points):
@@ -247,7 +250,7 @@ def _clip(v1, v2, direction, offset):
     return kept
 
 
-def clip_manifold(pa, pb, normal, margin=0.0):
+def clip_manifold_reference(pa, pb, normal, margin=0.0):
     """Contact points by edge clipping, each with its own depth: [(point, depth px), ...], up to two.
 
     The reference edge is the face most perpendicular to the normal (of A along
@@ -256,6 +259,7 @@ def clip_manifold(pa, pb, normal, margin=0.0):
     reference face are kept, with depth = how far behind the face they are.
     Falls back to the corners rule (with the pair's depth) if clipping keeps nothing.
     With a margin (px), points up to `margin` in front of the face are kept too, with negative depth.
+    The readable reference of clip_manifold (which the World runs).
     """
     a1, a2, a_far = _best_edge(pa, normal)
     b1, b2, b_far = _best_edge(pb, -normal)
@@ -269,8 +273,11 @@ def clip_manifold(pa, pb, normal, margin=0.0):
         kept = _clip(kept[0], kept[1], -side, -side.dot(ref2))
     face = ref_normal.dot(ref_far)
     manifold = [(p, face - ref_normal.dot(p)) for p in kept if ref_normal.dot(p) <= face + TOUCH_TOLERANCE + margin]
-    if manifold:
-        return manifold
+    return manifold or _corners_fallback(pa, pb, normal, margin)
+
+
+def _corners_fallback(pa, pb, normal, margin):
+    """clip_manifold's answer when clipping keeps nothing: the corners rule, every point with the pair's depth."""
     hit = sat(pa, pb, margin)
     depth = hit[1] if hit is not None else 0.0
     return [(p, depth) for p in contact_points(pa, pb, normal)]
@@ -376,7 +383,7 @@ def separation_faces(point, faces):
     return worst
 
 
-def corner_manifold(pa, pb, normal, margin=0.0):
+def corner_manifold_reference(pa, pb, normal, margin=0.0):
     """The lesson's corners rule with a depth per corner: [(point, depth px), ...], up to two.
 
     A corner of A counts when it is inside B, or less than `margin` px outside
@@ -388,9 +395,9 @@ def corner_manifold(pa, pb, normal, margin=0.0):
     more than CORNER_MERGE px away from it ACROSS the normal, |(p - q)·t| with
     t the tangent: two boxes of equal width have their corners on top of each
     other, one above the other by the overlap; those are one contact, not two
-    (measured along the whole distance, a 100:1 pair overlapping 0.5 px got
-    both its points on one side, rocked and sank 4.25 px). Equal depths keep
-    the earlier corner, so rounding cannot swap the answer.
+    (lesson11/bench/README.md has what measuring along the whole distance did).
+    Equal depths keep the earlier corner, so rounding cannot swap the answer.
+    The readable reference of corner_manifold (which the World runs).
     """
     found = []
     for corners, other, towards in ((pa, pb, -normal), (pb, pa, normal)):
@@ -410,6 +417,133 @@ def corner_manifold(pa, pb, normal, margin=0.0):
             kept.append((p, depth))
             break
     return kept
+
+
+# ---------------------------------------------------------------- the same manifolds on plain floats
+# The World's versions of corner_manifold_reference and clip_manifold_reference: every line computes what
+# the reference computes, in the same order (Vector2's arithmetic is IEEE doubles too), so the answers agree
+# to the last bit; only the Vector2 objects and method calls are gone. tests/test_arbiter_fast.py holds them.
+
+def _xy(points):
+    """The points as (x, y) float pairs (px)."""
+    return [(p.x, p.y) for p in points]
+
+
+def _unit(x, y):
+    """(x, y) / |(x, y)|, as Vector2.normalize computes it (ValueError for a zero vector, as it raises)."""
+    length = math.sqrt(x * x + y * y)
+    if length == 0:
+        Vector2().normalize()  # raises pygame's own ValueError
+    return x / length, y / length
+
+
+def _best_edge_xy(points, dx, dy):
+    """_best_edge on (x, y) pairs and a direction (dx, dy): (v1, v2, the farthest corner)."""
+    distinct, (lx, ly) = [], points[-1]
+    for p in points:  # p != the corner before it, as Vector2's == compares (each coordinate within 1e-6)
+        ex, ey = p[0] - lx, p[1] - ly
+        if not (-VECTOR_EPSILON < ex < VECTOR_EPSILON and -VECTOR_EPSILON < ey < VECTOR_EPSILON):
+            distinct.append(p)
+        lx, ly = p
+    points = distinct or points[:1]
+    n = len(points)
+    i, top = 0, points[0][0] * dx + points[0][1] * dy
+    for k in range(1, n):  # the first corner farthest along the direction, as max() picks it
+        along = points[k][0] * dx + points[k][1] * dy
+        if along > top:
+            i, top = k, along
+    v, before, after = points[i], points[i - 1], points[(i + 1) % n]
+    bx, by, ax, ay = v[0] - before[0], v[1] - before[1], v[0] - after[0], v[1] - after[1]
+    to_before, to_after = bx * bx + by * by, ax * ax + ay * ay  # |v - before|², |v - after|²
+    if to_before > 0 and to_after > 0:
+        to_before, to_after = math.sqrt(to_before), math.sqrt(to_after)
+        if abs(bx / to_before * dx + by / to_before * dy) <= abs(ax / to_after * dx + ay / to_after * dy):
+            return before, v, v
+    return v, after, v
+
+
+def _outward_faces_xy(points):
+    """outward_faces on (x, y) pairs: [(vx, vy, nx, ny), ...], each edge's first corner and outward unit normal."""
+    mx = my = 0.0
+    for x, y in points:  # one addition after another, as sum(points, Vector2()) adds
+        mx += x
+        my += y
+    mx, my = mx / len(points), my / len(points)
+    faces = []
+    for i, (vx, vy) in enumerate(points):
+        wx, wy = points[(i + 1) % len(points)]
+        ex, ey = wx - vx, wy - vy
+        if ex * ex + ey * ey == 0:
+            continue
+        nx, ny = _unit(-ey, ex)
+        if (vx - mx) * nx + (vy - my) * ny < 0:
+            nx, ny = -nx, -ny
+        faces.append((vx, vy, nx, ny))
+    return faces
+
+
+def corner_manifold(pa, pb, normal, margin=0.0):
+    """corner_manifold_reference on plain floats (the World's version): the same [(point, depth px), ...]."""
+    if READABLE:
+        return corner_manifold_reference(pa, pb, normal, margin)
+    nx, ny = normal
+    xa, xb = _xy(pa), _xy(pb)
+    limit = margin - TOUCH_TOLERANCE
+    found = []
+    for corners, xy, other, dx, dy in ((pa, xa, xb, -nx, -ny), (pb, xb, xa, nx, ny)):
+        (v1x, v1y), (v2x, v2y), _ = _best_edge_xy(other, dx, dy)
+        fx, fy = _unit(-(v2y - v1y), v2x - v1x)
+        if fx * dx + fy * dy < 0:
+            fx, fy = -fx, -fy  # outward
+        faces = _outward_faces_xy(other)
+        for p, (px, py) in zip(corners, xy):
+            for vx, vy, ex, ey in faces:  # separation < limit: no face's distance reaches it
+                if (px - vx) * ex + (py - vy) * ey >= limit:
+                    break
+            else:
+                found.append((p, -((px - v1x) * fx + (py - v1y) * fy), px, py))
+    found.sort(key=lambda pd: -pd[1])  # stable: ties keep their order
+    if not found:
+        return []
+    kept = [found[0][:2]]
+    kx, ky = found[0][2], found[0][3]
+    for p, depth, px, py in found[1:]:
+        if abs((px - kx) * ny + (py - ky) * -nx) > CORNER_MERGE:
+            kept.append((p, depth))
+            break
+    return kept
+
+
+def _clip_xy(v1, v2, dx, dy, offset):
+    """_clip on (x, y) pairs: the part of v1–v2 where p·(dx, dy) >= offset."""
+    d1, d2 = v1[0] * dx + v1[1] * dy - offset, v2[0] * dx + v2[1] * dy - offset
+    kept = [p for p, d in ((v1, d1), (v2, d2)) if d >= 0]
+    if d1 * d2 < 0:
+        t = d1 / (d1 - d2)
+        kept.append((v1[0] + (v2[0] - v1[0]) * t, v1[1] + (v2[1] - v1[1]) * t))
+    return kept
+
+
+def clip_manifold(pa, pb, normal, margin=0.0):
+    """clip_manifold_reference on plain floats (the World's version): the same [(point, depth px), ...]."""
+    if READABLE:
+        return clip_manifold_reference(pa, pb, normal, margin)
+    nx, ny = normal
+    a1, a2, a_far = _best_edge_xy(_xy(pa), nx, ny)
+    b1, b2, b_far = _best_edge_xy(_xy(pb), -nx, -ny)
+    ua, ub = _unit(a2[0] - a1[0], a2[1] - a1[1]), _unit(b2[0] - b1[0], b2[1] - b1[1])
+    if abs(ua[0] * nx + ua[1] * ny) <= abs(ub[0] * nx + ub[1] * ny):
+        ref1, ref2, ref_far, inc1, inc2, rx, ry = a1, a2, a_far, b1, b2, nx, ny
+    else:
+        ref1, ref2, ref_far, inc1, inc2, rx, ry = b1, b2, b_far, a1, a2, -nx, -ny
+    sx, sy = _unit(ref2[0] - ref1[0], ref2[1] - ref1[1])
+    kept = _clip_xy(inc1, inc2, sx, sy, sx * ref1[0] + sy * ref1[1])
+    if len(kept) == 2:
+        kept = _clip_xy(kept[0], kept[1], -sx, -sy, -(sx * ref2[0] + sy * ref2[1]))
+    face = rx * ref_far[0] + ry * ref_far[1]
+    manifold = [(Vector2(x, y), face - (rx * x + ry * y)) for x, y in kept
+                if rx * x + ry * y <= face + TOUCH_TOLERANCE + margin]
+    return manifold or _corners_fallback(pa, pb, normal, margin)
 
 
 def _circle_answer(hit, test):

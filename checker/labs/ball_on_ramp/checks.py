@@ -23,6 +23,7 @@ import math
 
 from . import scenes
 from ... import lab_checks
+from ...causes import arguments_hint, consistent_mistake
 from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 from lesson11.records import finite
@@ -58,26 +59,29 @@ HINTS = {
     "clamp": Hint(2, "clamp t to the segment",
                   "The closest point of an EDGE is not the closest point of its infinite line: compute "
                   "t = (p - a)·ab / (ab·ab), then keep t within [0, 1] before you build the point a + ab t. "
-                  "Without the clamp a ball near a corner touches the edge's line far beyond the polygon."),
+                  "Without the clamp a ball near a corner touches the edge's line far beyond the polygon: a ball "
+                  "rolling off the ramp's end stops in mid-air there."),
     "closest": Hint(2, "the closest point on one edge",
                     "Project p onto the edge: t = (p - a)·ab / (ab·ab) (divide by the squared length, so t runs "
                     "from 0 at a to 1 at b), clamp t to [0, 1]; the point is a + ab t."),
     "inside": Hint(3, "the center inside: push out the other way",
                    "When the ball's center is already inside the polygon, the nearest edge is its way out, and "
                    "the normal (from the ball into the polygon) must point away from that edge: return "
-                   "-offset / dist (flipped) and the depth radius + dist. Unflipped, the push drives the ball on "
-                   "through the polygon."),
+                   "-offset / dist (flipped) and the depth radius + dist. Unflipped, the push drives the ball "
+                   "further in, and a ball started inside a crate stays inside the crate."),
     "split": Hint(4, "split the push-out by inverse mass",
                   "The push is shared by inverse mass: each body's share is its own 1/m over the total "
                   "1/m_A + 1/m_B, A moving back along the normal and B forward, so the shares add up to the "
-                  "push. A static floor (1/m = 0) never moves, and a light ball moves more than a heavy crate."),
+                  "push. A static floor (1/m = 0) never moves, and a light ball moves more than a heavy crate; "
+                  "with the shares swapped the heavy crate is shoved and the light ball hardly moves."),
     "inertia": Hint(5, "a solid disc's moment of inertia",
                     "A solid disc (the ball) has I = ½ m r², half of a ring's m r²: mass near the center is easy "
-                    "to spin. The wrong I changes how fast the ball rolls down the ramp (a = g sin θ / (1 + I / m r²))."),
+                    "to spin. The wrong I changes how fast the ball rolls down the ramp (a = g sin θ / (1 + I / m r²)): "
+                    "with a ring's m r² it rolls a quarter slower."),
     "contact": Hint(6, "the contact point on the ball's surface",
                     "A contact pushes on the ball where it touches: on its surface, center + normal * radius (the "
-                    "normal points out of the ball). At the center, friction has no lever arm and the ball slides "
-                    "without ever turning; on the wrong side it spins backwards."),
+                    "normal points out of the ball). At the center, friction has no lever arm: the ball never "
+                    "turns, and friction holds it where it lands; on the far side it spins the wrong way."),
     "friction_missing": Hint(7, "friction makes it roll",
                              "Without a friction impulse the ball slides down the ramp like an ice cube. Find kt "
                              "along the tangent (with both spin terms), the impulse -(rel · t) / kt that would stop "
@@ -179,6 +183,15 @@ def runtime_lines(sub):
 
 # ---------------------------------------------------------------- step 2: the closest point
 
+# the known wrong formulas of step 2, by the name the probe gives their points (probes._closest_reference)
+CLOSEST_MISTAKES = {
+    "line": ("your point lies on the edge's line beyond the edge: t is not clamped to [0, 1]", "clamp"),
+    "unsquared": ("t is divided by |ab|, not by ab·ab = |ab|²", "closest"),
+    "undivided": ("t = (p - a)·ab is not divided by ab·ab = |ab|²", "closest"),
+    "from_b": ("t is measured from b, (p - b)·ab, where the lesson measures from a, (p - a)·ab", "closest"),
+}
+
+
 @CHECKS.check(depends=["loads"])
 def closest_point(sub, functions):
     """Step 2: closest_on_segment() gives the point of the edge nearest to p (t clamped to [0, 1])."""
@@ -193,17 +206,19 @@ def closest_point(sub, functions):
                        "see a different polygon.", HINTS["closest"])
         if _same_point(got, want):
             continue
+        if _bad(got) and "number" in got:
+            t_too = " (that is t: return the point a + ab t)" if _close(got["number"], case["t"]) else ""
+            raise Fail(f"{where}, closest_on_segment() returned the number {got['number']:.4g}{t_too}; expected "
+                       f"the point {_vec(want)}.", HINTS["closest"])
         if _bad(got):
             placeholder = " (the handout's placeholder: write step 2)" if "inf" in got["bad"] else ""
             raise Fail(f"{where}, closest_on_segment() returned {got['bad']}{placeholder}; expected the point "
                        f"{_vec(want)}.", HINTS["closest"])
-        if _same_point(got, case["line"]):
-            raise Fail(f"{where}, your point {_vec(got)} lies on the edge's line beyond the edge; the nearest point "
-                       f"of the edge is {_vec(want)}: t is not clamped to [0, 1].", HINTS["clamp"])
-        if _same_point(got, case["unsquared"]):
-            raise Fail(f"{where}, your point is {_vec(got)}; expected {_vec(want)}: t is divided by |ab|, not by "
-                       "ab·ab = |ab|².", HINTS["closest"])
-        raise Fail(f"{where}, your point is {_vec(got)}; expected {_vec(want)}.", HINTS["closest"])
+        named = consistent_mistake(cases, lambda c, name: _same_point(c["got"], c["mistakes"][name]),
+                                   [name for name in CLOSEST_MISTAKES if not _same_point(case["mistakes"][name], want)])
+        text, hint = CLOSEST_MISTAKES.get(named, ("", "closest"))
+        raise Fail(f"{where}, your point is {_vec(got)}; expected {_vec(want)}" + (f": {text}." if text else "."),
+                   HINTS[hint])
     outside = _function(sub, functions, "circle_outside", "circle_polygon", 2)
     for case in outside:
         got, want = case["got"], case["want"]
@@ -382,8 +397,13 @@ FRICTION_TEXT = {
     "always_full": ("friction always takes its full mu·j, even where a smaller impulse stops the slip",
                     "friction_clamp"),
     "no_spin_kt": ("kt lacks the spin terms (ra × t)²/I_A + (rb × t)²/I_B", "friction_kt"),
-    "at_centre": ("the friction impulse acts at the centres (zero offsets), so it cannot turn the ball",
-                  "friction_centre"),
+    "kt_is_k": ("kt = k: the normal's effective mass, with (ra × n)² and (rb × n)², where kt needs (ra × t)²/I_A "
+                "+ (rb × t)²/I_B", "friction_kt"),
+    "at_centre": ("the friction impulse changes no spin (applied at the centres, with zero lever arms, or the "
+                  "velocities changed without the spins), so it cannot turn the ball", "friction_centre"),
+    "bodies_swapped": ("the friction impulse is applied with the bodies swapped, apply_impulse(b, a, ...): B gets "
+                       "-t·jt at A's lever arm ra and A gets +t·jt at rb; the lesson's order is apply_impulse(a, b, "
+                       "t * jt, ra, rb)", "friction_centre"),
 }
 
 
@@ -403,12 +423,18 @@ def friction_rolls(sub, functions):
     """Step 7: resolve()'s friction impulse, jt = -rel·t / kt clamped to ±mu j, acts at the contact and turns the ball."""
     cases = _function(sub, functions, "resolve", "resolve", 7)
     for case in cases:
+        for name, now in (case.get("changed") or {}).items():
+            raise Fail(f"in '{case['case']}', resolve() changed its argument {name} in place (to {_vec(now)}): the "
+                       f"World goes on using the contact's {name} for its other contact points and the push-out. Make "
+                       f"new vectors (normal.rotate(90) is a new vector; t = normal then t.rotate_ip(...) turns the "
+                       f"caller's).", arguments_hint(7, "resolve"))
+    for case in cases:
         got, variants = case["got"], case["variants"]
         if _state_matches(got, variants["right"]):
             continue
-        named = next((key for key in FRICTION_TEXT
-                      if _state_matches(got, variants[key]) and not _state_matches(variants[key], variants["right"])),
-                     None)
+        named = consistent_mistake(cases, lambda c, key: _state_matches(c["got"], c["variants"][key]),
+                                   [key for key in FRICTION_TEXT
+                                    if not _state_matches(variants[key], variants["right"])])
         text, hint = FRICTION_TEXT.get(named, ("the velocities and spins after resolve() differ from the lesson's",
                                                "friction_missing"))
         raise Fail(f"in '{case['case']}' (mu = {case['mu']:.2g}), {text}. After your resolve(): "

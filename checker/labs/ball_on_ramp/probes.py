@@ -22,13 +22,14 @@ from the inputs as they were before the student's function got them.
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
 import math
+import numbers
 
 from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
-from ...probe_kit import box, judging, ngon, reference, twin, with_reference_steps
+from ...probe_kit import box, changed_vectors, judging, ngon, reference, twin, with_reference_steps
 from ...tape import run_rng
 
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
@@ -38,7 +39,12 @@ RAMP_ANGLE = 22.0      # degrees
 
 
 def answer_point(value):
-    """A returned point as [x, y], or {"bad": what it is} when it is not a finite 2D point."""
+    """A returned point as [x, y], or {"bad": what it is} when it is not a finite 2D point.
+
+    A bare number is no point (Vector2(0.3) would make it (0.3, 0.3)): {"bad": ..., "number": value}.
+    """
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        return {"bad": f"the number {_short(value)}, not a point", "number": float(value)}
     try:
         point = Vector2(value)
     except (TypeError, ValueError):
@@ -122,6 +128,10 @@ def segment_cases():
         ("a point beside the same edge walked the other way", Vector2(60, 20), slant_b, slant_a),
         ("a point before the start of a short steep edge", Vector2(-3, -30), Vector2(2, -12), Vector2(6, 14)),
         ("a point beside a short steep edge", Vector2(-9, 4), Vector2(2, -12), Vector2(6, 14)),
+        # |ab| = 0.5 px: t, t·|ab| and t·|ab|² (0.6, 0.3, 0.15) all fall inside [0, 1], so dividing by |ab|
+        # or by nothing shows as itself (on long edges both clamp to an end alike)
+        ("a point beside a half-pixel edge", Vector2(10.18, 10.24) + Vector2(-4, 3), Vector2(10, 10),
+         Vector2(10.3, 10.4)),
     ]
 
 
@@ -153,11 +163,18 @@ def probe_closest(module, lab_path):
 
 @reference
 def _closest_reference(p, a, b):
-    """The lesson's closest point, the point on the unclamped line, and the one with t not divided by |ab|²."""
+    """The lesson's closest point and, by name, the points of the known wrong formulas (CLOSEST_MISTAKES).
+
+    Also the lesson's t, for a function that returns t instead of the point.
+    """
     ab = b - a
-    line = a + ab * ((p - a).dot(ab) / ab.dot(ab))
-    return {"want": list(reference_closest(p, a, b)), "line": list(line),
-            "unsquared": list(a + ab * max(0.0, min(1.0, (p - a).dot(ab) / ab.length())))}
+
+    def clamped(t):
+        return list(a + ab * max(0.0, min(1.0, t)))
+    along = (p - a).dot(ab)
+    return {"want": list(reference_closest(p, a, b)), "t": max(0.0, min(1.0, along / ab.dot(ab))),
+            "mistakes": {"line": list(a + ab * (along / ab.dot(ab))), "unsquared": clamped(along / ab.length()),
+                         "undivided": clamped(along), "from_b": clamped((p - b).dot(ab) / ab.dot(ab))}}
 
 
 # ---------------------------------------------------------------- steps 2 and 3: circle_polygon
@@ -392,7 +409,8 @@ def resolve_cases():
     ]
 
 
-FRICTION_VARIANTS = ("right", "none", "sign", "unclamped", "no_spin_kt", "at_centre", "always_full")
+FRICTION_VARIANTS = ("right", "none", "sign", "unclamped", "no_spin_kt", "kt_is_k", "at_centre", "always_full",
+                     "bodies_swapped")
 
 
 @reference
@@ -400,8 +418,9 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     """The handout's resolve() with the lesson's friction ("right") or a plausible mistake in step 7.
 
     Variants: "none" no friction; "sign" the clamped impulse pushed along the slip; "unclamped"
-    no Coulomb clamp; "no_spin_kt" kt without the spin terms; "at_centre" the friction impulse
-    applied at the centres (ra = rb = 0); "always_full" friction always mu j, against the slip.
+    no Coulomb clamp; "no_spin_kt" kt without the spin terms; "kt_is_k" the normal's k used as kt;
+    "at_centre" the friction impulse applied at the centres (ra = rb = 0); "always_full" friction
+    always mu j, against the slip; "bodies_swapped" apply_impulse(b, a, t jt, ra, rb).
     """
     ra, rb = point - a.pos, point - b.pos
     rel = relative_velocity(a, b, ra, rb)
@@ -423,6 +442,8 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
     if variant == "no_spin_kt":
         kt = a.inv_mass + b.inv_mass
+    elif variant == "kt_is_k":
+        kt = k
     jt = -rel.dot(t) / kt
     if variant == "always_full":
         jt = math.copysign(mu * j, jt)
@@ -432,6 +453,8 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
         jt = -jt
     if variant == "at_centre":
         ra, rb = Vector2(), Vector2()
+    if variant == "bodies_swapped":
+        a, b = b, a
     lesson_apply_impulse(a, b, t * jt, ra, rb)
 
 
@@ -451,8 +474,9 @@ def probe_resolve(module, lab_path):
     resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
     for name, a, b, normal, point in resolve_cases():
         given = (twin(a), twin(b))   # the bodies as resolve() gets them
-        module.resolve(a, b, Vector2(normal), Vector2(point))
-        case = {"case": name, "got": _outcome(a, b)}
+        vectors = {"normal": Vector2(normal), "point": Vector2(point)}   # copies: a change in place shows
+        module.resolve(a, b, vectors["normal"], vectors["point"])
+        case = {"case": name, "got": _outcome(a, b), "changed": changed_vectors(vectors, normal=normal, point=point)}
         if judging(module):
             case.update(_resolve_reference(*given, normal, point, resting))
         cases.append(case)

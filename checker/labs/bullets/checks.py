@@ -25,6 +25,7 @@ import math
 
 from . import scenes
 from ... import lab_checks
+from ...causes import consistent_mistake
 from ...checks import Fail, Hint, Passed, Registry
 from lesson11.records import finite
 
@@ -60,11 +61,12 @@ HINTS = {
                       "the touching lies in the past) or later than dt."),
     "toi_touching": Hint(2, "already touching",
                          "When c = |dp|² - (r1 + r2)² <= 0 the circles already overlap: return 0.0 (the impact is "
-                         "now) before solving the quadratic; its roots are then on both sides of 0."),
+                         "now) before solving the quadratic; its roots are then on both sides of 0. Without it, a "
+                         "bullet inside a crate's or the wall's bounding circle is never tested, and bullets tunnel."),
     "bounding": Hint(3, "the bounding circle holds every corner",
                      "The bounding circle around the crate's centre must reach its farthest corner: the largest "
                      "centre.distance_to(p) over the points. Half the width or the nearest corner leaves corners "
-                     "outside, and a bullet aimed at a corner is skipped by the broad test."),
+                     "outside, and a bullet aimed at a corner is skipped by the broad test: it tunnels."),
     "broad": Hint(4, "the broad test before the exact test",
                   "First test the bullet, with its own radius, against the crate's bounding circle (the crate "
                   "held still) with circle_toi(). Only when that finds no contact this step (None; 0.0 is a hit "
@@ -76,7 +78,8 @@ HINTS = {
     "swept": Hint(5, "move to the impact, resolve, spend the rest",
                   "Move the bullet along its velocity to where it is at the time of impact t; resolve there, at "
                   "the point of the bullet's surface that touches the other body (one radius from its centre "
-                  "along the normal); then move it for the rest of the step, dt - t, with its NEW velocity."),
+                  "along the normal); then move it for the rest of the step, dt - t, with its NEW velocity. "
+                  "Without the resolve, or moved the whole step first, bullets tunnel through the wall."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
                     "everything else (the constants, the wall, the modes, BulletWorld, the `# lab runtime` lines) "
@@ -167,6 +170,22 @@ def _toi_ok(got, want):
     return isinstance(got, float) and abs(got - want) <= TOI_TOLERANCE
 
 
+# the known wrong roots of step 2, by the name the probe gives their times (probes._toi_reference)
+TOI_MISTAKES = {
+    "no_two": "that is what (-b - √disc) / a gives in every case, twice the first-contact time: the 2 "
+              "of 2a is missing",
+    "four": "that is what (-b - √disc) / (4a) gives in every case, half the first-contact time: divide by 2a",
+    "a_unsquared": "that is the root with a = |dv|; the quadratic's a is dv·dv = |dv|²",
+}
+
+
+def _toi_mistake(cases, case):
+    """The sentence of the known wrong root that gives the student's time in every case, or ''."""
+    named = consistent_mistake(cases, lambda c, name: _toi_ok(c["got"], c["forms"][name]),
+                               [name for name, value in case["forms"].items() if not _toi_ok(value, case["want"])])
+    return TOI_MISTAKES.get(named, "")
+
+
 @CHECKS.check(depends=["loads"], max_score=2)
 def toi_matches_root(sub, functions):
     """Step 2: circle_toi() equals the analytic first-contact time within 1e-9 s (head-on, glancing, already
@@ -196,6 +215,8 @@ def toi_matches_root(sub, functions):
             elif got > case["dt"]:
                 text += f": later than this step's dt = {case['dt']:.4g} s"
             hint = HINTS["toi_apart"]
+        elif _toi_mistake(cases, case):
+            text += f": {_toi_mistake(cases, case)}"
         elif want is not None and got is None:
             text += ": the circles do touch within the step"
         raise Fail(text + ".", hint)
@@ -204,6 +225,19 @@ def toi_matches_root(sub, functions):
 
 
 # ---------------------------------------------------------------- step 3: bounding_radius
+
+# the known wrong bounding radii, by the name the probe gives their values (probes._bounding_reference)
+BOUNDING_MISTAKES = {
+    "squared": "that is the squared distance ({want:.2f}² = {want_sq:.1f}): take the distance itself, its square root",
+    "from_origin": "that is the farthest corner's distance from (0, 0); measure from the crate's centre, "
+                   "centre.distance_to(p)",
+    "half_side": "that is the largest |x| or |y| offset from the centre (half a side), not a distance: a corner is "
+                 "farther",
+    "half_width": "that is the largest |x - centre.x| (half the width), not a distance: a corner is farther",
+    "nearest": "that is the nearest corner's distance; the circle must reach the farthest (max, not min)",
+    "average": "that is the average distance to the corners; the circle must reach the farthest (max)",
+}
+
 
 @CHECKS.check(depends=["loads"])
 def bounding_circle(sub, functions):
@@ -215,7 +249,12 @@ def bounding_circle(sub, functions):
             continue
         text = f"for {case['case']}, bounding_radius() returned {_time(got).replace(' s', ' px')}; expected the " \
                f"farthest corner's distance, {want:.3f} px"
-        if isinstance(got, float) and got < want:
+        named = consistent_mistake(cases, lambda c, name: isinstance(c["got"], float)
+                                   and _close(c["got"], c["forms"][name]),
+                                   [name for name, value in case["forms"].items() if not _close(value, want)])
+        if named:
+            text += f": {BOUNDING_MISTAKES[named].format(want=want, want_sq=want * want)}"
+        elif isinstance(got, float) and got < want:
             text += ": corners stick out of that circle, so bullets aimed at them are skipped"
         raise Fail(text + ".", HINTS["bounding"])
     return Passed(f"the bounding circle reaches the farthest corner in all {len(cases)} shapes", value=cases)
@@ -261,12 +300,23 @@ def broad_test(sub, functions):
 
 SWEPT_TEXT = {
     "stops": "the bullet stopped at the impact: the rest of the step (dt - t) was not spent",
-    "old_velocity": "the bullet spent the step with its velocity from before the hit (it went on through)",
-    "no_resolve": "the bullet moved on through without a resolve() at the impact",
+    "old_velocity": "the bullet was resolved at the impact but spent the step with its velocity from before the hit "
+                    "(it went on through)",
+    "no_impulse": "nothing changed at the impact, as if no impulse was applied: either resolve() was not called "
+                  "there, or it was given the normal reversed (resolve(..., -normal, ...)), so it saw the bodies "
+                  "moving apart; the normal time_of_impact gives points from the bullet into the other body",
     "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
     "far_side": "the impulse was applied on the far side of the bullet; the contact point is on the bullet's "
                 "surface towards the crate, bullet.pos + normal * radius, and its lever arm sets the crate's spin",
 }
+
+
+def _same_outcome(got, want):
+    """The bullet's position and velocity and every other body's position, velocity and spin agree."""
+    return _same_point(got["bullet"]["pos"], want["bullet"]["pos"]) and \
+        _same_point(got["bullet"]["vel"], want["bullet"]["vel"]) and len(got["others"]) == len(want["others"]) and \
+        all(_same_point(g["vel"], w["vel"]) and _same_point(g["pos"], w["pos"])
+            and _close(g.get("omega", 0.0), w.get("omega", 0.0)) for g, w in zip(got["others"], want["others"]))
 
 
 @CHECKS.check(depends=["loads"])
@@ -275,14 +325,12 @@ def swept_move_resolves(sub, functions):
     cases = _function(sub, functions, "swept_move", "swept_move", 5)
     for case in cases:
         got, want = case["got"], case["want"]
-        ok = _same_point(got["bullet"]["pos"], want["bullet"]["pos"]) and \
-            _same_point(got["bullet"]["vel"], want["bullet"]["vel"]) and \
-            all(_same_point(g["vel"], w["vel"]) and _same_point(g["pos"], w["pos"])
-                and _close(g.get("omega", 0.0), w.get("omega", 0.0))
-                for g, w in zip(got["others"], want["others"]))
-        if ok:
+        if _same_outcome(got, want):
             continue
-        named = next((key for key, pos in case["variants"].items() if _same_point(got["bullet"]["pos"], pos)), None)
+        # a case without a hit has no mistakes' outcomes: there every mistake moves the bullet as the lesson does
+        named = consistent_mistake(cases, lambda c, key: _same_outcome(c["got"], c["variants"].get(key, c["want"])),
+                                   [key for key, outcome in case["variants"].items()
+                                    if not _same_outcome(outcome, want)])
         where = f"in '{case['case']}'" + (f" (impact at t = {case['t'] * 1000:.3f} ms)" if case["t"] is not None else "")
         text = (f"{where}, after swept_move() the bullet is at {_vec(got['bullet']['pos'])} moving "
                 f"{_vec(got['bullet']['vel'])} px/s; expected {_vec(want['bullet']['pos'])} moving "

@@ -145,7 +145,21 @@ def _toi_reference(p1, v1, r1, p2, v2, r2, dt):
     disc = b * b - 4 * a * c
     later = (-b + math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
     earlier = (-b - math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
-    return {"want": analytic_toi(p1, v1, r1, p2, v2, r2, dt), "later": later, "earlier": earlier, "c": c}
+    return {"want": analytic_toi(p1, v1, r1, p2, v2, r2, dt), "later": later, "earlier": earlier, "c": c,
+            "forms": {"no_two": _toi_with(a, b, c, dt, 1.0), "four": _toi_with(a, b, c, dt, 4.0),
+                      "a_unsquared": _toi_with(math.sqrt(a), b, c, dt, 2.0)}}
+
+
+@reference
+def _toi_with(a, b, c, dt, under):
+    """The lesson's circle_toi with a known wrong root, (-b - √disc) / (under · a), and the lesson's filters (s)."""
+    if c <= 0:
+        return 0.0
+    disc = b * b - 4 * a * c
+    if a == 0 or disc < 0:
+        return None
+    t = (-b - math.sqrt(disc)) / (under * a)
+    return t if 0 <= t <= dt else None
 
 
 # ---------------------------------------------------------------- step 3: bounding_radius
@@ -189,8 +203,13 @@ def probe_bounding(module, lab_path):
 def _bounding_reference(points, centre):
     """The farthest corner's distance, the nearest one's and the largest half side (to name mistakes)."""
     half_sides = [abs(p.x - centre.x) for p in points] + [abs(p.y - centre.y) for p in points]
-    return {"want": reference_bounding_radius(points, centre), "smallest": min(centre.distance_to(p) for p in points),
-            "half_side": max(half_sides) if half_sides else 0.0}
+    distances = [centre.distance_to(p) for p in points]
+    return {"want": reference_bounding_radius(points, centre), "smallest": min(distances),
+            "half_side": max(half_sides) if half_sides else 0.0,
+            "forms": {"squared": max(d * d for d in distances), "from_origin": max(p.length() for p in points),
+                      "half_side": max(half_sides), "half_width": max(abs(p.x - centre.x) for p in points),
+                      "nearest": min(distances),
+                      "average": sum(distances) / len(distances)}}
 
 
 # ---------------------------------------------------------------- step 4: time_of_impact
@@ -360,9 +379,7 @@ def first_hit(world, bullet):
 def probe_swept(module, lab_path):
     """One swept_move() of 1/120 s per case with the lesson's time_of_impact, beside the lesson's swept move.
 
-    Also the state after the usual mistakes, for the message: "stops" (the rest of the step
-    not spent), "old_velocity" (the rest spent with the velocity before the hit), "whole_step"
-    (a whole dt moved after the impact), "no_resolve" (moved through without resolving).
+    Also the outcome of each usual mistake (SWEPT_MISTAKES), for the message.
     """
     own = module.time_of_impact
     module.time_of_impact = lesson_time_of_impact
@@ -382,29 +399,50 @@ def probe_swept(module, lab_path):
 
 @reference
 def _swept_reference(make):
-    """The lesson's swept move in a fresh world from make(), and the usual mistakes' bullet positions."""
+    """The lesson's swept move in a fresh world from make(), and the outcome of each usual mistake (SWEPT_MISTAKES).
+
+    An outcome is {"bullet": state, "others": [state, ...]}: a mistake is named only when the whole
+    outcome is its own, so two mistakes that leave the bullet at the same place are told apart by
+    its velocity or the crate's.
+    """
     world, bullet = make()
-    start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
     reference_swept_move(world, bullet, STEP)
-    want = {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
+    want = _outcome(world, bullet)
     world, bullet = make()
     hit = first_hit(world, bullet)
-    variants = {}
-    if hit is not None:
-        t = hit[0]
-        world.resolve(bullet, hit[2], hit[1], start + velocity * t + hit[1] * bullet.radius)
-        after = Vector2(bullet.vel)
-        variants = {"stops": list(start + velocity * t), "old_velocity": list(start + velocity * STEP),
-                    "whole_step": list(start + velocity * t + after * STEP),
-                    "no_resolve": list(start + velocity * STEP)}
-        world, bullet = make()   # the contact point on the far side of the bullet: pos - normal * r
-        _, normal, other = first_hit(world, bullet)
-        bullet.pos += bullet.vel * t
-        world.resolve(bullet, other, normal, bullet.pos - normal * bullet.radius)
+    if hit is None:
+        return {"want": want, "variants": {}, "t": None}
+    return {"want": want, "t": hit[0], "variants": {name: _swept_mistake(make, name) for name in SWEPT_MISTAKES}}
+
+
+def _outcome(world, bullet):
+    return {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
+
+
+# the usual step-5 mistakes: "stops" (the rest of the step not spent), "old_velocity" (the rest spent with the
+# velocity from before the hit), "whole_step" (a whole dt after the impact), "no_impulse" (nothing changes at the
+# impact: no resolve(), or one given the normal reversed, which sees the bodies separating), "far_side" (the
+# contact point on the bullet's far side, pos - normal r)
+SWEPT_MISTAKES = ("stops", "old_velocity", "whole_step", "no_impulse", "far_side")
+
+
+@reference
+def _swept_mistake(make, name):
+    """The outcome of one step of the swept move with the mistake `name`, in a fresh world from make()."""
+    world, bullet = make()
+    t, normal, other = first_hit(world, bullet)
+    start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
+    bullet.pos += velocity * t
+    if name != "no_impulse":
+        side = -1 if name == "far_side" else 1
+        world.resolve(bullet, other, normal, bullet.pos + normal * (side * bullet.radius))
+    if name == "old_velocity":
+        bullet.pos = start + velocity * STEP
+    elif name == "whole_step":
+        bullet.pos += bullet.vel * STEP
+    elif name != "stops":
         bullet.pos += bullet.vel * (STEP - t)
-        if (bullet.pos - Vector2(want["bullet"]["pos"])).length() > 1e-6:
-            variants["far_side"] = [bullet.pos.x, bullet.pos.y]
-    return {"want": want, "variants": variants, "t": None if hit is None else hit[0]}
+    return _outcome(world, bullet)
 
 
 # ---------------------------------------------------------------- criteria 1 and 2: the shots

@@ -21,6 +21,7 @@ measures in the same scene, with the measured value noted next to it.
 import math
 
 from ... import lab_checks
+from ...causes import consistent_mistake
 from lesson11 import records as metrics
 from . import scenes
 from ...checks import Fail, Hint, Passed, Registry
@@ -64,21 +65,24 @@ HINTS = {
     "corners": Hint(2, "a regular polygon's corners",
                     "Put corner k on the circle at angle θk = 2πk / sides: (radius cos θk, radius sin θk) for k = 0 "
                     "to sides - 1, so corner 0 is (radius, 0) and there are exactly `sides` corners. Angles in "
-                    "radians (math.cos takes radians)."),
+                    "radians (math.cos takes radians): in degrees the corners go round more than once, the outline "
+                    "crosses itself and the window never opens."),
     "centroid": Hint(3, "the area-weighted centroid",
                      "polygon_inertia only works when the points are centred on the centroid, the centre of mass "
                      "of the solid shape. That is not the average of the corners: weight each edge's term by its "
                      "area, C = Σ (a + b) (a × b) / (6 A) over the edges a→b, with A the signed shoelace area "
-                     "polygon_area(points) (its sign makes either winding work)."),
+                     "polygon_area(points) (its sign makes either winding work). Without the division by 6 A a "
+                     "house vanishes: its corners land thousands of px from its centre."),
     "inertia": Hint(4, "the triangle-fan sum",
                     "Cut the polygon into triangles (0, a, b), one per edge a→b. Each weighs |a × b| (twice its "
                     "area) and contributes a·a + a·b + b·b; I = mass × Σ |a × b| (a·a + a·b + b·b) / (6 Σ |a × b|). "
-                    "Check: a 30 × 20 box of mass 2 gives 216.67, as m (w² + h²) / 12 does."),
+                    "Check: a 30 × 20 box of mass 2 gives 216.67, as m (w² + h²) / 12 does. Without the 6 shapes "
+                    "are six times too hard to turn: a pushed hexagon hardly tips."),
     "axes": Hint(5, "skip parallel axes, keep every direction",
                  "SAT must test every edge direction of both shapes, but parallel normals (the same line, pointing "
                  "either way) cast the same shadows: keep an edge normal only if |axis × kept| > PARALLEL for "
                  "every axis kept so far. A box has 2 directions, a hexagon 3; skipping a direction that is not "
-                 "parallel makes SAT miss gaps."),
+                 "parallel makes SAT miss gaps: a shape falling past another's corner stops in mid-air."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
                     "else (the shapes, build(), sat(), the scene, the World, the `# lab runtime` lines, the final "
@@ -86,8 +90,9 @@ HINTS = {
                     "again from the starter if you are unsure what changed."),
     "runtime": lab_checks.RUNTIME_HINT,
     "sinking": Hint(6, "the push-out after the impulses",
-                    "Shapes sink: the overlap is not being removed. The World's push-out (separate) must stay on, "
-                    "and each body's corners must be centred on its centroid (step 3)."),
+                    "Shapes end up deeper in the floor or in each other than the pile allows: the overlap the "
+                    "impulses leave is not being removed. The World's push-out (separate) must stay on, as "
+                    "handed out."),
     "settle": Hint(6, "watch them settle",
                    "Shapes keep moving where they should rest. Press D and watch the contact points, the normals "
                    "and the centre-of-mass dots while they settle; the function checks above all pass, so compare "
@@ -180,6 +185,21 @@ def _corner_mistake(case, got):
             "2π / sides further (radians, increasing, so clockwise on screen).")
 
 
+# the known wrong corner formulas, by the name the probe gives their corners (probes._corner_forms)
+CORNER_MISTAKES = {
+    "degrees": "these are the corners at θk = 360k / sides taken as radians: math.cos and math.sin take radians, "
+               "θk = 2πk / sides",
+    "half_turn": "these are the corners at θk = πk / sides, spread over half a turn: θk = 2πk / sides "
+                 "(π instead of 2π)",
+    "sin_cos": "your x and y are swapped: x = radius cos θk, y = radius sin θk (yours takes x from sin, y from cos)",
+}
+
+
+def _same_corners(got, want, radius):
+    return len(got) == len(want) and all(_close(g[0], w[0], radius) and _close(g[1], w[1], radius)
+                                         for g, w in zip(got, want))
+
+
 @CHECKS.check(depends=["loads"])
 def polygon_corners(sub, functions):
     """Step 2: regular_polygon(sides, radius) puts corner k at radius (cos θk, sin θk), θk = 2πk / sides."""
@@ -195,7 +215,12 @@ def polygon_corners(sub, functions):
                       and _close(g[1], w[1], case["radius"]))), min(len(got), len(want)))
         shown_corner = f"corner {first} is {_vec(got[first])}, expected {_vec(want[first])}" \
             if first < min(len(got), len(want)) else f"{len(got)} corners, expected {len(want)}"
-        raise Fail(f"{label}: {shown_corner}." + _corner_mistake(case, got), HINTS["corners"])
+        named = consistent_mistake(
+            cases, lambda c, name: not isinstance(c["got"], str) and _same_corners(c["got"], c["forms"][name],
+                                                                                   c["radius"]),
+            [name for name, form in case["forms"].items() if not _same_corners(form, want, case["radius"])])
+        raise Fail(f"{label}: {shown_corner}." + (f" {CORNER_MISTAKES[named][0].upper()}{CORNER_MISTAKES[named][1:]}."
+                                                  if named else _corner_mistake(case, got)), HINTS["corners"])
     return f"the corners of all {len(cases)} polygons (3 to 12 sides) are the lesson's"
 
 
@@ -240,6 +265,9 @@ def centroid(sub, functions):
                      "same sign, both signed (a × b over the signed A from polygon_area) or both without it "
                      "(|a × b| over |A|); here one of them lost its sign, which shows when the points wind the "
                      "other way.")
+        elif all(not isinstance(c["got"], str) and _close_point(c["got"], c["want"][::-1], scale) for c in cases):
+            named = (" That is the centroid with x and y swapped, in every outline: the x sum goes with the x "
+                     "coordinates, Σ (a.x + b.x)(a × b), and the y sum with the y ones.")
         elif _close_point(got, _without_closing_edge(case), scale):
             named = (" The edge from the last point back to the first is missing: the loop must run over every "
                      "edge, (i + 1) % len(points) wrapping round.")
@@ -259,6 +287,8 @@ def centroid(sub, functions):
 # ---------------------------------------------------------------- step 4: polygon_inertia
 
 INERTIA_MISTAKES = {
+    "inverse": "that is 1 / I: return the inertia I itself (the Body takes the inverse, inv_inertia, from it)",
+    "dot_weight": "the triangles are weighted by |a · b| where the formula weights them by |a × b| (their area)",
     "no_six": "the sum is not divided by 6",
     "twelve": "the sum is divided by 12 where the formula has 6",
     "no_mass": "the mass factor is missing",
@@ -283,9 +313,10 @@ def inertia_sum(sub, functions):
                        HINTS["inertia"])
         if _close(got, want):
             continue
-        named = next((text for key, text in INERTIA_MISTAKES.items()
-                      if key in case["forms"] and _close(got, case["forms"][key]) and not _close(want, case["forms"][key])),
-                     None)
+        named = INERTIA_MISTAKES.get(consistent_mistake(
+            cases, lambda c, key: not isinstance(c["got"], str) and c["forms"].get(key) is not None
+            and _close(c["got"], c["forms"][key]),
+            [key for key, value in case["forms"].items() if value is not None and not _close(want, value)]))
         analytic = f" (the analytic value is {case['analytic']:.6g})" if case["analytic"] is not None else ""
         raise Fail(f"for {case['case']}, polygon_inertia gives {got:.6g}; the triangle-fan sum gives {want:.6g}"
                    f"{analytic}" + (f": {named}." if named else "."), HINTS["inertia"])
@@ -297,6 +328,35 @@ def inertia_sum(sub, functions):
 
 def _parallel(u, v):
     return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-6
+
+
+# the known wrong ways of skipping parallel axes, by the name the probe gives what they keep (probes._axes_forms)
+AXES_MISTAKES = {
+    "dot_not_cross": "an axis is skipped when |axis · kept| is small, which is when it is perpendicular to a kept one; "
+                     "a parallel one has |axis × kept| near 0: compare abs(cross(axis, kept)) with PARALLEL",
+    "same_way_only": "only an axis pointing the same way as a kept one is skipped (axis · kept near 1); one pointing "
+                     "the opposite way is parallel too: test abs(cross(axis, kept)) <= PARALLEL",
+    "cross_without_abs": "the test cross(axis, kept) > PARALLEL has no abs(): an axis turned the other way (a negative "
+                         "cross product) is skipped though it is not parallel",
+    "only_a": "only A's edge normals are there: B's edges give directions of their own (edge_normals(pb) too)",
+    "dot_threshold": "the test 1 - |axis · kept| <= PARALLEL merges axes up to about 0.08° apart (1 - cos θ ≈ θ² / 2): "
+                     "compare |axis × kept| (≈ θ) with PARALLEL, as the lesson does",
+    "last_kept_only": "each axis is compared with the last kept axis only; a twin kept earlier is missed: compare it "
+                      "with every kept axis (all(...))",
+    "none_skipped": "no axis is skipped: every parallel twin is kept",
+}
+
+
+def _same_axes(got, want):
+    return len(got) == len(want) and all(_close(g[0], w[0]) and _close(g[1], w[1]) for g, w in zip(got, want))
+
+
+def _axes_mistake(cases, case):
+    """' Sentence.' naming the known wrong skip rule that keeps the student's axes in every pair, or ''."""
+    named = consistent_mistake(cases, lambda c, name: not isinstance(c["got"], str)
+                               and _same_axes(c["got"], c["forms"][name]),
+                               [name for name, form in case["forms"].items() if not _same_axes(form, case["want"])])
+    return f" That is the rule in every pair: {AXES_MISTAKES[named]}." if named else ""
 
 
 def _label(case):
@@ -336,14 +396,15 @@ def parallel_axes(sub, functions):
                            "PARALLEL, as the lesson does.", HINTS["axes"])
             raise Fail(f"for {label}, separating_axes has no axis along {whose} edge normal {_vec(missing)}: "
                        f"{len(got)} axes for {len(case['want'])} distinct directions. Skip an axis only when it is "
-                       "parallel to one already kept, or SAT misses the gap along it.", HINTS["axes"])
+                       "parallel to one already kept, or SAT misses the gap along it." + _axes_mistake(cases, case),
+                       HINTS["axes"])
         twins = next(((a, b) for i, a in enumerate(got) for b in got[i + 1:] if _parallel(a, b)), None)
         if twins is not None:
             same = "the same way" if twins[0][0] * twins[1][0] + twins[0][1] * twins[1][1] > 0 else "opposite ways"
             raise Fail(f"for {label}, separating_axes gives {len(got)} axes where {len(case['want'])} directions are "
                        f"distinct: {_vec(twins[0])} and {_vec(twins[1])} are parallel (pointing {same}). Skip an "
-                       "axis parallel to any kept one, whichever way it points (|axis × kept| <= PARALLEL).",
-                       HINTS["axes"])
+                       "axis parallel to any kept one, whichever way it points (|axis × kept| <= PARALLEL)."
+                       + _axes_mistake(cases, case), HINTS["axes"])
     sats = _function(sub, functions, "sat", "sat", 5)
     for case in sats:
         got, want = case["got"], case["want"]

@@ -83,7 +83,18 @@ def probe_regular_polygon(module, lab_path):
     if judging(module):
         for case in cases:
             case["want"] = _plain(reference_regular_polygon(case["sides"], case["radius"]))
+            case["forms"] = _corner_forms(case["sides"], case["radius"])
     return cases
+
+
+@reference
+def _corner_forms(sides, radius):
+    """What the known wrong corner formulas give, by name: θk in degrees, πk / n (half a turn), x from sin."""
+    def corners(angle, swap=False):
+        points = [(radius * math.cos(angle(k)), radius * math.sin(angle(k))) for k in range(sides)]
+        return [[y, x] if swap else [x, y] for x, y in points]
+    return {"degrees": corners(lambda k: 360 * k / sides), "half_turn": corners(lambda k: math.pi * k / sides),
+            "sin_cos": corners(lambda k: 2 * math.pi * k / sides, swap=True)}
 
 
 # ---------------------------------------------------------------- step 3: polygon_centroid
@@ -158,7 +169,11 @@ def _inertia_forms(points, mass):
     weights = [abs(s) for s in signed]
     terms = [a.dot(a) + a.dot(b) + b.dot(b) for a, b in pairs]
     total = sum(weights)
+    right = mass * sum(w * t for w, t in zip(weights, terms)) / (6 * total)
+    dots = [abs(a.dot(b)) for a, b in pairs]
     forms = {
+        "inverse": 1 / right,
+        "dot_weight": mass * sum(d * t for d, t in zip(dots, terms)) / (6 * sum(dots)) if sum(dots) else None,
         "no_six": mass * sum(w * t for w, t in zip(weights, terms)) / total,
         "twelve": mass * sum(w * t for w, t in zip(weights, terms)) / (12 * total),
         "no_mass": sum(w * t for w, t in zip(weights, terms)) / (6 * total),
@@ -229,6 +244,8 @@ def axis_pairs():
         ("two boxes turned 0.01° apart (nearly parallel: keep both)", box(60, 40, (0, 0)),
          box(50, 30, (45, 20), 0.01)),
         ("two aligned boxes, far apart", box(40, 40, (0, 0)), box(40, 40, (300, 0))),
+        # B's first normal is parallel to A's last: comparing with the last kept axis only shows as itself
+        ("a box and a box turned a quarter turn", box(60, 40, (0, 0)), box(60, 40, (45, 20), 90)),
         ("a pentagon far from a triangle", ngon(5, 30, (0, 0), 10), ngon(3, 30, (200, 50))),
     ]
 
@@ -253,8 +270,29 @@ def probe_separating_axes(module, lab_path):
             if judging(module):
                 normals_a, normals_b = edge_normals(first), edge_normals(second)
                 cases[-1].update(normals_a=_plain(normals_a), normals_b=_plain(normals_b),
-                                 want=_plain(distinct_directions(normals_a + normals_b)))
+                                 want=_plain(distinct_directions(normals_a + normals_b)),
+                                 forms=_axes_forms(normals_a, normals_b))
     return cases
+
+
+@reference
+def _axes_forms(normals_a, normals_b):
+    """What the known wrong ways of skipping parallel axes keep, by name (checks.AXES_MISTAKES)."""
+    def kept_by(keep, normals=normals_a + normals_b):
+        kept = []
+        for axis in normals:
+            if keep(axis, kept):
+                kept.append(axis)
+        return _plain(kept)
+    return {
+        "dot_not_cross": kept_by(lambda a, kept: all(abs(a.dot(k)) > PARALLEL for k in kept)),
+        "same_way_only": kept_by(lambda a, kept: all(a.dot(k) < 1 - PARALLEL for k in kept)),
+        "cross_without_abs": kept_by(lambda a, kept: all(cross(a, k) > PARALLEL for k in kept)),
+        "only_a": kept_by(lambda a, kept: all(abs(cross(a, k)) > PARALLEL for k in kept), normals_a),
+        "dot_threshold": kept_by(lambda a, kept: all(1 - abs(a.dot(k)) > PARALLEL for k in kept)),
+        "last_kept_only": kept_by(lambda a, kept: not kept or abs(cross(a, kept[-1])) > PARALLEL),
+        "none_skipped": kept_by(lambda a, kept: True),
+    }
 
 
 def probe_sat(module, lab_path):

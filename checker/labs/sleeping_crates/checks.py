@@ -19,6 +19,7 @@ measures in the same scene, with the measured value noted next to it.
 """
 
 from ... import lab_checks
+from ...causes import consistent_mistake
 from lesson11 import records as metrics
 from . import scenes
 from ...checks import Fail, Hint, Passed, Registry
@@ -52,7 +53,8 @@ HINTS = {
                   "(spin has a sign), the timer grows by dt: the seconds it has been calm. As soon as either is at "
                   "or above its "
                   "threshold return 0.0: the timer starts again, so a crate that is slow for one instant (at the "
-                  "top of a throw) never reaches SLEEP_AFTER. dt is in seconds, not frames."),
+                  "top of a throw) never reaches SLEEP_AFTER; otherwise a crate thrown up hangs in the air, asleep "
+                  "at the top of its throw. dt is in seconds, not frames."),
     "moves": Hint(3, "skip sleeping bodies",
                   "moves(body) is True only for a body the World must integrate: dynamic (body.inv_mass != 0) and "
                   "awake (not body.asleep). A static body and a sleeping body both return False, so a pair of them "
@@ -61,7 +63,8 @@ HINTS = {
                  "Return a list of the bodies to wake: a sleeping body whose partner is dynamic (inv_mass != 0) and "
                  "awake. Check both orders (a sleeping, b awake, and the other way round). The floor and walls "
                  "never wake anything (a crate sleeps on the floor), two sleeping crates leave each other asleep, "
-                 "and an awake body is not 'woken'. Return [] when nothing wakes."),
+                 "and an awake body is not 'woken'. Return [] when nothing wakes. A pile that is never woken is "
+                 "shoved down by a crate dropped on it: its crates sink into the floor."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
                     "else (the thresholds, build(), the scene, the World and its hooks, the `# lab runtime` lines, "
@@ -121,26 +124,30 @@ def runtime_lines(sub):
 
 # ---------------------------------------------------------------- step 2: sleep_timer
 
-def _timer_mistake(case, got):
-    """A sentence naming a usual step-2 mistake, or ''."""
-    timer, dt, want = case["timer"], case["dt"], case["want"]
-    calm = want != 0.0
-    if calm and abs(got - (timer + 1)) <= ABS:
-        return " That adds 1 (a frame) per step; the timer counts seconds: add dt."
-    if calm and abs(got - timer) <= ABS:
-        return " The timer did not grow: add dt while the crate is calm."
-    if calm and abs(got) <= ABS:
-        return " The timer went back to 0 although the crate is calm" + (
-            ": its spin is negative, so compare abs(spin)." if case["spin"] < 0 else ".")
-    if not calm and abs(got - timer) <= ABS:
-        return (" The timer kept its value: a crate that moves must start again from 0, or a throw that is slow "
-                "at its top adds up calm instants and sleeps in the air.")
-    if not calm and abs(got - (timer + dt)) <= ABS:
-        if case["spin"] < 0 and case["speed"] < scenes.SLEEP_SPEED:
-            return " The spin is negative: compare abs(spin) with SLEEP_SPIN."
-        return (" The crate is not calm (it needs both speed < SLEEP_SPEED and |spin| < SLEEP_SPIN: `and`, not "
-                "`or`), so the timer starts again from 0.")
-    return ""
+# the known wrong rules of step 2, by the name the probe gives their answers (probes.timer_mistakes)
+TIMER_MISTAKES = {
+    "or": "calm when speed < SLEEP_SPEED `or` |spin| < SLEEP_SPIN; the rule needs both (`and`)",
+    "ignores_spin": "the timer looks at the speed only: a spinning crate must start again from 0 too "
+                    "(|spin| < SLEEP_SPIN as well)",
+    "ignores_speed": "the timer looks at the spin only: a moving crate must start again from 0 too",
+    "signed_spin": "the spin is compared with its sign: a crate spinning backwards (negative spin) counts as calm; "
+                   "compare abs(spin) with SLEEP_SPIN",
+    "speed_dt": "speed * dt (px moved in one step) is compared with SLEEP_SPEED, which is in px/s: compare the "
+                "speed itself",
+    "spin_vs_speed": "|spin| is compared with SLEEP_SPEED (5 px/s) where its own threshold is SLEEP_SPIN (0.1 rad/s)",
+    "never_resets": "the timer kept its value: a crate that moves must start again from 0, or a throw that is slow "
+                    "at its top adds up calm instants and sleeps in the air",
+    "counts_frames": "that adds 1 (a frame) per step; the timer counts seconds: add dt",
+    "returns_dt": "you return dt, not timer + dt: the timer must grow from its value",
+    "no_growth": "the timer does not grow while the crate is calm: return timer + dt",
+}
+
+
+def _timer_mistake(cases, case):
+    """' Sentence.' naming the known wrong rule that gives the student's answer in every case, or ''."""
+    named = consistent_mistake(cases, lambda c, name: abs(c["got"] - c["mistakes"][name]) <= ABS,
+                               [name for name, value in case["mistakes"].items() if abs(value - case["want"]) > ABS])
+    return f" {TIMER_MISTAKES[named][0].upper()}{TIMER_MISTAKES[named][1:]}." if named else ""
 
 
 @CHECKS.check(depends=["loads"])
@@ -155,8 +162,9 @@ def timer_rule(sub, functions):
             raise Fail(f"{label} must return a number of seconds; it returned {got}.", HINTS["timer"])
         if abs(got - case["want"]) <= ABS:
             continue
+        numbers = all(not isinstance(c["got"], str) for c in cases)
         raise Fail(f"{label} returned {got:.6g} s; the timer should be {case['want']:.6g} s."
-                   + _timer_mistake(case, got), HINTS["timer"])
+                   + (_timer_mistake(cases, case) if numbers else ""), HINTS["timer"])
     return f"all {len(cases)} cases (calm, fast, spinning either way) follow the rule"
 
 

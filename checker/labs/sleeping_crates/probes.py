@@ -55,12 +55,33 @@ TIMER_CASES = (
     ("a crate spinning at 0.2 rad/s", 0.4, 1.0, 0.2),
     ("a crate spinning backwards at 0.3 rad/s", 0.4, 1.0, -0.3),
     ("a crate fast and spinning", 0.1, 40.0, 2.0),
+    # told-apart cases (issue 33): speed · dt (px per step) is under 5 only below 600 px/s, and a spin of
+    # 8 rad/s is under SLEEP_SPEED (5) but not under SLEEP_SPIN, so comparing the wrong quantity shows as itself
+    ("a crate falling fast at 900 px/s", 0.2, 900.0, 0.0),
+    ("a slow crate spinning fast", 0.3, 1.0, 8.0),
 )
 
 
 @reference
 def reference_timer(timer, speed, spin, dt):
+    """The lesson's rule: timer + dt (s) while speed < SLEEP_SPEED (px/s) and |spin| < SLEEP_SPIN (rad/s), else 0."""
     return timer + dt if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN else 0.0
+
+
+@reference
+def timer_mistakes(timer, speed, spin, dt):
+    """{name: what a known wrong sleep_timer returns} for one case (names: checks.TIMER_MISTAKES)."""
+    calm = speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN
+
+    def rule(still):
+        return timer + dt if still else 0.0
+    return {"or": rule(speed < SLEEP_SPEED or abs(spin) < SLEEP_SPIN),
+            "ignores_spin": rule(speed < SLEEP_SPEED), "ignores_speed": rule(abs(spin) < SLEEP_SPIN),
+            "signed_spin": rule(speed < SLEEP_SPEED and spin < SLEEP_SPIN),
+            "speed_dt": rule(speed * dt < SLEEP_SPEED and abs(spin) < SLEEP_SPIN),
+            "spin_vs_speed": rule(speed < SLEEP_SPEED and abs(spin) < SLEEP_SPEED),
+            "never_resets": timer + dt if calm else timer, "counts_frames": timer + 1 if calm else 0.0,
+            "returns_dt": dt if calm else 0.0, "no_growth": timer if calm else 0.0}
 
 
 def probe_sleep_timer(module, lab_path):
@@ -77,6 +98,7 @@ def probe_sleep_timer(module, lab_path):
                           "got": _number(module.sleep_timer(timer, speed, spin, dt))})
             if judging(module):
                 cases[-1]["want"] = reference_timer(timer, speed, spin, dt)
+                cases[-1]["mistakes"] = timer_mistakes(timer, speed, spin, dt)
     return cases
 
 

@@ -25,6 +25,7 @@ import re
 from . import probes
 from . import scenes
 from ... import lab_checks
+from ...causes import arguments_hint, consistent_mistake
 from lesson11 import records as metrics
 from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TURN, PAIR_OVERLAP, PENETRATION,
                                    PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
@@ -69,27 +70,33 @@ HINTS = {
                       "Vector2 first, the overlap in px second (the handout's last line returns best_axis, "
                       "best_depth)."),
     "normal_flipped": Hint(3, "the normal must point from A to B",
-                           "Crates are shot apart (or pulled into each other) because the normal points the wrong "
-                           "way about half the time. Check the dot product of the axis with center_b - center_a: "
-                           "when it is negative, turn the axis round (the axis, not the depth)."),
+                           "An edge normal (-e.y, e.x) of a crate or of the floor points INTO its polygon (the "
+                           "corners run clockwise on screen), so without the flip the normal is wrong exactly when "
+                           "the axis is A's: every floor contact (the floor is body 0), and the crates fall through "
+                           "the floor. With the test the wrong way round they sink into it instead. Check the dot "
+                           "product of the axis with center_b - center_a: when it is negative, turn the axis round "
+                           "(the axis, not the depth)."),
     "k_spin": Hint(4, "the spin terms of the effective mass",
                    "A corner hit should feel lighter: k needs both spin terms, (ra × n)² / I_A and (rb × n)² / "
-                   "I_B, beside the two inverse masses, or the impulse is the wrong size and corners bounce and "
-                   "crates slide off the ramp."),
+                   "I_B, beside the two inverse masses, or the impulse is too big for a hit at a corner: corner "
+                   "landings kick, crates bounce about and can be thrown out of the window."),
     "friction_clamp": Hint(5, "Coulomb's clamp on friction",
-                           "If a glancing touch stops a crate dead, the friction impulse isn't clamped: friction may "
+                           "If a crate thrown along the floor stops dead, the friction impulse isn't clamped: friction may "
                            "never be bigger than μ times the normal impulse j (Coulomb's law), so keep jt within "
                            "[-μ j, μ j]. Inside that range, leave jt as it is."),
     "friction_sign": Hint(5, "the sign of the friction impulse",
-                          "If sliding crates spin up instead of slowing down, a sign in the friction or spin update "
-                          "is flipped: jt = -rel·t / kt opposes the slip, and the clamp must keep its sign."),
+                          "If friction drives sliding crates on instead of braking them (they spin faster and faster "
+                          "and are thrown out of the window), the friction impulse has the wrong sign: jt = "
+                          "-rel·t / kt opposes the slip, and clamping to [-μ j, μ j] leaves that sign as it is."),
     "spin_missing": Hint(6, "the two spin updates in apply_impulse",
-                         "If crates land but never tip over, the spin lines in apply_impulse are missing: each "
+                         "If crates freeze on their corners (they land and never turn), the spin lines in "
+                         "apply_impulse are missing: each "
                          "body's spin changes by its lever arm crossed with the impulse (r × P), times its inverse "
                          "inertia; A uses -=, B uses +=, exactly like the velocity lines."),
     "spin_swapped": Hint(6, "the signs of the spin updates",
                          "The spin lines in apply_impulse have swapped signs: A uses -=, B uses +=, exactly like the "
-                         "velocity lines. With the wrong signs corners spin the wrong way and crates fly off."),
+                         "velocity lines. With the signs swapped every touch spins a crate faster, and crates fly "
+                         "off."),
     "spin_terms": Hint(6, "the two spin updates in apply_impulse",
                        "Each body's spin changes by its own lever arm crossed with the impulse (ra × P for A, "
                        "rb × P for B), times its own inverse inertia; A uses -=, B uses +=, exactly like the "
@@ -313,6 +320,9 @@ K_MISTAKES = {
     "a_subtracted": "A's spin term is subtracted; it adds to k",
     "b_subtracted": "B's spin term is subtracted; it adds to k",
     "dot_not_cross": "the spin terms use ra · n (a dot product) where the cross product ra × n belongs",
+    "a_with_b_inertia": "A's spin term uses B's inv_inertia; each body's term uses its own",
+    "b_with_a_inertia": "B's spin term uses A's inv_inertia; each body's term uses its own",
+    "lever_length": "the spin terms use |r|² (as in I = m r²) where (r × n)², the lever arm across the normal, belongs",
 }
 
 
@@ -328,17 +338,67 @@ def resolve_k(sub, functions):
         if _close(case["j"], want_j):
             continue
         k = -(1 + case["e"]) * case["vn"] / case["j"] if case["j"] else math.inf
-        named = next((text for key, text in K_MISTAKES.items() if _close(k, case["k"][key])), None)
+        # a k fits a case when j·k = -(1 + e) vn (no division: a wrong k may be 0)
+        named = K_MISTAKES.get(consistent_mistake(
+            cases, lambda c, key: c["j"] is not None and _close(c["j"] * c["k"][key], -(1 + c["e"]) * c["vn"]),
+            [key for key in K_MISTAKES if not _close(case["k"][key], case["k"]["right"])]))
         raise Fail(f"in '{case['case']}', your normal impulse is j = {case['j']:.4g}, so your k = {k:.4g}; "
                    f"expected k = {case['k']['right']:.4g} (j = {want_j:.4g})" + (f": {named}." if named else "."),
                    HINTS["k_spin"])
     return Passed(f"k and j match the lesson in all {len(cases)} contacts", value=cases)
 
 
+def _unchanged_arguments(cases, function, why, hint):
+    """Fail when `function` changed a vector argument in place in some case (the probe's `changed`)."""
+    for case in cases:
+        for name, now in sorted((case.get("changed") or {}).items()):
+            raise Fail(f"in '{case['case']}', {function}() changed its argument {name} in place (to {_vec(now)}): "
+                       f"{why.format(name=name)}. Make new vectors (v * s, v.rotate(90)) instead of changing the "
+                       "ones you are given (v *= s, v.rotate_ip(90)).", hint)
+
+
+# the known wrong clamps of step 5, by name (_clamp_forms): the sentence and the hint
+CLAMP_MISTAKES = {
+    "unclamped": ("the friction impulse is never clamped to [-mu·j, mu·j] (jt = -rel·t / kt is never positive, so "
+                  "a clamp from above alone, min(mu·j, jt), clamps nothing either)", "friction_clamp"),
+    "vn_signed": ("the clamp uses mu × vn, the closing speed with its sign: vn < 0, so max(-mu·vn, min(mu·vn, jt)) "
+                  "is always +mu·|vn|; Coulomb's law bounds jt by mu × the normal impulse j", "friction_clamp"),
+    "vn_abs": ("the clamp uses mu × the closing speed |vn| where Coulomb's law uses mu × the normal impulse j",
+               "friction_clamp"),
+    "slip": ("the clamp uses mu × the slip speed where Coulomb's law uses mu × the normal impulse j", "friction_clamp"),
+    "rel": ("the clamp uses mu × the relative speed |rel| where Coulomb's law uses mu × the normal impulse j",
+            "friction_clamp"),
+    "k": ("the clamp uses mu × k where Coulomb's law uses mu × the normal impulse j", "friction_clamp"),
+    "mu": ("the bound is mu alone; Coulomb's law bounds jt by mu × the normal impulse j", "friction_clamp"),
+    "half": ("the bound is mu·j / 2; Coulomb's law lets |jt| reach mu·j", "friction_clamp"),
+    "always_full": ("friction always takes its full mu·j, even where a smaller impulse already stops the slip: clamp "
+                    "only when |jt| > mu·j", "friction_clamp"),
+    "sign": ("the friction impulse has its sign flipped: it pushes the slide along instead of against it (a flipped "
+             "jt, or a clamp of its size, min(|jt|, mu·j), which loses the sign: jt = -rel·t / kt is never positive)",
+             "friction_sign"),
+}
+
+
+def _clamp_forms(case):
+    """{name: the friction impulse jt a known wrong clamp gives in this case} (CLAMP_MISTAKES), from the
+    case's own j, so a mistake in step 4 does not show here."""
+    friction, j, mu, vn = case["friction"], case["j"], case["mu"], case["vn"]
+    stop = friction["stop"]
+
+    def clamped(bound):
+        return max(-bound, min(bound, stop))
+    return {"unclamped": stop, "vn_signed": clamped(mu * vn), "vn_abs": clamped(mu * abs(vn)),
+            "slip": clamped(mu * abs(friction["slip"])), "rel": clamped(mu * friction["rel_length"]),
+            "k": clamped(mu * case["k"]["right"]), "mu": clamped(mu), "half": clamped(mu * j / 2),
+            "always_full": math.copysign(mu * j, stop), "sign": -clamped(mu * j)}
+
+
 @CHECKS.check(depends=["loads"])
 def resolve_friction(sub, functions):
     """Step 5: resolve() clamps friction with Coulomb's law, |jt| <= mu j, and leaves smaller jt alone."""
     cases = _function(sub, functions, "resolve", "resolve", 5)
+    _unchanged_arguments(cases, "resolve", "the World goes on using the contact's {name} for its other contact "
+                         "points and the push-out", arguments_hint(5, "resolve"))
     graded = [case for case in cases if case["friction"] is not None and case["j"] is not None]
     if not graded:   # nothing to compare is no pass: a resolve() that returns before step 4 applies no impulse
         said = "applied no impulse" if all(case["calls"] == 0 for case in cases) else "left no slip to stop"
@@ -358,18 +418,17 @@ def resolve_friction(sub, functions):
                    f"so jt should be {want:.4g}; yours is {jt:.4g}")
         if friction.get("missing"):
             raise Fail(f"{where} resolve() applied no friction impulse; {numbers}.", HINTS["friction_clamp"])
+        named = consistent_mistake(graded, lambda c, name: _close(c["friction"]["jt"], _clamp_forms(c)[name]),
+                                   [name for name, value in _clamp_forms(case).items() if not _close(value, want)])
+        if named:
+            text, key = CLAMP_MISTAKES[named]
+            raise Fail(f"{where} {text}: {numbers}.", HINTS[key])
         if jt * stop < 0:
             raise Fail(f"{where} friction pushes the slide along instead of against it: {numbers}.",
                        HINTS["friction_sign"])
         if active and _close(jt, stop):
-            raise Fail(f"{where} the friction impulse is not clamped: {numbers}. A glancing touch stops the crate "
-                       "dead.", HINTS["friction_clamp"])
-        speeds = {"the closing speed |vn|": abs(case["vn"]), "the slip speed": abs(friction["slip"]),
-                  "the relative speed |rel|": friction["rel_length"], "k": case["k"]["right"]}
-        for what, value in speeds.items():
-            if _close(abs(jt), min(abs(stop), mu * value)) and not _close(mu * value, abs(bound)):
-                raise Fail(f"{where} the clamp uses mu × {what} ({mu * value:.4g}) where Coulomb's law uses "
-                           f"mu × the normal impulse j ({bound:.4g}): {numbers}.", HINTS["friction_clamp"])
+            raise Fail(f"{where} the friction impulse was not clamped here (no clamp, or a bound above mu·j): "
+                       f"{numbers}. A glancing touch stops the crate dead.", HINTS["friction_clamp"])
         if not active and _close(abs(jt), abs(bound)):
             raise Fail(f"{where} friction always takes its full mu·j, but a smaller impulse already stops the slip: "
                        f"{numbers}. Clamp only when |jt| > mu·j.", HINTS["friction_clamp"])
@@ -409,6 +468,8 @@ def _spin_mistake(case, body, delta, want):
 def apply_impulse_spin(sub, functions):
     """Step 6: apply_impulse() changes both spins, A by -(ra × P)/I_A and B by +(rb × P)/I_B."""
     cases = _function(sub, functions, "apply_impulse", "apply_impulse", 6)
+    _unchanged_arguments(cases, "apply_impulse", "resolve() goes on using its {name} for the friction impulse",
+                         arguments_hint(6, "apply_impulse"))
     for case in cases:
         for body in ("a", "b"):
             before, after, want = case["before"][body], case["after"][body], case["expected"][body]

@@ -29,7 +29,7 @@ from lesson11.physics2d import Body, box_points, centre_of, cross, edge_normals,
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
 from ...probe_kit import _plain, drawn_sat_pairs, judging, reference, reference_sat, sat_answer, sat_pairs, twin
-from ...probe_kit import with_reference_steps
+from ...probe_kit import changed_vectors, with_reference_steps
 from ...probe_kit import axis_overlaps, box, ngon  # noqa: F401 (the checks and the corpora read them here)
 from ...tape import run_rng
 
@@ -132,9 +132,11 @@ def probe_apply_impulse(module, lab_path):
     for name, a, b, impulse, ra, rb in impulse_cases() + drawn_impulse_cases(run_rng(module, "apply_impulse")):
         before = {"a": _state(a), "b": _state(b)}
         inv = {"a": [a.inv_mass, a.inv_inertia], "b": [b.inv_mass, b.inv_inertia]}
-        module.apply_impulse(a, b, Vector2(impulse), Vector2(ra), Vector2(rb))
+        vectors = {"impulse": Vector2(impulse), "ra": Vector2(ra), "rb": Vector2(rb)}   # copies: a change shows
+        module.apply_impulse(a, b, vectors["impulse"], vectors["ra"], vectors["rb"])
         case = {"case": name, "impulse": list(impulse), "ra": list(ra), "rb": list(rb), "inv": inv,
-                "before": before, "after": {"a": _state(a), "b": _state(b)}}
+                "before": before, "after": {"a": _state(a), "b": _state(b)},
+                "changed": changed_vectors(vectors, impulse=impulse, ra=ra, rb=rb)}
         if judging(module):
             case.update(_impulse_reference(before, inv, impulse, ra, rb))
         cases.append(case)
@@ -172,6 +174,12 @@ def resolve_cases():
         ("a crate landing slowly on a static floor, barely sliding",
          crate(400, 40, (0, 20), 0, friction=0.6, restitution=0.2),
          crate(60, 40, (12, -20), 5.0, vel=(3, 12), omega=0.05, friction=0.6, restitution=0.2),
+         up, Vector2(-16, 0)),
+        # it bounces (e = 0.5), so after the normal impulse |rel| is far above the slip |rel · t|: a clamp to
+        # mu × either shows as itself
+        ("a heavy crate bouncing on a static floor, barely sliding",
+         crate(400, 40, (0, 20), 0, friction=0.6, restitution=0.5),
+         crate(60, 40, (12, -20), 6.0, vel=(4, 150), omega=0.02, friction=0.6, restitution=0.5),
          up, Vector2(-16, 0)),
         ("a light crate thrown up into a static beam",
          crate(50, 30, (0, 0), 0.3, vel=(70, -140), omega=0.8, friction=0.7, restitution=0.4),
@@ -212,6 +220,9 @@ def _k_forms(a, b, ra, rb, n):
         "a_subtracted": ima + imb - ran * ran * ia + rbn * rbn * ib,
         "b_subtracted": ima + imb + ran * ran * ia - rbn * rbn * ib,
         "dot_not_cross": ima + imb + dan * dan * ia + dbn * dbn * ib,
+        "a_with_b_inertia": ima + imb + ran * ran * ib + rbn * rbn * ib,
+        "b_with_a_inertia": ima + imb + ran * ran * ia + rbn * rbn * ia,
+        "lever_length": ima + imb + ra.length_squared() * ia + rb.length_squared() * ib,
     }
 
 
@@ -239,9 +250,11 @@ def probe_resolve(module, lab_path):
 
             module.apply_impulse = stand_in
             given = (twin(a), twin(b))   # the bodies as resolve() gets them
-            module.resolve(a, b, Vector2(normal), Vector2(point))
+            vectors = {"normal": Vector2(normal), "point": Vector2(point)}   # copies: a change in place shows
+            module.resolve(a, b, vectors["normal"], vectors["point"])
             if judging(module):
                 cases.append(_resolve_case(name, *given, normal, point, resting, calls))
+                cases[-1]["changed"] = changed_vectors(vectors, normal=normal, point=point)
     finally:
         module.apply_impulse = own
     return cases

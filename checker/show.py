@@ -1,0 +1,398 @@
+"""`python -m checker FILE --show [CHECK] [--seed N]`: replay what the checker saw, in a window.
+
+The file is graded exactly as `python -m checker FILE` grades it (checker/grade.py: the student's
+code runs only in the isolated child, with its limits); the grader keeps the records the child wrote.
+The solution's run of the same scene is computed on the grading side (checker/pictures.py's
+reference_record, one child run of solutions/<lab>.py). Nothing of the student's file is imported
+or run in this process: the window replays recorded frames (checker/show_view.py).
+
+What is shown (Replay):
+  * CHECK, or the first failed check of the file;
+  * for a behaviour check, the scene it reads; for a failed function check, whose scenes never ran,
+    the lab's own scene run ungraded (as --pictures does) and the failing cases drawn
+    (checker/show_cases.py);
+  * the check's quantity per frame with its bound (SERIES below; for a function check, how far
+    the student's bodies are from the solution's), and the failing frame: the frame the check's
+    message names, else the first frame the quantity passes its bound, else the first frame the
+    student's run visibly differs from the solution's (VISIBLE px).
+"""
+import math
+import os
+import sys
+from dataclasses import dataclass, field
+
+from lesson11 import records as metrics
+
+from . import pictures, report
+from .checks import ERROR, FAIL, PASS
+from .grade import Grader
+
+VISIBLE = 1.0   # px: a body this far from the solution's is visibly elsewhere (the criteria's own scale)
+NO_DISPLAY = "no display: use --pictures DIR"
+
+
+# ---------------------------------------------------------------- the quantities a check measures, per frame
+
+def sink_depth(frame):
+    """Deepest floor penetration (px) of any dynamic polygon in a frame (0 when none is below the floor)."""
+    depths = [metrics.floor_penetration(b) for b in metrics.dynamic(frame) if len(b["points"]) >= 3]
+    return max(depths + [0.0])
+
+
+def top_speed(frame):
+    """The fastest dynamic body's speed (px/s) in a frame."""
+    return max([metrics.speed(b) for b in metrics.dynamic(frame)] + [0.0])
+
+
+def fast_count(frame):
+    """How many dynamic bodies move faster than the lab's fast-mover threshold (30 px/s)."""
+    return float(metrics.fast_movers(frame))
+
+
+def ball_depth(frame):
+    """How deep (px) the first dynamic circle overlaps any polygon body (0 when none)."""
+    balls = [b for b in metrics.dynamic(frame) if b.get("radius")]
+    if not balls:
+        return 0.0
+    ball = balls[0]
+    return max([metrics.circle_depth(ball["pos"], ball["radius"], b["points"])
+                for b in frame["bodies"] if len(b["points"]) >= 3] + [0.0])
+
+
+def awake_count(frame):
+    """How many dynamic bodies are awake."""
+    return float(sum(1 for b in metrics.dynamic(frame) if not b.get("asleep")))
+
+
+class Moved:
+    """How far (px) the dynamic body that moved most is from where it was in the run's first frame.
+
+    only: the indices (among the dynamic bodies) of the bodies the check reads (None: all)."""
+
+    def __init__(self, frames, only=None):
+        self.only = only
+        self.start = self._chosen(frames[0]) if frames else []
+
+    def _chosen(self, frame):
+        bodies = metrics.dynamic(frame)
+        return [bodies[i] for i in self.only if i < len(bodies)] if self.only is not None else bodies
+
+    def __call__(self, frame):
+        return max([math.dist(a["pos"], b["pos"]) for a, b in zip(self.start, self._chosen(frame))] + [0.0])
+
+
+class Turned(Moved):
+    """How far (degrees) the dynamic body that turned most has turned since the run's first frame."""
+
+    def __call__(self, frame):
+        return max([abs(math.degrees(b["angle"] - a["angle"])) for a, b in zip(self.start, self._chosen(frame))]
+                   + [0.0])
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """What a check measures per frame: a label with its unit, how to measure a frame, its bound.
+
+    measure: a frame -> a number, or a class taking the run's frames and `only` (a measure relative to the
+    start, of the dynamic bodies numbered `only`, or all);
+    bound: the check's bound in the same unit, or None; above: True when exceeding the bound fails;
+    at_end: True when the check judges the run's end only (a frame before it may exceed the bound).
+    """
+    label: str
+    measure: object
+    bound: float | None = None
+    above: bool = True
+    at_end: bool = False
+    only: tuple | None = None
+
+
+def _bound(lab, name, default=None, scale=1.0):
+    value = getattr(lab.module, name, default)
+    return None if value is None else value * scale
+
+
+def _bodies(lab, name):
+    """The dynamic body indices a lab's scenes module names (More Shapes' TRIANGLE, PUSHED, ON_RAMP), or None."""
+    value = getattr(getattr(lab.module, "scenes", None), name, None)
+    return None if value is None else tuple(value) if isinstance(value, (tuple, list)) else (value,)
+
+
+def series_for(lab, check_id):
+    """The Quantity plotted for a check of a lab (a behaviour check's own measure), or None."""
+    table = {
+        "corner_tips": Quantity("deepest into the floor (px)", sink_depth, _bound(lab, "PENETRATION")),
+        "pile_stable": Quantity("deepest into the floor (px)", sink_depth, _bound(lab, "PENETRATION")),
+        "ramp_holds": Quantity("moved since the start (px)", Moved, _bound(lab, "RAMP_SLIDE"),
+                               only=_bodies(lab, "ON_RAMP")),
+        "fast_movers_zero": Quantity("fast movers (> 30 px/s)", fast_count, 0.0, at_end=True),
+        "triangle_tips": Quantity("turned since the start (deg)", Turned,
+                                  _bound(lab, "TRIANGLE_TURN", scale=180 / math.pi), above=False, at_end=True,
+                                  only=_bodies(lab, "TRIANGLE")),
+        "hexagon_tips": Quantity("turned since the start (deg)", Turned,
+                                 _bound(lab, "HEXAGON_TURN", scale=180 / math.pi), above=False, at_end=True,
+                                 only=_bodies(lab, "PUSHED")),
+        "rolls_without_slipping": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
+        "slides_without_friction": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
+        "knocks_crate_over": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
+        "pushed_out_of_crate": Quantity("ball into the crate (px)", ball_depth, _bound(lab, "INSIDE_DEPTH"),
+                                        at_end=True),
+        "pile_sleeps": Quantity("crates awake", awake_count, 0.0, at_end=True),
+        "no_sleep_in_air": Quantity("crates awake", awake_count),
+        "drop_wakes_pile": Quantity("crates awake", awake_count),
+        "runs": Quantity("fastest body (px/s)", top_speed),
+    }
+    return table.get(check_id)
+
+
+def divergence(frame, reference):
+    """How far (px) the student's bodies are from the solution's in the same frame: the largest distance
+    between bodies of the same index (infinite when the frames hold different numbers of bodies)."""
+    if reference is None:
+        return 0.0
+    mine, theirs = frame["bodies"], reference["bodies"]
+    if len(mine) != len(theirs):
+        return math.inf
+    return max([math.dist(a["pos"], b["pos"]) for a, b in zip(mine, theirs)] + [0.0])
+
+
+DIVERGENCE = Quantity("from the solution's bodies (px)", None, VISIBLE)
+
+
+# ---------------------------------------------------------------- the replay
+
+@dataclass
+class Replay:
+    """Everything the window shows for one check: recorded frames only, no code of the student's.
+
+    frames / reference: the student's and the solution's recorded frames (lesson11.runtime records);
+    values: the quantity per student frame; fail_frame: a recorded frame number (or None);
+    cases: the failing cases of a function check (checker/show_cases.py), possibly [].
+    """
+    path: str
+    lab: object
+    check: object                # the checks.Result shown
+    scene: str | None
+    graded: bool                 # False: the scene ran ungraded, to show what a failed function check does
+    seed: int | None
+    frames: list
+    reference: list
+    quantity: Quantity | None
+    values: list
+    fail_frame: int | None
+    fail_reason: str
+    cases: list = field(default_factory=list)
+
+    def reference_at(self, number):
+        """The solution's recorded frame with this frame number (nearest), or None."""
+        return pictures._nearest(self.reference, number)
+
+    def index_of(self, number):
+        """Index into frames of the recorded frame with this number (nearest)."""
+        return min(range(len(self.frames)), key=lambda i: abs(self.frames[i]["frame"] - number)) if self.frames else 0
+
+    def summary(self):
+        """The lines --show prints before it opens the window (the seed, the check, the frame it jumps to)."""
+        lines = [f"--show: {self.check.id} ({self.check.status}): {self.check.message}".rstrip(),
+                 f"  graded with seed {self.seed}: python -m checker {self.path} --show {self.check.id} "
+                 f"--seed {self.seed} replays this run"]
+        if self.scene:
+            kind = "the scene it reads" if self.graded else "the lab's scene, run ungraded to show what it does"
+            lines.append(f"  scene '{self.scene}' ({kind}): {len(self.frames)} frames, the solution's beside it")
+        if self.fail_frame is not None:
+            lines.append(f"  failing frame {self.fail_frame} (t = {self.fail_frame / metrics.FPS:.2f} s): "
+                         f"{self.fail_reason}")
+        if self.cases:
+            lines.append(f"  {len(self.cases)} failing case(s) drawn: [ and ] step through them")
+        return lines
+
+
+class ShowGrader(Grader):
+    """The Grader, keeping every child run it makes (the probe's judged data, for the function cases)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.runs = []
+
+    def run(self, lab_path, task, settings, priority=math.inf):
+        result = super().run(lab_path, task, settings, priority)
+        self.runs.append((task, result))
+        return result
+
+    def probe_functions(self):
+        """The judged probe data {probe name: entry} of the last graded file ({} without a probe)."""
+        probe = next((run for task, run in self.runs if task == "probe" and run is not None), None)
+        if probe is None or probe.status != "done":
+            return {}
+        return ((probe.result or {}).get("probe") or {}).get("functions") or {}
+
+
+def target(row, check_id=None):
+    """The result --show shows: CHECK, else the first failed (or erred) check, else None."""
+    if check_id:
+        return next((r for r in row.results if r.id == check_id), None)
+    return next((r for r in row.results if r.status in (FAIL, ERROR)), None)
+
+
+def _first_crossing(frames, values, quantity):
+    if quantity is None or quantity.bound is None:
+        return None
+    if quantity.at_end:
+        frames, values = frames[-1:], values[-1:]
+    for frame, value in zip(frames, values):
+        if (value > quantity.bound) if quantity.above else (value < quantity.bound):
+            return frame["frame"]
+    return None
+
+
+def _first_difference(frames, reference):
+    for frame in frames:
+        if divergence(frame, pictures._nearest(reference, frame["frame"])) > VISIBLE:
+            return frame["frame"]
+    return None
+
+
+def trusted_frames(lab, scene, record):
+    """The record's frames when they can be what lesson11.runtime wrote for the scene (checker/lab_checks.py
+    record_problem: numbered frames, numbers where numbers belong, rigid bodies), else []: the record comes
+    from the child, where the student's code ran, and the window draws nothing it cannot draw safely."""
+    from .lab_checks import record_problem
+    settings = lab.scenarios().get(scene)
+    if not record or settings is None or record_problem(record, settings):
+        return []
+    return record["records"]
+
+
+def _scene_choice(row, result, run_scene, reference_record):
+    """(scene, graded, student frames, solution frames) for a result.
+
+    A behaviour check: the scene it reads, as graded. A function check (its scenes never ran): the
+    scene the grader ran ungraded for the picture, or, when the student's run of that one never
+    differs visibly from the solution's, the lab's next scene in which it does (run_scene runs one
+    in the isolated child, as the grader runs the preview)."""
+    lab = row.lab
+    scenes, ungraded = pictures._scenes_of(row, result.id) if row.records else ((), False)
+    scene = next((s for s in scenes if (row.records.get(s) or {}).get("records")), None)
+    frames = trusted_frames(lab, scene, row.records.get(scene)) if scene else []
+    scene = scene if frames else None
+    reference = ((reference_record(lab, scene) or {}).get("records") or []) if scene else []
+    if (scene is None or ungraded) and run_scene is not None and \
+            _first_difference(frames, reference) is None:
+        for other in lab.scenarios():
+            if other == scene:
+                continue
+            mine = trusted_frames(lab, other, run_scene(other))
+            theirs = (reference_record(lab, other) or {}).get("records") or []
+            if mine and _first_difference(mine, theirs) is not None:
+                return other, False, mine, theirs
+    return scene, scene is not None and not ungraded, frames, reference
+
+
+def failure(lab, result, frames, reference, graded):
+    """(failing frame or None, why that frame, Quantity or None, its value per frame) for a result's run.
+
+    graded: the frames are the scene the check read (else a scene run ungraded for a function check,
+    whose quantity is the distance from the solution's bodies).
+    """
+    quantity = series_for(lab, result.id) if graded else None
+    if quantity is None and reference:
+        quantity = DIVERGENCE
+    if quantity is DIVERGENCE:
+        values = [divergence(f, pictures._nearest(reference, f["frame"])) for f in frames]
+    elif quantity is not None:
+        measure = quantity.measure(frames, quantity.only) if isinstance(quantity.measure, type) else quantity.measure
+        values = [measure(f) for f in frames]
+    else:
+        values = []
+    values = [v if math.isfinite(v) else float("nan") for v in values]
+    named = pictures.marked_frame(result) if graded else None
+    if named is not None:
+        return named, f"the frame the check names ({result.message})", quantity, values
+    if quantity is not None and quantity is not DIVERGENCE:
+        crossing = _first_crossing(frames, values, quantity)
+        if crossing is not None:
+            where = "at the end" if quantity.at_end else "first"
+            return crossing, f"{quantity.label} {where} beyond {quantity.bound:g}", quantity, values
+    differs = _first_difference(frames, reference) if reference else None
+    if differs is not None:
+        return differs, f"the first frame a body is more than {VISIBLE:g} px from the solution's", quantity, values
+    return None, "", quantity, values
+
+
+def build_replay(row, result, functions=None, run_scene=None, reference_record=None):
+    """The Replay of one graded row's result: its scene (if any was recorded), the solution's, the quantity."""
+    from . import show_cases
+    lab = row.lab
+    reference_record = reference_record or pictures.reference_record
+    scene, graded, frames, reference = _scene_choice(row, result, run_scene, reference_record)
+    fail_frame, reason, quantity, values = failure(lab, result, frames, reference, graded)
+    cases = show_cases.failing_cases(lab, result, functions or {})
+    return Replay(row.path, lab, result, scene, graded, row.seed, frames, reference, quantity, values, fail_frame,
+                  reason, cases)
+
+
+def prepare(path, lab, check_id=None, seed=None, limits=None, options=None):
+    """(row, Replay or None, message): grade `path` as `lab` (with the grading seed) and build the replay.
+
+    message: why there is nothing to replay ("" when there is).
+    """
+    grader = ShowGrader(limits, 1, None, options=options, keep_records=True, seed=seed)
+    row = grader.grade(path, lab)
+    result = target(row, check_id)
+    if result is None:
+        return row, None, (f"{check_id}: no such check in {lab.title}" if check_id else
+                           "every check passes: nothing to show")
+    if result.id == "loads" and result.status != PASS:
+        return row, None, "the file does not load (see above)"
+    def run_scene(name):   # one more scene, ungraded, in the isolated child (as the grader's preview)
+        settings = lab.scenarios()[name]
+        run = grader.run(os.path.abspath(path), "scenario", dict(settings, probes=lab.probes),
+                         lab.scene_seconds(name, settings))
+        return getattr(run, "record", None) if run is not None and run.status == "done" else None
+
+    return row, build_replay(row, result, grader.probe_functions(), run_scene), ""
+
+
+def display_problem(environ=None, platform=None):
+    """Why no window can open here ("" when one can): a Linux or BSD desktop needs $DISPLAY or
+    $WAYLAND_DISPLAY, unless SDL is told which video driver to use (the tests' dummy driver)."""
+    environ = dict(os.environ, SDL_VIDEODRIVER=pictures.USER_VIDEO_DRIVER or "") if environ is None else environ
+    platform = platform or sys.platform
+    if environ.get("SDL_VIDEODRIVER"):
+        return ""
+    if platform.startswith(("win", "darwin")) or platform == "cygwin":
+        return ""
+    return "" if environ.get("DISPLAY") or environ.get("WAYLAND_DISPLAY") else NO_DISPLAY
+
+
+def main(args, entries, events=None, frames=None, out=None, err=None):
+    """Run --show for the command line (one entry); returns the exit status. events / frames: for tests
+    (an event source and a frame limit, checker/show_view.py)."""
+    out, err = out or sys.stdout, err or sys.stderr
+    entry = entries[0]
+    if not entry.gradable:
+        print(f"checker: {entry.path}: not graded: {entry.problem}", file=err)
+        return 1
+    from .sandbox import Limits
+    limits = Limits(args.timeout, args.memory, args.max_output * 1024, args.child_user)
+    check_id = args.show or None
+    if check_id and check_id not in [c.id for c in entry.lab.checks.checks]:
+        known = ", ".join(c.id for c in entry.lab.checks.checks)
+        print(f"checker: error: --show {check_id}: {entry.lab.title} has no such check; its checks: {known}",
+              file=err)
+        return 2
+    row, replay, problem = prepare(entry.path, entry.lab, check_id, args.seed, limits,
+                                   {"allow_edits": args.allow_edits})
+    report.text_report(row, out)
+    print(f"Graded with seed {row.seed} (--seed {row.seed} grades with the same inputs).", file=out)
+    if replay is None:
+        print(f"--show: {problem}", file=out)
+        return 0 if row.passed else 1
+    for line in replay.summary():
+        print(line, file=out)
+    from . import show_view
+    try:
+        show_view.run(replay, events=events, frames=frames)
+    except Exception as exc:   # a bug of ours, or a window the system refused: one line, the grades stand
+        print(f"checker: error: --show could not draw the replay ({type(exc).__name__}: {exc}); the report above "
+              "stands", file=err)
+    return 0 if row.passed else 1

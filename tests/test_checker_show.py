@@ -1,0 +1,343 @@
+"""python -m checker FILE --show (issue 30), driven headless as a student would use it.
+
+The tests set SDL's dummy video and audio drivers themselves and script the keys through the viewer's
+event source (checker/show_view.py run(events=...)); a real desktop window differs only in that
+pygame.event.get() delivers the keys. For every lab one file of its mistake corpus (tests/corpus_<lab>.py)
+with one wrong step is shown: --show opens on that step's check, the student's replayed run is the
+graded record frame for frame, the ghost is the solution's run (a run of solutions/<lab>.py made here
+independently), and the failing frame the summary names is the first frame where the student's bodies
+are visibly (> 1 px) away from the solution's, which J lands on. Each lab costs one grading (probe and
+one scene), one grading more to compare with and the solution's scene: about 5-15 CPU s.
+"""
+import importlib
+import math
+import os
+import sys
+
+import pytest
+
+os.environ["SDL_VIDEODRIVER"] = "dummy"
+os.environ["SDL_AUDIODRIVER"] = "dummy"
+import pygame  # noqa: E402
+
+from checker import cli, labs, pictures, show, show_cases, show_view  # noqa: E402
+from lesson11 import records  # noqa: E402
+from checker.grade import Grader  # noqa: E402
+from checker.sandbox import Limits, run_child  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+SEED = 3
+# lab id -> (corpus entry with one wrong step, the check --show must open on)
+WRONG_STEP = {
+    "tumbling_crates": ("spin_missing", "apply_impulse_spin"),
+    "more_shapes": ("inertia_missing_six", "inertia_sum"),
+    "ball_on_ramp": ("inertia_ring", "ball_inertia"),
+    "bullets": ("swept_whole_step_after", "swept_move_resolves"),
+    "sleeping_crates": ("timer_counts_frames", "timer_rule"),
+}
+
+
+def key(k):
+    return pygame.event.Event(pygame.KEYDOWN, key=k, mod=0, unicode="")
+
+
+def scripted(*frames):
+    """An event source: the i-th call returns frames[i] (a list of events), then nothing."""
+    queue = list(frames)
+    return lambda: queue.pop(0) if queue else []
+
+
+def lab_of(lab_id):
+    return next(lab for lab in labs.LABS if lab.id == lab_id)
+
+
+def wrong_file(folder, lab_id):
+    corpus = importlib.import_module(f"corpus_{lab_id}")
+    name, check = WRONG_STEP[lab_id]
+    entry = next(e for e in corpus.WRONG if e.name == name)
+    assert entry.check == check   # the corpus's own verdict for this file
+    path = os.path.join(folder, f"{lab_id}.py")
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(corpus.build(name))
+    return path
+
+
+def distance(frame, other):
+    """Largest distance (px) between bodies of the same index in two recorded frames (computed here)."""
+    if len(frame["bodies"]) != len(other["bodies"]):
+        return math.inf
+    return max(math.hypot(a["pos"][0] - b["pos"][0], a["pos"][1] - b["pos"][1])
+               for a, b in zip(frame["bodies"], other["bodies"]))
+
+
+@pytest.fixture(scope="module", params=sorted(WRONG_STEP))
+def shown(request, tmp_path_factory):
+    lab = lab_of(request.param)
+    path = wrong_file(str(tmp_path_factory.mktemp(request.param)), request.param)
+    row, replay, problem = show.prepare(path, lab, seed=SEED)
+    assert problem == "" and replay is not None
+    return lab, path, row, replay
+
+
+def test_opens_on_the_wrong_steps_check(shown):
+    lab, path, row, replay = shown
+    expected = WRONG_STEP[lab.id][1]
+    first_failed = next(r for r in row.results if r.status in ("fail", "error"))
+    assert replay.check.id == expected == first_failed.id
+    assert replay.seed == row.seed == SEED
+    assert any(f"--seed {SEED}" in line for line in replay.summary())
+
+
+def test_replay_is_the_graded_record_frame_for_frame(shown):
+    lab, path, row, replay = shown
+    graded = Grader(keep_records=True, seed=SEED).grade(path, lab)   # the checker's own grading, again
+    assert replay.scene in graded.records, (replay.scene, list(graded.records))
+    recorded = graded.records[replay.scene]["records"]
+    assert len(replay.frames) == len(recorded) > 10
+    pygame.display.init()
+    pygame.font.init()
+    viewer = show_view.Viewer(replay)
+    viewer.playing = False
+    for k, frame in enumerate(recorded):   # O steps one recorded frame at a time
+        assert viewer.frame == frame, f"frame {frame['frame']} differs"
+        viewer.handle(key(pygame.K_o))
+    assert viewer.frame == recorded[-1]
+
+
+def test_ghost_is_the_solutions_run(shown):
+    lab, path, row, replay = shown
+    settings = lab.scenarios()[replay.scene]
+    solution = run_child(lab.solution, "scenario", dict(settings, probes=lab.probes), Limits()).record["records"]
+    assert replay.reference == solution
+    pygame.display.init()
+    pygame.font.init()
+    viewer = show_view.Viewer(replay)
+    viewer.handle(key(pygame.K_j))
+    assert viewer.reference_frame["frame"] == viewer.frame["frame"]   # lockstep
+    surface = pygame.Surface(show_view.SIZE)
+    viewer.draw(surface)
+    ghost = next(b for b in viewer.reference_frame["bodies"] if not b["static"])
+    if ghost["points"]:   # the solution's outline passes through the middle of its first edge
+        a, b = ghost["points"][0], ghost["points"][1]
+        middle = (round((a[0] + b[0]) / 2), round((a[1] + b[1]) / 2))
+    else:                 # a circle: through its rightmost point
+        middle = (round(ghost["pos"][0] + ghost["radius"] - 1), round(ghost["pos"][1]))
+    around = {tuple(surface.get_at((middle[0] + dx, middle[1] + dy)))[:3] for dx in (-1, 0, 1) for dy in (-1, 0, 1)}
+    assert show_view.GHOST in around
+
+
+def test_jump_lands_on_the_first_frame_that_differs_from_the_solution(shown):
+    lab, path, row, replay = shown
+    named = replay.fail_frame
+    assert named is not None and any(f"failing frame {named} " in line for line in replay.summary())
+    before = [f for f in replay.frames if f["frame"] < named]
+    at = next(f for f in replay.frames if f["frame"] == named)
+    assert distance(at, replay.reference_at(named)) > show.VISIBLE
+    assert all(distance(f, replay.reference_at(f["frame"])) <= show.VISIBLE for f in before)
+    viewer = show_view.run(replay, events=scripted([], [key(pygame.K_p)], [key(pygame.K_j)], []), frames=4)
+    assert viewer.frame["frame"] == named and not viewer.playing
+
+
+def test_keys_pause_step_and_toggle(shown):
+    lab, path, row, replay = shown
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_p)], [key(pygame.K_o)], [key(pygame.K_o)],
+                                                   [key(pygame.K_g)], []), frames=6)
+    assert viewer.index == 2 and not viewer.playing and viewer.side_by_side
+    viewer = show_view.run(replay, events=scripted([], [], [], [pygame.event.Event(pygame.QUIT)]), frames=50)
+    assert viewer.index == 3   # played three frames (lockstep with the display), then the window closed
+
+
+# ---------------------------------------------------------------- a behaviour check
+
+def test_failed_behaviour_check_jumps_to_the_frame_it_judges(tmp_path):
+    """Ball on the Ramp with the push-out's SLOP raised to 6 px (as tests/test_checker_pictures.py): every
+    function check passes, pushed_out_of_crate fails at the end of the 'inside' scene."""
+    from test_checker_pictures import slop_file
+    lab = lab_of("ball_on_ramp")
+    row, replay, problem = show.prepare(slop_file(str(tmp_path)), lab, seed=SEED, options={"allow_edits": True})
+    assert replay.check.id == "pushed_out_of_crate" and replay.graded and replay.scene == "inside"
+    assert replay.quantity.bound == lab.module.INSIDE_DEPTH
+    last = replay.frames[-1]
+    ball = next(b for b in last["bodies"] if b.get("radius"))
+    crate_depth = max(records.circle_depth(ball["pos"], ball["radius"], b["points"])
+                      for b in last["bodies"] if len(b["points"]) >= 3)
+    assert replay.fail_frame == last["frame"] and crate_depth > lab.module.INSIDE_DEPTH
+    assert replay.values[-1] == pytest.approx(crate_depth)
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_j)]), frames=2)
+    assert viewer.frame["frame"] == replay.fail_frame
+
+
+# ---------------------------------------------------------------- a function case drawn
+
+def test_sat_case_draws_both_answers(tmp_path):
+    corpus = importlib.import_module("corpus_tumbling_crates")
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(corpus.build("sat_largest_overlap"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("tumbling_crates"), seed=SEED)
+    assert replay.check.id == "sat_axes" and replay.cases
+    assert all(isinstance(c, show_cases.SatCase) for c in replay.cases)
+    viewer = show_view.run(replay, events=scripted([]), frames=1)
+    assert viewer.showing_cases   # a failed function check opens on its cases
+    case = replay.cases[0]
+    yours, lesson = case.answers()
+    assert case.case["got"]["depth"] > case.case["lesson"]["depth"] + 1e-6   # the largest overlap, not the smallest
+    assert f"{case.case['got']['depth']:.2f}" in yours and f"{case.case['lesson']['depth']:.2f}" in lesson
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900, 2) for y in range(0, 600, 2)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+    axis = case.view.axis_index
+    case.key(pygame.K_n)
+    assert case.view.axis_index == (axis + 1) % len(case.view.axes())
+
+
+# ---------------------------------------------------------------- the command line
+
+def test_no_display_is_refused_cleanly(monkeypatch, capsys, tmp_path):
+    monkeypatch.setattr(pictures, "USER_VIDEO_DRIVER", None)
+    monkeypatch.delenv("DISPLAY", raising=False)
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    monkeypatch.setattr(sys, "platform", "linux")
+    target = tmp_path / "tumbling_crates.py"
+    target.write_text("# tumbling crates\n", encoding="utf-8")
+    assert cli.main([str(target), "--show"]) == 2
+    assert capsys.readouterr().err.strip() == "checker: error: no display: use --pictures DIR"
+    assert show.display_problem({"DISPLAY": ":0"}, "linux") == ""
+    assert show.display_problem({}, "win32") == ""
+
+
+def test_a_file_that_does_not_load_gets_its_load_error(tmp_path, capsys):
+    target = tmp_path / "tumbling_crates.py"
+    target.write_text("import no_such_module_anywhere\n", encoding="utf-8")
+
+    class Args:
+        show, seed, timeout, memory, max_output, child_user, allow_edits = "", SEED, 20.0, 768, 256, None, False
+
+    from checker.entries import discover
+    entries, _ = discover([str(target)])
+    opened = []
+    status = show.main(Args, entries, events=lambda: opened.append(1) or [], frames=1)
+    out = capsys.readouterr().out
+    assert status == 1 and not opened   # no window
+    assert "no_such_module_anywhere" in out and ":( The file imports" in out
+    assert "--show: the file does not load" in out
+
+
+def test_centroid_case_draws_both_points(tmp_path):
+    corpus = importlib.import_module("corpus_more_shapes")
+    path = tmp_path / "more_shapes.py"
+    path.write_text(corpus.build("centroid_average_of_corners"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("more_shapes"), seed=SEED)
+    assert replay.check.id == "centroid" and replay.cases
+    case = replay.cases[0]
+    assert isinstance(case, show_cases.PolygonCase)
+    assert case.case["got"] == pytest.approx(case.case["average"]) and case.case["got"] != case.case["want"]
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 480)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+
+
+CASE_KIND = {"tumbling_crates": show_cases.ImpulseCase, "more_shapes": show_cases.PolygonCase,
+             "bullets": show_cases.SweptCase}
+
+
+def test_failing_cases_draw_both_answers(shown):
+    """A failed function check of a kind --show draws (impulse, inertia, swept move) opens on its cases, and
+    each case shows the student's answer (magenta) and the lesson's (yellow); the other labs' steps have none."""
+    lab, path, row, replay = shown
+    kind = CASE_KIND.get(lab.id)
+    if kind is None:
+        assert replay.cases == []
+        return
+    assert replay.cases and all(isinstance(c, kind) for c in replay.cases)
+    for case in replay.cases[:3]:
+        surface = pygame.Surface(show_view.SCENE)
+        case.draw(surface)
+        colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 470, 2)}
+        assert show_cases.STUDENT in colours and show_cases.LESSON in colours, case.lines()
+        assert case.lines()[1].startswith("yours") and case.lines()[2].startswith("the lesson")
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_RIGHTBRACKET)]), frames=1)
+    assert viewer.showing_cases and viewer.case_index == min(1, len(replay.cases) - 1)
+
+
+def test_time_of_impact_case_shows_both_times(tmp_path):
+    corpus = importlib.import_module("corpus_bullets")
+    path = tmp_path / "bullets.py"
+    path.write_text(corpus.build("toi_later_root"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("bullets"), seed=SEED)
+    assert replay.check.id == "toi_matches_root"
+    case = next(c for c in replay.cases if c.geometry is not None)
+    assert case.case["got"] > case.case["want"]   # the later root
+    yours, lesson = case.lines()[1:3]
+    assert f"{case.case['got'] * 1000:.4g} ms" in yours and f"{case.case['want'] * 1000:.4g} ms" in lesson
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 470)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+
+
+@pytest.mark.parametrize("lab_id", sorted(WRONG_STEP))
+def test_every_behaviour_check_has_a_quantity_the_solution_keeps(lab_id):
+    """Each behaviour check with a scene has a quantity for the timeline; where it has a bound, the solution's
+    own run of that scene never passes it (so a failing frame found by the bound is never a false mark)."""
+    lab = lab_of(lab_id)
+    for check_id, scenes in lab.picture_scenes.items():
+        quantity = show.series_for(lab, check_id)
+        assert quantity is not None, (lab_id, check_id)
+        if quantity.bound is None:
+            continue
+        result = type("R", (), {"id": check_id, "message": ""})()
+        for scene in scenes:
+            frames = pictures.reference_record(lab, scene)["records"]
+            fail_frame, why, _, values = show.failure(lab, result, frames, frames, True)
+            assert fail_frame is None, (lab_id, check_id, scene, why, max(values))
+
+
+def test_command_line_show_replays_and_returns(tmp_path):
+    """`python -m checker FILE --show --seed N` as typed: with SDL's dummy driver the window plays the replay
+    once and closes (a desktop keeps it open until Esc or the window is closed)."""
+    from test_checker_pictures import run_checker
+    path = wrong_file(str(tmp_path), "tumbling_crates")
+    status, out, err = run_checker(path, "--show", "--seed", str(SEED))
+    assert status == 1, err
+    assert ":( Step 6" in out and f"graded with seed {SEED}" in out
+    assert "--show: apply_impulse_spin (fail)" in out and "failing frame" in out
+    status, out, err = run_checker(path, "--show", "ramp_holds", "--seed", str(SEED))
+    assert status == 1 and "--show: ramp_holds (skip)" in out
+
+
+def test_resolve_case_draws_both_impulses(tmp_path):
+    corpus = importlib.import_module("corpus_tumbling_crates")
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(corpus.build("k_only_a"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("tumbling_crates"), seed=SEED)
+    assert replay.check.id == "resolve_k" and replay.cases
+    case = replay.cases[0]
+    assert isinstance(case, show_cases.ResolveCase) and case.case["case"] in replay.check.message
+    assert f"j = {case.case['j']:.4g}" in case.lines()[1] and not math.isclose(case.case["j"], case.lesson_j())
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 470)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+
+
+def test_a_record_the_runtime_cannot_have_written_is_not_replayed():
+    """The child writes the record the window replays: one that cannot be lesson11.runtime's (a string where a
+    position belongs) is not drawn, and --show falls back to no scene instead of failing in the parent."""
+    lab = lab_of("tumbling_crates")
+    frames = pictures.reference_record(lab, "corner")["records"]
+    forged = {"records": [dict(frames[0], bodies=[dict(b, pos=["x", 0]) for b in frames[0]["bodies"]])]}
+    assert show.trusted_frames(lab, "corner", forged) == []
+    assert show.trusted_frames(lab, "corner", {"records": frames}) == frames
+
+    class Row:
+        records, preview, seed, path = {"corner": forged}, "corner", SEED, "tumbling_crates.py"
+        results = ()
+    Row.lab = lab
+    result = type("R", (), {"id": "apply_impulse_spin", "status": "fail", "message": "m"})()
+    replay = show.build_replay(Row, result)
+    assert replay.frames == [] and replay.scene is None and replay.fail_frame is None
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_j)]), frames=2)   # draws the "no scene" text
+    assert viewer.frame is None
