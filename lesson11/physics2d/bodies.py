@@ -2,50 +2,32 @@
 
 A body moves with `vel` (px/s) and turns with `omega` (rad/s). Mass 0 means
 static: inv_mass = inv_inertia = 0, so no impulse or push can move or turn it.
-Its settings (pos, vel, angle, omega, mass, inertia, restitution, friction)
-are checked whenever they are set, in Body(...) or later (settings.Setting),
-and setting mass or inertia keeps the fields derived from them in step.
+Its settings (pos, angle, mass, inertia, restitution, friction) are checked
+whenever they are set, in Body(...) or later (settings.setting), and setting
+mass or inertia keeps the fields derived from them in step.
 """
 import math
 
-from .settings import Setting
+from .settings import setting
 from .shapes import Circle, Polygon, WorldPoints
 from .vectors import Vector2, finite_number, finite_vector, spin_velocity
 
-_isfinite = math.isfinite
-_UNSET = object()   # what a body that has no pos or vel yet holds (Body.__new__, before __init__)
+
+_UNSET = object()   # what a body holds before its first pos (Body.__new__, before __init__)
 
 
 # ---------------------------------------------------------------- the checks of Body's settings
-# Each returns check(body, value) for Setting: the value to store, or a one-line ValueError.
+# Each returns check(body, value) for settings.setting: the value to keep, or a one-line ValueError.
 
-class _VectorSetting(Setting):
-    """pos, vel: a pair of finite numbers, kept as the body's own Vector2 (px or px/s).
+def _vector(name, what):
+    """A pair of finite numbers, kept as the body's own Vector2 (so no two bodies share one)."""
+    private = "_" + name
 
-    `body.vel += dv` changes the body's own vector in place and then sets it
-    (thousands of times a step): like `body.vel.x = ...`, a change made inside
-    the body's own vector is left to World's end-of-step check, which names the
-    body and the time. Any other value is checked and copied here.
-    """
-
-    def __set__(self, body, value):
-        if value is not body.__dict__.get(self.name, _UNSET):
-            body.__dict__[self.name] = self.check(body, value)
-
-
-class _NumberSetting(Setting):
-    """angle, omega: a finite number; a finite float (the solvers' case) is stored with no further call."""
-
-    def __set__(self, body, value):
-        if type(value) is float and _isfinite(value):
-            body.__dict__[self.name] = value
-        else:
-            body.__dict__[self.name] = self.check(body, value)
-
-
-def _vector(what):
-    """Any pair of finite numbers, as a new Vector2 (so no two bodies share one); `what` names it."""
-    return lambda body, value: finite_vector(value, what)
+    def check(body, value):
+        if value is getattr(body, private, _UNSET):
+            return value  # `body.pos += v` changed the body's own vector in place: World's end-of-step check sees it
+        return finite_vector(value, what)
+    return check
 
 
 def _number(what, low=None, high=None):
@@ -67,13 +49,13 @@ def _mass(body, value):
     if mass < 0:
         raise ValueError(f"body mass must be >= 0 (0 means static), got {mass}")
     if mass == 0:  # static: infinite mass and inertia
-        body.__dict__.update(inv_mass=0.0, inertia=0.0, inv_inertia=0.0)
+        body.inv_mass, body._inertia, body.inv_inertia = 0.0, 0.0, 0.0
         return mass
     inertia = body.shape.inertia(mass)
     if not (0 < inertia < math.inf and 1 / mass < math.inf and 1 / inertia < math.inf):
         raise ValueError(f"body mass {mass:g} with this shape gives a moment of inertia of {inertia:g}, "
                          "too small or too large to invert; use a mass and size nearer 1")
-    body.__dict__.update(inv_mass=1 / mass, inertia=inertia, inv_inertia=1 / inertia)
+    body.inv_mass, body._inertia, body.inv_inertia = 1 / mass, inertia, 1 / inertia
     return mass
 
 
@@ -93,7 +75,7 @@ def _inertia(body, value):
         raise ValueError(f"body inertia must be > 0 (mass·px²), got {inertia}")
     if 1 / inertia == math.inf:
         raise ValueError(f"body inertia {inertia:g} is too small to invert; use a mass and size nearer 1")
-    body.__dict__["inv_inertia"] = 1 / inertia
+    body.inv_inertia = 1 / inertia
     return inertia
 
 
@@ -119,10 +101,17 @@ class Body:
     passes it here. It must be a number > 0 (math.inf: a body that cannot
     turn), and only a dynamic body (mass > 0) takes one.
 
-    Every setting is checked when set, here or later, with the same one-line
-    ValueError; help(Body.mass) and the others say what each is, its unit and
-    default. inv_mass and inv_inertia follow mass and inertia: set those, and
-    the solvers read the inverses (a static body is one whose inv_mass is 0).
+    pos, angle, mass, inertia, restitution and friction are checked whenever
+    they are set, here or later, with the same one-line ValueError;
+    help(Body.mass) and the others say what each is, its unit and default.
+    inv_mass and inv_inertia follow mass and inertia: set those, and the
+    solvers read the inverses (a static body is one whose inv_mass is 0).
+    vel and omega are checked here and stay plain attributes: the lesson's
+    apply_impulse sets each of them at every contact point in every pass
+    (about 7,000 sets a step in the lab's 12-crate pile), and a check in
+    Python on each set made the lab's step 13-29 % slower (lesson11/bench/
+    README.md, "physics2d's choices, measured"). World.add() and the end of
+    every step check that they are finite, naming the body and the time.
 
     >>> from lesson11.physics2d import Body, box_points
     >>> crate = Body(box_points(40, 40), (100, 100), mass=2)
@@ -137,24 +126,17 @@ class Body:
     ValueError: body restitution must be between 0 and 1, got 5.0
     """
 
-    pos = _VectorSetting(_vector("body position"), """Position of the centre of mass (px), a pygame Vector2.
+    pos = setting("pos", _vector("pos", "body position"), """Position of the centre of mass (px), a pygame Vector2.
 
         y grows downward. Set it to any pair (x, y) of finite numbers: the body
         keeps its own Vector2 (a copy), so two bodies never share one.
         `body.pos += v` and `body.pos.x = x` change that vector in place;
         World checks those at the end of each step. Default (0, 0).""")
-    vel = _VectorSetting(_vector("body velocity"), """Velocity of the centre of mass (px/s), a pygame Vector2.
-
-        Set it to any pair of finite numbers (the body keeps a copy); impulses
-        change it by P / mass. Default (0, 0).""")
-    angle = _NumberSetting(_number("body angle"), """Rotation (rad) of the shape from its local axes.
+    angle = setting("angle", _number("body angle"), """Rotation (rad) of the shape from its local axes.
 
         Positive turns clockwise on screen (y grows downward). Any finite
         number; it is not wrapped to [0, 2π). Default 0.""")
-    omega = _NumberSetting(_number("body omega"), """Spin (rad/s), positive clockwise on screen.
-
-        Any finite number; angle grows by omega · dt each step. Default 0.""")
-    mass = Setting(_mass, """Mass (the course's unit: a w × h px crate has w·h/1000); 0 means static.
+    mass = setting("mass", _mass, """Mass (the course's unit: a w × h px crate has w·h/1000); 0 means static.
 
         Setting it recomputes inv_mass = 1 / mass, inertia = shape.inertia(mass)
         (polygon_inertia, or ½ m r² for a circle; an inertia given before is
@@ -174,17 +156,17 @@ class Body:
         Traceback (most recent call last):
         ...
         ValueError: body mass must be >= 0 (0 means static), got -1.0""")
-    inertia = Setting(_inertia, """Moment of inertia (mass·px²) about the centre of mass; inv_inertia follows.
+    inertia = setting("inertia", _inertia, """Moment of inertia (mass·px²) about the centre of mass; inv_inertia follows.
 
         A number > 0 for a dynamic body; math.inf makes one that cannot turn
         (inv_inertia 0). A static body (mass 0) has 0 and takes no other.
         Default shape.inertia(mass), recomputed whenever mass is set.""")
-    restitution = Setting(_number("body restitution", 0, 1), """Bounciness e in [0, 1].
+    restitution = setting("restitution", _number("body restitution", 0, 1), """Bounciness e in [0, 1].
 
         0 stops dead at impact, 1 bounces back at the impact speed; a pair
         uses the smaller e of its two bodies, and impacts slower than the
         world's resting_speed do not bounce. Default 0.2.""")
-    friction = Setting(_number("body friction", 0), """Friction coefficient μ >= 0.
+    friction = setting("friction", _number("body friction", 0), """Friction coefficient μ >= 0.
 
         A pair uses √(μA μB): the friction impulse is at most μ times the
         normal impulse (Coulomb). 0 is ice. Default 0.6.""")
@@ -194,10 +176,10 @@ class Body:
         if not isinstance(shape, (Polygon, Circle)):
             shape = Polygon(shape)
         self.shape = shape
-        self.pos = pos           # every setting is checked by its Setting (above)
-        self.vel = vel
+        self.pos = pos           # each setting checks what it is given (above)
+        self.vel = finite_vector(vel, "body velocity")   # vel and omega: plain attributes (see the class docstring)
         self.angle = angle
-        self.omega = omega
+        self.omega = finite_number(omega, "body omega")
         self.mass = mass         # also sets inv_mass, inertia, inv_inertia
         self.restitution = restitution
         self.friction = friction

@@ -1,45 +1,40 @@
 """Settings checked when set: the attributes of Body and World that refuse a bad value in one line.
 
-A Setting is a class attribute that checks every value assigned to it on an
-object (in __init__ and at any time later) and stores the checked value in the
-object's own __dict__ under the same name:
+setting(name, check, doc) is a property: a value assigned to it on an object
+(in __init__ and at any time later) goes through check(obj, value), which
+returns the value to keep or raises a one-line ValueError naming the setting
+and the value, and is kept in the plain attribute `_name`:
 
     >>> from lesson11.physics2d import World
     >>> world = World()
-    >>> world.slop = 0.25          # checked, then stored: world.slop is 0.25
+    >>> world.slop = 0.25          # checked, then kept: world.slop is 0.25
     >>> world.slop = -1
     Traceback (most recent call last):
     ...
     ValueError: world slop must be >= 0 px, got -1.0
 
-A Setting has no __get__, so Python reads the stored value straight from the
-object's __dict__ without calling anything: reading body.pos or body.vel, done
-thousands of times a step, costs about what a plain attribute costs, and only
-setting one runs a check. help(World.slop) prints the setting's docstring.
-
-The checks of World's settings live here too (one factory per kind of value);
-Body's are in bodies.py, next to the fields they keep consistent.
+Reading one calls no Python code (the getter is operator.attrgetter, in C), so
+a setting read a few thousand times a step costs little; help(World.slop)
+prints the setting's docstring. The checks of World's settings live here too
+(one factory per kind of value); Body's are in bodies.py, next to the fields
+they keep consistent.
 """
+from operator import attrgetter
+
 from .vectors import finite_number, finite_vector
 
 
-class Setting:
-    """An attribute checked on every set: obj.name = value stores check(obj, value), or raises its ValueError."""
+def setting(name, check, doc):
+    """A property `name` kept in `_name`: obj.name = value keeps check(obj, value), or raises its ValueError."""
+    private = "_" + name
 
-    def __init__(self, check, doc):
-        self.check = check   # check(obj, value) -> the value to store; a one-line ValueError if it is bad
-        self.__doc__ = doc
-        self.name = None
-
-    def __set_name__(self, owner, name):
-        self.name = name
-
-    def __set__(self, obj, value):
-        obj.__dict__[self.name] = self.check(obj, value)
+    def set_(obj, value):
+        setattr(obj, private, check(obj, value))
+    return property(attrgetter(private), set_, doc=doc)
 
 
 # ---------------------------------------------------------------- checks of World's settings
-# Each factory returns check(world, value) for Setting; `name` words the error.
+# Each factory returns check(world, value) for setting(); `name` words the error.
 
 def positive_seconds(name):
     """A number of seconds > 0."""
@@ -94,7 +89,7 @@ def one_of(choices, name, forget_arbiters=False):
     def check(world, value):
         if value not in choices:
             raise ValueError(f"{name} must be one of {list(choices)}, got {value!r}")
-        if forget_arbiters and world.__dict__.get(name, value) != value:
+        if forget_arbiters and getattr(world, "_" + name, value) != value:
             world.arbiters = {}
         return value
     return check

@@ -21,8 +21,8 @@ from collections import namedtuple
 from . import broadphase, collision, response, sleep
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
                       soft_constants)
-from .settings import (Setting, at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, vector,
-                       whole_number)
+from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
+                       vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
 from .vectors import Vector2, finite_number
 
@@ -81,19 +81,21 @@ class World:
     (-20, 0, 240)
     """
 
-    gravity = Setting(vector("gravity"), """Acceleration (px/s²) of every dynamic body, a Vector2 (y grows downward).
+    gravity = setting("gravity", vector("gravity"),
+                      """Acceleration (px/s²) of every dynamic body, a Vector2 (y grows downward).
 
         Applied only with the "gravity" effect. Two finite numbers.
         Default GRAVITY = (0, 980) px/s².""")
-    step_seconds = Setting(positive_seconds("step_seconds"), """The fixed physics step (s).
+    step_seconds = setting("step_seconds", positive_seconds("step_seconds"), """The fixed physics step (s).
 
         step() runs one; advance(frame) runs as many as fit in the frame time.
         A number > 0. Default STEP = 1/120 s.""")
-    iterations = Setting(whole_number("iterations"), """Solver passes over the contacts per (sub-)step, an int >= 1.
+    iterations = setting("iterations", whole_number("iterations"),
+                         """Solver passes over the contacts per (sub-)step, an int >= 1.
 
         More passes sink less and cost more (lesson11/bench/README.md,
         "Solver iterations"). Default 6.""")
-    slop = Setting(at_least_zero("slop", "px"), """Overlap (px) the push-out leaves alone.
+    slop = setting("slop", at_least_zero("slop", "px"), """Overlap (px) the push-out leaves alone.
 
         separate() moves a pair apart by percent × (depth - slop) only, so
         bodies at rest stay in touch instead of being pushed out and falling
@@ -105,39 +107,44 @@ class World:
         Traceback (most recent call last):
         ...
         ValueError: world slop must be >= 0 px, got -1.0""")
-    percent = Setting(fraction("percent"), """Share of the overlap beyond slop that one push-out removes, 0 to 1.
+    percent = setting("percent", fraction("percent"),
+                      """Share of the overlap beyond slop that one push-out removes, 0 to 1.
 
         1 removes it at once (a visible jolt), small values let a pile sink.
         Default response.PERCENT = 0.4.""")
-    resting_speed = Setting(at_least_zero("resting_speed", "px/s"), """Slowest impact (px/s) that bounces.
+    resting_speed = setting("resting_speed", at_least_zero("resting_speed", "px/s"),
+                            """Slowest impact (px/s) that bounces.
 
         An approach slower than this along the normal gets e = 0, so bodies at
         rest do not bounce on the speed one step of gravity gives them. A
         number >= 0. Default response.RESTING_SPEED = 30 px/s.""")
-    max_frame = Setting(positive_seconds("max_frame"), """Longest frame (s) that advance() takes in.
+    max_frame = setting("max_frame", positive_seconds("max_frame"), """Longest frame (s) that advance() takes in.
 
         A longer frame (a window drag, a breakpoint) counts as this long.
         A number > 0. Default 0.25 s.""")
-    max_steps = Setting(whole_number("max_steps", none_allowed=True), """Fixed steps per advance() at most.
+    max_steps = setting("max_steps", whole_number("max_steps", none_allowed=True),
+                        """Fixed steps per advance() at most.
 
         An int >= 1, or None (no cap). The frame time that does not fit is
         dropped (added to `dropped`), so a frame whose physics runs long makes
         the simulation run slower than the clock instead of making the next
         frame longer still (the "spiral": 30 catch-up steps a frame, 3 fps).
         Default MAX_STEPS = 4, two 60 fps frames of 1/120 s steps.""")
-    contact_rule = Setting(one_of(CONTACT_RULES, "contact_rule", forget_arbiters=True), """How two polygons' contact points are found.
+    contact_rule = setting("contact_rule", one_of(CONTACT_RULES, "contact_rule", forget_arbiters=True),
+                           """How two polygons' contact points are found.
 
         "corners": the lesson's rule, the corners of each inside the other;
         "clip": edge clipping (Box2D's). Changing it drops the accumulated
         solver's kept contacts (`arbiters`). Default "corners".""")
-    solver = Setting(one_of(SOLVERS, "solver", forget_arbiters=True), """Which contact solver runs.
+    solver = setting("solver", one_of(SOLVERS, "solver", forget_arbiters=True), """Which contact solver runs.
 
         "lesson": the labs' solver, fresh impulses every pass from resolve(),
         the push-out by separate() (order says when it moves the bodies);
         "accumulated": arbiter.py, impulses kept across passes and steps, soft
         contacts, for tall stacks and large mass ratios. Changing it drops the
         kept contacts (`arbiters`). Default "lesson".""")
-    effects = Setting(effect_set(EFFECTS), """The effects that run: a set of names from EFFECTS (kept as a frozenset).
+    effects = setting("effects", effect_set(EFFECTS),
+                      """The effects that run: a set of names from EFFECTS (kept as a frozenset).
 
         "gravity", "rotation", "friction", "restitution", "correction" (the
         push-out), "ccd" (swept tests for bodies with bullet=True), "sleep"
@@ -146,7 +153,7 @@ class World:
 
         >>> sorted(World(effects={"gravity", "sleep"}).effects)
         ['gravity', 'sleep']""")
-    order = Setting(one_of(ORDERS, "order"), """The lesson solver's order within a sub-step.
+    order = setting("order", one_of(ORDERS, "order"), """The lesson solver's order within a sub-step.
 
         "solve-first": Box2D-Lite's, contacts once, impulses, then the move
         and one push-out (step_solve_first); "move-first": the lesson text's
@@ -154,47 +161,55 @@ class World:
         contacts, resolve() and separate() (step_move_first; a crate on the
         22° ramp creeps ~3 px/s). The accumulated solver ignores it.
         Default "solve-first".""")
-    broad_phase = Setting(one_of(BROAD_PHASES, "broad_phase"), """How the pairs to test are found.
+    broad_phase = setting("broad_phase", one_of(BROAD_PHASES, "broad_phase"), """How the pairs to test are found.
 
         "sweep-and-prune" (broadphase.py: boxes sorted along x and swept) or
         "all-pairs" (every pair, box against box: the reference). Both give the
         same pairs in the same order, so the same motion to the last bit.
         Default "sweep-and-prune".""")
-    warm_starting = Setting(flag("warm_starting"), """True: the accumulated solver starts from last step's impulses.
+    warm_starting = setting("warm_starting", flag("warm_starting"),
+                            """True: the accumulated solver starts from last step's impulses.
 
         It then needs fewer passes for a resting pile; the lesson solver
         ignores it. True or False. Default True.""")
-    circle_polygon = Setting(hook("circle_polygon"), """Hook: the test of every circle–polygon pair (lesson solver).
+    circle_polygon = setting("circle_polygon", hook("circle_polygon"),
+                             """Hook: the test of every circle–polygon pair (lesson solver).
 
         circle_polygon(center, radius, points) -> None or (normal out of the
         circle into the polygon, depth px). A function; World(circle_polygon=None)
         uses the library's, collision.circle_polygon (the default).""")
-    circle_point = Setting(hook("circle_point"), """Hook: the contact point of every circle pair (lesson solver).
+    circle_point = setting("circle_point", hook("circle_point"),
+                           """Hook: the contact point of every circle pair (lesson solver).
 
         circle_point(center, radius, normal, depth) -> the contact point (world
         px), normal pointing out of that circle. A function; default
         collision.circle_contact_point (halfway into the overlap).""")
-    sleep_speed = Setting(at_least_zero("sleep_speed", "px/s"), """"sleep" effect: slower than this (px/s) is calm.
+    sleep_speed = setting("sleep_speed", at_least_zero("sleep_speed", "px/s"),
+                          """"sleep" effect: slower than this (px/s) is calm.
 
         A body calm in speed and spin (sleep_spin) for sleep_after s, with its
         island, falls asleep. A number >= 0. Default SLEEP_SPEED = 5 px/s.""")
-    sleep_spin = Setting(at_least_zero("sleep_spin", "rad/s"), """"sleep" effect: spinning slower than this (rad/s) is calm.
+    sleep_spin = setting("sleep_spin", at_least_zero("sleep_spin", "rad/s"),
+                         """"sleep" effect: spinning slower than this (rad/s) is calm.
 
         A number >= 0. Default SLEEP_SPIN = 0.1 rad/s.""")
-    sleep_after = Setting(positive_seconds("sleep_after"), """"sleep" effect: calm this long (s), an island falls asleep.
+    sleep_after = setting("sleep_after", positive_seconds("sleep_after"),
+                          """"sleep" effect: calm this long (s), an island falls asleep.
 
         Every member of the island must have been calm (sleep_time) this long.
         A number > 0. Default SLEEP_AFTER = 0.5 s.""")
-    sleep_timer = Setting(hook("sleep_timer"), """Hook, "sleep" effect: a body's new sleep timer after a step.
+    sleep_timer = setting("sleep_timer", hook("sleep_timer"),
+                          """Hook, "sleep" effect: a body's new sleep timer after a step.
 
         sleep_timer(timer, speed, spin, dt) -> the new timer (s), for every
         awake dynamic body. A function; default sleep_timer_of_world (sleep.timer
         with this world's sleep_speed and sleep_spin).""")
-    moves = Setting(hook("moves"), """Hook, "sleep" effect: moves(body) -> True if the body is integrated.
+    moves = setting("moves", hook("moves"), """Hook, "sleep" effect: moves(body) -> True if the body is integrated.
 
         A pair in which neither body moves is never tested. A function;
         default World.moves_of_world (dynamic and awake).""")
-    wake_pair = Setting(hook("wake"), """Hook, "sleep" effect: wake_pair(a, b) -> the bodies to wake when a and b touch.
+    wake_pair = setting("wake_pair", hook("wake"),
+                        """Hook, "sleep" effect: wake_pair(a, b) -> the bodies to wake when a and b touch.
 
         Set by World(wake=...). A function; default World.wake_of_world (the
         sleeper of a pair whose other body is dynamic and awake).""")
