@@ -1,7 +1,6 @@
 """Benchmark: CPU time of one World.step on the 12-crate pile, this tree against another (e.g. before a change).
 
     python tests/bench_pile_step.py --base DIR [--repeats 5] [--steps 300]
-    python tests/bench_pile_step.py --plain [--repeats 5] [--steps 300]
 
 DIR is another checkout of the repository (e.g. `git worktree add /tmp/base main`, or
 `git archive COMMIT lesson11 solutions checker | tar -x -C DIR`). Each run is a child
@@ -12,9 +11,6 @@ checker's pile scenario (checker/labs/tumbling_crates/scenes.pile_scenario: 12 c
 (the lesson solver, solve-first, 4 sub-steps) and solver="accumulated". Runs of the two
 trees alternate (base, this, base, this, ...), so a busy moment on a shared machine hits
 both; the medians and their ratio (this / base) are printed, with the load average.
---plain compares this tree with itself, its bodies switched to a copy of the Body class
-without its checked settings (physics2d.settings.Setting): plain attributes, the cost of
-the checks alone.
 Not a test (its name does not start with test_): the figures depend on the machine.
 Property access on Body (pos, vel, omega, inv_mass read thousands of times a step) is
 what this watches.
@@ -33,16 +29,8 @@ ROOT = os.path.dirname(HERE)
 SETTINGS = {"lab default": {}, "accumulated": {"solver": "accumulated"}}
 
 
-def plain_class():
-    """A copy of this tree's Body without its Settings: every field a plain attribute."""
-    from lesson11.physics2d import Body
-    from lesson11.physics2d.settings import Setting
-    return type("Body", (), {name: value for name, value in vars(Body).items()
-                             if not isinstance(value, Setting) and name not in ("__dict__", "__weakref__")})
-
-
-def child(root, steps, plain=False):
-    """In a child process: {setting: CPU s of `steps` steps} for the tree at `root` (plain: bodies unchecked)."""
+def child(root, steps):
+    """In a child process: {setting: CPU s of `steps` steps} for the tree at `root`."""
     sys.path.insert(0, root)
     os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
     os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
@@ -60,10 +48,6 @@ def child(root, steps, plain=False):
         runtime.reset()
         for key, value in settings.items():
             setattr(world, key, value)
-        if plain:
-            cls = plain_class()
-            for body in world.bodies:
-                body.__class__ = cls
         start = time.process_time()
         for _ in range(steps):
             world.step()
@@ -73,30 +57,26 @@ def child(root, steps, plain=False):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--base", help="the other tree (a checkout of the repository)")
-    parser.add_argument("--plain", action="store_true", help="compare with this tree's bodies unchecked")
+    parser.add_argument("--base", required=True, help="the other tree (a checkout of the repository)")
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--steps", type=int, default=300, help="1/120 s steps per run (300: 2.5 s)")
     parser.add_argument("--child", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
-        print(json.dumps(child(args.child, args.steps, args.plain)))
+        print(json.dumps(child(args.child, args.steps)))
         return
-    if (args.base is None) == (not args.plain):
-        parser.error("give --base DIR or --plain")
-    other = "base" if args.base else "plain"
-    trees = {other: (os.path.abspath(args.base), []) if args.base else (ROOT, ["--plain"]), "this": (ROOT, [])}
+    trees = {"base": os.path.abspath(args.base), "this": ROOT}
     runs = {tree: [] for tree in trees}
     print(f"load average at start: {os.getloadavg()[0]:.1f}" if hasattr(os, "getloadavg") else "load: n/a")
     for _ in range(args.repeats):
-        for tree, (root, extra) in trees.items():
-            out = subprocess.run([sys.executable, __file__, "--child", root, "--steps", str(args.steps)] + extra,
-                                 capture_output=True, text=True, check=True).stdout
+        for tree, root in trees.items():
+            out = subprocess.run([sys.executable, __file__, "--base", root, "--child", root, "--steps",
+                                  str(args.steps)], capture_output=True, text=True, check=True).stdout
             runs[tree].append(json.loads(out.strip().splitlines()[-1]))
     for setting in SETTINGS:
-        base = statistics.median(run[setting] for run in runs[other]) / args.steps * 1000
+        base = statistics.median(run[setting] for run in runs["base"]) / args.steps * 1000
         this = statistics.median(run[setting] for run in runs["this"]) / args.steps * 1000
-        print(f"{setting:12s} {other} {base:7.3f} ms/step  this {this:7.3f} ms/step  ratio {this / base:.3f}")
+        print(f"{setting:12s} base {base:7.3f} ms/step  this {this:7.3f} ms/step  ratio {this / base:.3f}")
     print(f"load average at end: {os.getloadavg()[0]:.1f}" if hasattr(os, "getloadavg") else "")
 
 

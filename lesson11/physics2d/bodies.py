@@ -108,10 +108,10 @@ class Body:
     solvers read the inverses (a static body is one whose inv_mass is 0).
     vel and omega are checked here and stay plain attributes: the lesson's
     apply_impulse sets each of them at every contact point in every pass
-    (about 7,000 sets a step in the lab's 12-crate pile), and a check in
-    Python on each set made the lab's step 13-29 % slower (lesson11/bench/
-    README.md, "physics2d's choices, measured"). World.add() and the end of
-    every step check that they are finite, naming the body and the time.
+    (about 6,700 sets a step in the lab's 12-crate pile), and checking each
+    set made the lab's step 1.29 times as long (lesson11/bench/README.md,
+    "physics2d's choices, measured"). World.add() and the end of every step
+    check that they are finite, naming the body and the time.
 
     >>> from lesson11.physics2d import Body, box_points
     >>> crate = Body(box_points(40, 40), (100, 100), mass=2)
