@@ -156,9 +156,10 @@ class Body:
         Traceback (most recent call last):
         ...
         ValueError: body mass must be >= 0 (0 means static), got -1.0""")
-    inertia = setting("inertia", _inertia, """Moment of inertia (mass·px²) about the centre of mass; inv_inertia follows.
+    inertia = setting("inertia", _inertia, """Moment of inertia (mass·px²) about the centre of mass.
 
-        A number > 0 for a dynamic body; math.inf makes one that cannot turn
+        Setting it sets inv_inertia = 1 / inertia. A number > 0 for a
+        dynamic body; math.inf makes one that cannot turn
         (inv_inertia 0). A static body (mass 0) has 0 and takes no other.
         Default shape.inertia(mass), recomputed whenever mass is set.""")
     restitution = setting("restitution", _number("body restitution", 0, 1), """Bounciness e in [0, 1].
