@@ -246,7 +246,8 @@ STEP3_WRONG = [
           "sat_normal", {3: """
         if (centre_of(pa) - centre_of(pb)).dot(best_axis) < 0:
             best_axis = -best_axis
-    """}, why="every normal points from B to A"),
+    """}, why="every normal points from B to A; (centre_a - centre_b)·n < 0 is normal_flip_reversed's test "
+              "(centre_b - centre_a)·n > 0, even at 0, so no probe tells the two apart: the message names both forms"),
     wrong("normal_first_vertices", "orients with the first corners pb[0] - pa[0] instead of the centres", "sat_normal",
           {3: """
         if (pb[0] - pa[0]).dot(best_axis) < 0:

@@ -12,7 +12,8 @@ student's other steps (lesson_circle_toi, ...) run in the child too, as the stud
     bounding_radius (step 3) boxes, turned boxes and a triangle around their centres
     time_of_impact  (step 4) crates hit, missed, grazed at a corner, a bullet already inside the
                     bounding circle; the lesson's circle_toi and bounding_radius stand in for the
-                    student's, and the exact swept test is counted (the broad test must skip it)
+                    student's, and the exact swept test is counted (the broad test must skip it);
+                    beside the answer, what each known wrong broad test gives (BROAD_MISTAKES)
     swept_move      (step 5) one swept move against a wall, a crate and nothing, with the
                     lesson's time_of_impact standing in for the student's
     shots           (criteria 1 and 2) the lab's own BulletWorld with its wall: >= 100 shots

@@ -11,7 +11,9 @@ in checker/labs/tumbling_crates/checks.py read this data in the grading process 
 the first configuration that differs.
 
     sat            (step 2, step 3) lesson pairs, turned boxes, a pentagon, a hexagon, a deep hit,
-                   exact touching, far apart; every pair also with A and B swapped
+                   exact touching, far apart; every pair also with A and B swapped. Beside the lesson's
+                   answer, what step 2's known wrong loops (SAT_LOOPS) and step 3's known wrong flips
+                   give, so a message names one only when it alone fits every pair
     apply_impulse  (step 6) both bodies moving, A static, B static; masses and inertias far from 1,
                    off-centre points, spinning bodies
     resolve        (steps 4, 5) the same kinds of pairs, sliding both ways, the Coulomb clamp active
@@ -26,7 +28,8 @@ import os
 
 from pygame import Vector2
 
-from lesson11.physics2d import Body, box_points, centre_of, cross, edge_normals, project, relative_velocity  # noqa: F401
+from lesson11.physics2d import Body, box_points, centre_of, cross, edge_normals, relative_velocity  # noqa: F401
+from lesson11.physics2d import project
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
 from ...probe_kit import _plain, drawn_sat_pairs, judging, reference, reference_sat, sat_answer, sat_pairs, twin
@@ -138,13 +141,10 @@ def _flip_mistakes_reference(pa, pb):
     not_flipped: no test; reversed: turned when (centre_b - centre_a)·n > 0 (the same as (centre_a - centre_b)·n
     < 0); always_flipped: turned without a test; first_vertices: the test made with pb[0] - pa[0].
     """
-    best_axis, best_depth = None, math.inf
-    for axis in edge_normals(pa) + edge_normals(pb):
-        overlap = _lesson_overlap(project(pa, axis), project(pb, axis))
-        if overlap <= 0:
-            return {}
-        if overlap < best_depth:
-            best_axis, best_depth = axis, overlap
+    overlaps = axis_overlaps(pa, pb)   # (axis, the lesson's overlap, the shorter way out) per edge normal
+    if any(overlap <= 0 for _, overlap, _ in overlaps):
+        return {}
+    best_axis = min(overlaps, key=lambda item: item[1])[0]   # the first of equal overlaps, as `<` keeps
     towards = (centre_of(pb) - centre_of(pa)).dot(best_axis)
     forms = {"not_flipped": best_axis, "reversed": -best_axis if towards > 0 else best_axis,
              "always_flipped": -best_axis,
