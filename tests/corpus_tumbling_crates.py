@@ -246,7 +246,8 @@ STEP3_WRONG = [
           "sat_normal", {3: """
         if (centre_of(pa) - centre_of(pb)).dot(best_axis) < 0:
             best_axis = -best_axis
-    """}, why="every normal points from B to A"),
+    """}, why="every normal points from B to A; (centre_a - centre_b)·n < 0 is normal_flip_reversed's test "
+              "(centre_b - centre_a)·n > 0, even at 0, so no probe tells the two apart: the message names both forms"),
     wrong("normal_first_vertices", "orients with the first corners pb[0] - pa[0] instead of the centres", "sat_normal",
           {3: """
         if (pb[0] - pa[0]).dot(best_axis) < 0:
@@ -629,20 +630,20 @@ SAYS = {
     "sat_placeholder_left": ("placeholder",),
     "sat_only_a_axes": ("B's edge normals",),
     "sat_a_axes_twice": ("B's edge normals",),
-    "sat_gap_continue": ("shows a gap",),
+    "sat_gap_continue": ("shows a gap", "goes on to the next axis"),
     "sat_gap_break": ("TypeError",),
     "sat_largest_overlap": ("LARGEST overlap",),
-    "sat_one_sided_overlap": ("the smallest overlap is",),
-    "sat_union_extent": ("the smallest overlap is",),
-    "sat_projects_pa_twice": ("the smallest overlap is",),
+    "sat_one_sided_overlap": ("overlap = max_a - min_b",),
+    "sat_union_extent": ("both shadows together",),
+    "sat_projects_pa_twice": ("project(pa, axis)",),
     "sat_axis_never_kept": ("TypeError",),
-    "sat_unnormalised_axes": ("the smallest overlap is",),
+    "sat_unnormalised_axes": ("not divided by their length",),
     "sat_skips_closing_edge": ("closing edge",),
     "normal_not_flipped": ("from B to A",),
-    "normal_flip_reversed": ("from B to A",),
-    "normal_centres_reversed": ("from B to A",),
-    "normal_first_vertices": ("from B to A",),
-    "normal_always_flipped": ("from B to A",),
+    "normal_flip_reversed": ("from B to A", "flip test is the wrong way round"),
+    "normal_centres_reversed": ("from B to A", "flip test is the wrong way round"),
+    "normal_first_vertices": ("from B to A", "pb[0] - pa[0], the first corners"),
+    "normal_always_flipped": ("from B to A", "turned round every time, without the test"),
     "normal_negates_depth": ("not the depth",),
     "normal_flips_x_only": ("more than the normal's direction",),
     "k_missing": ("no spin terms",),

@@ -8,6 +8,8 @@
     response   apply_impulse, resolve, separate
     arbiter    the reference ("accumulated") solver: accumulated impulses, soft contacts, sub-steps
     world      World (fixed step, solver iterations, declared effects); GRAVITY and STEP, its defaults
+    settings   Setting: the attributes of Body and World checked whenever they are set
+    sleep      the "sleep" effect: sleep timers, islands falling asleep together, waking
     draw       debug drawing with pygame
 
 Units: px, s, rad; y grows downward; a positive angle turns clockwise on screen.

@@ -3,23 +3,28 @@
 A scene declares the effects it needs in `effects`; the world runs those and
 nothing else (no friction pass for a frictionless scene, no swept tests unless
 "ccd" is asked for). Every setting is an attribute, checked whenever it is set
-(in World(...) or later), with a one-line ValueError naming it and the value.
-A lab can hand in its own `sat`, `resolve` and `separate` (and, for balls,
-`circle_polygon` and `circle_point`), and the world calls them inside its
-loop, so a student's functions run the whole simulation.
+(in World(...) or later), with a one-line ValueError naming it and the value
+(settings.py); help(World.slop) and the others say what each is, its unit and
+default. A lab can hand in its own `sat`, `resolve` and `separate` (and, for
+balls, `circle_polygon` and `circle_point`), and the world calls them inside
+its loop, so a student's functions run the whole simulation.
 
-World.step reads top to bottom, one comment per phase, for both solvers.
-With the "sleep" effect, step() ends with update_sleep (sleep timers, then
-calm islands fall asleep), and manifolds() visits only pairs in which a body
-moves and wakes what an awake body touches (the hooks sleep_timer, moves, wake).
+World.step dispatches to one phase list per solver (step_solve_first,
+step_move_first, step_accumulated), each read top to bottom like Box2D-Lite's
+World::Step with a comment per phase, and all end with end_step. The "sleep"
+effect's machinery is sleep.py; the measurements behind the choices made here
+are in lesson11/bench/README.md ("physics2d's choices, measured").
 """
 import math
 from collections import namedtuple
 
-from . import broadphase, collision, response
+from . import broadphase, collision, response, sleep
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
                       soft_constants)
-from .vectors import Vector2, finite_number, finite_vector
+from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
+                       vector, whole_number)
+from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
+from .vectors import Vector2, finite_number
 
 GRAVITY = Vector2(0, 980)  # px/s², the course's gravity (y down)
 STEP = 1 / 120             # s, the course's fixed physics step
@@ -27,163 +32,32 @@ EFFECTS = ("gravity", "rotation", "friction", "restitution", "correction", "ccd"
 SOLVERS = ("lesson", "accumulated")
 ORDERS = ("move-first", "solve-first")
 BROAD_PHASES = ("sweep-and-prune", "all-pairs")
-LESSON_SUBSTEPS = 4        # the lesson solver's sub-steps in the solve-first order (see World.lesson_solve_first)
+LESSON_SUBSTEPS = 4        # the lesson solver's sub-steps in the solve-first order (see World.step_solve_first)
 CONTACT_RULES = ("corners", "clip")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
-SLEEP_SPEED = 5.0          # px/s: "sleep" effect, a body slower than this (and spinning slower than SLEEP_SPIN) ...
-SLEEP_SPIN = 0.1           # rad/s
-SLEEP_AFTER = 0.5          # s ... for this long, with every body it touches, falls asleep
 MAX_STEPS = 4              # fixed steps per advance() at most: two 60 fps frames' worth of 1/120 s steps
 
 Contact = namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = "One contact: bodies a and b, the world point (px), the unit normal A→B, the depth (px)."
 
 
-# ---------------------------------------------------------------- one validator per setting
-
-def _positive_seconds(name):
-    def check(value):
-        value = finite_number(value, f"world {name}")
-        if value <= 0:
-            raise ValueError(f"world {name} must be > 0 s, got {value}")
-        return value
-    return check
-
-
-def _whole_number(name):
-    def check(value):
-        if isinstance(value, bool) or not isinstance(value, int) or value < 1:
-            raise ValueError(f"world {name} must be a whole number >= 1, got {value!r}")
-        return value
-    return check
-
-
-def _whole_number_or_none(name):
-    def check(value):
-        return None if value is None else _whole_number(name)(value)
-    return check
-
-
-def _at_least_zero(name, unit):
-    def check(value):
-        value = finite_number(value, f"world {name}")
-        if value < 0:
-            raise ValueError(f"world {name} must be >= 0 {unit}, got {value}")
-        return value
-    return check
-
-
-def _check_percent(value):
-    value = finite_number(value, "world percent")
-    if not 0 <= value <= 1:
-        raise ValueError(f"world percent must be between 0 and 1, got {value}")
-    return value
-
-
-def _one_of(choices, sentence):
-    """A validator accepting only the values in `choices`; `sentence` words the error."""
-    def check(value):
-        if value not in choices:
-            raise ValueError(sentence.format(value=value))
-        return value
-    return check
-
-
-_check_contact_rule = _one_of(CONTACT_RULES, "contact_rule must be 'corners' or 'clip', got {value!r}")
-_check_solver = _one_of(SOLVERS, f"solver must be one of {list(SOLVERS)}, got {{value!r}}")
-_check_broad_phase = _one_of(BROAD_PHASES, f"broad_phase must be one of {list(BROAD_PHASES)}, got {{value!r}}")
-_check_order = _one_of(ORDERS, f"order must be one of {list(ORDERS)}, got {{value!r}}")
-
-
-def _check_effects(value):
-    if isinstance(value, str):
-        raise ValueError(f"effects must be a set of names such as {{{value!r}}}, not the string {value!r}")
-    unknown = set(value) - set(EFFECTS)
-    if unknown:
-        raise ValueError(f"unknown effects {sorted(unknown)}; choose from {list(EFFECTS)}")
-    return frozenset(value)
-
-
-def _check_hook(name):
-    def check(value):
-        if not callable(value):
-            raise ValueError(f"world {name} must be a function (or None for the library's), got {value!r}")
-        return value
-    return check
-
-
-def _check_bool(name):
-    def check(value):
-        if not isinstance(value, bool):
-            raise ValueError(f"world {name} must be True or False, got {value!r}")
-        return value
-    return check
-
-
-def _setting(name, check, forget_arbiters=False):
-    """A World attribute validated on every set; forget_arbiters drops the cached contacts when it changes."""
-    def get(world):
-        return getattr(world, "_" + name)
-
-    def set_(world, value):
-        value = check(value)
-        if forget_arbiters and getattr(world, "_" + name, value) != value:
-            world.arbiters = {}
-        setattr(world, "_" + name, value)
-    return property(get, set_, doc=f"World setting {name!r}, checked when set.")
-
-
 class World:
     """A collection of bodies stepped with a fixed time step.
 
-    Settings (keywords of World(...) and attributes; defaults are the lesson's):
-      gravity        GRAVITY = (0, 980) px/s²
-      step_seconds   STEP = 1/120 s, the fixed physics step (step() is the action that runs one)
-      iterations     6 solver passes over the contacts per (sub-)step, int >= 1
-      substeps       each fixed step is split into this many equal sub-steps, int >= 1;
-                     None (default): LESSON_SUBSTEPS = 4 for the lesson solver's solve-first order, else 1
-      slop           0.5 px of overlap tolerated by the push-out
-      percent        0.4, share of the remaining overlap pushed out per push-out pass
-      resting_speed  30 px/s; slower impacts do not bounce
-      max_frame      0.25 s; longer frames are clamped (window drags, breakpoints)
-      max_steps      MAX_STEPS = 4 fixed steps at most per advance(), int >= 1, or None (no cap);
-                     the frame time that does not fit is dropped, so a frame whose physics runs
-                     long makes the simulation run slower than the clock, instead of making the
-                     next frame longer still (the "spiral": 30 catch-up steps a frame, 3 fps)
-      contact_rule   "corners" (the lesson's corners-inside rule) or "clip" (edge clipping)
-      effects        which effects run, a subset of EFFECTS; LESSON_EFFECTS by default
-                     (the push-out is the "correction" effect)
-      order          the lesson solver's order: "solve-first" (default; Box2D-Lite's: contacts
-                     once per sub-step, resolve passes, move, one push-out pass) or "move-first"
-                     (the lesson text's step_world: gravity, move, then `iterations` passes of
-                     contacts, resolve and push-out; a crate on the 22° ramp creeps ~3 px/s)
-      solver         "lesson" (fresh impulses every pass by resolve, push-out by separate) or
-                     "accumulated" (arbiter.py: impulses kept across passes and steps,
-                     soft contacts, sub-steps; for tall stacks and large mass ratios)
-      warm_starting  True: the accumulated solver starts from last step's impulses
-                     (the lesson solver ignores it)
-      sleep_speed    SLEEP_SPEED = 5 px/s, sleep_spin SLEEP_SPIN = 0.1 rad/s, sleep_after SLEEP_AFTER = 0.5 s:
-                     the "sleep" effect (not in LESSON_EFFECTS; a scene that does not declare it
-                     pays nothing). After each step every awake dynamic body's `sleep_time` is
-                     sleep_timer(sleep_time, speed, spin, dt); an island of touching dynamic bodies
-                     whose sleep_time are all >= sleep_after falls asleep together (`asleep`,
-                     velocity and spin zeroed). Bodies for which moves(body) is False are not
-                     integrated, and a pair in which neither moves is never visited by the broad
-                     phase. For every touching pair found, wake(a, b) returns the bodies to wake;
-                     World.wake(body) wakes the body and the island it fell asleep with.
-    Hooks: sat(pa, pb), resolve(a, b, normal, point), separate(a, b, normal, depth);
-      for sleep: sleep_timer(timer, speed, spin, dt) -> the new timer (s), moves(body) -> bool,
-      wake(a, b) -> the bodies to wake (library: sleep_timer_of_world, moves_of_world, wake_of_world);
-      for circles: circle_polygon(center, radius, points) -> None or (normal out of the
-      circle into the polygon, depth px), the test for every circle–polygon pair, and
-      circle_point(center, radius, normal, depth) -> the contact point (world px) of every
-      circle pair, normal pointing out of that circle (default collision.circle_contact_point,
-      halfway into the overlap). Each hook must be a function (or None: the library's);
-      anything else is a one-line ValueError. Like sat, the two circle hooks serve the
-      lesson solver; the accumulated solver's speculative contacts use the library's.
-      broad_phase    "sweep-and-prune" (default; broadphase.py: boxes sorted along x and swept)
-                     or "all-pairs" (the reference: every pair box against box); the same pairs
-                     in the same order, so the same results to the last bit
+    Settings are keywords of World(...) and attributes, checked whenever they
+    are set; help(World.<name>) says what each is, its unit and its default:
+      the step       gravity, step_seconds, substeps, max_frame, max_steps
+      the solver     solver, order, iterations, warm_starting, contact_rule, broad_phase, effects
+      the push-out   slop, percent; bounces: resting_speed
+      "sleep"        sleep_speed, sleep_spin, sleep_after, and the hooks sleep_timer, moves, wake_pair
+                     (World(wake=...) sets wake_pair)
+    Hooks (a lab's functions, called inside the loop; None gives the library's):
+      sat(pa, pb), resolve(a, b, normal, point), separate(a, b, normal, depth);
+      circle_polygon(center, radius, points) and circle_point(center, radius, normal, depth) for balls;
+      sleep_timer(timer, speed, spin, dt), moves(body), wake(a, b) for "sleep" (sleep.py).
+      Each must be a function: anything else is a one-line ValueError. Like sat, the
+      circle hooks serve the lesson solver; the accumulated solver's speculative
+      contacts use the library's.
     After each step: `contacts` (list of Contact the impulses used) and
     `counters`, totals since the world was made, each added once per contact search:
       steps          fixed steps run
@@ -195,39 +69,163 @@ class World:
       narrow_tests   pairs handed to the narrow phase (collision.collide): boxes overlap
       contacts       contact points of the manifolds found (speculative ones included)
       swept_tests    "ccd": bodies a bullet was swept against
-    Changing solver or contact_rule between steps is safe: the accumulated
-    solver's kept contacts (`arbiters`) are dropped.
+    `dropped` is the frame time (s) the max_steps cap has dropped, in all.
+
+    >>> from lesson11.physics2d import Body, World, box_points
+    >>> floor = Body(box_points(400, 40), (0, 20), mass=0)
+    >>> crate = Body(box_points(40, 40), (0, -100), mass=1)
+    >>> world = World([floor, crate])
+    >>> for _ in range(240):       # 2 s of 1/120 s steps: the crate falls and lands
+    ...     world.step()
+    >>> round(crate.pos.y), round(crate.vel.y), world.counters["steps"]
+    (-20, 0, 240)
     """
 
-    gravity = property(lambda w: w._gravity,
-                       lambda w, v: setattr(w, "_gravity", finite_vector(v, "world gravity")),
-                       doc="Gravity (px/s²), checked when set.")
-    step_seconds = _setting("step_seconds", _positive_seconds("step_seconds"))
-    iterations = _setting("iterations", _whole_number("iterations"))
-    substeps = property(lambda w: w._substeps or (LESSON_SUBSTEPS if w.solver == "lesson" and w.order == "solve-first"
-                                                  else 1),
-                        lambda w, v: setattr(w, "_substeps", None if v is None else _whole_number("substeps")(v)),
-                        doc="Sub-steps per fixed step, checked when set; None: 4 for the lesson solver's "
-                            "solve-first order, else 1.")
-    slop = _setting("slop", _at_least_zero("slop", "px"))
-    percent = _setting("percent", _check_percent)
-    resting_speed = _setting("resting_speed", _at_least_zero("resting_speed", "px/s"))
-    max_frame = _setting("max_frame", _positive_seconds("max_frame"))
-    max_steps = _setting("max_steps", _whole_number_or_none("max_steps"))
-    contact_rule = _setting("contact_rule", _check_contact_rule, forget_arbiters=True)
-    solver = _setting("solver", _check_solver, forget_arbiters=True)
-    effects = _setting("effects", _check_effects)
-    order = _setting("order", _check_order)
-    broad_phase = _setting("broad_phase", _check_broad_phase)
-    warm_starting = _setting("warm_starting", _check_bool("warm_starting"))
-    circle_polygon = _setting("circle_polygon", _check_hook("circle_polygon"))
-    circle_point = _setting("circle_point", _check_hook("circle_point"))
-    sleep_speed = _setting("sleep_speed", _at_least_zero("sleep_speed", "px/s"))
-    sleep_spin = _setting("sleep_spin", _at_least_zero("sleep_spin", "rad/s"))
-    sleep_after = _setting("sleep_after", _positive_seconds("sleep_after"))
-    sleep_timer = _setting("sleep_timer", _check_hook("sleep_timer"))
-    moves = _setting("moves", _check_hook("moves"))
-    wake_pair = _setting("wake_pair", _check_hook("wake"))
+    gravity = setting("gravity", vector("gravity"),
+                      """Acceleration (px/s²) of every dynamic body, a Vector2 (y grows downward).
+
+        Applied only with the "gravity" effect. Two finite numbers.
+        Default GRAVITY = (0, 980) px/s².""")
+    step_seconds = setting("step_seconds", positive_seconds("step_seconds"), """The fixed physics step (s).
+
+        step() runs one; advance(frame) runs as many as fit in the frame time.
+        A number > 0. Default STEP = 1/120 s.""")
+    iterations = setting("iterations", whole_number("iterations"),
+                         """Solver passes over the contacts per (sub-)step, an int >= 1.
+
+        More passes sink less and cost more (lesson11/bench/README.md,
+        "Solver iterations"). Default 6.""")
+    slop = setting("slop", at_least_zero("slop", "px"), """Overlap (px) the push-out leaves alone.
+
+        separate() moves a pair apart by percent × (depth - slop) only, so
+        bodies at rest stay in touch instead of being pushed out and falling
+        back every step (jitter). A number >= 0. Default response.SLOP = 0.5 px.
+
+        >>> World().slop
+        0.5
+        >>> World(slop=-1)
+        Traceback (most recent call last):
+        ...
+        ValueError: world slop must be >= 0 px, got -1.0""")
+    percent = setting("percent", fraction("percent"),
+                      """Share of the overlap beyond slop that one push-out removes, 0 to 1.
+
+        1 removes it at once (a visible jolt), small values let a pile sink.
+        Default response.PERCENT = 0.4.""")
+    resting_speed = setting("resting_speed", at_least_zero("resting_speed", "px/s"),
+                            """Slowest impact (px/s) that bounces.
+
+        An approach slower than this along the normal gets e = 0, so bodies at
+        rest do not bounce on the speed one step of gravity gives them. A
+        number >= 0. Default response.RESTING_SPEED = 30 px/s.""")
+    max_frame = setting("max_frame", positive_seconds("max_frame"), """Longest frame (s) that advance() takes in.
+
+        A longer frame (a window drag, a breakpoint) counts as this long.
+        A number > 0. Default 0.25 s.""")
+    max_steps = setting("max_steps", whole_number("max_steps", none_allowed=True),
+                        """Fixed steps per advance() at most.
+
+        An int >= 1, or None (no cap). The frame time that does not fit is
+        dropped (added to `dropped`), so a frame whose physics runs long makes
+        the simulation run slower than the clock instead of making the next
+        frame longer still (the "spiral": 30 catch-up steps a frame, 3 fps).
+        Default MAX_STEPS = 4, two 60 fps frames of 1/120 s steps.""")
+    contact_rule = setting("contact_rule", one_of(CONTACT_RULES, "contact_rule", forget_arbiters=True),
+                           """How two polygons' contact points are found.
+
+        "corners": the lesson's rule, the corners of each inside the other;
+        "clip": edge clipping (Box2D's). Changing it drops the accumulated
+        solver's kept contacts (`arbiters`). Default "corners".""")
+    solver = setting("solver", one_of(SOLVERS, "solver", forget_arbiters=True), """Which contact solver runs.
+
+        "lesson": the labs' solver, fresh impulses every pass from resolve(),
+        the push-out by separate() (order says when it moves the bodies);
+        "accumulated": arbiter.py, impulses kept across passes and steps, soft
+        contacts, for tall stacks and large mass ratios. Changing it drops the
+        kept contacts (`arbiters`). Default "lesson".""")
+    effects = setting("effects", effect_set(EFFECTS),
+                      """The effects that run: a set of names from EFFECTS (kept as a frozenset).
+
+        "gravity", "rotation", "friction", "restitution", "correction" (the
+        push-out), "ccd" (swept tests for bodies with bullet=True), "sleep"
+        (sleep.py). A scene pays only for what it declares. Default
+        LESSON_EFFECTS: all but "ccd" and "sleep".
+
+        >>> sorted(World(effects={"gravity", "sleep"}).effects)
+        ['gravity', 'sleep']""")
+    order = setting("order", one_of(ORDERS, "order"), """The lesson solver's order within a sub-step.
+
+        "solve-first": Box2D-Lite's, contacts once, impulses, then the move
+        and one push-out (step_solve_first); "move-first": the lesson text's
+        step_world, gravity and the move first, then `iterations` passes of
+        contacts, resolve() and separate() (step_move_first; a crate on the
+        22° ramp creeps ~3 px/s). The accumulated solver ignores it.
+        Default "solve-first".""")
+    broad_phase = setting("broad_phase", one_of(BROAD_PHASES, "broad_phase"), """How the pairs to test are found.
+
+        "sweep-and-prune" (broadphase.py: boxes sorted along x and swept) or
+        "all-pairs" (every pair, box against box: the reference). Both give the
+        same pairs in the same order, so the same motion to the last bit.
+        Default "sweep-and-prune".""")
+    warm_starting = setting("warm_starting", flag("warm_starting"),
+                            """True: the accumulated solver starts from last step's impulses.
+
+        It then needs fewer passes for a resting pile; the lesson solver
+        ignores it. True or False. Default True.""")
+    circle_polygon = setting("circle_polygon", hook("circle_polygon"),
+                             """Hook: the test of every circle–polygon pair (lesson solver).
+
+        circle_polygon(center, radius, points) -> None or (normal out of the
+        circle into the polygon, depth px). A function; World(circle_polygon=None)
+        uses the library's, collision.circle_polygon (the default).""")
+    circle_point = setting("circle_point", hook("circle_point"),
+                           """Hook: the contact point of every circle pair (lesson solver).
+
+        circle_point(center, radius, normal, depth) -> the contact point (world
+        px), normal pointing out of that circle. A function; default
+        collision.circle_contact_point (halfway into the overlap).""")
+    sleep_speed = setting("sleep_speed", at_least_zero("sleep_speed", "px/s"),
+                          """"sleep" effect: slower than this (px/s) is calm.
+
+        A body calm in speed and spin (sleep_spin) for sleep_after s, with its
+        island, falls asleep. A number >= 0. Default SLEEP_SPEED = 5 px/s.""")
+    sleep_spin = setting("sleep_spin", at_least_zero("sleep_spin", "rad/s"),
+                         """"sleep" effect: spinning slower than this (rad/s) is calm.
+
+        A number >= 0. Default SLEEP_SPIN = 0.1 rad/s.""")
+    sleep_after = setting("sleep_after", positive_seconds("sleep_after"),
+                          """"sleep" effect: calm this long (s), an island falls asleep.
+
+        Every member of the island must have been calm (sleep_time) this long.
+        A number > 0. Default SLEEP_AFTER = 0.5 s.""")
+    sleep_timer = setting("sleep_timer", hook("sleep_timer"),
+                          """Hook, "sleep" effect: a body's new sleep timer after a step.
+
+        sleep_timer(timer, speed, spin, dt) -> the new timer (s), for every
+        awake dynamic body. A function; default sleep_timer_of_world (sleep.timer
+        with this world's sleep_speed and sleep_spin).""")
+    moves = setting("moves", hook("moves"), """Hook, "sleep" effect: moves(body) -> True if the body is integrated.
+
+        A pair in which neither body moves is never tested. A function;
+        default World.moves_of_world (dynamic and awake).""")
+    wake_pair = setting("wake_pair", hook("wake"),
+                        """Hook, "sleep" effect: wake_pair(a, b) -> the bodies to wake when a and b touch.
+
+        Set by World(wake=...). A function; default World.wake_of_world (the
+        sleeper of a pair whose other body is dynamic and awake).""")
+
+    @property
+    def substeps(self):
+        """Equal sub-steps each fixed step is split into (h = step / substeps), an int >= 1.
+
+        Set None for the default: LESSON_SUBSTEPS = 4 for the lesson solver's
+        solve-first order, else 1; reading gives the number in use.
+        """
+        return self._substeps or (LESSON_SUBSTEPS if self.solver == "lesson" and self.order == "solve-first" else 1)
+
+    @substeps.setter
+    def substeps(self, value):
+        self._substeps = whole_number("substeps", none_allowed=True)(self, value)
 
     def __init__(self, bodies=(), *, gravity=GRAVITY, step_seconds=STEP, iterations=6, substeps=None,
                  slop=response.SLOP, percent=response.PERCENT, resting_speed=response.RESTING_SPEED,
@@ -296,73 +294,28 @@ class World:
         """The library's separate() with this world's slop and percent."""
         response.separate(a, b, normal, depth, self.slop, self.percent)
 
-    # ---------------------------------------------------------------- the "sleep" effect
+    # ---------------------------------------------------------------- the "sleep" effect (sleep.py)
+
+    moves_of_world = staticmethod(sleep.moves)
+    wake_of_world = staticmethod(sleep.wake_pair)
 
     def sleep_timer_of_world(self, timer, speed, spin, dt):
-        """The library's sleep timer: timer + dt (s) while speed < sleep_speed and |spin| < sleep_spin, else 0."""
-        return timer + dt if speed < self.sleep_speed and abs(spin) < self.sleep_spin else 0.0
-
-    @staticmethod
-    def moves_of_world(body):
-        """The library's rule: a body is integrated (and its pairs tested) if it is dynamic and awake."""
-        return body.inv_mass != 0 and not body.asleep
-
-    @staticmethod
-    def wake_of_world(a, b):
-        """The library's rule: of a touching pair, the sleeping body is woken if the other is dynamic and awake."""
-        return [sleeper for sleeper, other in ((a, b), (b, a))
-                if sleeper.asleep and other.inv_mass != 0 and not other.asleep]
+        """The library's sleep timer (sleep.timer) with this world's sleep_speed and sleep_spin."""
+        return sleep.timer(timer, speed, spin, dt, self.sleep_speed, self.sleep_spin)
 
     def wake(self, body):
-        """Wake `body` and every body that fell asleep in the same island (timers back to 0)."""
-        for other in getattr(body, "island", None) or [body]:
-            if other.asleep:
-                other.asleep = False
-                other.sleep_time = 0.0
-                other.island = None
-        body.asleep = False
-        body.sleep_time = 0.0
+        """Wake `body` and every body that fell asleep in the same island (sleep.wake)."""
+        sleep.wake(body)
 
     def fall_asleep(self, bodies):
-        """Put these dynamic bodies to sleep together, as one island: no velocity, no spin."""
-        island = list(bodies)
-        for body in island:
-            body.asleep = True
-            body.vel = Vector2()
-            body.omega = 0.0
-            body.island = island
+        """Put these dynamic bodies to sleep together, as one island (sleep.fall_asleep)."""
+        sleep.fall_asleep(bodies)
 
     def update_sleep(self, dt):
-        """After a step: each awake dynamic body's sleep_time = sleep_timer(...); calm islands fall asleep.
+        """After a step: sleep timers, then calm islands fall asleep (sleep.update)."""
+        sleep.update(self, dt)
 
-        An island is a group of awake dynamic bodies joined by the pairs that touched
-        in any contact search of this step
-        (static bodies do not join islands); it sleeps when every member's
-        sleep_time >= sleep_after, so a pile sleeps as one (and World.wake wakes it
-        as one).
-        """
-        awake = [body for body in self.bodies if body.inv_mass != 0 and not body.asleep]
-        for body in awake:
-            timer = finite_number(self.sleep_timer(body.sleep_time, body.vel.length(), body.omega, dt),
-                                  "sleep_timer's result")
-            body.sleep_time = timer
-        parent = {id(body): id(body) for body in awake}
-
-        def root(key):
-            while parent[key] != key:
-                parent[key] = parent[parent[key]]
-                key = parent[key]
-            return key
-        for ka, kb in self.touched:
-            if ka in parent and kb in parent:
-                parent[root(ka)] = root(kb)
-        self.touched = set()
-        islands = {}
-        for body in awake:
-            islands.setdefault(root(id(body)), []).append(body)
-        for members in islands.values():
-            if all(body.sleep_time >= self.sleep_after for body in members):
-                self.fall_asleep(members)
+    # ---------------------------------------------------------------- time
 
     def advance(self, frame_seconds):
         """Run as many fixed steps as fit in the frame's time (s), carrying the remainder.
@@ -389,85 +342,26 @@ class World:
         return steps
 
     def step(self, dt=None):
-        """Advance every body by one step of dt seconds (default: step_seconds), in `substeps` sub-steps h = dt/substeps.
+        """Advance every body by one step of dt seconds (default: step_seconds) with the world's solver.
 
-        The lesson solver, order="solve-first" (the default, Box2D-Lite's order),
-        each sub-step: contacts once, the push-out of the last move, resolve()
-        passes, then move; the step ends with one more contact search and the
-        last move's push-out (lesson_solve_first has the phases). order="move-first" (the
-        lesson text's order), each sub-step:
-          1. v += g h
-          2. x += v h, angle += ω h (a swept move for "ccd" bullets)
-          3. `iterations` passes of: contacts (broad phase, sat, contact points),
-             resolve() at each point, separate() on each pair
-        Moving before solving lets a crate resting on a slope creep down by
-        g sin θ h² per step (3.1 px/s on the 22° ramp): the impulses cancel the
-        velocity, but not the move already made (see lesson11/README.md).
-        The accumulated solver: arbiter.py's phases (its module docstring).
-        Raises ValueError if any body ends the step with a non-finite state.
+        Each solver's step is one phase list, in `substeps` sub-steps h = dt / substeps:
+          solver "lesson", order "solve-first"   step_solve_first (the default: Box2D-Lite's order)
+          solver "lesson", order "move-first"    step_move_first (the lesson text's step_world)
+          solver "accumulated"                   step_accumulated (arbiter.py)
+        and every step ends with end_step: sleep, the clock, the counters, and
+        a ValueError if any body ends the step with a non-finite state.
         """
-        dt = self.step_seconds if dt is None else _positive_seconds("step dt")(dt)
-        h = dt / self.substeps
-        if self.solver == "lesson" and self.order == "solve-first":
-            touching = set()  # pairs that touched before the last move (none yet: the last step pushed them out)
-            for _ in range(self.substeps):
-                touching = self.lesson_solve_first(h, touching)
-            # where the bodies touch after the last move (what the lab draws), then its push-out
-            found = list(self.manifolds())
-            self.push_out(found, touching)
-            self.contacts = [Contact(a, b, point, m.normal, m.depth) for a, b, m in found for point in m.points]
-        elif self.solver == "lesson":
-            for _ in range(self.substeps):
-                # 1. velocities: gravity
-                self.integrate_velocities(h)
-                # 2. positions: x += v h (a swept move for "ccd" bullets)
-                self.integrate_positions(h)
-                # 3. `iterations` passes, each: broad phase, the lab's sat, contact points,
-                #    resolve() at every point (fresh impulses), then the push-out separate()
-                for _ in range(self.iterations):
-                    self.contacts = []
-                    for a, b, m in self.manifolds():
-                        for point in m.points:
-                            self.resolve(a, b, m.normal, point)
-                            self.contacts.append(Contact(a, b, point, m.normal, m.depth))
-                        if "correction" in self.effects:
-                            self.separate(a, b, m.normal, m.depth)
+        dt = self.step_seconds if dt is None else positive_seconds("step dt")(self, dt)
+        if self.solver == "accumulated":
+            self.step_accumulated(dt)
+        elif self.order == "solve-first":
+            self.step_solve_first(dt)
         else:
-            # 1. collide once per step: speculative manifolds, matched with last step's arbiters
-            arbiters = {}
-            for a, b, manifold in self.manifolds(speculative=dt):
-                arbiter = self.arbiters.get((id(a), id(b))) or Arbiter(a, b)
-                arbiter.update(manifold)
-                arbiters[(id(a), id(b))] = arbiter
-            self.arbiters = arbiters
-            # 2. prepare: anchors, effective masses, approach speeds (before any impulse)
-            for arbiter in arbiters.values():
-                arbiter.prepare(self, self.warm_starting)
-            soft = soft_constants(min(CONTACT_HERTZ, 0.25 / h), DAMPING_RATIO, h)
-            use_push = "correction" in self.effects
-            start = {id(body): (body.pos.x, body.pos.y, body.angle) for body in self.bodies}
-            motion = {key: (0.0, 0.0, 1.0, 0.0) for key in start}
-            for _ in range(self.substeps):
-                # 3. velocities, then warm start with the accumulated impulses
-                self.integrate_velocities(h)
-                for arbiter in arbiters.values():
-                    arbiter.warm_start()
-                # 4. solve: `iterations` passes with the soft push-out
-                for _ in range(self.iterations):
-                    for arbiter in arbiters.values():
-                        arbiter.solve(h, soft, use_push, motion)
-                # 5. positions, and each body's motion since phase 2 (for the separations)
-                self.integrate_positions(h)
-                self.body_motion(start, motion)
-                # 6. relax: one pass without the push-out, which takes its speed away
-                for arbiter in arbiters.values():
-                    arbiter.solve(h, soft, False, motion)
-            # 7. restitution, from the approach speeds found in phase 2
-            for _ in range(RESTITUTION_PASSES):
-                for arbiter in arbiters.values():
-                    arbiter.bounce(self.resting_speed)
-            self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
-                             for arb in arbiters.values() for c in arb.points]
+            self.step_move_first(dt)
+        self.end_step(dt)
+
+    def end_step(self, dt):
+        """What ends every step of dt s: "sleep" (sleep.update), the clock, the step counter, the finite check."""
         if "sleep" in self.effects:
             self.update_sleep(dt)
         self.time += dt
@@ -477,51 +371,115 @@ class World:
                 raise ValueError(f"body {index} {body!r} became non-finite at t = {self.time:.4f} s; "
                                  "check its mass, the step and the hooks")
 
-    def lesson_solve_first(self, h, touching):
-        """One sub-step h (s) of the lesson solver in Box2D-Lite's order, with the lab's resolve and separate.
+    # ---------------------------------------------------------------- one phase list per solver
 
-        `touching` holds the pairs (id(a), id(b)) that touched before the last
-        move; returns the pairs touching now, for the next sub-step.
-          1. contacts, found once (broad phase, the lab's sat, contact points)
-          2. the push-out of the last move: separate() on the pairs found in
-             step 1 that were in `touching` too. A pair that met during the
-             last move waits for this sub-step's impulses (pushing it out first
-             would lift a falling body before it bounces: energy from nowhere)
-          3. v += g h/2, then the impact pass: resolve() once at every point,
-             then v += g h/2. The bounce sits in the middle of the step's
-             gravity kick: an e = 1 disc that arrives at vn leaves at exactly
-             -vn, and ½ v² + g·height + ½ g h v_down, the energy this integrator
-             keeps in free flight, is unchanged by the bounce. (Bouncing after
-             the whole kick reflects vn + g h: +g h v per bounce; before it,
-             -g h v, 2.6 % per bounce from 200 px.)
-          4. `iterations` passes of resolve() over every point (resolve_pass:
-             forwards, backwards, ...); the speeds left are below resting_speed,
-             so e = 0 here and resting crates do not bounce
-          5. x += v h, angle += ω h: friction has already stopped the slide, so a
-             crate on the 22° ramp no longer creeps g sin θ h² per step
-        step() ends with one more contact search (what the lab draws) and the
-        last move's push-out.
-        The contacts of step 1 serve the push-out and the impulses: the push-out
-        moves a body by at most percent × (depth - slop) along the normal, so the
-        points the impulses use are off by that much (a fraction of a px).
-        Why 4 sub-steps (measured in the lab's 12-crate pile,
-        lesson11/bench/section1_probe.py): every push-out moves crates along
-        their SAT normals and shakes a leaning pile (2 sub-steps with 3 push-out
-        passes each: top speed 5.41 px/s); 4 shorter sub-steps let a landing
-        crate in at most v h/4 per move and still push it out 4 times a step.
-        Per fixed step with LESSON_SUBSTEPS = 4: 4 + 1 contact searches
-        (move-first: 6) and 4 × (1 + iterations) = 28 resolve passes
-        (move-first: 6).
+    def step_solve_first(self, dt):
+        """The lesson solver in Box2D-Lite's order, with the lab's sat, resolve and separate.
+
+        Each sub-step (lesson_solve_first): contacts once, the push-out of the
+        last move, resolve() passes, then the move. The step ends with one
+        more contact search, where the bodies touch after the last move (what
+        the lab draws), and that move's push-out.
         """
+        h = dt / self.substeps
+        touching = set()  # pairs that touched before the last move (none yet: the last step pushed them out)
+        for _ in range(self.substeps):
+            # 1-5. one sub-step: contacts, push-out, impact pass, resolve passes, move (lesson_solve_first)
+            touching = self.lesson_solve_first(h, touching)
+        # 6. contacts after the last move (what the lab draws), and that move's push-out
         found = list(self.manifolds())
         self.push_out(found, touching)
+        self.contacts = [Contact(a, b, point, m.normal, m.depth) for a, b, m in found for point in m.points]
+
+    def lesson_solve_first(self, h, touching):
+        """One sub-step h (s) of step_solve_first; returns the pairs (id(a), id(b)) touching now.
+
+        `touching` holds the pairs that touched before the last move. The bounce
+        sits in the middle of the gravity kick, so an e = 1 disc leaves at exactly
+        the speed it arrived with; friction stops a slide before the move, so a
+        crate on the ramp does not creep. Why each phase sits where it does, and
+        why 4 sub-steps: lesson11/bench/README.md, "physics2d's choices, measured".
+        """
+        # 1. contacts, found once: broad phase, the lab's sat, contact points
+        found = list(self.manifolds())
+        # 2. the push-out of the last move, for the pairs that touched before it too
+        #    (a pair that met during the move waits for this sub-step's impulses)
+        self.push_out(found, touching)
+        # 3. half the gravity kick, the impact pass (resolve() once at every point), the other half
         self.integrate_velocities(h / 2)
         self.resolve_pass(found, 0)
         self.integrate_velocities(h / 2)
+        # 4. `iterations` passes of resolve() (forwards, backwards, ...): what is left is below resting_speed
         for index in range(self.iterations):
             self.resolve_pass(found, index)
+        # 5. the move: x += v h, angle += ω h
         self.integrate_positions(h)
         return {(id(a), id(b)) for a, b, _ in found}
+
+    def step_move_first(self, dt):
+        """The lesson solver in the lesson text's order (step_world), with the lab's sat, resolve and separate.
+
+        Moving before solving lets a crate resting on a slope creep down by
+        g sin θ h² per step: the impulses cancel the velocity, but not the move
+        already made (lesson11/README.md).
+        """
+        h = dt / self.substeps
+        for _ in range(self.substeps):
+            # 1. velocities: gravity
+            self.integrate_velocities(h)
+            # 2. positions: x += v h (a swept move for "ccd" bullets)
+            self.integrate_positions(h)
+            # 3. `iterations` passes, each: broad phase, the lab's sat, contact points,
+            #    resolve() at every point (fresh impulses), then the push-out separate()
+            for _ in range(self.iterations):
+                self.contacts = []
+                for a, b, m in self.manifolds():
+                    for point in m.points:
+                        self.resolve(a, b, m.normal, point)
+                        self.contacts.append(Contact(a, b, point, m.normal, m.depth))
+                    if "correction" in self.effects:
+                        self.separate(a, b, m.normal, m.depth)
+
+    def step_accumulated(self, dt):
+        """The reference solver (arbiter.py's phases): impulses kept across passes and steps, soft contacts."""
+        h = dt / self.substeps
+        # 1. collide once per step: speculative manifolds, matched with last step's arbiters
+        arbiters = {}
+        for a, b, manifold in self.manifolds(speculative=dt):
+            arbiter = self.arbiters.get((id(a), id(b))) or Arbiter(a, b)
+            arbiter.update(manifold)
+            arbiters[(id(a), id(b))] = arbiter
+        self.arbiters = arbiters
+        # 2. prepare: anchors, effective masses, approach speeds (before any impulse)
+        for arbiter in arbiters.values():
+            arbiter.prepare(self, self.warm_starting)
+        soft = soft_constants(min(CONTACT_HERTZ, 0.25 / h), DAMPING_RATIO, h)
+        use_push = "correction" in self.effects
+        start = {id(body): (body.pos.x, body.pos.y, body.angle) for body in self.bodies}
+        motion = {key: (0.0, 0.0, 1.0, 0.0) for key in start}
+        for _ in range(self.substeps):
+            # 3. velocities, then warm start with the accumulated impulses
+            self.integrate_velocities(h)
+            for arbiter in arbiters.values():
+                arbiter.warm_start()
+            # 4. solve: `iterations` passes with the soft push-out
+            for _ in range(self.iterations):
+                for arbiter in arbiters.values():
+                    arbiter.solve(h, soft, use_push, motion)
+            # 5. positions, and each body's motion since phase 2 (for the separations)
+            self.integrate_positions(h)
+            self.body_motion(start, motion)
+            # 6. relax: one pass without the push-out, which takes its speed away
+            for arbiter in arbiters.values():
+                arbiter.solve(h, soft, False, motion)
+        # 7. restitution, from the approach speeds found in phase 2
+        for _ in range(RESTITUTION_PASSES):
+            for arbiter in arbiters.values():
+                arbiter.bounce(self.resting_speed)
+        self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
+                         for arb in arbiters.values() for c in arb.points]
+
+    # ---------------------------------------------------------------- the phases' parts
 
     def push_out(self, found, touching):
         """separate() on each (a, b, manifold) in `found` whose pair (id(a), id(b)) is in `touching` ("correction" only)."""

@@ -176,6 +176,9 @@ TOI_MISTAKES = {
               "of 2a is missing",
     "four": "that is what (-b - √disc) / (4a) gives in every case, half the first-contact time: divide by 2a",
     "a_unsquared": "that is the root with a = |dv|; the quadratic's a is dv·dv = |dv|²",
+    "b_sign": "that is what b = -2 dp·dv gives in every case (as dp = p1 - p2 or dv = v1 - v2 do): it runs time "
+              "backwards, so circles closing in get negative roots (None) and circles moving apart a contact; with "
+              "dp = p2 - p1 and dv = v2 - v1, b = 2 dp·dv",
 }
 
 
@@ -277,6 +280,27 @@ def _hit(hit):
     return f"t = {hit['t']:.6g} s, normal {_vec(hit['normal'])}"
 
 
+# step 4's known wrong broad tests, by the name the probe gives their answers (probes.BROAD_MISTAKES)
+BROAD_TEXT = {
+    "zero_is_falsy": "the broad test counts t = 0.0 as no contact (`if not t` is true for 0.0): a bullet already "
+                     "inside the bounding circle touches it now; return None only when circle_toi() gives None",
+    "inverted": "the broad test is the wrong way round: it returns None when circle_toi() DOES find the bounding "
+                "circle (is not None) and runs the exact test when it cannot; return None when it gives None",
+    "point_bullet": "the broad test treats the bullet as a point (radius 0): its centre passes outside the bounding "
+                    "circle, but its own radius reaches the crate; give circle_toi() bullet.radius",
+}
+
+
+def _broad_mistake(cases, case):
+    """The sentence of the one known wrong broad test that gives the student's answer and exact-test count in
+    every case, or ''."""
+    def gives(c, name):
+        form = c["forms"][name]
+        return _hit_matches(c["got"], form["hit"]) and c["exact_tests"] == form["exact_tests"]
+    differs = [name for name, form in case.get("forms", {}).items() if not _hit_matches(form["hit"], case["want"])]
+    return BROAD_TEXT.get(consistent_mistake(cases, gives, differs), "")
+
+
 @CHECKS.check(depends=["loads"])
 def broad_test(sub, functions):
     """Step 4: time_of_impact() skips a crate whose bounding circle the bullet cannot reach, and finds every hit."""
@@ -285,7 +309,10 @@ def broad_test(sub, functions):
         got, want = case["got"], case["want"]
         if not _hit_matches(got, want):
             text = f"for {case['case']}, time_of_impact() returned {_hit(got)}; expected {_hit(want)}"
-            if want is not None and got is None and case["exact_tests"] == 0:
+            named = _broad_mistake(cases, case)
+            if named:
+                text += f": {named}"
+            elif want is not None and got is None and case["exact_tests"] == 0:
                 text += ": the broad test gave up on a crate the bullet does hit"
             raise Fail(text + ".", HINTS["broad"])
         if not case["needs_exact"] and case["exact_tests"]:
@@ -308,6 +335,9 @@ SWEPT_TEXT = {
     "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
     "far_side": "the impulse was applied on the far side of the bullet; the contact point is on the bullet's "
                 "surface towards the crate, bullet.pos + normal * radius, and its lever arm sets the crate's spin",
+    "resolve_first": "the hit was resolved where the bullet starts the step, then the bullet moved the whole dt "
+                     "with its new velocity, so it turned back before it reached the impact; move it to the impact "
+                     "first (bullet.pos += bullet.vel * t), resolve there, then spend dt - t",
 }
 
 

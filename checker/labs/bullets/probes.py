@@ -12,7 +12,8 @@ student's other steps (lesson_circle_toi, ...) run in the child too, as the stud
     bounding_radius (step 3) boxes, turned boxes and a triangle around their centres
     time_of_impact  (step 4) crates hit, missed, grazed at a corner, a bullet already inside the
                     bounding circle; the lesson's circle_toi and bounding_radius stand in for the
-                    student's, and the exact swept test is counted (the broad test must skip it)
+                    student's, and the exact swept test is counted (the broad test must skip it);
+                    beside the answer, what each known wrong broad test gives (BROAD_MISTAKES)
     swept_move      (step 5) one swept move against a wall, a crate and nothing, with the
                     lesson's time_of_impact standing in for the student's
     shots           (criteria 1 and 2) the lab's own BulletWorld with its wall: >= 100 shots
@@ -147,7 +148,7 @@ def _toi_reference(p1, v1, r1, p2, v2, r2, dt):
     earlier = (-b - math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
     return {"want": analytic_toi(p1, v1, r1, p2, v2, r2, dt), "later": later, "earlier": earlier, "c": c,
             "forms": {"no_two": _toi_with(a, b, c, dt, 1.0), "four": _toi_with(a, b, c, dt, 4.0),
-                      "a_unsquared": _toi_with(math.sqrt(a), b, c, dt, 2.0)}}
+                      "a_unsquared": _toi_with(math.sqrt(a), b, c, dt, 2.0), "b_sign": _toi_with(a, -b, c, dt, 2.0)}}
 
 
 @reference
@@ -290,11 +291,34 @@ def probe_impact(module, lab_path):
             cases.append({"case": name, "got": _plain_hit(got), "exact_tests": calls[0], "needs_exact": exact})
             if judging(module):
                 cases[-1]["want"] = _plain_hit(reference_impact(*given, dt))
+                cases[-1]["forms"] = _broad_forms_reference(*given, dt)
         return cases
     finally:
         module.circle_toi, module.bounding_radius = own[0], own[1]
         if own[2] is not None:
             module.circle_polygon_toi = own[2]
+
+
+# step 4's known wrong broad tests: name -> (the bullet's radius in the broad test, when it returns None)
+BROAD_MISTAKES = {
+    "zero_is_falsy": (True, lambda t: not t),           # `if not circle_toi(...)`: 0.0 (inside) counts as a miss
+    "inverted": (True, lambda t: t is not None),        # returns None when the bounding circle IS reached
+    "point_bullet": (False, lambda t: t is None),       # the bullet as a point, radius 0
+}
+
+
+@reference
+def _broad_forms_reference(bullet, other, dt):
+    """{name: {"hit": the answer, "exact_tests": 0 or 1}} of time_of_impact() with each known wrong broad test
+    (BROAD_MISTAKES), the lesson's circle_toi, bounding_radius and exact swept test around it."""
+    points = other.world_points()
+    forms = {}
+    for name, (with_radius, skips) in BROAD_MISTAKES.items():
+        t = reference_circle_toi(bullet.pos, bullet.vel, bullet.radius if with_radius else 0.0, other.pos, Vector2(),
+                                 reference_bounding_radius(points, other.pos), dt)
+        forms[name] = ({"hit": None, "exact_tests": 0} if skips(t) else
+                       {"hit": _plain_hit(reference_impact(bullet, other, dt)), "exact_tests": 1})
+    return forms
 
 
 # ---------------------------------------------------------------- step 5: swept_move
@@ -422,8 +446,9 @@ def _outcome(world, bullet):
 # the usual step-5 mistakes: "stops" (the rest of the step not spent), "old_velocity" (the rest spent with the
 # velocity from before the hit), "whole_step" (a whole dt after the impact), "no_impulse" (nothing changes at the
 # impact: no resolve(), or one given the normal reversed, which sees the bodies separating), "far_side" (the
-# contact point on the bullet's far side, pos - normal r)
-SWEPT_MISTAKES = ("stops", "old_velocity", "whole_step", "no_impulse", "far_side")
+# contact point on the bullet's far side, pos - normal r), "resolve_first" (resolved where the step starts, at
+# pos + normal r there, then moved the whole dt with the new velocity)
+SWEPT_MISTAKES = ("stops", "old_velocity", "whole_step", "no_impulse", "far_side", "resolve_first")
 
 
 @reference
@@ -431,6 +456,10 @@ def _swept_mistake(make, name):
     """The outcome of one step of the swept move with the mistake `name`, in a fresh world from make()."""
     world, bullet = make()
     t, normal, other = first_hit(world, bullet)
+    if name == "resolve_first":
+        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
+        bullet.pos += bullet.vel * STEP
+        return _outcome(world, bullet)
     start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
     bullet.pos += velocity * t
     if name != "no_impulse":

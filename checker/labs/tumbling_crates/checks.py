@@ -220,6 +220,40 @@ def _depth_mistake(case, depth):
     return ""
 
 
+# step 2's known wrong loops named by their own words (probes.SAT_LOOPS); the others (the largest overlap, one
+# shape's normals, the closing edge left out, `break`) keep _depth_mistake's and the apart message's words
+SAT_MISTAKES = {
+    "gap_continue": " On an axis with a gap, sat() goes on to the next axis (`continue`) instead of returning None "
+                    "(that gives your answer for every pair): one axis with a gap means the shapes are apart.",
+    "one_sided": " That is what overlap = max_a - min_b gives for every pair: it holds only while B lies on A's "
+                 "positive side of the axis; the overlap is min(max_a, max_b) - max(min_a, min_b).",
+    "union": " That is the length of both shadows together, max(max_a, max_b) - min(min_a, min_b), for every pair; "
+             "the overlap is the part they share, min(max_a, max_b) - max(min_a, min_b).",
+    "a_twice": " That is A's own width along the axis, for every pair: min_b, max_b come from project(pa, axis); B's "
+               "shadow is project(pb, axis).",
+    "unnormalised": " That is what axes (-e.y, e.x) not divided by their length give for every pair: a projection "
+                    "on an axis of length |e| is |e| times too long. Normalise each axis (edge_normals does).",
+}
+
+
+def _same_hit(got, form):
+    """The student's sat() answer is `form` (a probes.SAT_LOOPS answer): both None, or the same depth and axis
+    up to its sign (step 3, the lesson's in the step-2 probe, may have turned it round)."""
+    if got is None or form is None:
+        return got is None and form is None
+    if form == "raises" or "bad" in got:
+        return False
+    return _close(abs(got["depth"]), form["depth"]) and any(
+        all(_close(g, sign * f) for g, f in zip(got["normal"], form["normal"])) for sign in (1, -1))
+
+
+def _sat_mistake(cases, case):
+    """The sentence of the one known wrong step-2 loop that gives the student's answer for every pair, or ''."""
+    differs = [name for name, form in case.get("mistakes", {}).items() if not _same_hit(case["lesson"], form)]
+    named = consistent_mistake(cases, lambda c, name: _same_hit(c["got"], c["mistakes"][name]), differs)
+    return SAT_MISTAKES.get(named, "")
+
+
 @CHECKS.check(depends=["loads"])
 def sat_axes(sub, functions):
     """Step 2: sat() finds the smallest overlap over both shapes' edge normals (depth and axis), and None when apart."""
@@ -246,29 +280,56 @@ def sat_axes(sub, functions):
                 gap_a = any(o <= 0 for _, o, _ in overlaps[:count_a])
                 where = "A's" if gap_a else "B's"
                 raise Fail(f"sat() says {label} overlaps by {got['depth']:.2f} px, but the shapes are apart: one of "
-                           f"{where} edge normals shows a gap between the shadows.", HINTS["sat_apart"])
+                           f"{where} edge normals shows a gap between the shadows." + _sat_mistake(cases, case),
+                           HINTS["sat_apart"])
             continue
         if got is None:
             raise Fail(f"sat() says {label} is apart, but the shapes overlap by {want['depth']:.2f} px (the smallest "
-                       f"overlap, along {_vec(want['normal'])}).", HINTS["sat_depth"])
+                       f"overlap, along {_vec(want['normal'])})." + _sat_mistake(cases, case), HINTS["sat_depth"])
         depth = abs(got["depth"])  # the depth's sign is step 3's business
         matches = [ref for ref in (want, short) if _close(depth, ref["depth"])]
         if not matches:
             deep = " (one shape is deep inside the other)" if not _close(want["depth"], short["depth"]) else ""
             raise Fail(f"sat() gives depth {abs(got['depth']):.4g} px for {label}{deep}; the smallest overlap is "
-                       f"{want['depth']:.4g} px along {_vec(want['normal'])}." + _depth_mistake(case, depth),
-                       HINTS["sat_depth"])
+                       f"{want['depth']:.4g} px along {_vec(want['normal'])}."
+                       + (_sat_mistake(cases, case) or _depth_mistake(case, depth)), HINTS["sat_depth"])
         ref = matches[0]["normal"]
         length = math.hypot(*got["normal"])
         if abs(length - 1) > 1e-6:
             raise Fail(f"sat() gives a normal of length {length:.4g} for {label}; the normal must be a unit vector "
-                       "(edge_normals gives unit axes).", HINTS["sat_depth"])
+                       "(edge_normals gives unit axes)." + _sat_mistake(cases, case), HINTS["sat_depth"])
         along = got["normal"][0] * ref[0] + got["normal"][1] * ref[1]
         if abs(abs(along) - 1) > 1e-6:
             raise Fail(f"sat() gives the right depth for {label} but the axis {_vec(got['normal'])}; the smallest "
                        f"overlap is along {_vec(ref)} (or its opposite). Keep best_axis and best_depth together.",
                        HINTS["sat_depth"])
     return Passed(f"all {len(cases)} pairs give the lesson's depth and axis", value=cases)
+
+
+# step 3's known wrong flips (probes._flip_mistakes_reference), named when one gives every pair's normal
+FLIP_MISTAKES = {
+    "not_flipped": " The axis is never turned round: every normal points the way edge_normals gave it.",
+    "reversed": " The flip test is the wrong way round: the axis is turned when it already points from A to B "
+                "((centre_b - centre_a)·n > 0, or (centre_a - centre_b)·n < 0, the same test), so every normal ends "
+                "up from B to A. Turn it when (centre_b - centre_a)·n < 0.",
+    "always_flipped": " The axis is turned round every time, without the test: that is right only for the pairs "
+                      "whose axis edge_normals gave from B to A. Turn it only when (centre_b - centre_a)·n < 0.",
+    "first_vertices": " The test uses pb[0] - pa[0], the first corners, instead of the centres: the first corners "
+                      "are not placed like the centres when the shapes differ in size or angle. Use "
+                      "centre_of(pb) - centre_of(pa).",
+}
+
+
+def _flip_mistake(cases, case):
+    """The sentence of the one known wrong step-3 flip that gives the student's normal for every pair, or ''."""
+    def gives(c, name):
+        form = c.get("flips", {}).get(name)
+        if form is None:   # the pair is apart: sat_axes already holds the student's None there
+            return c["got"] is None
+        return c["got"] is not None and all(_close(g, f) for g, f in zip(c["got"]["normal"], form))
+    differs = [name for name, form in case.get("flips", {}).items()
+               if not all(_close(f, w) for f, w in zip(form, case["lesson"]["normal"]))]
+    return FLIP_MISTAKES.get(consistent_mistake(cases, gives, differs), "")
 
 
 @CHECKS.check(depends=["loads", "sat_axes"])
@@ -302,7 +363,7 @@ def sat_normal(sub, functions, step2_cases):
         if towards_b < 0:
             flipped = (-got["normal"][0], -got["normal"][1])
             raise Fail(f"sat() gives normal {_vec(got['normal'])} for {_label(case)}: it points from B to A; "
-                       f"expected {_vec(flipped)}.", HINTS["normal_flipped"])
+                       f"expected {_vec(flipped)}." + _flip_mistake(cases, case), HINTS["normal_flipped"])
     return f"the normal points from A to B in all {len(cases)} pairs"
 
 

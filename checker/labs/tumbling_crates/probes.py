@@ -11,7 +11,9 @@ in checker/labs/tumbling_crates/checks.py read this data in the grading process 
 the first configuration that differs.
 
     sat            (step 2, step 3) lesson pairs, turned boxes, a pentagon, a hexagon, a deep hit,
-                   exact touching, far apart; every pair also with A and B swapped
+                   exact touching, far apart; every pair also with A and B swapped. Beside the lesson's
+                   answer, what step 2's known wrong loops (SAT_LOOPS) and step 3's known wrong flips
+                   give, so a message names one only when it alone fits every pair
     apply_impulse  (step 6) both bodies moving, A static, B static; masses and inertias far from 1,
                    off-centre points, spinning bodies
     resolve        (steps 4, 5) the same kinds of pairs, sliding both ways, the Coulomb clamp active
@@ -26,6 +28,7 @@ import math
 from pygame import Vector2
 
 from lesson11.physics2d import Body, box_points, centre_of, cross, edge_normals, relative_velocity  # noqa: F401
+from lesson11.physics2d import project
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
 from ...probe_kit import _plain, drawn_sat_pairs, judging, reference, reference_sat, sat_answer, sat_pairs, twin
@@ -62,9 +65,88 @@ def _sat_cases(module, sat, drawn=()):
                     "got": sat_answer(got)}
             if judging(module):   # the lesson's answers, in the grader only
                 case.update(lesson=_plain(reference_sat(first, second, "lesson")),
-                            short=_plain(reference_sat(first, second, "short")))
+                            short=_plain(reference_sat(first, second, "short")),
+                            mistakes=_sat_mistakes_reference(first, second),
+                            flips=_flip_mistakes_reference(first, second))
             cases.append(case)
     return cases
+
+
+# ---------------------------------------------------------------- the known wrong sat()s (steps 2 and 3)
+
+def _hand_axes(points, closing=True, unit=True):
+    """(-e.y, e.x) of each edge, built by hand as a student might: unit or not, the closing edge or not."""
+    count = len(points) if closing else len(points) - 1
+    axes = [Vector2(-e.y, e.x) for e in (points[(i + 1) % len(points)] - points[i] for i in range(count))]
+    return [axis.normalize() for axis in axes if axis.length_squared() > 0] if unit else axes
+
+
+def _lesson_overlap(shadow_a, shadow_b):
+    return min(shadow_a[1], shadow_b[1]) - max(shadow_a[0], shadow_b[0])
+
+
+# step 2's known wrong loops: name -> (axes, overlap from A's and B's shadows, on a gap, keep the largest)
+SAT_LOOPS = {
+    "gap_continue": ("both", _lesson_overlap, "continue", False),
+    "gap_break": ("both", _lesson_overlap, "break", False),
+    "one_sided": ("both", lambda a, b: a[1] - b[0], "return", False),
+    "union": ("both", lambda a, b: max(a[1], b[1]) - min(a[0], b[0]), "return", False),
+    "a_twice": ("both", lambda a, b: a[1] - a[0], "return", False),     # min_b, max_b from project(pa, axis)
+    "unnormalised": ("unnormalised", _lesson_overlap, "return", False),
+    "largest": ("both", _lesson_overlap, "return", True),
+    "only_a": ("a", _lesson_overlap, "return", False),
+    "only_b": ("b", _lesson_overlap, "return", False),
+    "no_closing": ("no_closing", _lesson_overlap, "return", False),
+}
+
+
+def _loop_axes(which, pa, pb):
+    if which == "unnormalised":
+        return _hand_axes(pa, unit=False) + _hand_axes(pb, unit=False)
+    if which == "no_closing":
+        return _hand_axes(pa, closing=False) + _hand_axes(pb, closing=False)
+    return (edge_normals(pa) if which in ("both", "a") else []) + (edge_normals(pb) if which in ("both", "b") else [])
+
+
+@reference
+def _sat_mistakes_reference(pa, pb):
+    """{name: what step 2's known wrong loop (SAT_LOOPS) gives for pa, pb}: None, "raises" (no axis kept, so
+    step 3's dot product raises) or {"normal", "depth"} with the axis as the loop kept it (not turned round)."""
+    out = {}
+    for name, (which, overlap_of, on_gap, largest) in SAT_LOOPS.items():
+        best_axis, best_depth, answer = None, 0.0 if largest else math.inf, None
+        for axis in _loop_axes(which, pa, pb):
+            overlap = overlap_of(project(pa, axis), project(pb, axis))
+            if overlap <= 0 and on_gap != "continue":
+                if on_gap == "break":
+                    break
+                answer = "apart"
+                break
+            if overlap > 0 and (overlap > best_depth if largest else overlap < best_depth):
+                best_axis, best_depth = axis, overlap
+        if answer == "apart":
+            out[name] = None
+        else:
+            out[name] = "raises" if best_axis is None else {"normal": [best_axis.x, best_axis.y], "depth": best_depth}
+    return out
+
+
+@reference
+def _flip_mistakes_reference(pa, pb):
+    """{name: the normal step 3's known wrong flip gives after the lesson's step 2}, {} when the pair is apart.
+
+    not_flipped: no test; reversed: turned when (centre_b - centre_a)·n > 0 (the same as (centre_a - centre_b)·n
+    < 0); always_flipped: turned without a test; first_vertices: the test made with pb[0] - pa[0].
+    """
+    overlaps = axis_overlaps(pa, pb)   # (axis, the lesson's overlap, the shorter way out) per edge normal
+    if any(overlap <= 0 for _, overlap, _ in overlaps):
+        return {}
+    best_axis = min(overlaps, key=lambda item: item[1])[0]   # the first of equal overlaps, as `<` keeps
+    towards = (centre_of(pb) - centre_of(pa)).dot(best_axis)
+    forms = {"not_flipped": best_axis, "reversed": -best_axis if towards > 0 else best_axis,
+             "always_flipped": -best_axis,
+             "first_vertices": -best_axis if (pb[0] - pa[0]).dot(best_axis) < 0 else best_axis}
+    return {name: [axis.x, axis.y] for name, axis in forms.items()}
 
 
 # ---------------------------------------------------------------- bodies for apply_impulse and resolve
