@@ -122,17 +122,21 @@ class WorldPoints(list):
 
     A plain list that also keeps the edge normals once collision.edge_normals
     has worked them out (attribute `normals`, None until then), and the edges
-    once collision.polygon_edges has (attribute `edges`): a body tested against
-    several others in one contact search computes them once.
+    once collision.polygon_edges has (attribute `edges`), and the same for the
+    center (collision.center_of) and the edges as plain floats (`flat_edges`,
+    collision's fast contact points): a body tested against several others in
+    one contact search computes them once.
     It is a snapshot: the world makes new ones after the bodies move, and the
     normals and edges describe the corners as they were when first asked for.
     """
-    __slots__ = ("normals", "edges")
+    __slots__ = ("normals", "edges", "center", "flat_edges")
 
     def __init__(self, points=()):
         super().__init__(points)
         self.normals = None
         self.edges = None
+        self.center = None
+        self.flat_edges = None
 
 
 class Polygon:

@@ -636,6 +636,9 @@ class World:
         for the others, so a sleeping pile next to one moving crate costs only
         the crates near it (its sweep uses pos ± the bounding radius).
         """
+        if collision.FAST_PATHS and not speculative and "sleep" not in self.effects:
+            yield from _plain_manifolds(self)  # the same search on plain lists (the lab's case)
+            return
         bodies = self.bodies
         sleep = "sleep" in self.effects
         moving = [self.moves(body) for body in bodies] if sleep else [body.inv_mass != 0 for body in bodies]
@@ -710,3 +713,55 @@ class _Geometry:
         if k not in self.boxes:
             self.boxes[k] = self.bodies[k].aabb(self.points(k))
         return self.boxes[k]
+
+
+def _plain_manifolds(world):
+    """World.manifolds() without "sleep" or speculative contacts, on plain lists: the same pairs, calls and floats.
+
+    Every body's world points and box are computed up front (as _Geometry does
+    without "sleep"), boxes of polygons from their points' x and y (min, max, as
+    Body.aabb), and a pair of polygons under the corners rule calls the World's
+    sat and collision.contact_points directly (collide's own path for it, less
+    its dispatch); other pairs go through collision.collide. The reference is
+    the rest of manifolds(), which collision.FAST_PATHS = False runs.
+    """
+    bodies = world.bodies
+    moving = [body.inv_mass != 0 for body in bodies]
+    if True not in moving:
+        return
+    points = [body.world_points() for body in bodies]
+    boxes = []
+    for body, corners in zip(bodies, points):
+        if body.shape.kind == "polygon":
+            xs = [p.x for p in corners]
+            ys = [p.y for p in corners]
+            boxes.append((min(xs), min(ys), max(xs), max(ys)))
+        else:
+            boxes.append(body.aabb(corners))
+    search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
+    pairs, tested = search(boxes, moving, None, 0.0, boxes)
+    world.counters["pair_tests"] += tested
+    sat, rule = world.sat, world.contact_rule
+    circle_polygon, circle_point = world.circle_polygon, world.circle_point
+    contact_points, collide, manifold_of = collision.contact_points, collision.collide, collision.Manifold
+    narrow = contacts = 0
+    try:
+        for i, j in pairs:
+            a, b = bodies[i], bodies[j]
+            narrow += 1
+            if rule == "corners" and a.shape.kind == "polygon" and b.shape.kind == "polygon":
+                hit = sat(points[i], points[j])
+                if hit is None:
+                    continue
+                normal, depth = hit
+                found = contact_points(points[i], points[j], normal)
+                manifold = manifold_of(normal, depth, found, [depth] * len(found))
+            else:
+                manifold = collide(a, b, points[i], points[j], rule, sat, 0.0, circle_polygon, circle_point)
+                if manifold is None:
+                    continue
+            contacts += len(manifold.points)
+            yield a, b, manifold
+    finally:
+        world.counters["narrow_tests"] += narrow
+        world.counters["contacts"] += contacts
