@@ -24,14 +24,14 @@ Definitions (per frame, in ms):
            collide and search glue, the resolve-pass loop, the push-out, integration
   share    engine / (lab + engine)
 The split is measured on a second copy whose hooks are wrapped in a timer
-(CLOCK = time.process_time, CPU time, read before and after each call; about 1 µs a
-read here, so the wrapped copy runs slower and the correction matters). The wrappers' own cost
-is measured (calibrate(): a wrapped no-op against a bare one, median of 5) and
-removed: each call's added time from the frame, and the part the wrapper counts
-inside the call from the lab's time. The "check" column divides the wrapped copy's
-frame, overhead removed, by the unwrapped copy's frame (same steps of the same
-pile: 1.00 means the subtraction is right). CPU time, not wall time: on a shared
-machine the wall clock also counts the waits for a core (the load average is printed).
+(CLOCK = time.process_time, CPU time, read before and after each call; on a shared
+machine the wall clock also counts the waits for a core). The two copies run the
+same steps of the same pile, frame by frame in turn, so the wrappers' own cost per
+call is measured in the run itself: (wrapped frame - plain frame) / calls (the
+"timer" column, about 2 µs: two reads of the CPU clock, each a system call). The
+part of it the wrappers count inside the calls is removed from the lab's time, in
+the proportion a calibration loop finds (calibrate(): a wrapped no-op against a
+bare one, median of 5; printed first), and engine = plain frame - lab.
 
 In the same run, on the same pile: the lesson listing's own solver
 (lesson11/bench/listing.py: move first, all pairs, 6 passes, one step per 1/120 s)
@@ -145,7 +145,7 @@ def lab_hooks(world):
 
 
 def measure(pile, setting, frames, overhead):
-    """One setting on copies of the pile: {"frame", "lab", "engine", "check"} ms per frame, and "calls" per frame."""
+    """One setting on copies of the pile: {"frame", "lab", "engine"} ms per frame, "timer" µs per call, "calls" a frame."""
     plain, timed = copy.deepcopy(pile), copy.deepcopy(pile)
     tally = [0.0, 0]
     for world in (plain, timed):
@@ -163,12 +163,12 @@ def measure(pile, setting, frames, overhead):
         for _ in range(STEPS_PER_FRAME):
             timed.step()
         wrapped += CLOCK() - start
-    added, inside = overhead
     calls = tally[1]
-    total = wrapped - calls * added
+    added = (wrapped - cpu) / calls if calls else 0.0   # the wrappers' cost per call, in this run
+    inside = added * overhead[1] / overhead[0]          # the part of it counted inside the calls
     lab = tally[0] - calls * inside
-    return {"frame": 1000 * cpu / frames, "lab": 1000 * lab / frames, "engine": 1000 * (total - lab) / frames,
-            "check": total / cpu, "calls": calls / frames}
+    return {"frame": 1000 * cpu / frames, "lab": 1000 * lab / frames, "engine": 1000 * (cpu - lab) / frames,
+            "timer": 1e6 * added, "calls": calls / frames}
 
 
 def other_engine(make, pile, frames):
@@ -185,7 +185,8 @@ def other_engine(make, pile, frames):
 def run(sizes, frames, settle_frames, say=print):
     """Every size and setting: a list of table rows (dicts)."""
     overhead = calibrate()
-    say(f"timer overhead per wrapped call: {1e9 * overhead[0]:.0f} ns added, {1e9 * overhead[1]:.0f} ns counted inside")
+    say(f"calibration: a wrapped call costs {1e9 * overhead[0]:.0f} ns, of which {1e9 * overhead[1]:.0f} ns "
+        f"({100 * overhead[1] / overhead[0]:.0f} %) is counted inside the call")
     rows = []
     for count in sizes:
         started = time.perf_counter()
@@ -204,7 +205,7 @@ def run(sizes, frames, settle_frames, say=print):
 
 def table(rows):
     """The rows as a Markdown table."""
-    lines = ["| crates | setting | frame ms (CPU) | lab's functions ms | engine ms | engine share | check | "
+    lines = ["| crates | setting | frame ms (CPU) | lab's functions ms | engine ms | engine share | timer µs/call | "
              "lab calls/frame | listing × the lab | pymunk × the lab |", "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for row in rows:
         share = row["engine"] / (row["lab"] + row["engine"])
@@ -212,7 +213,7 @@ def table(rows):
         pymunk = ("not installed" if "pymunk" in row and row["pymunk"] is None
                   else f"{row['pymunk']:.4f}" if row.get("pymunk") is not None else "")
         lines.append(f"| {row['crates']} | {row['setting']} | {row['frame']:.2f} | {row['lab']:.2f} | "
-                     f"{row['engine']:.2f} | {100 * share:.1f} % | {row['check']:.2f} | {row['calls']:.0f} | "
+                     f"{row['engine']:.2f} | {100 * share:.1f} % | {row['timer']:.2f} | {row['calls']:.0f} | "
                      f"{listing} | {pymunk} |")
     return "\n".join(lines)
 

@@ -9,6 +9,7 @@ reported as no contact, so a pair pushed out by exactly its depth stays apart
 despite rounding.
 """
 import math
+from math import sqrt
 from collections import namedtuple
 
 from .shapes import WorldPoints
@@ -260,11 +261,11 @@ def contact_points(pa, pb, normal):
     if not FAST_PATHS:
         return contact_points_reference(pa, pb, normal)
     corners = []
-    for points, edges in ((pa, flat_edges(pb)), (pb, flat_edges(pa))):
-        for p in points:
-            px, py = p.x, p.y
+    edges_a, edges_b = flat_edges(pa), flat_edges(pb)
+    for points, own, other in ((pa, edges_a, edges_b), (pb, edges_b, edges_a)):
+        for p, (px, py, _, _, _) in zip(points, own):  # own[i] starts at corner i: its x and y
             left = right = False
-            for ax, ay, ex, ey, limit in edges:  # inside_edges on floats: side = e × (p - a)
+            for ax, ay, ex, ey, limit in other:  # inside_edges on floats: side = e × (p - a)
                 side = ex * (py - ay) - ey * (px - ax)
                 if side > limit:
                     left = True
@@ -293,12 +294,11 @@ def flat_edges(points):
     kept = isinstance(points, WorldPoints)
     if kept and points.flat_edges is not None:
         return points.flat_edges
+    coords = [(p.x, p.y) for p in points]
     edges = []
-    count = len(points)
-    for i, a in enumerate(points):
-        b = points[(i + 1) % count]
-        ex, ey = b.x - a.x, b.y - a.y
-        edges.append((a.x, a.y, ex, ey, TOUCH_TOLERANCE * math.sqrt(ex * ex + ey * ey)))
+    for (ax, ay), (bx, by) in zip(coords, coords[1:] + coords[:1]):
+        ex, ey = bx - ax, by - ay
+        edges.append((ax, ay, ex, ey, TOUCH_TOLERANCE * sqrt(ex * ex + ey * ey)))
     if kept:
         points.flat_edges = edges
     return edges

@@ -719,8 +719,7 @@ def _plain_manifolds(world):
     """World.manifolds() without "sleep" or speculative contacts, on plain lists: the same pairs, calls and floats.
 
     Every body's world points and box are computed up front (as _Geometry does
-    without "sleep"), boxes of polygons from their points' x and y (min, max, as
-    Body.aabb), and a pair of polygons under the corners rule calls the World's
+    without "sleep"), boxes of polygons by _polygon_box, and a pair of polygons under the corners rule calls the World's
     sat and collision.contact_points directly (collide's own path for it, less
     its dispatch); other pairs go through collision.collide. The reference is
     the rest of manifolds(), which collision.FAST_PATHS = False runs.
@@ -733,9 +732,7 @@ def _plain_manifolds(world):
     boxes = []
     for body, corners in zip(bodies, points):
         if body.shape.kind == "polygon":
-            xs = [p.x for p in corners]
-            ys = [p.y for p in corners]
-            boxes.append((min(xs), min(ys), max(xs), max(ys)))
+            boxes.append(_polygon_box(corners))
         else:
             boxes.append(body.aabb(corners))
     search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
@@ -765,3 +762,27 @@ def _plain_manifolds(world):
     finally:
         world.counters["narrow_tests"] += narrow
         world.counters["contacts"] += contacts
+
+
+def _polygon_box(corners):
+    """Body.aabb of a polygon from its world corners: (min x, min y, max x, max y) px; unrolled for four corners.
+
+    The same comparisons as min() and max() (the first of equal values kept), so the same floats.
+    """
+    if len(corners) != 4:
+        xs = [p.x for p in corners]
+        ys = [p.y for p in corners]
+        return (min(xs), min(ys), max(xs), max(ys))
+    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = corners
+    left = right = x0
+    top = bottom = y0
+    for x, y in ((x1, y1), (x2, y2), (x3, y3)):
+        if x < left:
+            left = x
+        if x > right:
+            right = x
+        if y < top:
+            top = y
+        if y > bottom:
+            bottom = y
+    return (left, top, right, bottom)
