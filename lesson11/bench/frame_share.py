@@ -15,8 +15,8 @@ the lesson listing's 1 × 6 (World(substeps=1, iterations=6), solve-first).
 Definitions (per frame, in ms):
   frame    the CPU time (time.process_time) of the two World.step calls, measured on
            a copy whose hooks are not wrapped: the time the lab really takes
-  lab      the time inside the lab's own functions the World calls (its hooks whose
-           function lives in the lab file: sat and resolve), inclusive: with
+  lab      the time inside the lab's own functions the World calls (its hooks that are
+           not the library's, lesson11/hook_clock.lab_hooks: sat and resolve), inclusive: with
            everything they call, i.e. apply_impulse, and the library's project,
            edge_normals, centre_of, spin_velocity and cross (the issue's grouping:
            the student's code and the helpers it chooses to call)
@@ -30,8 +30,8 @@ same steps of the same pile, frame by frame in turn, so the wrappers' own cost p
 call is measured in the run itself: (wrapped frame - plain frame) / calls (the
 "timer" column, about 2 µs: two reads of the CPU clock, each a system call). The
 part of it the wrappers count inside the calls is removed from the lab's time, in
-the proportion a calibration loop finds (calibrate(): a wrapped no-op against a
-bare one, median of 5; printed first), and engine = plain frame - lab.
+the proportion a calibration loop finds (a wrapped no-op against a
+bare one, median of 5, hook_clock.calibrate; printed first), and engine = plain frame - lab.
 
 In the same run, on the same pile: the lesson listing's own solver
 (lesson11/bench/listing.py: move first, all pairs, 6 passes, one step per 1/120 s)
@@ -42,10 +42,11 @@ import argparse
 import copy
 import math
 import os
-import statistics
 import time
 
 from lesson11.physics2d import Body, box_points
+
+from lesson11 import hook_clock
 
 from . import energy, speed
 
@@ -57,7 +58,6 @@ QUICK_FRAMES = {12: 3, 40: 2}
 WAVES = 12                 # the clicks come in 12 waves, 20 frames apart (12 crates: one click a wave)
 STEPS_PER_FRAME = energy.STEPS_PER_FRAME
 CLOCK = time.process_time  # CPU s: on a shared machine the wall clock also counts waiting for a core
-HOOKS = ("sat", "resolve", "separate", "circle_polygon", "circle_point")
 
 
 # ---------------------------------------------------------------- the clicked pile
@@ -95,55 +95,6 @@ def clicked_pile(count, settle_frames=SETTLE_FRAMES):
 
 # ---------------------------------------------------------------- timing the lab's hooks
 
-def wrap(function, tally):
-    """function, timed: each call adds its CLOCK seconds to tally[0] and 1 to tally[1]."""
-    clock = CLOCK
-
-    def timed(*args):
-        start = clock()
-        result = function(*args)
-        tally[0] += clock() - start
-        tally[1] += 1
-        return result
-    return timed
-
-
-def calibrate(calls=100_000, repeats=5):
-    """The wrapper's own cost (s per call): (added to the caller's time, counted inside the call); medians.
-
-    A no-op called with four arguments, bare and wrapped, and an empty loop:
-    added = (wrapped loop - bare loop) / calls; inside = counted inside / calls - (bare loop - empty loop) / calls.
-    """
-    def noop(a, b, c, d):
-        return None
-    added, inside = [], []
-    clock = CLOCK
-    for _ in range(repeats):
-        tally = [0.0, 0]
-        timed = wrap(noop, tally)
-        start = clock()
-        for _ in range(calls):
-            pass
-        empty = clock() - start
-        start = clock()
-        for _ in range(calls):
-            noop(1, 2, 3, 4)
-        bare = clock() - start
-        start = clock()
-        for _ in range(calls):
-            timed(1, 2, 3, 4)
-        wrapped = clock() - start
-        added.append((wrapped - bare) / calls)
-        inside.append(tally[0] / calls - (bare - empty) / calls)
-    return statistics.median(added), statistics.median(inside)
-
-
-def lab_hooks(world):
-    """The names of the World's hooks that are the lab's own functions (defined in the lab file)."""
-    module = energy.lab().__name__
-    return [name for name in HOOKS if getattr(getattr(world, name), "__module__", None) == module]
-
-
 def measure(pile, setting, frames, overhead):
     """One setting on copies of the pile: {"frame", "lab", "engine"} ms per frame, "timer" µs per call, "calls" a frame."""
     plain, timed = copy.deepcopy(pile), copy.deepcopy(pile)
@@ -151,8 +102,8 @@ def measure(pile, setting, frames, overhead):
     for world in (plain, timed):
         for name, value in setting.items():
             setattr(world, name, value)
-    for name in lab_hooks(timed):
-        setattr(timed, name, wrap(getattr(timed, name), tally))
+    for name, function in hook_clock.lab_hooks(timed).items():
+        setattr(timed, name, hook_clock.wrap(function, tally, CLOCK))
     cpu = wrapped = 0.0
     for _ in range(frames):  # the two copies take turns, frame by frame: the machine's load hits both alike
         start = CLOCK()
@@ -184,7 +135,7 @@ def other_engine(make, pile, frames):
 
 def run(sizes, frames, settle_frames, say=print):
     """Every size and setting: a list of table rows (dicts)."""
-    overhead = calibrate()
+    overhead = hook_clock.calibrate(CLOCK)
     say(f"calibration: a wrapped call costs {1e9 * overhead[0]:.0f} ns, of which {1e9 * overhead[1]:.0f} ns "
         f"({100 * overhead[1] / overhead[0]:.0f} %) is counted inside the call")
     rows = []
