@@ -157,11 +157,11 @@ def real_time_line(world, settings, ms_per_step):
              if other["on_front"] and (other["solver"], other["order"]) == (row["solver"], row["order"])]
     fits = [other for other in front if other["ms_per_step"] * scale * steps <= FRAME_BUDGET_MS * REAL_TIME_SHARE]
     if not fits:
-        return "real time here: no setting on the front (this machine is too slow)"
+        return "real time here: no setting on the front"
     best = min(fits, key=lambda other: other["pile_speed"])
     label = f"{best['substeps']} × {best['iterations']}"
     here = best["ms_per_step"] * scale * steps
-    return f"real time here: {label} at best on the front ({here:.1f} ms/frame)"
+    return f"real time here: best on the front {label}, {here:.1f} ms/frame"
 
 
 def split_text(split):

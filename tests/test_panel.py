@@ -499,11 +499,13 @@ def test_real_time_line_names_the_most_accurate_front_setting_this_machine_can_r
     world = small_world()   # 1/120 s steps: 2 a frame; budget 0.8 × 16.7 = 13.3 ms a frame, 6.7 ms a step
     now = {"solver": "lesson", "substeps": 4, "iterations": 6}
     # this machine as fast as the study's: 4 × 6 (8 ms a step) does not fit, 2 × 4 (4 ms) does
-    assert lp.real_time_line(world, now, 8.0) == "real time here: 2 × 4 at best on the front (8.0 ms/frame)"
+    assert lp.real_time_line(world, now, 8.0) == "real time here: best on the front 2 × 4, 8.0 ms/frame"
     # twice as fast: 4 × 6 fits; 8 × 6 (16 ms at the study, 8 here) does not; the 2 × 6 off the front is never named
-    assert lp.real_time_line(world, now, 4.0) == "real time here: 4 × 6 at best on the front (8.0 ms/frame)"
+    assert lp.real_time_line(world, now, 4.0) == "real time here: best on the front 4 × 6, 8.0 ms/frame"
     # 8× slower: not even 1 × 6 fits
-    assert lp.real_time_line(world, now, 64.0) == "real time here: no setting on the front (this machine is too slow)"
+    assert lp.real_time_line(world, now, 64.0) == "real time here: no setting on the front"
     # a setting the study did not measure, or no step yet: no line
     assert lp.real_time_line(world, {"solver": "lesson", "substeps": 3, "iterations": 6}, 4.0) is None
     assert lp.real_time_line(world, now, 0.0) is None
+    widest = "real time here: best on the front 16 × 20, 13.3 ms/frame"   # the longest a line gets
+    assert lp.LabPanel().text(widest).get_width() <= lp.PANEL_WIDTH - 2 * lp.PADDING
