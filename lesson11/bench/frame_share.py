@@ -10,7 +10,11 @@ the same grid with more columns, and the floor and wall moved out to hold them, 
 40 and 200), a wave of clicks every 20 frames, then SETTLE_FRAMES frames of settling.
 That pile is copied (copy.deepcopy) and each copy runs `frames` 60 fps frames of
 two 1/120 s steps with World's default setting (4 sub-steps × 6 passes) and with
-the lesson listing's 1 × 6 (World(substeps=1, iterations=6), solve-first).
+the lesson listing's 1 × 6 (World(substeps=1, iterations=6), solve-first). Each
+is measured twice in the same turns: with physics2d's fast paths (as the lab runs)
+and with the readable reference forms they replace (collision.fast_paths(False):
+the same numbers, bit for bit, tests/test_fast_paths.py), so the table shows what
+the fast paths buy, side by side.
 
 Definitions (per frame, in ms):
   frame    the CPU time (time.process_time) of the two World.step calls, measured on
@@ -44,9 +48,8 @@ import math
 import os
 import time
 
-from lesson11.physics2d import Body, box_points
-
 from lesson11 import hook_clock
+from lesson11.physics2d import Body, box_points, collision
 
 from . import energy, speed
 
@@ -57,6 +60,7 @@ FRAMES = {12: 60, 40: 30, 200: 8}   # timed 60 fps frames per setting
 QUICK_FRAMES = {12: 3, 40: 2}
 WAVES = 12                 # the clicks come in 12 waves, 20 frames apart (12 crates: one click a wave)
 STEPS_PER_FRAME = energy.STEPS_PER_FRAME
+FORMS = ("fast", "reference")  # collision.fast_paths(True) and (False)
 CLOCK = time.process_time  # CPU s: on a shared machine the wall clock also counts waiting for a core
 
 
@@ -96,30 +100,37 @@ def clicked_pile(count, settle_frames=SETTLE_FRAMES):
 # ---------------------------------------------------------------- timing the lab's hooks
 
 def measure(pile, setting, frames, overhead):
-    """One setting on copies of the pile: {"frame", "lab", "engine"} ms per frame, "timer" µs per call, "calls" a frame."""
-    plain, timed = copy.deepcopy(pile), copy.deepcopy(pile)
-    tally = [0.0, 0]
-    for world in (plain, timed):
-        for name, value in setting.items():
-            setattr(world, name, value)
-    for name, function in hook_clock.lab_hooks(timed).items():
-        setattr(timed, name, hook_clock.wrap(function, tally, CLOCK))
-    cpu = wrapped = 0.0
-    for _ in range(frames):  # the two copies take turns, frame by frame: the machine's load hits both alike
-        start = CLOCK()
-        for _ in range(STEPS_PER_FRAME):
-            plain.step()
-        cpu += CLOCK() - start
-        start = CLOCK()
-        for _ in range(STEPS_PER_FRAME):
-            timed.step()
-        wrapped += CLOCK() - start
-    calls = tally[1]
-    added = (wrapped - cpu) / calls if calls else 0.0   # the wrappers' cost per call, in this run
-    inside = added * overhead[1] / overhead[0]          # the part of it counted inside the calls
-    lab = tally[0] - calls * inside
-    return {"frame": 1000 * cpu / frames, "lab": 1000 * lab / frames, "engine": 1000 * (cpu - lab) / frames,
-            "timer": 1e6 * added, "calls": calls / frames}
+    """One setting on copies of the pile, with the fast paths and with the readable reference forms:
+    {"fast": figures, "reference": figures}, each {"frame", "lab", "engine"} ms per frame, "timer" µs per call
+    and "calls" a frame."""
+    copies = {}
+    for form in FORMS:
+        copies[form] = plain, timed = copy.deepcopy(pile), copy.deepcopy(pile)
+        for world in (plain, timed):
+            for name, value in setting.items():
+                setattr(world, name, value)
+    tallies = {form: [0.0, 0] for form in FORMS}
+    for form, (_, timed) in copies.items():
+        for name, function in hook_clock.lab_hooks(timed).items():
+            setattr(timed, name, hook_clock.wrap(function, tallies[form], CLOCK))
+    spent = {(form, kind): 0.0 for form in FORMS for kind in (0, 1)}
+    for _ in range(frames):  # the copies take turns, frame by frame: the machine's load hits all alike
+        for form, worlds in copies.items():
+            with collision.fast_paths(form == "fast"):
+                for kind, world in enumerate(worlds):
+                    start = CLOCK()
+                    for _ in range(STEPS_PER_FRAME):
+                        world.step()
+                    spent[form, kind] += CLOCK() - start
+    figures = {}
+    for form, (total, calls) in tallies.items():
+        cpu, wrapped = spent[form, 0], spent[form, 1]
+        added = (wrapped - cpu) / calls if calls else 0.0   # the wrappers' cost per call, in this run
+        inside = added * overhead[1] / overhead[0]          # the part of it counted inside the calls
+        lab = total - calls * inside
+        figures[form] = {"frame": 1000 * cpu / frames, "lab": 1000 * lab / frames,
+                         "engine": 1000 * (cpu - lab) / frames, "timer": 1e6 * added, "calls": calls / frames}
+    return figures
 
 
 def other_engine(make, pile, frames):
@@ -146,26 +157,32 @@ def run(sizes, frames, settle_frames, say=print):
         others = {"listing": other_engine(speed.ListingEngine, pile, frames[count])}
         others["pymunk"] = other_engine(speed.PymunkEngine, pile, frames[count]) if speed.pymunk_available() else None
         for label, setting in SETTINGS.items():
-            row = dict(measure(pile, setting, frames[count], overhead), crates=count, setting=label)
-            rows.append(row)
+            figures = measure(pile, setting, frames[count], overhead)
+            rows.append(dict(figures["fast"], crates=count, setting=label, reference=figures["reference"]))
         default = rows[-len(SETTINGS)]["frame"]
         for name, ms in others.items():
             rows[-len(SETTINGS)][name] = None if ms is None else ms / default
     return rows
 
 
+def share(figures):
+    """The engine's share of the frame, engine / (lab + engine)."""
+    return figures["engine"] / (figures["lab"] + figures["engine"])
+
+
 def table(rows):
     """The rows as a Markdown table."""
-    lines = ["| crates | setting | frame ms (CPU) | lab's functions ms | engine ms | engine share | timer µs/call | "
-             "lab calls/frame | listing × the lab | pymunk × the lab |", "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    lines = ["| crates | setting | frame ms (CPU) | lab's functions ms | engine ms | engine share | "
+             "reference forms: frame ms, engine share | timer µs/call | lab calls/frame | listing × the lab | "
+             "pymunk × the lab |", "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for row in rows:
-        share = row["engine"] / (row["lab"] + row["engine"])
         listing = f"{row['listing']:.2f}" if row.get("listing") is not None else ""
         pymunk = ("not installed" if "pymunk" in row and row["pymunk"] is None
                   else f"{row['pymunk']:.4f}" if row.get("pymunk") is not None else "")
+        reference = row["reference"]
         lines.append(f"| {row['crates']} | {row['setting']} | {row['frame']:.2f} | {row['lab']:.2f} | "
-                     f"{row['engine']:.2f} | {100 * share:.1f} % | {row['timer']:.2f} | {row['calls']:.0f} | "
-                     f"{listing} | {pymunk} |")
+                     f"{row['engine']:.2f} | {100 * share(row):.1f} % | {reference['frame']:.2f}, "
+                     f"{100 * share(reference):.1f} % | {row['timer']:.2f} | {row['calls']:.0f} | {listing} | {pymunk} |")
     return "\n".join(lines)
 
 

@@ -8,10 +8,12 @@ Exact touching counts as apart: an overlap of at most TOUCH_TOLERANCE px is
 reported as no contact, so a pair pushed out by exactly its depth stays apart
 despite rounding.
 """
+import contextlib
 import math
-from math import sqrt
 from collections import namedtuple
+from math import sqrt
 
+from . import vectors
 from .shapes import WorldPoints
 from .vectors import Vector2
 
@@ -23,6 +25,22 @@ SAME_POINT = Vector2().epsilon  # px: pygame's Vector2 == counts points this clo
 # contact search), which compute the same floats in the same order; False runs the readable reference forms.
 # tests/test_fast_paths.py steps every lab's scene both ways and compares every float bit for bit.
 FAST_PATHS = True
+
+
+@contextlib.contextmanager
+def fast_paths(on):
+    """Run a block with the fast paths on (True) or the readable reference forms (False), here and in vectors.py."""
+    old = FAST_PATHS, vectors.FAST_PATHS
+    _switch(on, on)
+    try:
+        yield
+    finally:
+        _switch(*old)
+
+
+def _switch(here, in_vectors):
+    global FAST_PATHS
+    FAST_PATHS, vectors.FAST_PATHS = here, in_vectors
 
 
 def edge_normals(points):
