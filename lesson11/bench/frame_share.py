@@ -88,7 +88,8 @@ def clicked_pile(count, settle_frames=SETTLE_FRAMES):
         wall.pos.x = right + 10
     clicks = {}
     for k, pos in enumerate(points):
-        clicks.setdefault((10 + 20 * (k * WAVES // count)) * STEPS_PER_FRAME, []).append(energy.lab().make_crate(rng, pos))
+        step = (10 + 20 * (k * WAVES // count)) * STEPS_PER_FRAME
+        clicks.setdefault(step, []).append(energy.lab().make_crate(rng, pos))
     last = max(clicks)
     for index in range(last + 1 + settle_frames * STEPS_PER_FRAME):
         for body in clicks.get(index, ()):
@@ -153,7 +154,8 @@ def run(sizes, frames, settle_frames, say=print):
     for count in sizes:
         started = time.perf_counter()
         pile = clicked_pile(count, settle_frames)
-        say(f"{count} crates clicked and settled in {time.perf_counter() - started:.0f} s; timing {frames[count]} frames")
+        say(f"{count} crates clicked and settled in {time.perf_counter() - started:.0f} s; "
+            f"timing {frames[count]} frames")
         others = {"listing": other_engine(speed.ListingEngine, pile, frames[count])}
         others["pymunk"] = other_engine(speed.PymunkEngine, pile, frames[count]) if speed.pymunk_available() else None
         for label, setting in SETTINGS.items():
@@ -182,13 +184,15 @@ def table(rows):
         reference = row["reference"]
         lines.append(f"| {row['crates']} | {row['setting']} | {row['frame']:.2f} | {row['lab']:.2f} | "
                      f"{row['engine']:.2f} | {100 * share(row):.1f} % | {reference['frame']:.2f}, "
-                     f"{100 * share(reference):.1f} % | {row['timer']:.2f} | {row['calls']:.0f} | {listing} | {pymunk} |")
+                     f"{100 * share(reference):.1f} % | {row['timer']:.2f} | {row['calls']:.0f} | {listing} | "
+                     f"{pymunk} |")
     return "\n".join(lines)
 
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="smoke run: 12 and 40 crates, a few frames (not a measurement)")
+    parser.add_argument("--quick", action="store_true",
+                        help="smoke run: 12 and 40 crates, a few frames (not a measurement)")
     args = parser.parse_args(argv)
     sizes, frames, settle = ((12, 40), QUICK_FRAMES, 20) if args.quick else (SIZES, FRAMES, SETTLE_FRAMES)
     load = " / ".join(f"{x:.2f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "n/a"
