@@ -95,6 +95,7 @@ def test_the_quick_forms_agree_with_the_readable_ones_on_random_input():
         pa, pb = a.world_points(), b.world_points()
         axis = Vector2(rng.uniform(-1, 1), rng.uniform(-1, 1))
         assert collision.project(pa, axis) == collision.project_reference(pa, axis)
+        assert collision.project(pa, tuple(axis)) == collision.project_reference(pa, tuple(axis))  # a lab's tuple axis
         omega, r = rng.choice([0.0, -0.0, rng.uniform(-9, 9)]), pa[0] - a.pos
         fast, slow = vectors.spin_velocity(omega, r), vectors.spin_velocity_reference(omega, r)
         assert (fast.x.hex(), fast.y.hex()) == (slow.x.hex(), slow.y.hex())

@@ -66,20 +66,19 @@ def edge_normals(points):
 def project(points, axis):
     """The shadow of the points on a unit axis: (min p·axis, max p·axis), in px (project_reference)."""
     if FAST_PATHS and len(points) == 4:  # a box: the reference's loop unrolled, the same comparisons in order
-        dot = axis.dot  # axis·p = p·axis: x ax + y ay, the same sum
         p0, p1, p2, p3 = points
-        lowest = highest = dot(p0)
-        d = dot(p1)
+        lowest = highest = p0.dot(axis)
+        d = p1.dot(axis)
         if d < lowest:
             lowest = d
         elif d > highest:
             highest = d
-        d = dot(p2)
+        d = p2.dot(axis)
         if d < lowest:
             lowest = d
         elif d > highest:
             highest = d
-        d = dot(p3)
+        d = p3.dot(axis)
         if d < lowest:
             lowest = d
         elif d > highest:
