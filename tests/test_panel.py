@@ -440,7 +440,9 @@ def test_full_view_says_where_a_frame_goes_and_changes_nothing():
         panel.draw(surface, timed)
         assert state(timed) == state(plain), f"frame {frame}: the timers changed the run"
     assert timed.sat is not lab.sat and timed.sat.timed_function is lab.sat   # timed while the full view is open
-    line = next(words for _, words in panel.placed if words.startswith("physics") and "your sat" in words)
+    placed = [words for _, words in panel.placed]
+    first = next(i for i, words in enumerate(placed) if words.startswith("physics") and "your sat" in words)
+    line = ", ".join(placed[first:first + 2]) if "engine" not in placed[first] else placed[first]  # wrapped: 2 lines
     numbers = [float(n) for n in re.findall(r"\d+\.\d", line)]
     physics, sat, resolve, engine = numbers
     assert line == f"physics {physics:.1f} ms: your sat {sat:.1f}, your resolve {resolve:.1f}, engine {engine:.1f}"
