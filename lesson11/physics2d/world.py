@@ -719,10 +719,11 @@ def _plain_manifolds(world):
     """World.manifolds() without "sleep" or speculative contacts, on plain lists: the same pairs, calls and floats.
 
     Every body's world points and box are computed up front (as _Geometry does
-    without "sleep"), boxes of polygons by _polygon_box, and a pair of polygons under the corners rule calls the World's
-    sat and collision.contact_points directly (collide's own path for it, less
-    its dispatch); other pairs go through collision.collide. The reference is
-    the rest of manifolds(), which collision.FAST_PATHS = False runs.
+    without "sleep"; boxes of polygons by _polygon_box), and a pair of polygons
+    under the corners rule calls the World's sat and collision.contact_points
+    directly (collide's own path for it, less its dispatch); other pairs go
+    through collision.collide. The reference is the rest of manifolds(), which
+    collision.FAST_PATHS = False runs.
     """
     bodies = world.bodies
     moving = [body.inv_mass != 0 for body in bodies]
