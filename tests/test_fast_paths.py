@@ -106,3 +106,23 @@ def test_the_quick_forms_agree_with_the_readable_ones_on_random_input():
         if hit is not None:
             assert collision.contact_points(pa, pb, hit[0]) == collision.contact_points_reference(pa, pb, hit[0])
     assert collision.centre_of is collision.center_of  # the name the labs import still works
+
+
+def test_separate_skips_only_moves_that_change_nothing():
+    """separate() returns early for a push of 0 only when pos -/+ n * 0 is pos bit for bit: signed zeros in a position,
+    a NaN or infinite normal and a NaN depth all take the reference's two moves."""
+    import copy
+    from lesson11.physics2d import Body, box_points, response
+    rng = random.Random(3)
+    values = [0.0, -0.0, 1.5, -2.25, 1e-300]
+    normals = [Vector2(0.6, -0.8), Vector2(-0.0, 1.0), Vector2(0.0, -1.0), Vector2(math.nan, 0), Vector2(math.inf, 0)]
+    for _ in range(5000):
+        a, b = (Body(box_points(10, 10), (rng.choice(values + [rng.uniform(-9, 9)]),
+                                          rng.choice(values + [rng.uniform(-9, 9)])), rng.choice([0, 1.0, 2.5]))
+                for _ in range(2))
+        normal, depth = rng.choice(normals), rng.choice([0.0, -0.0, 0.5, 0.3, 0.7, math.nan, -3.0])
+        a2, b2 = copy.deepcopy(a), copy.deepcopy(b)
+        response.separate(a, b, normal, depth)
+        response.separate_reference(a2, b2, normal, depth)
+        assert [v.hex() for v in (a.pos.x, a.pos.y, b.pos.x, b.pos.y)] == \
+            [v.hex() for v in (a2.pos.x, a2.pos.y, b2.pos.x, b2.pos.y)]
