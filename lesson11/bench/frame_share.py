@@ -1,6 +1,7 @@
 """Where a frame of the Tumbling Crates lab goes: the lab's own step functions against everything else.
 
-    python -m lesson11.bench.frame_share           # 12, 40 and 200 crates; a few minutes on 2 cores
+    python -m lesson11.bench.frame_share           # 12, 40 and 200 crates; 10-20 minutes on 2 cores
+                                                   # (clicking and settling the 200-crate pile takes most)
     python -m lesson11.bench.frame_share --quick   # smoke run (12 and 40 crates, a few frames): not a measurement
 
 The pile is the lab's clicked pile: the finished lab (solutions/tumbling_crates.py,
@@ -14,7 +15,9 @@ the lesson listing's 1 × 6 (World(substeps=1, iterations=6), solve-first). Each
 is measured twice in the same turns: with physics2d's fast paths (as the lab runs)
 and with the readable reference forms they replace (collision.fast_paths(False):
 the same numbers, bit for bit, tests/test_fast_paths.py), so the table shows what
-the fast paths buy, side by side.
+the fast paths buy, side by side. (The sweep-and-prune broad phase has no switch:
+its reference is broad_phase="all-pairs", and tests/test_broadphase.py holds the two
+to the same pairs; both forms here run the sweep as it is now.)
 
 Definitions (per frame, in ms):
   frame    the CPU time (time.process_time) of the two World.step calls, measured on
@@ -22,7 +25,7 @@ Definitions (per frame, in ms):
   lab      the time inside the lab's own functions the World calls (its hooks that are
            not the library's, lesson11/hook_clock.lab_hooks: sat and resolve), inclusive: with
            everything they call, i.e. apply_impulse, and the library's project,
-           edge_normals, centre_of, spin_velocity and cross (the issue's grouping:
+           edge_normals, center_of (centre_of), spin_velocity and cross (the issue's grouping:
            the student's code and the helpers it chooses to call)
   engine   the rest of the frame: broad phase, world points, contact points,
            collide and search glue, the resolve-pass loop, the push-out, integration
