@@ -140,11 +140,11 @@ class WorldPoints(list):
 
 
 class Polygon:
-    """A convex polygon shape: `points` (list of Vector2, px) centred on its centroid.
+    """A convex polygon shape: `points` (list of Vector2, px) centered on its centroid.
 
     Polygon(points, recentre=False) keeps the points as given (validated, not
     moved): the body's pos is then their (0, 0), which is its center of mass
-    only if the caller centred them on their centroid (the More Shapes lab
+    only if the caller centered them on their centroid (the More Shapes lab
     does this with the student's polygon_centroid).
     """
 
