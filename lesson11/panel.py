@@ -29,8 +29,12 @@ accuracy study (python -m lesson11.bench.accuracy_cost --frontier, its table in
 lesson11/bench/frontier.json) measured for this setting, and whether it is on the
 front of the cheapest settings for their error. The full panel adds the keys of
 every setting, the contacts, the deepest penetration (px), the kinetic energy
-(mass·px²/s²) and a graph of the physics ms per frame over the last
-GRAPH_SECONDS s with the 60 fps frame budget (16.7 ms) as a dashed line.
+(mass·px²/s²), where a frame's physics goes ("physics 9.1 ms: your sat 2.0,
+your resolve 4.3, engine 2.8", see LabPanel.watch), the most accurate setting
+on the study's front that would run in real time on this machine (real_time_line),
+and a graph of the physics ms per frame over the last GRAPH_SECONDS s with the
+60 fps frame budget (16.7 ms) as a dashed line. The compact panel's cost line
+turns orange when the lab runs below 0.95x real time.
 
 Nothing is set on a world until a key changes a setting. The panel keeps the
 changed settings only (as overrides) and applies them to every World it is
@@ -51,6 +55,7 @@ from collections import deque
 
 import pygame
 
+from . import hook_clock
 from .physics2d.collision import circle_polygon as circle_polygon_of_physics2d
 from .physics2d.collision import sat as sat_of_physics2d
 
@@ -67,6 +72,8 @@ COMPACT_WIDTH = 320     # px: the compact panel's width; with its 5 lines it sta
 COMPACT_LINE, COMPACT_PADDING = 17, 8   # 900 px window, clear of Tumbling Crates' four starting crates (px)
 MODES = ("compact", "full", "hidden")   # H cycles through them, compact first
 RATE_FRAMES = 60        # frames (1 s at 60 fps) over which ms/step and the real-time share are averaged
+REAL_TIME_SHARE = 0.8   # a setting "runs in real time" if its physics takes at most this share of a 60 fps frame
+                        # (the rest is left for drawing)
 STUDY_FILE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bench", "frontier.json")
 BACKGROUND = (12, 14, 20, 215)  # RGBA: see-through, so crates behind it stay visible
 TEXT = (230, 230, 230)
@@ -128,6 +135,42 @@ def study_short(world, settings):
         return "study: this setting was not measured"
     verdict = "on front" if row["on_front"] else f"{row['better']} beats it"
     return f"study: {row['ms_per_step']:.2f} ms, pile {row['pile_speed']:.1f} px/s: {verdict}"
+
+
+def real_time_line(world, settings, ms_per_step):
+    """Which setting on the study's front would run in real time on this machine: one line, or None if unknown.
+
+    The study measured ms/step of every setting on its machine; this machine's
+    speed is the live ms/step of the current setting over the study's for it
+    (so it also covers a scene with more or fewer crates than the study's
+    pile). A setting runs in real time here if (its study ms/step × that ratio)
+    × steps per 60 fps frame <= REAL_TIME_SHARE of the frame. Of the front's
+    settings for this solver (and order) that do, the line names the most
+    accurate one (the lowest pile speed): the best this machine can run.
+    """
+    row = study_row(world, settings)
+    if row is None or ms_per_step <= 0:
+        return None
+    scale = ms_per_step / row["ms_per_step"]
+    steps = (1 / 60) / getattr(world, "step_seconds", 1 / 120)
+    front = [other for other in study_rows().values()
+             if other["on_front"] and (other["solver"], other["order"]) == (row["solver"], row["order"])]
+    fits = [other for other in front if other["ms_per_step"] * scale * steps <= FRAME_BUDGET_MS * REAL_TIME_SHARE]
+    if not fits:
+        return "real time here: no setting on the front"
+    best = min(fits, key=lambda other: other["pile_speed"])
+    label = f"{best['substeps']} × {best['iterations']}"
+    here = best["ms_per_step"] * scale * steps
+    return f"real time here: best on the front {label}, {here:.1f} ms/frame"
+
+
+def split_text(split):
+    """Where the physics of a frame goes, as pieces of one sentence:
+    ["physics 9.1 ms: your sat 2.0", ", your resolve 4.3", ", engine 2.8"] (the panel wraps them to its width)."""
+    if not split["yours"]:  # no function of the lab ran (the reference solver, or a lab with no hooks)
+        return [f"physics {split['physics']:.1f} ms: all physics2d's own"]
+    parts = [f"your {name} {ms:.1f}" for name, ms in split["yours"].items()] + [f"engine {split['engine']:.1f}"]
+    return [f"physics {split['physics']:.1f} ms: {parts[0]}"] + [f", {part}" for part in parts[1:]]
 
 
 def rate_text(m, paused):
@@ -201,6 +244,9 @@ class LabPanel:
         self.rendered = []      # (rectangle, text) of the lines in self.image
         self.contacts_at = (0, 0)
         self.dirty = True       # redraw the picture at the next draw()
+        self.tallies = {}       # full view: {hook name: [s, calls]} of the lab's functions this frame
+        self.split = deque(maxlen=REFRESH_FRAMES)  # full view: (physics ms, {hook: ms}) of the last frames
+        self.overhead = None    # (s added, s counted inside) per timed call: hook_clock.calibrate, once
 
     # ---- settings -----------------------------------------------------------------------
 
@@ -294,6 +340,9 @@ class LabPanel:
         with the frame time and the time simulated to the rates (ms/step, share of real time).
         """
         self.adopt(world)
+        self.watch(world)
+        for tally in self.tallies.values():
+            tally[0], tally[1] = 0.0, 0
         start = time.perf_counter()
         if not self.paused:
             steps = world.advance(dt)
@@ -303,11 +352,42 @@ class LabPanel:
                 steps += world.advance(world.step_seconds)
             self.pending_steps = 0
         spent = (time.perf_counter() - start) * 1000
+        if self.tallies:  # the full view's timers: their own cost comes off every figure
+            added, inside = self.overhead
+            spent -= 1000 * added * sum(calls for _, calls in self.tallies.values())
+            if steps:
+                self.split.append((spent, {name: 1000 * (s - calls * inside)
+                                           for name, (s, calls) in self.tallies.items() if calls}))
         self.history.append(spent)
         if not self.paused:
             self.rates.append((spent, steps, dt, steps * world.step_seconds))
         self.last_steps = steps
         return steps
+
+    def watch(self, world):
+        """In the full view, time the lab's own functions the World calls; in the others, take the timers off.
+
+        The lab's functions are the World's hooks that are not the library's
+        (hook_clock.lab_hooks: sat, resolve, circle_polygon, ...); each is wrapped
+        (hook_clock.wrap, time.perf_counter) so the panel can say where a frame goes:
+        the time inside them, inclusive of what they call, and the rest of the
+        physics, the engine. The wrappers return what the functions return, so the
+        simulation is the same; their own cost (hook_clock.calibrate, measured once)
+        is taken off the physics time and the lab's.
+        """
+        full = self.mode == "full"
+        if full and self.overhead is None:
+            self.overhead = hook_clock.calibrate(time.perf_counter)
+        for name, function in hook_clock.lab_hooks(world).items():
+            timed = getattr(world, name) is not function
+            if full and not timed:
+                setattr(world, name, hook_clock.wrap(function, self.tallies.setdefault(name, [0.0, 0]),
+                                                     time.perf_counter))
+            elif not full and timed:
+                setattr(world, name, function)
+        if not full:
+            self.tallies = {}
+            self.split.clear()
 
     # ---- the HUD ------------------------------------------------------------------------
 
@@ -315,10 +395,19 @@ class LabPanel:
         """What the HUD shows: {"ms": mean physics ms per frame over the last refresh, "steps",
         "ms_per_step": physics ms / steps run over the last RATE_FRAMES running frames (0 before any step),
         "real_time": simulated s / frame s over those frames (1.0: keeping up; None before any frame time),
-        "contacts", "deepest" (px, 0 without contacts), "energy" (mass·px²/s²)}."""
+        "contacts", "deepest" (px, 0 without contacts), "energy" (mass·px²/s²),
+        "split": full view, {"physics": ms per frame, "yours": {hook: ms}, "engine": ms} over the last
+        REFRESH_FRAMES frames that ran a step (None otherwise)}."""
         recent = list(self.history)[-REFRESH_FRAMES:]
         spent, steps, frame_s, simulated = (sum(column) for column in zip(*self.rates)) if self.rates else (0, 0, 0, 0)
-        return {"ms": sum(recent) / len(recent) if recent else 0.0,
+        split = None
+        if self.split:  # full view: mean physics ms per frame, the lab's functions and the engine's part of it
+            physics = sum(ms for ms, _ in self.split) / len(self.split)
+            names = dict.fromkeys(name for _, part in self.split for name in part)  # in the order first met
+            yours = {name: sum(part.get(name, 0.0) for _, part in self.split) / len(self.split) for name in names}
+            split = {"physics": physics, "yours": yours, "engine": physics - sum(yours.values())}
+        return {"split": split,
+                "ms": sum(recent) / len(recent) if recent else 0.0,
                 "steps": self.last_steps,
                 "ms_per_step": spent / steps if steps else 0.0,
                 "real_time": simulated / frame_s if frame_s > 0 else None,
@@ -382,6 +471,16 @@ class LabPanel:
                 self.cache.clear()
             self.cache[key] = self.font.render(words, True, colour)
         return self.cache[key]
+
+    def wrapped(self, pieces, width):
+        """The pieces of a sentence joined into lines no wider than `width` px (a piece is never split)."""
+        lines = []
+        for piece in pieces:
+            if lines and self.text(lines[-1] + piece).get_width() <= width:
+                lines[-1] += piece
+            else:
+                lines.append(piece.lstrip(", ") if lines else piece)
+        return lines
 
     def put(self, target, words, colour, pos):
         """Blit one line of text onto `target` at pos (px, top-left); remember where it lands in the window."""
@@ -472,10 +571,13 @@ class LabPanel:
         m = self.shown
         rate = rate_text(m, self.paused)
         study = [line for line in study_lines(world, self.settings()) if line]
+        study += [line for line in [real_time_line(world, self.settings(), m["ms_per_step"])] if line]
+        split = [] if m["split"] is None else self.wrapped(split_text(m["split"]), PANEL_WIDTH - 2 * PADDING)
+        notes = [(line, TEXT) for line in split] + [(line, DIM) for line in study]
         measured = [(f"physics {m['ms']:.1f} ms/frame", rate[0][len("physics "):]),
                     (None, rate[1]),   # None: the contact count, drawn every frame
                     (f"deepest {m['deepest']:.2f} px", f"kinetic energy {m['energy']:.3g}")]
-        image = self.start_image(right, PANEL_WIDTH, len(rows) + len(measured) + len(study) + 3, GRAPH_HEIGHT + 8)
+        image = self.start_image(right, PANEL_WIDTH, len(rows) + len(measured) + len(notes) + 3, GRAPH_HEIGHT + 8)
         x, y = PADDING, PADDING
         self.put(image, "SOLVER PANEL", KEY, (x, y))
         self.put(image, "[H] hide", DIM, (PANEL_WIDTH - PADDING - self.text("[H] hide", DIM).get_width(), y))
@@ -495,8 +597,8 @@ class LabPanel:
                 self.put(image, left, TEXT, (x, y))
             self.put(image, right_text, WARNING if right_text == "PAUSED" else DIM, (x + 190, y))
             y += LINE_HEIGHT
-        for line in study:
-            self.put(image, line, DIM, (x, y))
+        for line, colour in notes:
+            self.put(image, line, colour, (x, y))
             y += LINE_HEIGHT
         top = self.draw_graph(image, pygame.Rect(x, y + 4, PANEL_WIDTH - 2 * PADDING, GRAPH_HEIGHT))
         y += GRAPH_HEIGHT + 8

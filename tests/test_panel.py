@@ -11,6 +11,7 @@ os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 
 import json
+import re
 
 import pygame
 import pytest
@@ -413,3 +414,100 @@ def test_scripted_p_and_o_reach_the_panel_through_the_runtime(tmp_path):
     assert bodies[29] != bodies[28]                      # O in frame 30: one step
     assert all(b == bodies[29] for b in bodies[30:])
     assert run.line[0] == 0.3  # 19 frames of 2 steps and 1 step: 39 steps of 1/120 s = 0.325 s
+
+
+# ---------------------------------------------------------------- where a frame goes (issue 31, item 4)
+
+def solution_module():
+    """solutions/tumbling_crates.py as a module (its main() does not run)."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("panel_test_tumbling_crates", SOLUTION)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_full_view_says_where_a_frame_goes_and_changes_nothing():
+    """With the lab's sat and resolve, the full view reads "physics X ms: your sat A, your resolve B, engine C" with
+    A + B + C = X; the timers change no number of the run, and leave when the view does."""
+    lab = solution_module()
+    timed, plain = (small_world(sat=lab.sat, resolve=lab.resolve) for _ in range(2))
+    panel = full_panel()
+    surface = pygame.Surface((900, 600))
+    for frame in range(40):
+        panel.advance(timed, 1 / 60)
+        plain.advance(1 / 60)
+        panel.draw(surface, timed)
+        assert state(timed) == state(plain), f"frame {frame}: the timers changed the run"
+    assert timed.sat is not lab.sat and timed.sat.timed_function is lab.sat   # timed while the full view is open
+    placed = [words for _, words in panel.placed]
+    first = next(i for i, words in enumerate(placed) if words.startswith("physics") and "your sat" in words)
+    line = ", ".join(placed[first:first + 2]) if "engine" not in placed[first] else placed[first]  # wrapped: 2 lines
+    numbers = [float(n) for n in re.findall(r"\d+\.\d", line)]
+    physics, sat, resolve, engine = numbers
+    assert line == f"physics {physics:.1f} ms: your sat {sat:.1f}, your resolve {resolve:.1f}, engine {engine:.1f}"
+    assert sat > 0 and resolve > 0 and engine > 0
+    assert abs(sat + resolve + engine - physics) <= 0.15      # each figure rounded to 0.1 ms
+    panel.handle(key("h"))  # full -> hidden: the lab's own functions again
+    panel.advance(timed, 1 / 60)
+    assert timed.sat is lab.sat and timed.resolve is lab.resolve
+    assert panel.measure(timed)["split"] is None
+
+
+def test_full_view_with_the_reference_solver_says_no_function_of_the_lab_runs():
+    lab = solution_module()
+    world = small_world(sat=lab.sat, resolve=lab.resolve)
+    panel = full_panel()
+    hud(panel, world, 1)
+    panel.handle(key("s"))   # the accumulated solver: the lab's functions are not called
+    panel.split.clear()      # forget the frame the lesson solver ran
+    hud(panel, world, 30)
+    assert any(re.fullmatch(r"physics \d+\.\d ms: all physics2d's own", words) for _, words in panel.placed)
+
+
+def test_compact_cost_line_turns_orange_below_real_time():
+    """At 1.0x real time the cost line is drawn in the text colour; at 0.3x (frames of 0.1 s, max_steps 4) in orange."""
+    def rate_line_colours(frame_seconds):
+        panel = lp.LabPanel()
+        world = small_world()
+        surface = pygame.Surface((900, 600))
+        for _ in range(30):
+            panel.advance(world, frame_seconds)
+            surface.fill((24, 26, 34))
+            panel.draw(surface, world)
+        rect, words = next((rect, words) for rect, words in panel.placed if "real time" in words)
+        colours = {tuple(surface.get_at((x, y)))[:3] for x in range(rect.left, rect.right)
+                   for y in range(rect.top, rect.bottom)}
+        return words, colours
+    words, colours = rate_line_colours(1 / 60)
+    assert "1.0x real time" in words and lp.TEXT in colours and lp.WARNING not in colours
+    words, colours = rate_line_colours(0.1)
+    assert "0.3x real time" in words and lp.WARNING in colours and lp.TEXT not in colours
+
+
+def test_real_time_line_names_the_most_accurate_front_setting_this_machine_can_run(monkeypatch, tmp_path):
+    """The study's ms/step scaled by this machine's (live ms/step ÷ the study's for the current setting); a setting
+    runs in real time if that × 2 steps a frame fits REAL_TIME_SHARE of 16.7 ms."""
+    def row(substeps, iterations, ms, pile, front=True, solver="lesson"):
+        return {"solver": solver, "order": "solve-first" if solver == "lesson" else "-", "substeps": substeps,
+                "iterations": iterations, "ms_per_step": ms, "pile_speed": pile, "on_front": front,
+                "better": None if front else "1 x 6"}
+    table = tmp_path / "frontier.json"
+    table.write_text(json.dumps({"settings": [
+        row(1, 6, 2.0, 15.0), row(2, 4, 4.0, 8.0), row(4, 6, 8.0, 4.0), row(8, 6, 16.0, 2.0),
+        row(2, 6, 4.5, 9.0, front=False), row(8, 20, 1.0, 0.0, solver="accumulated")]}), encoding="utf-8")
+    monkeypatch.setattr(lp, "STUDY_FILE", str(table))
+    monkeypatch.setattr(lp, "_study", None)
+    world = small_world()   # 1/120 s steps: 2 a frame; budget 0.8 × 16.7 = 13.3 ms a frame, 6.7 ms a step
+    now = {"solver": "lesson", "substeps": 4, "iterations": 6}
+    # this machine as fast as the study's: 4 × 6 (8 ms a step) does not fit, 2 × 4 (4 ms) does
+    assert lp.real_time_line(world, now, 8.0) == "real time here: best on the front 2 × 4, 8.0 ms/frame"
+    # twice as fast: 4 × 6 fits; 8 × 6 (16 ms at the study, 8 here) does not; the 2 × 6 off the front is never named
+    assert lp.real_time_line(world, now, 4.0) == "real time here: best on the front 4 × 6, 8.0 ms/frame"
+    # 8× slower: not even 1 × 6 fits
+    assert lp.real_time_line(world, now, 64.0) == "real time here: no setting on the front"
+    # a setting the study did not measure, or no step yet: no line
+    assert lp.real_time_line(world, {"solver": "lesson", "substeps": 3, "iterations": 6}, 4.0) is None
+    assert lp.real_time_line(world, now, 0.0) is None
+    widest = "real time here: best on the front 16 × 20, 13.3 ms/frame"   # the longest a line gets
+    assert lp.LabPanel().text(widest).get_width() <= lp.PANEL_WIDTH - 2 * lp.PADDING

@@ -15,9 +15,9 @@
 Units: px, s, rad; y grows downward; a positive angle turns clockwise on screen.
 """
 from .bodies import Body
-from .collision import (TOUCH_TOLERANCE, Manifold, centre_of, circle_circle, circle_contact_point, circle_polygon,
-                        circle_polygon_toi, circle_toi, clip_contact_points, closest_on_segment, collide, contact_points,
-                        corner_manifold, edge_normals, inside, orient_a_to_b, project, sat)
+from .collision import (TOUCH_TOLERANCE, Manifold, center_of, centre_of, circle_circle, circle_contact_point,
+                        circle_polygon, circle_polygon_toi, circle_toi, clip_contact_points, closest_on_segment,
+                        collide, contact_points, corner_manifold, edge_normals, inside, orient_a_to_b, project, sat)
 from .response import (PERCENT, RESTING_SPEED, SLOP, apply_impulse, effective_mass_inverse,
                        relative_velocity, resolve, separate)
 from .shapes import (Circle, Polygon, box_points, convex_polygon, polygon_area, polygon_centroid,

@@ -90,27 +90,35 @@ def sweep_and_prune(boxes, moving, reach=None, base=0.0, bounds=None):
     """
     n = len(moving)
     bounds = boxes if bounds is None else bounds
-    grow = [base / 2 + (reach[k] if reach is not None else 0.0) for k in range(n)]
+    if reach is None:
+        grow = [base / 2 + 0.0] * n
+    else:
+        grow = [base / 2 + reach[k] for k in range(n)]
     largest = max((max(abs(bounds[k][0]), abs(bounds[k][2])) + grow[k] for k in range(n)), default=0.0)
     slack = 1e-9 * (1.0 + largest)
     lo = [bounds[k][0] - grow[k] - slack for k in range(n)]
     hi = [bounds[k][2] + grow[k] + slack for k in range(n)]
     active_moving, active_still = [], []
-    met = []
+    pairs, tested = [], 0
     for k in sorted(range(n), key=lo.__getitem__):
         left = lo[k]
-        active_moving = [a for a in active_moving if hi[a] >= left]
-        met.extend((a, k) for a in active_moving)
+        met = active_moving = [a for a in active_moving if hi[a] >= left]
         if moving[k]:
             active_still = [a for a in active_still if hi[a] >= left]
-            met.extend((a, k) for a in active_still)
+            met = active_moving + active_still
             active_moving.append(k)
         else:
             active_still.append(k)   # pruned when the next moving body arrives
-    pairs = []
-    for a, k in met:
-        i, j = (a, k) if a < k else (k, a)
-        if not boxes_apart(boxes[i], boxes[j], pair_margin(i, j, reach, base)):
-            pairs.append((i, j))
+        if not met:
+            continue
+        tested += len(met)
+        box_k = boxes[k]  # only now: `boxes` may compute a box on first use
+        for a in met:  # boxes_apart(boxes[i], boxes[j], pair_margin(i, j, reach, base)), written out
+            i, j = (a, k) if a < k else (k, a)
+            box_i, box_j = (boxes[a], box_k) if a < k else (box_k, boxes[a])
+            m = base + reach[i] + reach[j] if reach is not None else base
+            if not (box_i[2] + m < box_j[0] or box_j[2] + m < box_i[0] or
+                    box_i[3] + m < box_j[1] or box_j[3] + m < box_i[1]):
+                pairs.append((i, j))
     pairs.sort()
-    return pairs, len(met)
+    return pairs, tested

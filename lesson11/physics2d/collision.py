@@ -8,17 +8,41 @@ Exact touching counts as apart: an overlap of at most TOUCH_TOLERANCE px is
 reported as no contact, so a pair pushed out by exactly its depth stays apart
 despite rounding.
 """
+import contextlib
 import math
 from collections import namedtuple
+from math import sqrt
 
+from . import vectors
 from .shapes import WorldPoints
 from .vectors import Vector2
 
 TOUCH_TOLERANCE = 1e-6  # px: overlaps this small are "touching", i.e. apart
 CORNER_MERGE = 0.5      # px: corners closer than this are one contact point (corner_manifold)
-VECTOR_EPSILON = 1e-6   # px: pygame's Vector2 == counts points this close in x and in y as one (_best_edge)
+SAME_POINT = Vector2().epsilon  # px: pygame's Vector2 == counts points this close on both axes as one (1e-6)
 READABLE = False        # True: corner_manifold, clip_manifold and the reference solver's Arbiter run their
                         # readable Vector2 versions (arbiter.readable_versions sets it, for a block)
+
+# Fast paths: True runs the quicker forms of project, center_of, contact_points and collide (and the World's
+# contact search), which compute the same floats in the same order; False runs the readable reference forms.
+# tests/test_fast_paths.py steps every lab's scene both ways and compares every float bit for bit.
+FAST_PATHS = True
+
+
+@contextlib.contextmanager
+def fast_paths(on):
+    """Run a block with the fast paths on (True) or the readable reference forms (False), here and in vectors.py."""
+    old = FAST_PATHS, vectors.FAST_PATHS
+    _switch(on, on)
+    try:
+        yield
+    finally:
+        _switch(*old)
+
+
+def _switch(here, in_vectors):
+    global FAST_PATHS
+    FAST_PATHS, vectors.FAST_PATHS = here, in_vectors
 
 
 def edge_normals(points):
@@ -42,7 +66,31 @@ def edge_normals(points):
 
 
 def project(points, axis):
-    """The shadow of the points on a unit axis: (min p·axis, max p·axis), in px."""
+    """The shadow of the points on a unit axis: (min p·axis, max p·axis), in px (project_reference)."""
+    if FAST_PATHS and len(points) == 4:  # a box: the reference's loop unrolled, the same comparisons in order
+        p0, p1, p2, p3 = points
+        lowest = highest = p0.dot(axis)
+        d = p1.dot(axis)
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        d = p2.dot(axis)
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        d = p3.dot(axis)
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        return lowest, highest
+    return project_reference(points, axis)
+
+
+def project_reference(points, axis):
+    """The readable project: (min p·axis, max p·axis) over the points, in px."""
     lowest = highest = points[0].dot(axis)
     for p in points:
         d = p.dot(axis)
@@ -53,9 +101,20 @@ def project(points, axis):
     return lowest, highest
 
 
-def centre_of(points):
-    """Average of the points (px): the centre the lesson uses to orient normals."""
+def center_of(points):
+    """Average of the points (px): the center the lesson uses to orient normals.
+
+    For a body's WorldPoints it is worked out once and kept with the points (as
+    edge_normals are); each call returns a fresh copy.
+    """
+    if FAST_PATHS and isinstance(points, WorldPoints):
+        if points.center is None:
+            points.center = sum(points, Vector2()) / len(points)
+        return Vector2(points.center)
     return sum(points, Vector2()) / len(points)
+
+
+centre_of = center_of  # the name the labs import (British spelling); the lesson says "center"
 
 
 def sat(pa, pb, margin=0.0):
@@ -70,7 +129,7 @@ def sat(pa, pb, margin=0.0):
     max_b - min_a; the shorter way is that axis's depth and direction. This is
     the lesson's overlap whenever neither shadow contains the other; when one
     does (a deep hit), the lesson's overlap is too short to separate the pair.
-    When both ways are equally long, the normal points from A's centre to B's.
+    When both ways are equally long, the normal points from A's center to B's.
 
     margin (px, default 0) also reports pairs less than `margin` apart, with a
     negative depth (minus the gap): the accumulated solver's speculative contacts.
@@ -94,13 +153,13 @@ def sat(pa, pb, margin=0.0):
 
 
 def orient_a_to_b(axis, pa, pb):
-    """Flip the axis if needed so it points from A's centre to B's: (cB - cA)·axis >= 0.
+    """Flip the axis if needed so it points from A's center to B's: (cB - cA)·axis >= 0.
 
-    When the centres coincide along the axis, the middles of the two shadows
+    When the centers coincide along the axis, the middles of the two shadows
     decide; when those coincide too (the pair is symmetric), the axis is made
     to point right, or down if vertical, so the answer is still well defined.
     """
-    along = (centre_of(pb) - centre_of(pa)).dot(axis)
+    along = (center_of(pb) - center_of(pa)).dot(axis)
     if abs(along) <= TOUCH_TOLERANCE:
         min_a, max_a = project(pa, axis)
         min_b, max_b = project(pb, axis)
@@ -167,8 +226,8 @@ def circle_polygon(center, radius, points, margin=0.0):
 
     Finds the closest point q on the outline. Outside and |q - center| < radius:
     normal = (q - center) / |q - center|, depth = radius - |q - center|.
-    Centre inside: the push goes the other way, depth = radius + |q - center|.
-    Centre on the outline: normal points from the centre to the polygon's middle.
+    Center inside: the push goes the other way, depth = radius + |q - center|.
+    Center on the outline: normal points from the center to the polygon's middle.
     Returns None when apart (touching counts as apart), else (normal from the
     circle into the polygon, depth px). A margin (px) also reports a circle up
     to `margin` outside, with a negative depth (minus the gap).
@@ -177,9 +236,9 @@ def circle_polygon(center, radius, points, margin=0.0):
                    for i in range(len(points))), key=lambda q: center.distance_squared_to(q))
     offset = closest - center
     dist = offset.length()
-    if dist <= TOUCH_TOLERANCE:  # centre on the outline: push away from the middle
-        return (centre_of(points) - center).normalize(), radius
-    if inside(center, points):  # centre already inside: push out the other way
+    if dist <= TOUCH_TOLERANCE:  # center on the outline: push away from the middle
+        return (center_of(points) - center).normalize(), radius
+    if inside(center, points):  # center already inside: push out the other way
         return -offset / dist, radius + dist
     if dist >= radius + margin - TOUCH_TOLERANCE:
         return None
@@ -199,7 +258,7 @@ def circle_contact_point(center, radius, normal, depth):
 def circle_circle(center_a, radius_a, center_b, radius_b, margin=0.0):
     """Two circles: None if apart, else (normal from A to B, depth = ra + rb - |cB - cA|).
 
-    Coincident centres get the normal (1, 0). A margin (px) also reports
+    Coincident centers get the normal (1, 0). A margin (px) also reports
     circles up to `margin` apart, with a negative depth.
     """
     offset = center_b - center_a
@@ -215,8 +274,57 @@ def contact_points(pa, pb, normal):
     """The lesson's contact rule: corners of A inside B, then corners of B inside A, at most two.
 
     If edges cross with no corner inside, the deepest corner of B along the
-    normal (smallest p·normal) stands in.
+    normal (smallest p·normal) stands in. (contact_points_reference is the
+    readable form; this one runs the same tests on plain floats.)
     """
+    if not FAST_PATHS:
+        return contact_points_reference(pa, pb, normal)
+    corners = []
+    edges_a, edges_b = flat_edges(pa), flat_edges(pb)
+    for points, own, other in ((pa, edges_a, edges_b), (pb, edges_b, edges_a)):
+        for p, (px, py, _, _, _) in zip(points, own):  # own[i] starts at corner i: its x and y
+            left = right = False
+            for ax, ay, ex, ey, limit in other:  # inside_edges on floats: side = e × (p - a)
+                side = ex * (py - ay) - ey * (px - ax)
+                if side > limit:
+                    left = True
+                elif side < -limit:
+                    right = True
+                if left and right:
+                    break
+            else:
+                for q in corners:  # p == q for Vector2: closer than SAME_POINT on both axes
+                    if abs(px - q.x) < SAME_POINT and abs(py - q.y) < SAME_POINT:
+                        break
+                else:
+                    corners.append(p)
+                    if len(corners) == 2:
+                        return corners  # the reference keeps the first two as well
+    if not corners:
+        corners = [min(pb, key=lambda p: p.dot(normal))]
+    return corners
+
+
+def flat_edges(points):
+    """polygon_edges as plain floats: [(a.x, a.y, e.x, e.y, TOUCH_TOLERANCE |e|), ...], e = b - a (px).
+
+    Kept with a body's WorldPoints once worked out; |e| is sqrt(e.x² + e.y²), as Vector2.length computes it.
+    """
+    kept = isinstance(points, WorldPoints)
+    if kept and points.flat_edges is not None:
+        return points.flat_edges
+    coords = [(p.x, p.y) for p in points]
+    edges = []
+    for (ax, ay), (bx, by) in zip(coords, coords[1:] + coords[:1]):
+        ex, ey = bx - ax, by - ay
+        edges.append((ax, ay, ex, ey, TOUCH_TOLERANCE * sqrt(ex * ex + ey * ey)))
+    if kept:
+        points.flat_edges = edges
+    return edges
+
+
+def contact_points_reference(pa, pb, normal):
+    """The readable contact_points: every corner tested with inside_edges, Vector2 throughout."""
     corners = []
     edges_a, edges_b = polygon_edges(pa), polygon_edges(pb)
     for p in [p for p in pa if inside_edges(p, edges_b)] + [p for p in pb if inside_edges(p, edges_a)]:
@@ -313,7 +421,7 @@ def circle_toi(p1, v1, r1, p2, v2, r2, dt):
 def circle_polygon_toi(center, vel, radius, points, dt):
     """Swept test of a circle moving at vel (px/s) against a still convex polygon, over dt s.
 
-    The circle first touches either an edge face, when its centre reaches the
+    The circle first touches either an edge face, when its center reaches the
     edge's line moved out by radius, t = (radius - (c - a)·n) / (v·n) with n the
     outward normal, or a corner, found by circle_toi against a circle of radius 0.
     Returns (t, normal from the circle into the polygon) for the earliest t in
@@ -322,7 +430,7 @@ def circle_polygon_toi(center, vel, radius, points, dt):
     hit = circle_polygon(center, radius, points)
     if hit is not None:
         return 0.0, hit[0]
-    middle = centre_of(points)
+    middle = center_of(points)
     best = None
     for i, a in enumerate(points):
         b = points[(i + 1) % len(points)]
@@ -442,7 +550,7 @@ def _best_edge_xy(points, dx, dy):
     distinct, (lx, ly) = [], points[-1]
     for p in points:  # p != the corner before it, as Vector2's == compares (each coordinate within 1e-6)
         ex, ey = p[0] - lx, p[1] - ly
-        if not (-VECTOR_EPSILON < ex < VECTOR_EPSILON and -VECTOR_EPSILON < ey < VECTOR_EPSILON):
+        if not (-SAME_POINT < ex < SAME_POINT and -SAME_POINT < ey < SAME_POINT):
             distinct.append(p)
         lx, ly = p
     points = distinct or points[:1]
@@ -575,7 +683,7 @@ def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0, 
     Circles: circle_circle, or circle_test(center, radius, points) for a circle
     and a polygon (the lab's circle_polygon, if hooked), giving the normal out
     of the circle and the depth; circle_point(center, radius, d, depth) places
-    the one contact point, d being the direction from the circle's centre
+    the one contact point, d being the direction from the circle's center
     (default circle_contact_point: halfway into the overlap, c + d (r - depth/2)).
     A margin (px) asks for speculative contacts: pairs closer than that count,
     with a negative depth; polygons and circles then use this module's sat,

@@ -6,11 +6,13 @@ centre to the contact point, n the unit normal from A to B, and a body's
 """
 import math
 
+from . import vectors
 from .vectors import Vector2, cross, spin_velocity
 
 RESTING_SPEED = 30.0  # px/s: slower impacts get e = 0, so resting bodies do not bounce
 SLOP = 0.5            # px of overlap the push-out tolerates
 PERCENT = 0.4         # share of the remaining overlap removed per push
+_INF = math.inf
 
 
 def apply_impulse(a, b, impulse, ra, rb):
@@ -80,7 +82,29 @@ def separate(a, b, normal, depth, slop=SLOP, percent=PERCENT):
         posA -= n * push / mA,   posB += n * push / mB
     A static body (1/m = 0) never moves; a light body moves more than a heavy
     one. slop=0, percent=1 removes the whole overlap at once.
+    (separate_reference is the readable form: it always does the two moves.)
     """
+    total = a.inv_mass + b.inv_mass
+    if total > 0:
+        push = max(depth - slop, 0.0) * percent / total
+        if push == 0.0 and vectors.FAST_PATHS and _moves_nothing(a.pos, b.pos, normal):
+            return  # a resting contact (depth <= slop): pos -/+ n * 0 would be pos itself
+        a.pos -= normal * (push * a.inv_mass)
+        b.pos += normal * (push * b.inv_mass)
+
+
+def _moves_nothing(pos_a, pos_b, normal):
+    """True if pos -/+ normal * (±0.0) leaves both positions as they are, bit for bit.
+
+    It does unless the normal is not a finite Vector2 (n * 0 is NaN, or a tuple
+    raises), or a coordinate is ±0.0 (-0.0 - 0.0 and 0.0 + -0.0 flip the sign of zero).
+    """
+    return (type(normal) is Vector2 and -_INF < normal.x < _INF and -_INF < normal.y < _INF
+            and pos_a.x != 0.0 and pos_a.y != 0.0 and pos_b.x != 0.0 and pos_b.y != 0.0)
+
+
+def separate_reference(a, b, normal, depth, slop=SLOP, percent=PERCENT):
+    """The readable separate: push = max(depth - slop, 0) percent / (1/mA + 1/mB), both bodies moved."""
     total = a.inv_mass + b.inv_mass
     if total > 0:
         push = max(depth - slop, 0.0) * percent / total

@@ -1,8 +1,8 @@
-"""Shapes in local space: convex polygons and circles, centred on (0, 0).
+"""Shapes in local space: convex polygons and circles, centered on (0, 0).
 
 A shape only knows its outline; a Body (bodies.py) gives it a position, an
 angle and a mass. Polygons are stored with their centroid at (0, 0), so the
-body's position is its centre of mass.
+body's position is its center of mass.
 """
 import math
 
@@ -13,7 +13,7 @@ POINT_TOLERANCE = 1e-9
 
 
 def box_points(w, h):
-    """The four corners (px) of a w × h box centred on (0, 0), in screen order.
+    """The four corners (px) of a w × h box centered on (0, 0), in screen order.
 
     Corners: (-w/2, -h/2), (w/2, -h/2), (w/2, h/2), (-w/2, h/2).
     """
@@ -59,7 +59,7 @@ def polygon_centroid(points):
 def polygon_inertia(points, mass):
     """Moment of inertia (kg·px², with mass in the course's mass units) of a solid convex polygon.
 
-    The points must be centred on the centroid. The polygon is cut into triangles
+    The points must be centered on the centroid. The polygon is cut into triangles
     (0, a, b) and their inertias are summed:
         I = m Σ |a × b| (a·a + a·b + b·b) / (6 Σ |a × b|)
     For a w × h box this equals the box formula m (w² + h²) / 12.
@@ -74,10 +74,10 @@ def polygon_inertia(points, mass):
 
 
 def convex_polygon(points, recentre=True):
-    """Validate a convex polygon and return its corners re-centred on the centroid.
+    """Validate a convex polygon and return its corners re-centered on the centroid.
 
     With recentre=False the corners are validated but kept where they are (a
-    lab that centres them with its own centroid function passes them this way).
+    lab that centers them with its own centroid function passes them this way).
     Accepts either winding. Duplicate consecutive points are dropped. Raises
     ValueError when `points` is not a list of points, there are fewer than 3
     distinct points, a point is not finite, the area is zero, the outline turns
@@ -113,8 +113,8 @@ def convex_polygon(points, recentre=True):
         raise ValueError("a polygon must be convex (no dents); this outline goes round more than once and crosses itself")
     if not recentre:
         return distinct
-    centre = polygon_centroid(distinct)
-    return [p - centre for p in distinct]
+    center = polygon_centroid(distinct)
+    return [p - center for p in distinct]
 
 
 class WorldPoints(list):
@@ -122,25 +122,29 @@ class WorldPoints(list):
 
     A plain list that also keeps the edge normals once collision.edge_normals
     has worked them out (attribute `normals`, None until then), and the edges
-    once collision.polygon_edges has (attribute `edges`): a body tested against
-    several others in one contact search computes them once.
+    once collision.polygon_edges has (attribute `edges`), and the same for the
+    center (collision.center_of) and the edges as plain floats (`flat_edges`,
+    collision's fast contact points): a body tested against several others in
+    one contact search computes them once.
     It is a snapshot: the world makes new ones after the bodies move, and the
     normals and edges describe the corners as they were when first asked for.
     """
-    __slots__ = ("normals", "edges")
+    __slots__ = ("normals", "edges", "center", "flat_edges")
 
     def __init__(self, points=()):
         super().__init__(points)
         self.normals = None
         self.edges = None
+        self.center = None
+        self.flat_edges = None
 
 
 class Polygon:
-    """A convex polygon shape: `points` (list of Vector2, px) centred on its centroid.
+    """A convex polygon shape: `points` (list of Vector2, px) centered on its centroid.
 
     Polygon(points, recentre=False) keeps the points as given (validated, not
-    moved): the body's pos is then their (0, 0), which is its centre of mass
-    only if the caller centred them on their centroid (the More Shapes lab
+    moved): the body's pos is then their (0, 0), which is its center of mass
+    only if the caller centered them on their centroid (the More Shapes lab
     does this with the student's polygon_centroid).
     """
 
@@ -162,7 +166,7 @@ class Polygon:
 
 
 class Circle:
-    """A circle shape of `radius` px centred on (0, 0)."""
+    """A circle shape of `radius` px centered on (0, 0)."""
 
     kind = "circle"
 

@@ -9,6 +9,10 @@ from pygame import Vector2
 
 __all__ = ["Vector2", "cross", "spin_velocity", "finite_number", "finite_vector"]
 
+# Fast paths: True runs the quicker forms (same floats, bit for bit); False runs the readable reference forms.
+# tests/test_fast_paths.py steps every lab's scene both ways and compares every float.
+FAST_PATHS = True
+
 
 def cross_reference(a, b):
     """2D cross product of two vectors, a scalar in px² (or px²/s, ...): the readable form of `cross`.
@@ -29,8 +33,17 @@ def spin_velocity(omega, r):
     """Velocity (px/s) of a point at offset r (px) on a body spinning at omega (rad/s).
 
     This is omega × r in 2D: the vector (-omega * r.y, omega * r.x), at right
-    angles to r and omega * |r| long.
+    angles to r and omega * |r| long (spin_velocity_reference).
     """
+    if FAST_PATHS:
+        # (r omega) turned a quarter turn: pygame's rotate(90) is exactly (x, y) -> (-y, x), so this is
+        # (-(r.y omega), r.x omega), the same floats as the reference, in two C calls (2× quicker)
+        return (r * omega).rotate(90)
+    return spin_velocity_reference(omega, r)
+
+
+def spin_velocity_reference(omega, r):
+    """The readable form of spin_velocity: Vector2(-omega * r.y, omega * r.x) (px/s)."""
     return Vector2(-omega * r.y, omega * r.x)
 
 

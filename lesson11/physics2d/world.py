@@ -594,6 +594,9 @@ class World:
         for the others, so a sleeping pile next to one moving crate costs only
         the crates near it (its sweep uses pos ± the bounding radius).
         """
+        if collision.FAST_PATHS and not speculative and "sleep" not in self.effects:
+            yield from _plain_manifolds(self)  # the same search on plain lists (the lab's case)
+            return
         bodies = self.bodies
         sleep = "sleep" in self.effects
         moving = [self.moves(body) for body in bodies] if sleep else [body.inv_mass != 0 for body in bodies]
@@ -668,3 +671,77 @@ class _Geometry:
         if k not in self.boxes:
             self.boxes[k] = self.bodies[k].aabb(self.points(k))
         return self.boxes[k]
+
+
+def _plain_manifolds(world):
+    """World.manifolds() without "sleep" or speculative contacts, on plain lists: the same pairs, calls and floats.
+
+    Every body's world points and box are computed up front (as _Geometry does
+    without "sleep"; boxes of polygons by _polygon_box), and a pair of polygons
+    under the corners rule calls the World's sat and collision.contact_points
+    directly (collide's own path for it, less its dispatch); other pairs go
+    through collision.collide. The reference is the rest of manifolds(), which
+    collision.FAST_PATHS = False runs.
+    """
+    bodies = world.bodies
+    moving = [body.inv_mass != 0 for body in bodies]
+    if True not in moving:
+        return
+    points = [body.world_points() for body in bodies]
+    boxes = []
+    for body, corners in zip(bodies, points):
+        if body.shape.kind == "polygon":
+            boxes.append(_polygon_box(corners))
+        else:
+            boxes.append(body.aabb(corners))
+    search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
+    pairs, tested = search(boxes, moving, None, 0.0, boxes)
+    world.counters["pair_tests"] += tested
+    sat, rule = world.sat, world.contact_rule
+    circle_polygon, circle_point = world.circle_polygon, world.circle_point
+    contact_points, collide, manifold_of = collision.contact_points, collision.collide, collision.Manifold
+    narrow = contacts = 0
+    try:
+        for i, j in pairs:
+            a, b = bodies[i], bodies[j]
+            narrow += 1
+            if rule == "corners" and a.shape.kind == "polygon" and b.shape.kind == "polygon":
+                hit = sat(points[i], points[j])
+                if hit is None:
+                    continue
+                normal, depth = hit
+                found = contact_points(points[i], points[j], normal)
+                manifold = manifold_of(normal, depth, found, [depth] * len(found))
+            else:
+                manifold = collide(a, b, points[i], points[j], rule, sat, 0.0, circle_polygon, circle_point)
+                if manifold is None:
+                    continue
+            contacts += len(manifold.points)
+            yield a, b, manifold
+    finally:
+        world.counters["narrow_tests"] += narrow
+        world.counters["contacts"] += contacts
+
+
+def _polygon_box(corners):
+    """Body.aabb of a polygon from its world corners: (min x, min y, max x, max y) px; unrolled for four corners.
+
+    The same comparisons as min() and max() (the first of equal values kept), so the same floats.
+    """
+    if len(corners) != 4:
+        xs = [p.x for p in corners]
+        ys = [p.y for p in corners]
+        return (min(xs), min(ys), max(xs), max(ys))
+    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = corners
+    left = right = x0
+    top = bottom = y0
+    for x, y in ((x1, y1), (x2, y2), (x3, y3)):
+        if x < left:
+            left = x
+        if x > right:
+            right = x
+        if y < top:
+            top = y
+        if y > bottom:
+            bottom = y
+    return (left, top, right, bottom)

@@ -1,0 +1,128 @@
+"""The fast paths (vectors.FAST_PATHS, collision.FAST_PATHS) change no number the World computes.
+
+Every lab's default scene (its solution's make_world, seed 11; Bullets with bullets
+fired in plain and "ccd" mode) and the Tumbling Crates 12-crate clicked pile (in
+the default setting, 1 × 6, move-first, all-pairs and the accumulated solver) run
+twice side by side, one world with the fast paths and one with the readable
+reference forms, switched around each step. After every step the float.hex of
+every body's pos, angle, vel and omega must be the same: bit for bit, not "close".
+"""
+import importlib.util
+import math
+import os
+import random
+
+import pytest
+
+from lesson11.bench import energy
+from lesson11.physics2d import collision, vectors
+from lesson11.physics2d.vectors import Vector2
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+fast_paths = collision.fast_paths  # both switches: collision.FAST_PATHS and vectors.FAST_PATHS
+
+
+def solution(name):
+    """solutions/<name>.py as a module (its main() does not run)."""
+    spec = importlib.util.spec_from_file_location(f"fast_paths_{name}", os.path.join(ROOT, "solutions", f"{name}.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def state(world):
+    """Every body's pos, angle, vel and omega as float.hex strings."""
+    return [tuple(v.hex() for v in (b.pos.x, b.pos.y, b.angle, b.vel.x, b.vel.y, b.omega)) for b in world.bodies]
+
+
+def lockstep(make, steps, drops=None):
+    """Build the scene twice (make() -> world), step both `steps` times, fast and reference; assert every state equal.
+
+    drops: {step: function(world) -> bodies to add before that step} (called once per world).
+    Returns the number of contact points seen, so a test can tell the scene had contacts.
+    """
+    fast, slow = make(), make()
+    seen = 0
+    for k in range(steps):
+        for world in (fast, slow):
+            for body in (drops or {}).get(k, lambda w: ())(world):
+                world.add(body)
+        with fast_paths(True):
+            fast.step()
+        with fast_paths(False):
+            slow.step()
+        assert state(fast) == state(slow), f"step {k}: the fast paths changed a body's state"
+        assert [(c.point.x.hex(), c.point.y.hex()) for c in fast.contacts] == \
+            [(c.point.x.hex(), c.point.y.hex()) for c in slow.contacts], f"step {k}: contact points differ"
+        seen += len(fast.contacts)
+    assert fast.counters == slow.counters
+    return seen
+
+
+@pytest.mark.parametrize("lab", ["tumbling_crates", "ball_on_ramp", "more_shapes", "sleeping_crates"])
+def test_every_labs_default_scene_is_bit_identical(lab):
+    module = solution(lab)
+    assert lockstep(lambda: module.make_world(random.Random(11)), 360) > 0
+
+
+@pytest.mark.parametrize("mode", ["plain", "ccd"])
+def test_bullets_default_scene_with_shots_is_bit_identical(mode):
+    module = solution("bullets")
+    shots = {10 * k: (lambda w, k=k: [module.make_bullet(module.GUN, Vector2(1, 0.05 * k - 0.1).normalize() * 6000)])
+             for k in range(5)}
+    assert lockstep(lambda: module.make_world(random.Random(11), mode), 120, shots) > 0
+
+
+@pytest.mark.parametrize("settings", [{}, {"substeps": 1, "iterations": 6}, {"order": "move-first"},
+                                      {"broad_phase": "all-pairs"}, {"solver": "accumulated"}],
+                         ids=["default", "1x6", "move-first", "all-pairs", "accumulated"])
+def test_the_12_crate_clicked_pile_is_bit_identical(settings):
+    def make():
+        world, clicks = energy.scene("pile", settings)  # the lab's world and its 12 clicked crates, by step
+        world.clicks = clicks
+        return world
+    drops = {step: (lambda world, step=step: world.clicks[step]) for step in make().clicks}
+    assert lockstep(make, 600, drops) > 0
+
+
+def test_the_quick_forms_agree_with_the_readable_ones_on_random_input():
+    """project, spin_velocity, center_of and contact_points against their references, on random boxes and spins."""
+    from lesson11.physics2d import Body, box_points
+    rng = random.Random(5)
+    for _ in range(3000):
+        a, b = (Body(box_points(rng.uniform(5, 90), rng.uniform(5, 90)), (rng.uniform(0, 50), rng.uniform(0, 50)), 1,
+                     angle=rng.choice([0.0, math.pi / 2, rng.uniform(-7, 7)])) for _ in range(2))
+        pa, pb = a.world_points(), b.world_points()
+        axis = Vector2(rng.uniform(-1, 1), rng.uniform(-1, 1))
+        assert collision.project(pa, axis) == collision.project_reference(pa, axis)
+        assert collision.project(pa, tuple(axis)) == collision.project_reference(pa, tuple(axis))  # a lab's tuple axis
+        omega, r = rng.choice([0.0, -0.0, rng.uniform(-9, 9)]), pa[0] - a.pos
+        fast, slow = vectors.spin_velocity(omega, r), vectors.spin_velocity_reference(omega, r)
+        assert (fast.x.hex(), fast.y.hex()) == (slow.x.hex(), slow.y.hex())
+        with fast_paths(False):
+            centre = collision.center_of(pa)
+        assert collision.center_of(pa) == centre and collision.center_of(pa) is not pa.center
+        hit = collision.sat(pa, pb)
+        if hit is not None:
+            assert collision.contact_points(pa, pb, hit[0]) == collision.contact_points_reference(pa, pb, hit[0])
+    assert collision.centre_of is collision.center_of  # the name the labs import still works
+
+
+def test_separate_skips_only_moves_that_change_nothing():
+    """separate() returns early for a push of 0 only when pos -/+ n * 0 is pos bit for bit: signed zeros in a position,
+    a NaN or infinite normal and a NaN depth all take the reference's two moves."""
+    import copy
+    from lesson11.physics2d import Body, box_points, response
+    rng = random.Random(3)
+    values = [0.0, -0.0, 1.5, -2.25, 1e-300]
+    normals = [Vector2(0.6, -0.8), Vector2(-0.0, 1.0), Vector2(0.0, -1.0), Vector2(math.nan, 0), Vector2(math.inf, 0)]
+    for _ in range(5000):
+        a, b = (Body(box_points(10, 10), (rng.choice(values + [rng.uniform(-9, 9)]),
+                                          rng.choice(values + [rng.uniform(-9, 9)])), rng.choice([0, 1.0, 2.5]))
+                for _ in range(2))
+        normal, depth = rng.choice(normals), rng.choice([0.0, -0.0, 0.5, 0.3, 0.7, math.nan, -3.0])
+        a2, b2 = copy.deepcopy(a), copy.deepcopy(b)
+        response.separate(a, b, normal, depth)
+        response.separate_reference(a2, b2, normal, depth)
+        assert [v.hex() for v in (a.pos.x, a.pos.y, b.pos.x, b.pos.y)] == \
+            [v.hex() for v in (a2.pos.x, a2.pos.y, b2.pos.x, b2.pos.y)]
