@@ -340,3 +340,43 @@ def test_a_record_the_runtime_cannot_have_written_is_not_replayed():
     assert replay.frames == [] and replay.scene is None and replay.fail_frame is None
     viewer = show_view.run(replay, events=scripted([key(pygame.K_j)]), frames=2)   # draws the "no scene" text
     assert viewer.frame is None
+
+
+def test_sat_case_text_and_drawing_do_not_overlap(tmp_path):
+    """Every failing sat() case, on every axis: nothing of the drawing (the shapes, both shadows, the overlap
+    label, the lesson's MTV and the student's answer) lies under the explorer's explanation lines or the
+    case's footer, which are drawn over it. Measured on the drawing alone (draw_scene), before the bands."""
+    from lesson11 import explorer
+    corpus = importlib.import_module("corpus_tumbling_crates")
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(corpus.build("sat_largest_overlap"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("tumbling_crates"), seed=SEED)
+    colours = (explorer.BLUE, explorer.ORANGE, explorer.OVERLAP_RED, explorer.MTV_YELLOW, show_cases.STUDENT)
+    for case in replay.cases:
+        for axis in range(len(case.view.axes())):
+            case.view.axis_index = axis
+            surface = pygame.Surface(show_view.SCENE)
+            case.draw_scene(surface)
+            top, bottom = case.band()
+            forbidden = pygame.mask.Mask(show_view.SCENE)
+            # under the text: from below the status word (which the explorer draws in red) to the band,
+            # and the footer
+            forbidden.draw(pygame.mask.Mask((show_view.SCENE[0], top - case.MARGIN - 62), fill=True), (0, 62))
+            footer = show_view.SCENE[1] - (bottom + case.MARGIN)
+            forbidden.draw(pygame.mask.Mask((show_view.SCENE[0], footer), fill=True), (0, bottom + case.MARGIN))
+            for colour in colours:
+                drawn = pygame.mask.from_threshold(surface, colour, (2, 2, 2, 255))
+                assert drawn.overlap_area(forbidden, (0, 0)) == 0, (case.lines()[0], axis, colour)
+            assert max(case.font.size(line)[0] for line in case.header()) <= show_view.SCENE[0] - 20
+
+
+def test_replay_title_fits_the_window(shown):
+    """The replay's title lines (lab, check, scene, frame, mode) each fit the window's width."""
+    lab, path, row, replay = shown
+    viewer = show_view.Viewer(replay)
+    viewer.showing_cases = False
+    viewer.playing = False
+    lines = viewer.hud_lines()
+    if replay.frames:
+        assert len(lines) >= 2 and replay.check.id in lines[0] and "PAUSED" in " ".join(lines)
+    assert all(viewer.font.size(line)[0] <= show_view.SCENE[0] - 20 for line in lines[:-1])
