@@ -399,7 +399,8 @@ class ImpulseCase:
         pygame.draw.circle(surface, (235, 80, 80), contact, 5)
         if impulse.length() > 0:
             _arrow(surface, TEXT, contact, contact + impulse.normalize() * 60, 2)
-            surface.blit(font.render("impulse P", True, TEXT), contact + impulse.normalize() * 66)
+            label = self.case.get("impulse_label", "impulse P")
+            surface.blit(font.render(label, True, TEXT), contact + impulse.normalize() * 66)
         _footer(surface, self.lines(), "arrows: velocity change (same scale), arcs: spin change   [ ]: case   Tab: scene")
 
 
@@ -609,8 +610,8 @@ def _time(value):
 class ToiCase:
     """One circle_toi() case: both circles' paths over the step, where they are at the student's time of
     impact (magenta) and at the lesson's (yellow), and a bar of the step [0, dt] with both times on it.
-    The geometry comes from the probe's fixed cases (checker/labs/bullets/probes.py toi_cases(), grader-side
-    code); a case drawn at random for the run shows the times only."""
+    The geometry comes from the probe's cases (checker/labs/bullets/probes.py toi_cases(), and drawn_toi_cases()
+    redrawn from the grading seed: _toi_geometry), grader-side code; without it only the times are shown."""
 
     kind = "toi"
 
@@ -728,11 +729,16 @@ def swept_wrong(case):
     return any(not _close(g, w) for a, b in pairs for key in ("pos", "vel") for g, w in zip(a[key], b[key]))
 
 
-def _toi_geometry(name):
+def _toi_geometry(case, seed=None):
+    """(p1, v1, r1, p2, v2, r2) of a circle_toi case: a fixed one from the probe's toi_cases(), a drawn one
+    redrawn here from the grading seed as the probe drew it (drawn_toi_cases with run_rng's Random), both
+    grader-side code; a redrawn case counts only when its dt is the recorded one. None when neither fits."""
+    import random
     from .labs.bullets import probes
-    for case in probes.toi_cases():
-        if case[0] == name:
-            return case[1], case[2], case[3], case[4], case[5], case[6]
+    drawn = probes.drawn_toi_cases(random.Random(f"{seed}:circle_toi")) if seed is not None else []
+    for name, p1, v1, r1, p2, v2, r2, dt in probes.toi_cases() + drawn:
+        if name == case["case"] and abs(dt - case["dt"]) <= 1e-12 * max(1.0, dt):
+            return p1, v1, r1, p2, v2, r2
     return None
 
 
@@ -748,10 +754,16 @@ def _data(functions, name):
     return entry.get("data") if entry.get("ok") else None
 
 
-def failing_cases(lab, result, functions):
-    """The failing cases of a failed function check, as drawable cases ([] for other checks or no data)."""
+def failing_cases(lab, result, functions, seed=None):
+    """The failing cases of a failed function check, as drawable cases ([] for other checks or no data).
+
+    seed: the grading run's seed (the probe's drawn inputs; Bullets' drawn circle_toi paths are redrawn from it)."""
     if result.status not in ("fail", "error"):
         return []
+    from . import show_cases_labs
+    cases = show_cases_labs.failing_cases(lab, result, functions)
+    if cases is not None:
+        return cases
     for name in SAT_PROBES.get(result.id, ()):
         data = _data(functions, name)
         if data:
@@ -769,7 +781,7 @@ def failing_cases(lab, result, functions):
                 for k, case in enumerate(wrong)]
     if result.id == "toi_matches_root":
         wrong = [case for case in _data(functions, "circle_toi") or [] if "want" in case and toi_wrong(case)]
-        return [ToiCase(case, k + 1, len(wrong), _toi_geometry(case["case"])) for k, case in enumerate(wrong)]
+        return [ToiCase(case, k + 1, len(wrong), _toi_geometry(case, seed)) for k, case in enumerate(wrong)]
     if result.id == "swept_move_resolves":
         from .labs.bullets import probes
         wrong = [case for case in _data(functions, "swept_move") or [] if "want" in case and swept_wrong(case)]
