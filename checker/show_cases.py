@@ -14,7 +14,10 @@ of the student's code runs in this process.
   ToiCase      circle_toi(): both circles' paths, where they are at both times of impact, a bar of the step
   SweptCase    swept_move(): the bullet's path to the impact and both ends of the step
 
-failing_cases(lab, result, functions) -> [case], each with draw(surface), key(key) and lines().
+More Shapes' separating_axes, Ball on the Ramp's and Sleeping Crates' function checks are drawn by
+checker/show_cases_labs.py.
+
+failing_cases(lab, result, functions, seed) -> [case], each with draw(surface), key(key) and lines().
 """
 import math
 import re
@@ -318,7 +321,8 @@ class SatCase:
         surface.blit(self.big.render(status, True, (235, 80, 80) if status == "OVERLAP" else (90, 210, 120)),
                      (20, 10))
         for row, line in enumerate(self.header()):
-            surface.blit(ScaledFont(self.font, self.scale).render(line, True, TEXT), (20, HEADER_TOP + HEADER_ROW * row))
+            text = ScaledFont(self.font, self.scale).render(line, True, TEXT)
+            surface.blit(text, (20, HEADER_TOP + HEADER_ROW * row))
         _footer(surface, self.lines(), "N/Space: next axis   [ ]: previous/next case   Tab: the scene   Esc: quit")
 
 

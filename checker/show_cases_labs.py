@@ -228,7 +228,8 @@ class CircleCase(Case):
         surface.fill(BACK)
         case = self.case
         centre, radius = Vector2(case["center"]), case["radius"]
-        at, scale = _view(case["points"] + [centre - Vector2(radius, radius) * 1.5, centre + Vector2(radius, radius) * 1.5])
+        reach = Vector2(radius, radius) * 1.5
+        at, scale = _view(case["points"] + [centre - reach, centre + reach])
         pygame.draw.polygon(surface, (70, 74, 90), [at(p) for p in case["points"]])
         pygame.draw.polygon(surface, GREY, [at(p) for p in case["points"]], 2)
         pygame.draw.circle(surface, ORANGE, at(centre), max(2, radius * scale), 2)
@@ -450,14 +451,16 @@ class MovesCase(Case):
 
     def lines(self):
         got = self.case["got"]
-        said = lambda v: v if isinstance(v, str) else f"moves() = {v}" + (": integrated" if v else ": left alone")   # noqa: E731
+        def said(v):
+            return v if isinstance(v, str) else f"moves() = {v}" + (": integrated" if v else ": left alone")
         return [self.head(), f"yours (magenta): {said(got)}", f"the lesson's (yellow): {said(self.case['want'])}"]
 
     def draw(self, surface):
         surface.fill(BACK)
         rect = pygame.Rect(330, 120, 120, 80)
         _crate(surface, rect, _kind_of(self.case["case"]))
-        for answer, colour, x in ((self.case["want"], LESSON, rect.left - 30), (self.case["got"], STUDENT, rect.right + 30)):
+        answers = ((self.case["want"], LESSON, rect.left - 30), (self.case["got"], STUDENT, rect.right + 30))
+        for answer, colour, x in answers:
             if answer is True:
                 _arrow(surface, colour, (x, rect.top), (x, rect.bottom + 140), 4)
             else:
@@ -491,7 +494,8 @@ class WakeCase(Case):
                 pygame.draw.rect(surface, LESSON, rect.inflate(16, 16), 5)
             if name in got:
                 pygame.draw.rect(surface, STUDENT, rect.inflate(-10, -10), 3)
-            for row, (woken, colour, whose) in enumerate(((self.case["want"], LESSON, "lesson"), (got, STUDENT, "yours"))):
+            answers = ((self.case["want"], LESSON, "lesson"), (got, STUDENT, "yours"))
+            for row, (woken, colour, whose) in enumerate(answers):
                 chip = pygame.Rect(left + 10, rect.bottom + 44 + 30 * row, 160, 24)
                 pygame.draw.rect(surface, colour, chip, 0 if name in woken else 2)
                 surface.blit(small.render(f"{whose}: {'wakes' if name in woken else 'leaves'}", True,

@@ -448,3 +448,31 @@ def test_a_drawn_time_of_impact_case_has_its_geometry(tmp_path):
         assert show_cases.STUDENT in colours and show_cases.LESSON in colours   # both circles at both times
     other = show_cases._toi_geometry(drawn[0].case, SEED + 1)   # another seed draws other paths: not used
     assert other is None
+
+
+def test_more_shapes_sat_on_the_students_axes_is_drawn_as_a_sat_case():
+    """parallel_axes also fails when every axis is right but sat() on them is not (the probe's "sat" data): those
+    pairs are drawn as SAT cases with the pair's shapes from the probe's own list, both answers on the picture.
+    The probe data here are made by hand (no corpus file fails that way): the lesson's answer from the grader's
+    reference_sat, the student's with the depth doubled."""
+    from checker import probe_kit
+    from checker.labs.more_shapes import probes
+    name, a, b = probes.axis_pairs()[0]   # two aligned boxes, overlapping
+    normal, depth = probe_kit.reference_sat(a, b)
+    want = {"normal": list(normal), "depth": depth}
+    wrong = {"pair": name, "order": "B, A", "got": {"normal": list(normal), "depth": 2 * depth}, "want": want,
+             "ties": []}
+    right = dict(wrong, order="A, B", got=want)
+    functions = {"separating_axes": {"ok": True, "data": []}, "sat": {"ok": True, "data": [right, wrong]}}
+    result = type("R", (), {"id": "parallel_axes", "status": "fail", "message": ""})()
+    cases = show_cases.failing_cases(lab_of("more_shapes"), result, functions)
+    assert len(cases) == 1 and isinstance(cases[0], show_cases.SatCase)
+    case = cases[0]
+    assert [list(p) for p in case.case["a"]] == [list(p) for p in b]   # B, A: the shapes swapped
+    yours, lesson = case.answers()
+    assert f"{2 * depth:.2f}" in yours and f"{depth:.2f}" in lesson
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    top = case.band()[0]
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900, 2) for y in range(top, case.band()[1], 2)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
