@@ -1,5 +1,6 @@
-"""More failing function cases drawn by --show: More Shapes' separating_axes, Ball on the Ramp's and Sleeping
-Crates' function checks (checker/show_cases.py has SAT, apply_impulse, resolve, polygons and Bullets).
+"""More failing function cases drawn by --show: More Shapes' regular_polygon and separating_axes, Bullets'
+bounding_radius, Ball on the Ramp's and Sleeping Crates' function checks (checker/show_cases.py has SAT,
+apply_impulse, resolve, polygons, circle_toi and swept_move).
 
 As there, the data are the probe's, judged on the grading side: the student's answer ("got", recorded in the
 child) beside the lesson's (computed in the grader). Shapes and bodies the data name but do not hold come from
@@ -15,6 +16,8 @@ the probe modules' fixed cases, which is grader-side code. Nothing of the studen
   TimerCase     sleep_timer(): speed and spin against their thresholds, the timer before and both timers after
   MovesCase     moves(): the body (static, awake, asleep) and whether each answer lets it fall
   WakeCase      wake_on_contact(): the two bodies touching, the ones each answer wakes outlined
+  CornersCase   More Shapes' regular_polygon(): both outlines on the circle of the radius, corner 0 marked
+  BoundingCase  Bullets' bounding_radius(): the outline, its centre and both circles
 Ball on the Ramp's disc_inertia is drawn as show_cases.PolygonCase (a disc with both radii of gyration) and its
 resolve() as show_cases.ImpulseCase (each body's velocity and spin change after the friction impulse).
 
@@ -174,6 +177,96 @@ def parallel_axes_cases(functions):
         cases.append(SatCase({"pair": c["pair"], "order": c["order"], "a": [list(p) for p in a],
                               "b": [list(p) for p in b], "got": c["got"], "lesson": c["want"]}, k + 1, len(sats)))
     return cases
+
+
+class CornersCase(Case):
+    """regular_polygon(sides, radius): the circle of the radius (grey), the lesson's outline (yellow, thick) and
+    the student's (magenta), each with its corner 0 marked by a dot."""
+
+    kind = "corners"
+
+    def head(self):
+        return f"failing case {self.number} of {self.count}: regular_polygon({self.case['sides']}, " \
+               f"{self.case['radius']:g})"
+
+    def lines(self):
+        got, want = self.case["got"], self.case["want"]
+        yours = got if isinstance(got, str) else f"{len(got)} corners, corner 0 at {_vec(got[0]) if got else '-'}" \
+            + (f", corner 1 at {_vec(got[1])}" if len(got) > 1 else "")
+        return [self.head(), f"yours (magenta): {yours}",
+                f"the lesson's (yellow): {len(want)} corners, corner 0 at {_vec(want[0])}, corner 1 at {_vec(want[1])}"]
+
+    def draw(self, surface):
+        surface.fill(BACK)
+        radius = self.case["radius"]
+        got = self.case["got"] if not isinstance(self.case["got"], str) else []
+        got = [p for p in got if _is_point(p)]
+        at, scale = _view([(-radius, -radius), (radius, radius)] + got)
+        pygame.draw.circle(surface, GREY, at((0, 0)), radius * scale, 1)
+        for points, colour, width in ((self.case["want"], LESSON, 5), (got, STUDENT, 2)):
+            if len(points) >= 2:
+                pygame.draw.lines(surface, colour, True, [at(p) for p in points], width)
+            if points:
+                pygame.draw.circle(surface, colour, at(points[0]), 8 if colour == LESSON else 5)
+        self.finish(surface, "grey: the circle of the radius, dots: corner 0")
+
+
+def corners_wrong(case):
+    """True when the student's corners are not the lesson's (More Shapes' polygon_corners rule)."""
+    from .labs.more_shapes.checks import _close
+    got, want, radius = case["got"], case["want"], case["radius"]
+    return isinstance(got, str) or len(got) != len(want) or not all(
+        _close(g[0], w[0], radius) and _close(g[1], w[1], radius) for g, w in zip(got, want))
+
+
+# ---------------------------------------------------------------- Bullets: bounding_radius
+
+class BoundingCase(Case):
+    """bounding_radius(points, centre): the outline (the probe's fixed shapes; one drawn for the run has none
+    here), its centre, the lesson's circle through the farthest corner (yellow) and the student's (magenta)."""
+
+    kind = "bounding"
+
+    def __init__(self, case, number, count, shape):
+        super().__init__(case, number, count)
+        self.shape = shape   # (points, centre) or None
+
+    def lines(self):
+        got = self.case["got"]
+        yours = f"{got:.4g} px" if isinstance(got, float) else str(got)
+        return [self.head(), f"yours (magenta): radius {yours}",
+                f"the lesson's (yellow): radius {self.case['want']:.4g} px (the farthest corner)"]
+
+    def draw(self, surface):
+        surface.fill(BACK)
+        points, centre = self.shape if self.shape else ([], Vector2())
+        got = self.case["got"] if isinstance(self.case["got"], float) and 0 <= self.case["got"] < 1e6 else None
+        want = self.case["want"]
+        beyond = got is not None and got > 3 * want   # the student's circle is not fitted in: an arrow says so
+        reach = max([want * 1.2] + ([got] if got is not None and not beyond else []))
+        corner = Vector2(reach, reach)
+        at, scale = _view([centre - corner, centre + corner] + [tuple(p) for p in points])
+        if len(points) >= 3:
+            pygame.draw.polygon(surface, (70, 130, 235), [at(p) for p in points])
+            pygame.draw.polygon(surface, TEXT, [at(p) for p in points], 1)
+        pygame.draw.circle(surface, TEXT, at(centre), 4)
+        pygame.draw.circle(surface, LESSON, at(centre), max(2, self.case["want"] * scale), 4)
+        if beyond:
+            _arrow(surface, STUDENT, at(centre), Vector2(SIZE[0] - 20, at(centre).y), 2)
+            surface.blit(_font(20).render(f"yours: {got:.4g} px, beyond the picture", True, STUDENT),
+                         (SIZE[0] - 300, at(centre).y + 8))
+        elif got is not None:
+            pygame.draw.circle(surface, STUDENT, at(centre), max(2, got * scale), 2)
+        self.finish(surface, "white: the centre" + ("" if points else " (the shape was drawn for the run)"))
+
+
+def bounding_cases(functions):
+    from .labs.bullets import checks, probes
+    from .show_cases import _data
+    shapes = {name: (points, centre) for name, points, centre in probes.bounding_cases()}
+    wrong = [c for c in _data(functions, "bounding_radius") or [] if "want" in c and
+             not (isinstance(c["got"], float) and checks._close(c["got"], c["want"]))]
+    return [BoundingCase(c, k + 1, len(wrong), shapes.get(c["case"])) for k, c in enumerate(wrong)]
 
 
 # ---------------------------------------------------------------- Ball on the Ramp
@@ -521,8 +614,14 @@ def sleeping_crates_cases(check_id, functions):
 
 def failing_cases(lab, result, functions):
     """The failing cases of one of the checks drawn here ([] when there are none to draw), or None for others."""
+    from .show_cases import _data
     if lab.id == "more_shapes" and result.id == "parallel_axes":
         return parallel_axes_cases(functions)
+    if lab.id == "more_shapes" and result.id == "polygon_corners":
+        wrong = [c for c in _data(functions, "regular_polygon") or [] if "want" in c and corners_wrong(c)]
+        return [CornersCase(c, k + 1, len(wrong)) for k, c in enumerate(wrong)]
+    if lab.id == "bullets" and result.id == "bounding_circle":
+        return bounding_cases(functions)
     if lab.id == "ball_on_ramp":
         return ball_on_ramp_cases(result.id, functions)
     if lab.id == "sleeping_crates":

@@ -382,7 +382,9 @@ def test_replay_title_fits_the_window(shown):
 
 # lab id, corpus entry with one wrong step, the check it fails, the kind of case --show draws for it
 STEP_CASES = [
+    ("more_shapes", "corners_in_degrees", "polygon_corners", show_cases_labs.CornersCase),
     ("more_shapes", "axes_same_way_only", "parallel_axes", show_cases_labs.AxesCase),
+    ("bullets", "bounding_squared", "bounding_circle", show_cases_labs.BoundingCase),
     ("ball_on_ramp", "closest_not_clamped", "closest_point", show_cases_labs.ClosestCase),
     ("ball_on_ramp", "inside_not_flipped", "inside_case", show_cases_labs.CircleCase),
     ("ball_on_ramp", "push_not_split", "push_out_split", show_cases_labs.SeparateCase),
@@ -400,7 +402,7 @@ def test_a_wrong_step_opens_on_its_case_with_both_answers(tmp_path, lab_id, entr
     """A file of the mistake corpus with one wrong step: --show (graded as the checker grades it, keys scripted)
     opens on that step's failing cases, the drawing above the case's text carries the student's answer (magenta)
     and the lesson's (yellow), the text names both and they differ, and ] steps to the next case.
-    (Bullets' steps: test_time_of_impact_case_shows_both_times, test_a_drawn_time_of_impact_case_has_its_geometry,
+    (Bullets' other steps: test_time_of_impact_case_shows_both_times, test_a_drawn_time_of_impact_case_has_its_geometry,
     and the swept move in test_failing_cases_draw_both_answers.)"""
     corpus = importlib.import_module(f"corpus_{lab_id}")
     assert next(e for e in corpus.WRONG if e.name == entry).check == check   # the corpus's own verdict
