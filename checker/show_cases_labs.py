@@ -1,5 +1,5 @@
 """More failing function cases drawn by --show: More Shapes' regular_polygon and separating_axes, Bullets'
-bounding_radius, Ball on the Ramp's and Sleeping Crates' function checks (checker/show_cases.py has SAT,
+bounding_radius and time_of_impact, Ball on the Ramp's and Sleeping Crates' function checks (show_cases.py: SAT,
 apply_impulse, resolve, polygons, circle_toi and swept_move).
 
 As there, the data are the probe's, judged on the grading side: the student's answer ("got", recorded in the
@@ -18,6 +18,7 @@ the probe modules' fixed cases, which is grader-side code. Nothing of the studen
   WakeCase      wake_on_contact(): the two bodies touching, the ones each answer wakes outlined
   CornersCase   More Shapes' regular_polygon(): both outlines on the circle of the radius, corner 0 marked
   BoundingCase  Bullets' bounding_radius(): the outline, its centre and both circles
+  BroadCase     Bullets' time_of_impact(): the crate, its bounding circle, the path, both impacts, the exact tests
 Ball on the Ramp's disc_inertia is drawn as show_cases.PolygonCase (a disc with both radii of gyration) and its
 resolve() as show_cases.ImpulseCase (each body's velocity and spin change after the friction impulse).
 
@@ -267,6 +268,59 @@ def bounding_cases(functions):
     wrong = [c for c in _data(functions, "bounding_radius") or [] if "want" in c and
              not (isinstance(c["got"], float) and checks._close(c["got"], c["want"]))]
     return [BoundingCase(c, k + 1, len(wrong), shapes.get(c["case"])) for k, c in enumerate(wrong)]
+
+
+class BroadCase(Case):
+    """time_of_impact(bullet, other, dt): the crate with its bounding circle (grey), the bullet's path over the step,
+    where the bullet is at the lesson's time of impact (yellow, with the normal) and at the student's (magenta), at
+    the path's end for "no hit", and how many exact swept tests the student's ran (magenta ticks at its start)."""
+
+    kind = "broad"
+
+    def __init__(self, case, number, count, geometry):
+        super().__init__(case, number, count)
+        self.geometry = geometry   # (bullet, other body, dt) from the probe's impact_cases()
+
+    def lines(self):
+        from .labs.bullets.checks import _hit
+        case = self.case
+        reach = "the bullet reaches the bounding circle" if case["needs_exact"] else \
+            "out of the bounding circle's reach: no exact test needed"
+        return [self.head(), f"yours (magenta): {_hit(case['got'])}, {case['exact_tests']} exact swept test(s)",
+                f"the lesson's (yellow): {_hit(case['want'])} ({reach})"]
+
+    def draw(self, surface):
+        surface.fill(BACK)
+        bullet, other, dt = self.geometry
+        corners = other.world_points()
+        bounding = max(other.pos.distance_to(p) for p in corners)
+        end = bullet.pos + bullet.vel * dt
+        reach = Vector2(bounding, bounding)
+        at, scale = _view([other.pos - reach, other.pos + reach, bullet.pos, end])
+        pygame.draw.polygon(surface, BLUE, [at(p) for p in corners])
+        pygame.draw.circle(surface, GREY, at(other.pos), bounding * scale, 1)
+        pygame.draw.line(surface, GREY, at(bullet.pos), at(end), 1)
+        pygame.draw.circle(surface, TEXT, at(bullet.pos), max(3, bullet.radius * scale), 1)
+        for hit, colour, width in ((self.case["want"], LESSON, 4), (self.case["got"], STUDENT, 2)):
+            if hit is None:   # no hit: the bullet ends the step where its path ends
+                pygame.draw.circle(surface, colour, at(end), max(4, bullet.radius * scale) + width, width)
+            elif isinstance(hit, dict) and "t" in hit and abs(hit["t"]) < 10 * dt:
+                where = at(bullet.pos + bullet.vel * hit["t"])
+                pygame.draw.circle(surface, colour, where, max(4, bullet.radius * scale), width)
+                _arrow(surface, colour, where, where + Vector2(hit["normal"]) * 40, width)
+        for k in range(min(self.case["exact_tests"], 10)):
+            x = at(bullet.pos).x - 10 + 8 * k
+            pygame.draw.line(surface, STUDENT, (x, at(bullet.pos).y - 30), (x, at(bullet.pos).y - 16), 3)
+        self.finish(surface, "grey: the bounding circle and the path over dt, ticks: your exact tests")
+
+
+def broad_cases(functions):
+    from .labs.bullets import checks, probes
+    from .show_cases import _data
+    geometry = {name: (bullet, other, dt) for name, bullet, other, dt, _ in probes.impact_cases()}
+    wrong = [c for c in _data(functions, "time_of_impact") or [] if "want" in c and c["case"] in geometry and
+             (not checks._hit_matches(c["got"], c["want"]) or (not c["needs_exact"] and c["exact_tests"]))]
+    return [BroadCase(c, k + 1, len(wrong), geometry[c["case"]]) for k, c in enumerate(wrong)]
 
 
 # ---------------------------------------------------------------- Ball on the Ramp
@@ -622,6 +676,8 @@ def failing_cases(lab, result, functions):
         return [CornersCase(c, k + 1, len(wrong)) for k, c in enumerate(wrong)]
     if lab.id == "bullets" and result.id == "bounding_circle":
         return bounding_cases(functions)
+    if lab.id == "bullets" and result.id == "broad_test":
+        return broad_cases(functions)
     if lab.id == "ball_on_ramp":
         return ball_on_ramp_cases(result.id, functions)
     if lab.id == "sleeping_crates":

@@ -385,6 +385,8 @@ STEP_CASES = [
     ("more_shapes", "corners_in_degrees", "polygon_corners", show_cases_labs.CornersCase),
     ("more_shapes", "axes_same_way_only", "parallel_axes", show_cases_labs.AxesCase),
     ("bullets", "bounding_squared", "bounding_circle", show_cases_labs.BoundingCase),
+    ("bullets", "broad_without_bullet_radius", "broad_test", show_cases_labs.BroadCase),
+    ("bullets", "broad_test_missing", "broad_test", show_cases_labs.BroadCase),
     ("ball_on_ramp", "closest_not_clamped", "closest_point", show_cases_labs.ClosestCase),
     ("ball_on_ramp", "inside_not_flipped", "inside_case", show_cases_labs.CircleCase),
     ("ball_on_ramp", "push_not_split", "push_out_split", show_cases_labs.SeparateCase),
