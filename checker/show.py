@@ -325,7 +325,7 @@ def build_replay(row, result, functions=None, run_scene=None, reference_record=N
     reference_record = reference_record or pictures.reference_record
     scene, graded, frames, reference = _scene_choice(row, result, run_scene, reference_record)
     fail_frame, reason, quantity, values = failure(lab, result, frames, reference, graded)
-    cases = show_cases.failing_cases(lab, result, functions or {})
+    cases = show_cases.failing_cases(lab, result, functions or {}, row.seed)
     return Replay(row.path, lab, result, scene, graded, row.seed, frames, reference, quantity, values, fail_frame,
                   reason, cases)
 

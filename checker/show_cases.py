@@ -14,7 +14,10 @@ of the student's code runs in this process.
   ToiCase      circle_toi(): both circles' paths, where they are at both times of impact, a bar of the step
   SweptCase    swept_move(): the bullet's path to the impact and both ends of the step
 
-failing_cases(lab, result, functions) -> [case], each with draw(surface), key(key) and lines().
+More Shapes' separating_axes, Ball on the Ramp's and Sleeping Crates' function checks are drawn by
+checker/show_cases_labs.py.
+
+failing_cases(lab, result, functions, seed) -> [case], each with draw(surface), key(key) and lines().
 """
 import math
 import re
@@ -101,36 +104,156 @@ class ScaledFont:
     def render(self, text, *args):
         return self.font.render(PX.sub(self._unscaled, text), *args)
 
+    def size(self, text):
+        return self.font.size(PX.sub(self._unscaled, text))
+
     def __getattr__(self, name):
         return getattr(self.font, name)
+
+
+HEADER_TOP, HEADER_ROW = 66, 24   # screen px: the explorer's own text rows (covered by the case's header band)
+
+
+class CaseExplorer:
+    """The SAT explorer's drawing (lesson11/explorer.py) fitted between a header and a footer band.
+
+    The explorer puts its axis AXIS_OFFSET px from the boxes, wherever the window has room, and its text at
+    the top: in the case view the text has its own band, so the axis goes just beyond the shapes and the
+    whole drawing (shapes, shadows, overlap label, both answers) is moved into the free band between."""
+
+    GAP = 40   # screen px between the shapes and the axis line
+
+    def __init__(self, explorer_class):
+        self.view = explorer_class(*SIZE)
+        self.view.axis_anchor = self.axis_anchor
+
+    def axis_anchor(self, normal):
+        """A point the axis line passes through: GAP px beyond the shapes, on the side of +side."""
+        middle = (self.view.blue.pos + self.view.orange.pos) / 2
+        side = Vector2(-normal.y, normal.x)
+        if side.y > 1e-9 or (abs(side.y) <= 1e-9 and side.x > 0):
+            side = -side   # above, else left of the shapes: one rule for every axis
+        points = self.view.blue.world_points() + self.view.orange.world_points()
+        reach = max((p - middle).dot(side) for p in points)
+        return middle + side * (reach + self.GAP)
+
+
+def wrapped(font, lines, width, separator=" "):
+    """The lines, each broken at `separator` where it is wider than `width` px in `font` (a piece that is
+    wider on its own stays whole)."""
+    out = []
+    for line in lines:
+        current = ""
+        for piece in line.split(separator):
+            joined = current + separator + piece if current else piece
+            if current and font.size(joined)[0] > width:
+                out.append(current)
+                current = piece
+            else:
+                current = joined
+        out.append(current)
+    return out
 
 
 class SatCase:
     """One sat() case drawn as the SAT explorer draws two boxes, with both answers.
 
-    The shapes are drawn `scale` times their size (they span about SHAPES_SPAN px), and every length
-    written on the picture is in the case's own px (ScaledFont).
+    The shapes are drawn `scale` times their size (they span at most about SHAPES_SPAN px, less when the
+    drawing would not fit between the bands: layout()), and every length written on the picture is in the
+    case's own px (ScaledFont).
     """
 
     kind = "sat"
+    MARGIN = 12   # screen px kept free around the drawing
 
     def __init__(self, case, number, count):
         from lesson11 import explorer
         self.case, self.number, self.count = case, number, count
         _font()   # the explorer's fonts need pygame.font ready
-        self.view = explorer.Explorer(*SIZE)
+        self.explorer = CaseExplorer(explorer.Explorer)
+        self.view = self.explorer.view
+        self.colours = explorer.BLUE, explorer.ORANGE
+        self.font = _font(24)
+        self.big = _font(44)
         a, b = case["a"], case["b"]
         xs, ys = [p[0] for p in a + b], [p[1] for p in a + b]
-        self.scale = max(1.0, min(6.0, SHAPES_SPAN / max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)))
-        self.view.font = ScaledFont(self.view.font, self.scale)
-        self.view.big_font = ScaledFont(self.view.big_font, self.scale)
-        a = [[v * self.scale for v in p] for p in a]
-        b = [[v * self.scale for v in p] for p in b]
-        middle = (centre_of([Vector2(p) for p in a]) + centre_of([Vector2(p) for p in b])) / 2
-        shift = Vector2(SIZE[0] / 2, SIZE[1] / 2 + 20) - middle
-        self.view.blue = _body(a, shift, explorer.BLUE)
-        self.view.orange = _body(b, shift, explorer.ORANGE)
+        self.span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+        self.layout(max(1.0, min(6.0, SHAPES_SPAN / self.span)))
         self.view.axis_index = self._best_axis()
+
+    # ---- layout
+    def _place(self, scale, shift=Vector2()):
+        """Build both bodies `scale` times the case's size, their shapes' middle at the band's middle + shift."""
+        self.scale = scale
+        self.view.font = ScaledFont(getattr(self.view.font, "font", self.view.font), scale)
+        self.view.big_font = ScaledFont(getattr(self.view.big_font, "font", self.view.big_font), scale)
+        a = [[v * scale for v in p] for p in self.case["a"]]
+        b = [[v * scale for v in p] for p in self.case["b"]]
+        middle = (centre_of([Vector2(p) for p in a]) + centre_of([Vector2(p) for p in b])) / 2
+        top, bottom = self.band()
+        at = Vector2(SIZE[0] / 2, (top + bottom) / 2) + shift - middle
+        self.view.blue = _body(a, at, self.colours[0])
+        self.view.orange = _body(b, at, self.colours[1])
+
+    def header(self):
+        """The header's lines: the explorer's explanation of the axis on screen, wrapped to the window."""
+        return wrapped(ScaledFont(self.font, self.scale), self.view.lines(), SIZE[0] - 40)
+
+    def band(self):
+        """(top, bottom) in screen px of the band the drawing must stay in: under the header, over the footer."""
+        return HEADER_TOP + HEADER_ROW * len(self.header()) + self.MARGIN, _footer_top(len(self.lines())) - self.MARGIN
+
+    def extent(self):
+        """(left, top, right, bottom) screen px of everything the case draws for the axis on screen: both
+        shapes, both shadows with the overlap label beside them, the lesson's MTV with its label and ghost,
+        the student's ghost (when it is within a few spans of the shapes)."""
+        view = self.view
+        _, _, normal = view.current_axis()
+        blue, orange, overlap = view.shadows(normal)
+        anchor = view.axis_anchor(normal)
+        label = self.view.font.size(f"overlap {overlap:.1f} px")
+        room = 14 + 9 + 10 + max(label)   # the explorer's SHADOW_GAP + SHADOW_WIDTH + 10, and the label
+        points = view.blue.world_points() + view.orange.world_points()
+        for value in blue + orange:
+            points += [view.on_axis(value, normal, anchor, room), view.on_axis(value, normal, anchor, -room)]
+        boxes = [(p, (0, 0)) for p in points]
+        hit = view.hit()
+        if hit is not None:
+            tip = view.orange.pos + hit[0] * hit[1]
+            boxes += [(p + hit[0] * hit[1], (0, 0)) for p in view.orange.world_points()]
+            boxes.append((tip + hit[0] * (view.orange.radius + 45), view.font.size(f"MTV {hit[1]:.1f} px")))
+        for p in self.student_ghost() or ():
+            boxes.append((p, (0, 0)))
+        return (min(p.x - w / 2 for p, (w, h) in boxes), min(p.y - h / 2 for p, (w, h) in boxes),
+                max(p.x + w / 2 for p, (w, h) in boxes), max(p.y + h / 2 for p, (w, h) in boxes))
+
+    def fits(self):
+        left, top, right, bottom = self.extent()
+        band = self.band()
+        return right - left <= SIZE[0] - 2 * self.MARGIN and bottom - top <= band[1] - band[0]
+
+    def layout(self, scale):
+        """Shrink the drawing until it fits the band for every axis (the scale stays the same while N steps
+        through the axes), then centre it in the band for the axis on screen."""
+        index = self.view.axis_index
+        while scale > 0.2:
+            self._place(scale)
+            fits = True
+            for k in range(len(self.view.axes())):
+                self.view.axis_index = k
+                fits = fits and self.fits()
+            if fits:
+                break
+            scale *= 0.9
+        self.view.axis_index = index
+        self.centre()
+
+    def centre(self):
+        """Move the shapes so the drawing for the axis on screen sits in the middle of the band."""
+        self._place(self.scale)
+        left, top, right, bottom = self.extent()
+        band = self.band()
+        self._place(self.scale, Vector2(SIZE[0] / 2 - (left + right) / 2, (band[0] + band[1]) / 2 - (top + bottom) / 2))
 
     def _best_axis(self):
         """The axis of the lesson's answer (the smallest overlap), or the first that shows a gap."""
@@ -167,23 +290,51 @@ class SatCase:
                 f"drawn x{self.scale:.2g})",
                 f"yours (magenta): {yours}", f"the lesson's (yellow): {lesson}"]
 
-    def draw(self, surface):
+    def student_ghost(self):
+        """The student's answer moved onto B: B's corners moved by depth along the normal (screen px), or None
+        (no answer to draw, or one more than four spans of the shapes away: drawn as an arrow only)."""
+        got = self.case.get("got")
+        if got is None or "bad" in got or abs(got["depth"]) > 4 * self.span:
+            return None
+        move = Vector2(got["normal"]) * got["depth"] * self.scale
+        return [p + move for p in self.view.orange.world_points()]
+
+    def draw_scene(self, surface):
+        """The explorer's drawing and the student's answer, without the bands (the tests look at it alone)."""
+        self.centre()
         self.view.draw(surface)
         got = self.case.get("got")
         if got is not None and "bad" not in got:
             normal, depth = Vector2(got["normal"]), got["depth"] * self.scale
             orange = self.view.orange
-            ghost = [p + normal * depth for p in orange.world_points()]
-            pygame.draw.polygon(surface, STUDENT, ghost, 2)
-            _arrow(surface, STUDENT, orange.pos, orange.pos + normal * max(abs(depth), 12) *
-                   (1 if depth >= 0 else -1), 3)
+            ghost = self.student_ghost()
+            if ghost:
+                pygame.draw.polygon(surface, STUDENT, ghost, 2)
+            length = min(max(abs(depth), 12), 4 * self.span * self.scale)
+            _arrow(surface, STUDENT, orange.pos, orange.pos + normal * length * (1 if depth >= 0 else -1), 3)
+
+    def draw(self, surface):
+        self.draw_scene(surface)
+        top = self.band()[0] - self.MARGIN
+        pygame.draw.rect(surface, (16, 18, 24), (0, 0, SIZE[0], top))
+        status = self.view.status()
+        surface.blit(self.big.render(status, True, (235, 80, 80) if status == "OVERLAP" else (90, 210, 120)),
+                     (20, 10))
+        for row, line in enumerate(self.header()):
+            text = ScaledFont(self.font, self.scale).render(line, True, TEXT)
+            surface.blit(text, (20, HEADER_TOP + HEADER_ROW * row))
         _footer(surface, self.lines(), "N/Space: next axis   [ ]: previous/next case   Tab: the scene   Esc: quit")
+
+
+def _footer_top(count):
+    """The screen y where the footer's text of `count` lines starts."""
+    return SIZE[1] - 30 - 24 * count - 6
 
 
 def _footer(surface, lines, help_text):
     """The case's text lines at the bottom of the case view, over a dark band."""
     font = _font()
-    top = SIZE[1] - 30 - 24 * len(lines)
+    top = _footer_top(len(lines)) + 6
     pygame.draw.rect(surface, (16, 18, 24), (0, top - 6, SIZE[0], SIZE[1] - top + 6))
     for row, line in enumerate(lines):
         colour = STUDENT if line.startswith("yours") else LESSON if line.startswith("the lesson") else TEXT
@@ -252,7 +403,8 @@ class ImpulseCase:
         pygame.draw.circle(surface, (235, 80, 80), contact, 5)
         if impulse.length() > 0:
             _arrow(surface, TEXT, contact, contact + impulse.normalize() * 60, 2)
-            surface.blit(font.render("impulse P", True, TEXT), contact + impulse.normalize() * 66)
+            label = self.case.get("impulse_label", "impulse P")
+            surface.blit(font.render(label, True, TEXT), contact + impulse.normalize() * 66)
         _footer(surface, self.lines(), "arrows: velocity change (same scale), arcs: spin change   [ ]: case   Tab: scene")
 
 
@@ -462,8 +614,8 @@ def _time(value):
 class ToiCase:
     """One circle_toi() case: both circles' paths over the step, where they are at the student's time of
     impact (magenta) and at the lesson's (yellow), and a bar of the step [0, dt] with both times on it.
-    The geometry comes from the probe's fixed cases (checker/labs/bullets/probes.py toi_cases(), grader-side
-    code); a case drawn at random for the run shows the times only."""
+    The geometry comes from the probe's cases (checker/labs/bullets/probes.py toi_cases(), and drawn_toi_cases()
+    redrawn from the grading seed: _toi_geometry), grader-side code; without it only the times are shown."""
 
     kind = "toi"
 
@@ -528,7 +680,7 @@ class SweptCase:
         got = Vector2(self.case["got"]["bullet"]["pos"])
         if t is None or "stops" not in variants or "old_velocity" not in variants or self.step - t <= 0:
             return None, None, want, got
-        impact, through = Vector2(variants["stops"]), Vector2(variants["old_velocity"])
+        impact, through = (Vector2(_bullet_pos(variants[name])) for name in ("stops", "old_velocity"))
         velocity = (through - impact) / (self.step - t)
         return impact - velocity * t, impact, want, got
 
@@ -563,6 +715,11 @@ class SweptCase:
         _footer(surface, self.lines(), "grey: the path to the impact (red)   [ ]: case   Tab: scene   Esc: quit")
 
 
+def _bullet_pos(outcome):
+    """The bullet's position in a swept_move outcome ({"bullet": state, "others": [...]}; older probes: a point)."""
+    return outcome["bullet"]["pos"] if isinstance(outcome, dict) else outcome
+
+
 def toi_wrong(case):
     got, want = case.get("got"), case.get("want")
     if isinstance(got, dict) or (got is None) != (want is None):
@@ -576,11 +733,16 @@ def swept_wrong(case):
     return any(not _close(g, w) for a, b in pairs for key in ("pos", "vel") for g, w in zip(a[key], b[key]))
 
 
-def _toi_geometry(name):
+def _toi_geometry(case, seed=None):
+    """(p1, v1, r1, p2, v2, r2) of a circle_toi case: a fixed one from the probe's toi_cases(), a drawn one
+    redrawn here from the grading seed as the probe drew it (drawn_toi_cases with run_rng's Random), both
+    grader-side code; a redrawn case counts only when its dt is the recorded one. None when neither fits."""
+    import random
     from .labs.bullets import probes
-    for case in probes.toi_cases():
-        if case[0] == name:
-            return case[1], case[2], case[3], case[4], case[5], case[6]
+    drawn = probes.drawn_toi_cases(random.Random(f"{seed}:circle_toi")) if seed is not None else []
+    for name, p1, v1, r1, p2, v2, r2, dt in probes.toi_cases() + drawn:
+        if name == case["case"] and abs(dt - case["dt"]) <= 1e-12 * max(1.0, dt):
+            return p1, v1, r1, p2, v2, r2
     return None
 
 
@@ -596,10 +758,16 @@ def _data(functions, name):
     return entry.get("data") if entry.get("ok") else None
 
 
-def failing_cases(lab, result, functions):
-    """The failing cases of a failed function check, as drawable cases ([] for other checks or no data)."""
+def failing_cases(lab, result, functions, seed=None):
+    """The failing cases of a failed function check, as drawable cases ([] for other checks or no data).
+
+    seed: the grading run's seed (the probe's drawn inputs; Bullets' drawn circle_toi paths are redrawn from it)."""
     if result.status not in ("fail", "error"):
         return []
+    from . import show_cases_labs
+    cases = show_cases_labs.failing_cases(lab, result, functions)
+    if cases is not None:
+        return cases
     for name in SAT_PROBES.get(result.id, ()):
         data = _data(functions, name)
         if data:
@@ -617,7 +785,7 @@ def failing_cases(lab, result, functions):
                 for k, case in enumerate(wrong)]
     if result.id == "toi_matches_root":
         wrong = [case for case in _data(functions, "circle_toi") or [] if "want" in case and toi_wrong(case)]
-        return [ToiCase(case, k + 1, len(wrong), _toi_geometry(case["case"])) for k, case in enumerate(wrong)]
+        return [ToiCase(case, k + 1, len(wrong), _toi_geometry(case, seed)) for k, case in enumerate(wrong)]
     if result.id == "swept_move_resolves":
         from .labs.bullets import probes
         wrong = [case for case in _data(functions, "swept_move") or [] if "want" in case and swept_wrong(case)]

@@ -18,6 +18,7 @@ from pygame import Vector2
 from lesson11.physics2d.draw import draw_body, draw_contacts
 
 from .pictures import _font
+from .show_cases import wrapped
 
 SCENE = (900, 600)          # px: the labs' window
 TIMELINE_H = 130            # px: the timeline under the scene
@@ -196,18 +197,27 @@ class Viewer:
             _text(surface, self.font, label, (offset[0] + 10, top - 26), GHOST if column else TEXT)
         pygame.draw.line(surface, DIM, (SCENE[0] / 2, top), (SCENE[0] / 2, top + SCENE[1] / 2), 1)
 
+    def hud_lines(self):
+        """The title (lab, check, scene, frame, mode), broken at " | " to fit the window, and the keys line;
+        [] while the cases are on screen (they have their own text)."""
+        replay, frame = self.replay, self.frame
+        if frame is None or (self.showing_cases and self.case is not None):
+            return []
+        mode = "side by side" if self.side_by_side else "ghost: the solution in cyan"
+        head = f"{replay.lab.title} - {replay.check.id} ({replay.check.status}) | '{replay.scene}'" \
+               f"{'' if replay.graded else ' ungraded'} | frame {frame['frame']} ({frame['frame'] / 60:.2f} s)" \
+               f"{'' if self.playing else ' PAUSED'} | {mode}"
+        rows = wrapped(self.font, [head], SCENE[0] - 30, " | ")
+        keys = "P pause  O step  Left/Right  J jump to the failing frame  G ghost/side by side" + \
+            ("  Tab cases" if replay.cases else "") + "  Esc quit"
+        return [rows[0]] + ["| " + row for row in rows[1:]] + [keys]
+
     def draw_hud(self, surface):
-        replay = self.replay
-        mode = "cases" if self.showing_cases and self.case is not None else \
-            "side by side" if self.side_by_side else "ghost: the solution in cyan"
-        frame = self.frame
-        head = f"{replay.lab.title} - {replay.check.id} ({replay.check.status})"
-        if frame is not None and not (self.showing_cases and self.case is not None):
-            head += f" | '{replay.scene}'{'' if replay.graded else ' ungraded'} | frame {frame['frame']}" \
-                    f" ({frame['frame'] / 60:.2f} s){'' if self.playing else ' PAUSED'} | {mode}"
-            _text(surface, self.font, head, (10, 8))
-            _text(surface, self.small, "P pause  O step  Left/Right  J jump to the failing frame  G ghost/side by "
-                  "side" + ("  Tab cases" if replay.cases else "") + "  Esc quit", (10, 32), DIM)
+        lines = self.hud_lines()
+        for row, line in enumerate(lines[:-1]):
+            _text(surface, self.font, line, (10, 8 + 22 * row))
+        if lines:
+            _text(surface, self.small, lines[-1], (10, 12 + 22 * (len(lines) - 1)), DIM)
 
     def draw_timeline(self, surface, rect):
         """The quantity per frame, its bound (a line), the failing frame (red) and the frame on screen."""

@@ -20,7 +20,7 @@ os.environ["SDL_VIDEODRIVER"] = "dummy"
 os.environ["SDL_AUDIODRIVER"] = "dummy"
 import pygame  # noqa: E402
 
-from checker import cli, labs, pictures, show, show_cases, show_view  # noqa: E402
+from checker import cli, labs, pictures, show, show_cases, show_cases_labs, show_view  # noqa: E402
 from lesson11 import records  # noqa: E402
 from checker.grade import Grader  # noqa: E402
 from checker.sandbox import Limits, run_child  # noqa: E402
@@ -240,17 +240,15 @@ def test_centroid_case_draws_both_points(tmp_path):
 
 
 CASE_KIND = {"tumbling_crates": show_cases.ImpulseCase, "more_shapes": show_cases.PolygonCase,
-             "bullets": show_cases.SweptCase}
+             "bullets": show_cases.SweptCase, "ball_on_ramp": show_cases.PolygonCase,
+             "sleeping_crates": show_cases_labs.TimerCase}
 
 
 def test_failing_cases_draw_both_answers(shown):
-    """A failed function check of a kind --show draws (impulse, inertia, swept move) opens on its cases, and
-    each case shows the student's answer (magenta) and the lesson's (yellow); the other labs' steps have none."""
+    """Each lab's failed function check (impulse, inertia, swept move, sleep timer) opens on its cases, and
+    each case shows the student's answer (magenta) and the lesson's (yellow)."""
     lab, path, row, replay = shown
-    kind = CASE_KIND.get(lab.id)
-    if kind is None:
-        assert replay.cases == []
-        return
+    kind = CASE_KIND[lab.id]
     assert replay.cases and all(isinstance(c, kind) for c in replay.cases)
     for case in replay.cases[:3]:
         surface = pygame.Surface(show_view.SCENE)
@@ -341,3 +339,145 @@ def test_a_record_the_runtime_cannot_have_written_is_not_replayed():
     assert replay.frames == [] and replay.scene is None and replay.fail_frame is None
     viewer = show_view.run(replay, events=scripted([key(pygame.K_j)]), frames=2)   # draws the "no scene" text
     assert viewer.frame is None
+
+
+def test_sat_case_text_and_drawing_do_not_overlap(tmp_path):
+    """Every failing sat() case, on every axis: nothing of the drawing (the shapes, both shadows, the overlap
+    label, the lesson's MTV and the student's answer) lies under the explorer's explanation lines or the
+    case's footer, which are drawn over it. Measured on the drawing alone (draw_scene), before the bands."""
+    from lesson11 import explorer
+    corpus = importlib.import_module("corpus_tumbling_crates")
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(corpus.build("sat_largest_overlap"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("tumbling_crates"), seed=SEED)
+    colours = (explorer.BLUE, explorer.ORANGE, explorer.OVERLAP_RED, explorer.MTV_YELLOW, show_cases.STUDENT)
+    for case in replay.cases:
+        for axis in range(len(case.view.axes())):
+            case.view.axis_index = axis
+            surface = pygame.Surface(show_view.SCENE)
+            case.draw_scene(surface)
+            top, bottom = case.band()
+            forbidden = pygame.mask.Mask(show_view.SCENE)
+            # under the text: from below the status word (which the explorer draws in red) to the band,
+            # and the footer
+            forbidden.draw(pygame.mask.Mask((show_view.SCENE[0], top - case.MARGIN - 62), fill=True), (0, 62))
+            footer = show_view.SCENE[1] - (bottom + case.MARGIN)
+            forbidden.draw(pygame.mask.Mask((show_view.SCENE[0], footer), fill=True), (0, bottom + case.MARGIN))
+            for colour in colours:
+                drawn = pygame.mask.from_threshold(surface, colour, (2, 2, 2, 255))
+                assert drawn.overlap_area(forbidden, (0, 0)) == 0, (case.lines()[0], axis, colour)
+            assert max(case.font.size(line)[0] for line in case.header()) <= show_view.SCENE[0] - 20
+
+
+def test_replay_title_fits_the_window(shown):
+    """The replay's title lines (lab, check, scene, frame, mode) each fit the window's width."""
+    lab, path, row, replay = shown
+    viewer = show_view.Viewer(replay)
+    viewer.showing_cases = False
+    viewer.playing = False
+    lines = viewer.hud_lines()
+    if replay.frames:
+        assert len(lines) >= 2 and replay.check.id in lines[0] and "PAUSED" in " ".join(lines)
+    assert all(viewer.font.size(line)[0] <= show_view.SCENE[0] - 20 for line in lines[:-1])
+
+
+# lab id, corpus entry with one wrong step, the check it fails, the kind of case --show draws for it
+STEP_CASES = [
+    ("more_shapes", "corners_in_degrees", "polygon_corners", show_cases_labs.CornersCase),
+    ("more_shapes", "axes_same_way_only", "parallel_axes", show_cases_labs.AxesCase),
+    ("bullets", "bounding_squared", "bounding_circle", show_cases_labs.BoundingCase),
+    ("bullets", "broad_without_bullet_radius", "broad_test", show_cases_labs.BroadCase),
+    ("bullets", "broad_test_missing", "broad_test", show_cases_labs.BroadCase),
+    ("ball_on_ramp", "closest_not_clamped", "closest_point", show_cases_labs.ClosestCase),
+    ("ball_on_ramp", "inside_not_flipped", "inside_case", show_cases_labs.CircleCase),
+    ("ball_on_ramp", "push_not_split", "push_out_split", show_cases_labs.SeparateCase),
+    ("ball_on_ramp", "inertia_ring", "ball_inertia", show_cases.PolygonCase),
+    ("ball_on_ramp", "contact_halfway", "contact_on_surface", show_cases_labs.ContactCase),
+    ("ball_on_ramp", "friction_not_clamped", "friction_rolls", show_cases.ImpulseCase),
+    ("sleeping_crates", "timer_or", "timer_rule", show_cases_labs.TimerCase),
+    ("sleeping_crates", "moves_ignores_sleep", "skips_sleepers", show_cases_labs.MovesCase),
+    ("sleeping_crates", "wake_one_order", "wakes_on_contact", show_cases_labs.WakeCase),
+]
+
+
+@pytest.mark.parametrize("lab_id, entry, check, kind", STEP_CASES, ids=[c[1] for c in STEP_CASES])
+def test_a_wrong_step_opens_on_its_case_with_both_answers(tmp_path, lab_id, entry, check, kind):
+    """A file of the mistake corpus with one wrong step: --show (graded as the checker grades it, keys scripted)
+    opens on that step's failing cases, the drawing above the case's text carries the student's answer (magenta)
+    and the lesson's (yellow), the text names both and they differ, and ] steps to the next case.
+    (Bullets' other steps: test_time_of_impact_case_shows_both_times, test_a_drawn_time_of_impact_case_has_its_geometry,
+    and the swept move in test_failing_cases_draw_both_answers.)"""
+    corpus = importlib.import_module(f"corpus_{lab_id}")
+    assert next(e for e in corpus.WRONG if e.name == entry).check == check   # the corpus's own verdict
+    path = tmp_path / f"{lab_id}.py"
+    path.write_text(corpus.build(entry), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of(lab_id), seed=SEED)
+    assert problem == "" and replay.check.id == check
+    assert replay.cases and all(isinstance(c, kind) for c in replay.cases)
+    viewer = show_view.run(replay, events=scripted([]), frames=1)
+    assert viewer.showing_cases and viewer.case is replay.cases[0]
+    for case in replay.cases[:3]:
+        surface = pygame.Surface(show_view.SCENE)
+        case.draw(surface)
+        lines = case.lines()
+        drawing = show_cases._footer_top(len(lines))   # the text band starts here: look above it only
+        colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, drawing, 2)}
+        assert show_cases.STUDENT in colours and show_cases.LESSON in colours, lines
+        assert lines[1].startswith("yours") and lines[2].startswith("the lesson")
+        yours = [line.split(":", 1)[1] for line in lines if line.startswith("yours")]
+        lesson = [line.split(":", 1)[1] for line in lines if line.startswith("the lesson")]
+        assert yours != lesson   # (an impulse case has a line per body: a static one may agree)
+    if len(replay.cases) > 1:
+        viewer = show_view.run(replay, events=scripted([key(pygame.K_RIGHTBRACKET)]), frames=1)
+        assert viewer.case is replay.cases[1]
+
+
+def test_a_drawn_time_of_impact_case_has_its_geometry(tmp_path):
+    """circle_toi cases drawn for the run are redrawn on the grading side from the grading seed: the paths --show
+    draws are the graded ones (their first contact, solved here, is the lesson's time the probe recorded)."""
+    corpus = importlib.import_module("corpus_bullets")
+    path = tmp_path / "bullets.py"
+    path.write_text(corpus.build("toi_later_root"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("bullets"), seed=SEED)
+    drawn = [c for c in replay.cases if "drawn for this run" in c.case["case"]]
+    assert drawn and all(c.geometry is not None for c in drawn)
+    for case in drawn:
+        p1, v1, r1, p2, v2, r2 = case.geometry
+        dp, dv = p2 - p1, v2 - v1
+        a, b, c = dv.dot(dv), 2 * dp.dot(dv), dp.dot(dp) - (r1 + r2) ** 2
+        first = (-b - math.sqrt(b * b - 4 * a * c)) / (2 * a)
+        assert first == pytest.approx(case.case["want"], abs=1e-9)
+        surface = pygame.Surface(show_view.SCENE)
+        case.draw(surface)
+        colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 390, 2)}
+        assert show_cases.STUDENT in colours and show_cases.LESSON in colours   # both circles at both times
+    other = show_cases._toi_geometry(drawn[0].case, SEED + 1)   # another seed draws other paths: not used
+    assert other is None
+
+
+def test_more_shapes_sat_on_the_students_axes_is_drawn_as_a_sat_case():
+    """parallel_axes also fails when every axis is right but sat() on them is not (the probe's "sat" data): those
+    pairs are drawn as SAT cases with the pair's shapes from the probe's own list, both answers on the picture.
+    The probe data here are made by hand (no corpus file fails that way): the lesson's answer from the grader's
+    reference_sat, the student's with the depth doubled."""
+    from checker import probe_kit
+    from checker.labs.more_shapes import probes
+    name, a, b = probes.axis_pairs()[0]   # two aligned boxes, overlapping
+    normal, depth = probe_kit.reference_sat(a, b)
+    want = {"normal": list(normal), "depth": depth}
+    wrong = {"pair": name, "order": "B, A", "got": {"normal": list(normal), "depth": 2 * depth}, "want": want,
+             "ties": []}
+    right = dict(wrong, order="A, B", got=want)
+    functions = {"separating_axes": {"ok": True, "data": []}, "sat": {"ok": True, "data": [right, wrong]}}
+    result = type("R", (), {"id": "parallel_axes", "status": "fail", "message": ""})()
+    cases = show_cases.failing_cases(lab_of("more_shapes"), result, functions)
+    assert len(cases) == 1 and isinstance(cases[0], show_cases.SatCase)
+    case = cases[0]
+    assert [list(p) for p in case.case["a"]] == [list(p) for p in b]   # B, A: the shapes swapped
+    yours, lesson = case.answers()
+    assert f"{2 * depth:.2f}" in yours and f"{depth:.2f}" in lesson
+    surface = pygame.Surface(show_view.SCENE)
+    case.draw(surface)
+    top = case.band()[0]
+    colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900, 2) for y in range(top, case.band()[1], 2)}
+    assert show_cases.STUDENT in colours and show_cases.LESSON in colours
