@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from ..sandbox import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+STARTERS, SOLUTIONS = "starters", "solutions"   # the project's folders of the handouts and of the solutions
 ORDER = ("tumbling_crates", "more_shapes", "ball_on_ramp", "bullets", "sleeping_crates")   # the lesson's order;
 # a lab not named here comes after these, by id (the order of --list and of identify())
 
@@ -51,15 +52,25 @@ class Lab:
         """Import name of the module whose probes the child process runs on this lab's functions."""
         return f"{__name__}.{self.id}.probes"
 
+    @classmethod
+    def of_solution(cls, path):
+        """The lab whose reference solution is `path` (solutions/<id>.py: the id is the file's name)."""
+        return cls(os.path.splitext(os.path.basename(path))[0])
+
+    @property
+    def starter_file(self):
+        """File name of the lab's handout, <id>_starter.py."""
+        return f"{self.id}_starter.py"
+
     @property
     def starter(self):
         """Path of the lab's handout, starters/<id>_starter.py."""
-        return os.path.join(self.root, "starters", f"{self.id}_starter.py")
+        return os.path.join(self.root, STARTERS, self.starter_file)
 
     @property
     def solution(self):
         """Path of the lab's reference solution, solutions/<id>.py."""
-        return os.path.join(self.root, "solutions", f"{self.id}.py")
+        return os.path.join(self.root, SOLUTIONS, f"{self.id}.py")
 
     @property
     def title(self):
