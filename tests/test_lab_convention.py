@@ -116,3 +116,16 @@ def test_nothing_in_lesson11_imports_the_checker():
 
 def test_the_import_finder_sees_a_checker_import():
     assert "checker" in _imported_modules(__file__)   # this file's `from checker import labs`
+
+
+def test_nothing_in_lesson11_reaches_into_the_tests():
+    """The bench takes the scenes it shares with the tests from lesson11 (crate_scenes.pile_settings, clicks,
+    ramp_crate): no lesson11 module imports tests/lab_run.py or puts tests/ on sys.path."""
+    paths = glob.glob(os.path.join(ROOT, "lesson11", "**", "*.py"), recursive=True)
+    reaching = []
+    for path in paths:
+        with open(path, encoding="utf-8") as handle:
+            text = handle.read()
+        if "lab_run" in _imported_modules(path) or ("sys.path" in text and '"tests"' in text):
+            reaching.append(os.path.relpath(path, ROOT))
+    assert reaching == []
