@@ -129,3 +129,12 @@ def test_nothing_in_lesson11_reaches_into_the_tests():
         if "lab_run" in _imported_modules(path) or ("sys.path" in text and '"tests"' in text):
             reaching.append(os.path.relpath(path, ROOT))
     assert reaching == []
+
+
+def test_a_lab_without_its_own_recognise_knows_its_files_by_id_or_title():
+    for lab in labs.LABS:
+        if hasattr(lab.module, "recognise"):   # Bullets: its own rule (the docstring's first line)
+            continue
+        assert labs.identify(os.path.join("class", "A", lab.id + "_v2.py"), "") == lab
+        assert labs.identify(os.path.join("class", "A", "lab.py"), f'"""{lab.title.upper()}: my file"""') == lab
+    assert labs.identify(os.path.join("class", "A", "lab.py"), "print('hello')") is None

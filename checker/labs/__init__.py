@@ -1,10 +1,11 @@
 """The lab registry: which labs the checker knows, found by convention, and how it tells which lab a file is.
 
 A lab is its id and the files named from it (Lab below finds each one; no lab spells a path):
-  checker/labs/<id>/checks.py  its checks (CHECKS, TITLE, STEP_LIBRARY, STEP_ADVICE, recognise(path, source),
-                               and optionally PICTURE_SCENES {check id: scene names} for --pictures and
-                               SCENE_SECONDS {scene name: CPU s of the solution's run}, so the grader starts
-                               the longest scenes first);
+  checker/labs/<id>/checks.py  its checks (CHECKS, TITLE, STEP_LIBRARY, STEP_ADVICE, and optionally
+                               recognise(path, source) where Lab.recognise's convention does not fit,
+                               PICTURE_SCENES {check id: scene names} for --pictures and SCENE_SECONDS
+                               {scene name: CPU s of the solution's run}, so the grader starts the longest
+                               scenes first);
   checker/labs/<id>/probes.py  the inputs and references of its probes (REQUIRED, PROBES {name: (function,
                                probe)}, SPLICES): they run in the child to record a tape and again in the
                                grader to judge it (checker/tape.py, checker/probing.py);
@@ -81,7 +82,13 @@ class Lab:
         return self.module.CHECKS
 
     def recognise(self, path, source):
-        return self.module.recognise(path, source)
+        """True if the file is this lab's: its module's recognise(path, source) if it has one, else by convention
+        the file's name holds the lab's id or its text the lab's title (any case)."""
+        own = getattr(self.module, "recognise", None)
+        if own is not None:
+            return own(path, source)
+        name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
+        return self.id in name or self.title.lower() in source.lower()
 
     def scenarios(self):
         """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""

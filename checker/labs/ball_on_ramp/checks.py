@@ -126,12 +126,6 @@ PICTURE_SCENES = {"runs": ("ramp", "knock", "inside"), "rolls_without_slipping":
 CHECKS = Registry()
 
 
-def recognise(path, source):
-    """True if the file is a Ball on the Ramp lab: its name or its text says so."""
-    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-    return "ball_on_ramp" in name or "ball on the ramp" in source.lower()
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"knock": 0.8, "ramp": 0.3, "inside": 0.3}

@@ -108,12 +108,6 @@ PICTURE_SCENES = {"runs": ("solo", "pile"), "triangle_tips": ("solo",), "hexagon
 CHECKS = Registry()
 
 
-def recognise(path, source):
-    """True if the file is a More Shapes lab: its name or its text says so."""
-    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-    return "more_shapes" in name or "more shapes" in source.lower()
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"solo": 1.9, "pile": 1.8}

@@ -85,12 +85,6 @@ PICTURE_SCENES = {"runs": ("sleep",), "pile_sleeps": ("sleep",), "no_sleep_in_ai
 CHECKS = Registry()
 
 
-def recognise(path, source):
-    """True if the file is a Sleeping Crates lab: its name or its text says so."""
-    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-    return "sleeping_crates" in name or "sleeping crates" in source.lower()
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"sleep": 1.4}

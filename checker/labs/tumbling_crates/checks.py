@@ -129,12 +129,6 @@ PICTURE_SCENES = {"runs": ("corner", "ramp", "pile", "own_scene"), "corner_tips"
 CHECKS = Registry()
 
 
-def recognise(path, source):
-    """True if the file is a Tumbling Crates lab: its name or its text says so."""
-    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-    return "tumbling_crates" in name or "tumbling crates" in source.lower()
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"pile": 4.6, "own_scene": 3.3, "ramp": 1.5, "corner": 0.9}
