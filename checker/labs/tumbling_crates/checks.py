@@ -42,7 +42,6 @@ STEP_ADVICE = {2: "write the loop over both shapes' edge normals yourself (proje
                4: "add the spin terms (ra × n)² / I_A and (rb × n)² / I_B to k yourself",
                5: "clamp jt to [-μ j, μ j] yourself",
                6: "write the two spin lines yourself, like the velocity lines"}
-RUNTIME_HOOKS = lab_checks.RUNTIME_HOOKS
 
 # ---------------------------------------------------------------- tolerances of the function checks
 REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
