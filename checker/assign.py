@@ -37,11 +37,12 @@ import sys
 import tempfile
 
 from . import source
+from . import labs
 from .handout import MarkerError, _comment_lines, step_regions
+from .sandbox import PROJECT_ROOT as ROOT
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SOLUTIONS = os.path.join(ROOT, "solutions")
-STARTERS = os.path.join(ROOT, "starters")
+SOLUTIONS = os.path.join(ROOT, labs.SOLUTIONS)
+STARTERS = os.path.join(ROOT, labs.STARTERS)
 BEGIN = re.compile(r"^[ \t]*# BEGIN PROMPT[ \t]*$")
 END = re.compile(r"^[ \t]*# END PROMPT[ \t]*$")
 CODE = re.compile(r"^(?P<indent>[ \t]*)# starter: (?P<code>.*)$")
@@ -140,11 +141,6 @@ def _placeholder(line):
     return code["indent"] + code["code"] + _ending(line) if code else line
 
 
-def starter_name(solution):
-    """starters' file name for solutions/LAB.py: LAB_starter.py."""
-    return os.path.splitext(os.path.basename(solution))[0] + "_starter.py"
-
-
 def solutions(folder=SOLUTIONS):
     """The lab solutions, solutions/*.py, sorted."""
     return sorted(os.path.join(folder, name) for name in os.listdir(folder)
@@ -205,7 +201,7 @@ def run(paths, out=None, check=False, stdout=None, stderr=None):
     status = 0
     for path in paths:
         name = os.path.relpath(path, ROOT) if path.startswith(ROOT) else path
-        target = os.path.join(folder, starter_name(path))
+        target = os.path.join(folder, labs.Lab.of_solution(path).starter_file)
         shown = os.path.relpath(target, ROOT) if target.startswith(ROOT) else target
         try:
             wanted = starter_text(source.read(path, name), name).encode("utf-8")

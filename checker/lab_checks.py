@@ -1,9 +1,9 @@
 """The parts of a lab's checks that every lab shares: loading, the handout comparison, the runtime lines.
 
-A lab's module (checker/labs/tumbling_crates/checks.py, checker/labs/more_shapes/checks.py) registers
-its own checks, with its own docstrings and hints, and calls these for the
-work: each returns what the check passes on, or raises Fail / Error with the
-hint it is given.
+A lab's module (checker/labs/<id>/checks.py) registers its first three checks, the same in every lab, with
+one call (register_common: loads, handout_unchanged, runtime_lines), then its own checks, with their
+docstrings and hints, which call the helpers here for the work: each returns what the check passes on, or
+raises Fail / Error with the hint it is given.
 """
 import ast
 import math
@@ -45,7 +45,36 @@ def loaded(sub, crash_hint, names_hint):
     return run.result["probe"]["functions"]
 
 
-def handout_unchanged(sub, hint):
+def register_common(registry, hints, names, kind="function names"):
+    """Register the checks every lab starts with, 1 point each, in this order: loads, handout_unchanged (after
+    loads), runtime_lines (after loads).
+
+    names: the handout's functions (and classes) the checker calls, in the order the student reads them in
+    `loads`' description; kind: what its hint calls them ("function names", or "names" when a class is among
+    them); hints: the lab's HINTS, whose "crash", "handout" and "runtime" entries these checks give.
+    """
+    listed = ", ".join(names[:-1]) + " and " + names[-1] if len(names) > 1 else names[0]
+    names_hint = Hint(None, "the handout's functions", f"Keep the handout's {kind}: {listed}; the checker calls "
+                      "them.")
+
+    def loads(sub):
+        return loaded(sub, hints["crash"], names_hint)
+    loads.__doc__ = f"The file imports without errors and defines {listed}."
+
+    def handout_unchanged(sub):
+        """The code outside the steps is the handout's (formatting and comments aside)."""
+        return handout_note(sub, hints["handout"])
+
+    def runtime_lines(sub):
+        """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
+        missing_hooks(sub, hints["crash"], hints["runtime"])
+
+    registry.check()(loads)
+    registry.check(after=["loads"])(handout_unchanged)
+    registry.check(after=["loads"])(runtime_lines)
+
+
+def handout_note(sub, hint):
     """A message when the code outside the step regions is the starter's (sub.starter); Fail (with hint) listing
     differences.
 
@@ -74,7 +103,7 @@ def handout_unchanged(sub, hint):
     raise Fail(text + ".", hint)
 
 
-def runtime_lines(sub, crash_hint, hint=RUNTIME_HINT, hooks=RUNTIME_HOOKS):
+def missing_hooks(sub, crash_hint, hint=RUNTIME_HINT, hooks=RUNTIME_HOOKS):
     """None when the source calls every lab-runtime hook; Fail (with hint) naming the missing ones."""
     try:
         tree = ast.parse(sub.source)

@@ -113,7 +113,7 @@ def _bound(lab, name, default=None, scale=1.0):
 
 def _bodies(lab, name):
     """The dynamic body indices a lab's scenes module names (More Shapes' TRIANGLE, PUSHED, ON_RAMP), or None."""
-    value = getattr(getattr(lab.module, "scenes", None), name, None)
+    value = getattr(lab.scenes, name, None)
     return None if value is None else tuple(value) if isinstance(value, (tuple, list)) else (value,)
 
 

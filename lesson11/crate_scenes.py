@@ -43,11 +43,12 @@ GRAVITY = 980.0                 # px/s², the course's gravity
 GRAVITY_TOLERANCE = 0.01        # relative; the solution measures the free fall within 1e-9
 
 
-def _ramp_crate(along, w, h):
-    """A w × h crate resting on the ramp's top face, `along` px from the ramp's centre along its slope."""
+def ramp_crate(along, w, h, gap=0.25):
+    """Scenario entry: a w × h crate at rest `gap` px above the ramp's top face, `along` px from the ramp's
+    centre along its slope (px; positive: down the slope)."""
     slope = Vector2(math.cos(RAMP_ANGLE), math.sin(RAMP_ANGLE))
     up = Vector2(math.sin(RAMP_ANGLE), -math.cos(RAMP_ANGLE))  # the ramp's top face normal
-    pos = RAMP_CENTRE + slope * along + up * (RAMP_THICKNESS / 2 + h / 2 + 0.25)
+    pos = RAMP_CENTRE + slope * along + up * (RAMP_THICKNESS / 2 + h / 2 + gap)
     return {"w": w, "h": h, "pos": [pos.x, pos.y], "angle": RAMP_ANGLE}
 
 
@@ -62,7 +63,7 @@ def corner_scenario():
 def ramp_scenario():
     """Three crates set at rest on the 22° ramp, lined up with its slope (3 s)."""
     return {"frames": 180, "fps": FPS, "seed": SEED, "record_every": 1, "scenario": [
-        _ramp_crate(-120, 60, 40), _ramp_crate(-10, 50, 50), _ramp_crate(100, 70, 36)]}
+        ramp_crate(-120, 60, 40), ramp_crate(-10, 50, 50), ramp_crate(100, 70, 36)]}
 
 
 def pile_scenario():
@@ -98,6 +99,30 @@ def own_scene_scenario():
     script = [{"frame": frame, "type": "click", "pos": list(pos)} for frame, pos in DROPS]
     script.append({"frame": LAST_FRAME, "type": "quit"})
     return {"frames": LAST_FRAME + 5, "fps": FPS, "seed": SEED, "record_every": 1, "script": script}
+
+
+# ---------------------------------------------------------------- the clicked pile (the tests' and the bench's)
+
+def pile_drops(count, columns=4):
+    """Where `count` clicked crates are dropped (px): `columns` columns 70 px apart from x = 590, right of the
+    ramp, rows 50 px apart from y = 150, so they pile up on the floor."""
+    return [(590 + 70 * (k % columns), 150 + 50 * (k // columns)) for k in range(count)]
+
+
+PILE_DROPS = pile_drops(12)   # the lab's pile: a dozen drops
+
+
+def clicks(positions, first_frame, every):
+    """Script entries: a left click at each position, `every` frames apart from `first_frame`."""
+    return [{"frame": first_frame + k * every, "type": "click", "pos": list(pos)}
+            for k, pos in enumerate(positions)]
+
+
+def pile_settings(settle_frames=240, every=20):
+    """A dozen crates clicked in over the floor (no starting crates), then `settle_frames` frames of settling."""
+    script = clicks(PILE_DROPS, 10, every)
+    last_drop = script[-1]["frame"]
+    return {"frames": last_drop + settle_frames, "fps": FPS, "seed": SEED, "scenario": [], "script": script}
 
 
 # ---------------------------------------------------------------- measurements

@@ -71,6 +71,15 @@ def correct(name, what, steps=None, edits=(), why=""):
                  ("pass",), (), why)
 
 
+# the lesson's sums of step 4 (polygon_inertia), which several wrong entries keep and end differently
+INERTIA_SUMS = """
+        num = den = 0.0
+        for i, a in enumerate(points):
+            b = points[(i + 1) % len(points)]
+            area2 = abs(cross(a, b))
+            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
+            den += area2"""
+
 WRONG = [
     # ---------------------------------------------------------------- step 2: regular_polygon
     wrong("corners_in_degrees", "uses 360 * k / sides in math.cos and math.sin (degrees into radians)",
@@ -127,22 +136,10 @@ WRONG = [
         return total / (6 * area)
     """}, why="the right triangle with a corner at (0, 0) passes (its closing edge adds 0), the house does not"),
     # ---------------------------------------------------------------- step 4: polygon_inertia
-    wrong("inertia_missing_six", "forgets the 6 in the denominator", "inertia_sum", {4: """
-        num = den = 0.0
-        for i, a in enumerate(points):
-            b = points[(i + 1) % len(points)]
-            area2 = abs(cross(a, b))
-            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
-            den += area2
+    wrong("inertia_missing_six", "forgets the 6 in the denominator", "inertia_sum", {4: INERTIA_SUMS + """
         return mass * num / den
     """}, why="6 times the lesson's value everywhere"),
-    wrong("inertia_ignores_mass", "leaves out the mass: returns the inertia per unit mass", "inertia_sum", {4: """
-        num = den = 0.0
-        for i, a in enumerate(points):
-            b = points[(i + 1) % len(points)]
-            area2 = abs(cross(a, b))
-            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
-            den += area2
+    wrong("inertia_ignores_mass", "leaves out the mass: returns the inertia per unit mass", "inertia_sum", {4: INERTIA_SUMS + """
         return num / (6 * den)
     """}, why="right only for a mass of 1; the probe's masses run from 0.4 to 4.2"),
     wrong("inertia_dot_weight", "wrong operand: weighs each triangle by |a · b| instead of |a × b|", "inertia_sum", {4: """
@@ -161,13 +158,7 @@ WRONG = [
             num += a.dot(a) + a.dot(b) + b.dot(b)
         return mass * num / (6 * len(points))
     """}, why="exact for every regular polygon and every box; wrong for the house, trapezoid and hexagon"),
-    wrong("inertia_precedence", "operator precedence: mass * num / 6 * den", "inertia_sum", {4: """
-        num = den = 0.0
-        for i, a in enumerate(points):
-            b = points[(i + 1) % len(points)]
-            area2 = abs(cross(a, b))
-            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
-            den += area2
+    wrong("inertia_precedence", "operator precedence: mass * num / 6 * den", "inertia_sum", {4: INERTIA_SUMS + """
         return mass * num / 6 * den
     """}, why="multiplies by the weights' sum instead of dividing"),
     wrong("inertia_wrong_sign", "subtracts the a·b term", "inertia_sum", {4: """
@@ -227,13 +218,7 @@ WRONG = [
             cy += (a.x + b.x) * w
         return Vector2(cx, cy) / (6 * area)
     """}, why="the house's centroid (30, -20.42) comes back as (-20.42, 30)"),
-    wrong("inertia_returns_inverse", "returns 1 / I (the inverse inertia) instead of I", "inertia_sum", {4: """
-        num = den = 0.0
-        for i, a in enumerate(points):
-            b = points[(i + 1) % len(points)]
-            area2 = abs(cross(a, b))
-            num += area2 * (a.dot(a) + a.dot(b) + b.dot(b))
-            den += area2
+    wrong("inertia_returns_inverse", "returns 1 / I (the inverse inertia) instead of I", "inertia_sum", {4: INERTIA_SUMS + """
         return 6 * den / (mass * num)
     """}, why="the triangle's 433.5 comes back as 0.0023"),
     wrong("axes_not_unit", "builds the edge normals by hand, (-edge.y, edge.x), never normalised", "parallel_axes",

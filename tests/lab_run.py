@@ -4,11 +4,9 @@ Used by tests/test_lab_*.py and tests/test_runtime.py. The child is the plain
 `python LAB.py` a student runs, with LESSON11_LAB_SETTINGS naming a settings
 file and SDL's dummy drivers, so the file's `if __name__ == "__main__"` path
 is the one under test. Measurements of a record (speed, floor penetration,
-overlaps, flat error) are the checker's: lesson11/records.py and lesson11/crate_scenes.py.
-
-Scene geometry of Tumbling Crates (px; y grows downward): the floor's top face
-is at y = 560 (a 900 × 40 box centred at (450, 580)); the ramp is a 420 × 24
-box centred at (230, 380) turned 22° clockwise, so its right end is lower.
+overlaps, flat error) are the checker's: lesson11/records.py and lesson11/crate_scenes.py, which
+also hold the scene geometry (lesson11.records) and the scenes the tests and the bench share
+(crate_scenes.ramp_crate, clicks, pile_settings).
 
     python tests/lab_run.py      regenerates assets/tumbling_crates*.png (the solver panel in all three)
 """
@@ -21,18 +19,14 @@ import sys
 
 from pygame import Vector2
 
+from lesson11.crate_scenes import clicks, pile_settings, ramp_crate  # noqa: F401  (the tests import them from here)
+from lesson11.records import FAST_MOVER, FPS, RAMP_ANGLE  # noqa: F401
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
-FPS = 60
-FLOOR_TOP = 560.0                 # px, y of the floor's top face
 HEIGHT = 600                      # px, window height
-RAMP_CENTRE = Vector2(230, 380)   # px
-RAMP_ANGLE = math.radians(22)     # rad, clockwise on screen
-RAMP_THICKNESS = 24.0             # px
 SLOPE = Vector2(math.cos(RAMP_ANGLE), math.sin(RAMP_ANGLE))   # unit vector down the ramp
-RAMP_UP = Vector2(math.sin(RAMP_ANGLE), -math.cos(RAMP_ANGLE))  # unit normal of the ramp's top face
-FAST_MOVER = 30.0                 # px/s, the lab's threshold
 LINE = re.compile(r"^Simulated (\d+\.\d) s with (\d+) crates; fast movers now: (\d+)$", re.M)
 
 
@@ -70,29 +64,6 @@ def run_lab(lab_path, settings, work_dir, timeout=120):
     with open(settings["record"], encoding="utf-8") as handle:
         record = json.load(handle)
     return LabRun(proc.stdout, record)
-
-
-def ramp_crate(along, w, h, gap=0.25):
-    """Scenario entry: a w × h crate at rest on the ramp's top face, `along` px down the slope from its centre."""
-    pos = RAMP_CENTRE + SLOPE * along + RAMP_UP * (RAMP_THICKNESS / 2 + h / 2 + gap)
-    return {"w": w, "h": h, "pos": [pos.x, pos.y], "angle": RAMP_ANGLE}
-
-
-def clicks(positions, first_frame, every):
-    """Script entries: a left click at each position, `every` frames apart from `first_frame`."""
-    return [{"frame": first_frame + k * every, "type": "click", "pos": list(pos)}
-            for k, pos in enumerate(positions)]
-
-
-# a dozen drop points over the floor right of the ramp (four columns 70 px apart), so they pile up
-PILE_DROPS = [(590 + 70 * (k % 4), 150 + 50 * (k // 4)) for k in range(12)]
-
-
-def pile_settings(settle_frames=240, every=20):
-    """A dozen crates clicked in over the floor (no starting crates), then `settle_frames` frames of settling."""
-    script = clicks(PILE_DROPS, 10, every)
-    last_drop = script[-1]["frame"]
-    return {"frames": last_drop + settle_frames, "fps": FPS, "seed": 11, "scenario": [], "script": script}
 
 
 def save_screenshot(lab_path, script, frames, path, record_every=60):

@@ -341,3 +341,22 @@ def test_messages_never_show_a_negative_zero():
     assert lab_checks.vec_text((1.0, -0.0001)) == "(1.00, 0.00)"     # was "(1.00, -0.00)"
     assert lab_checks.vec_text((-0.0, -2.5)) == "(0.00, -2.50)"
     assert lab_checks.number_text(-0.006) == "-0.01" and lab_checks.number_text(-0.004, 2) == "0.00"
+
+
+def test_the_shared_checks_name_a_missing_function_with_the_labs_own_words():
+    from types import SimpleNamespace
+    from checker import lab_checks
+    from checker.checks import ERROR
+    registry = Registry()
+    hints = {"crash": Hint(1, "run the file", "Run it."), "handout": None, "runtime": None}
+    lab_checks.register_common(registry, hints, ("Wall", "main"), kind="names")
+    assert [c.description for c in registry.checks][0] == "The file imports without errors and defines Wall and main."
+    probe = SimpleNamespace(status="done", result={"probe": {"missing": ["main"], "functions": {}}})
+    results = registry.run(SimpleNamespace(probe=probe, name="lab.py")).ordered(registry)
+    assert [r.status for r in results] == [ERROR, SKIP, SKIP]
+    assert results[0].message == "lab.py defines no function main() (missing: main)."
+    assert results[0].hint == ("[lesson: the handout's functions] Keep the handout's names: Wall and main; the "
+                               "checker calls them.")
+    single = Registry()
+    lab_checks.register_common(single, hints, ("main",))
+    assert single.checks[0].description == "The file imports without errors and defines main."

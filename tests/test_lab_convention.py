@@ -6,6 +6,7 @@ of checker/labs holding a checks.py. No lab spells a path of its own.
 """
 import ast
 import glob
+import importlib
 import os
 
 from checker import labs
@@ -63,6 +64,32 @@ def test_a_lab_under_another_root_finds_its_starter_and_solution_there(tmp_path)
     assert lab.module is labs.LABS[0].module      # its modules are still checker/labs/<id>/
 
 
+def test_assign_names_a_starter_as_the_lab_does():
+    lab = labs.Lab.of_solution(os.path.join(ROOT, "solutions", "bullets.py"))
+    assert lab == labs.Lab("bullets") and lab.starter_file == "bullets_starter.py"
+    assert lab.starter == os.path.join(ROOT, "starters", lab.starter_file)
+
+
+SHARED_CHECKS = ("loads", "handout_unchanged", "runtime_lines")
+
+
+def test_every_lab_starts_with_the_shared_checks_listing_the_functions_its_probe_requires():
+    for lab in labs.LABS:
+        first = lab.checks.checks[:3]
+        assert tuple(c.id for c in first) == SHARED_CHECKS, lab.id
+        assert [c.max_score for c in first] == [1.0] * 3 and [c.after for c in first] == [(), ("loads",), ("loads",)]
+        listed = first[0].description.split(" defines ", 1)[1].rstrip(".").replace(" and ", ", ").split(", ")
+        required = importlib.import_module(lab.probes).REQUIRED
+        assert sorted(listed) == sorted(required), lab.id   # the description names what a missing name fails
+
+
+def test_no_lab_writes_the_shared_checks_again():
+    for path in sorted(glob.glob(os.path.join(labs.HERE, "*", "checks.py"))):
+        with open(path, encoding="utf-8") as handle:
+            defined = {node.name for node in ast.walk(ast.parse(handle.read())) if isinstance(node, ast.FunctionDef)}
+        assert not defined & set(SHARED_CHECKS), path   # lab_checks.register_common registers them
+
+
 def _imported_modules(path):
     """The modules a Python file imports (absolute names; relative imports as written, with their dots)."""
     with open(path, encoding="utf-8") as handle:
@@ -89,3 +116,25 @@ def test_nothing_in_lesson11_imports_the_checker():
 
 def test_the_import_finder_sees_a_checker_import():
     assert "checker" in _imported_modules(__file__)   # this file's `from checker import labs`
+
+
+def test_nothing_in_lesson11_reaches_into_the_tests():
+    """The bench takes the scenes it shares with the tests from lesson11 (crate_scenes.pile_settings, clicks,
+    ramp_crate): no lesson11 module imports tests/lab_run.py or puts tests/ on sys.path."""
+    paths = glob.glob(os.path.join(ROOT, "lesson11", "**", "*.py"), recursive=True)
+    reaching = []
+    for path in paths:
+        with open(path, encoding="utf-8") as handle:
+            text = handle.read()
+        if "lab_run" in _imported_modules(path) or ("sys.path" in text and '"tests"' in text):
+            reaching.append(os.path.relpath(path, ROOT))
+    assert reaching == []
+
+
+def test_a_lab_without_its_own_recognise_knows_its_files_by_id_or_title():
+    for lab in labs.LABS:
+        if hasattr(lab.module, "recognise"):   # Bullets: its own rule (the docstring's first line)
+            continue
+        assert labs.identify(os.path.join("class", "A", lab.id + "_v2.py"), "") == lab
+        assert labs.identify(os.path.join("class", "A", "lab.py"), f'"""{lab.title.upper()}: my file"""') == lab
+    assert labs.identify(os.path.join("class", "A", "lab.py"), "print('hello')") is None

@@ -15,40 +15,25 @@ import corpus_bullets
 import corpus_tumbling_crates
 import corpus_verdicts as verdicts
 
+def plus(corpus, entry, step, old, new):
+    """{step: code}: corpus entry `entry`'s step (one known mistake) with `old` changed to `new` (a second one)."""
+    code = next(e for e in corpus.ENTRIES if e.name == entry).steps[step]
+    assert code.count(old) == 1, (entry, old)
+    return {step: code.replace(old, new)}
+
+
 # (lab, name, corpus, {step: code}, the check that must fail first, the causes' words it must not contain)
 COMBINED = [
-    ("tumbling_crates", "union_on_unnormalised_axes", corpus_tumbling_crates, {2: """
-        axes = []
-        for points in (pa, pb):
-            for i in range(len(points)):
-                edge = points[(i + 1) % len(points)] - points[i]
-                axes.append(pygame.Vector2(-edge.y, edge.x))
-        for axis in axes:
-            min_a, max_a = project(pa, axis)
-            min_b, max_b = project(pb, axis)
-            overlap = max(max_a, max_b) - min(min_a, min_b)
-            if overlap <= 0:
-                return None
-            if overlap < best_depth:
-                best_axis, best_depth = axis, overlap
-    """}, "sat_axes", ("both shadows together", "not divided by their length")),
-    ("tumbling_crates", "reversed_test_on_first_corners", corpus_tumbling_crates, {3: """
-        if (pb[0] - pa[0]).dot(best_axis) > 0:
-            best_axis = -best_axis
-    """}, "sat_normal", ("wrong way round", "first corners", "every time", "never turned round")),
-    ("bullets", "b_sign_without_the_two", corpus_bullets, {2: """
-        dp, dv = p2 - p1, v2 - v1
-        c = dp.dot(dp) - (r1 + r2) ** 2
-        if c <= 0:
-            return 0.0
-        a = dv.dot(dv)
-        b = -2 * dp.dot(dv)
-        disc = b * b - 4 * a * c
-        if a == 0 or disc < 0:
-            return None
-        t = (-b - math.sqrt(disc)) / a
-        return t if 0 <= t <= dt else None
-    """}, "toi_matches_root", ("b = -2 dp·dv", "the 2 of 2a")),
+    ("tumbling_crates", "union_on_unnormalised_axes",   # unnormalised axes and both shadows together
+     corpus_tumbling_crates, plus(corpus_tumbling_crates, "sat_unnormalised_axes", 2,
+                                  "min(max_a, max_b) - max(min_a, min_b)", "max(max_a, max_b) - min(min_a, min_b)"),
+     "sat_axes", ("both shadows together", "not divided by their length")),
+    ("tumbling_crates", "reversed_test_on_first_corners",   # the first corners and the test reversed
+     corpus_tumbling_crates, plus(corpus_tumbling_crates, "normal_first_vertices", 3, "< 0", "> 0"),
+     "sat_normal", ("wrong way round", "first corners", "every time", "never turned round")),
+    ("bullets", "b_sign_without_the_two",   # b = -2 dp·dv and a for 2a
+     corpus_bullets, plus(corpus_bullets, "toi_b_sign", 2, "/ (2 * a)", "/ a"),
+     "toi_matches_root", ("b = -2 dp·dv", "the 2 of 2a")),
     ("bullets", "falsy_zero_with_a_point_bullet", corpus_bullets, {4: """
         if not circle_toi(bullet.pos, bullet.vel, 0, other.pos, Vector2(), bounding_radius(points, other.pos), dt):
             return None

@@ -1,10 +1,11 @@
 """The lab registry: which labs the checker knows, found by convention, and how it tells which lab a file is.
 
 A lab is its id and the files named from it (Lab below finds each one; no lab spells a path):
-  checker/labs/<id>/checks.py  its checks (CHECKS, TITLE, STEP_LIBRARY, STEP_ADVICE, recognise(path, source),
-                               and optionally PICTURE_SCENES {check id: scene names} for --pictures and
-                               SCENE_SECONDS {scene name: CPU s of the solution's run}, so the grader starts
-                               the longest scenes first);
+  checker/labs/<id>/checks.py  its checks (CHECKS, TITLE, STEP_LIBRARY, STEP_ADVICE, and optionally
+                               recognise(path, source) where Lab.recognise's convention does not fit,
+                               PICTURE_SCENES {check id: scene names} for --pictures and SCENE_SECONDS
+                               {scene name: CPU s of the solution's run}, so the grader starts the longest
+                               scenes first);
   checker/labs/<id>/probes.py  the inputs and references of its probes (REQUIRED, PROBES {name: (function,
                                probe)}, SPLICES): they run in the child to record a tape and again in the
                                grader to judge it (checker/tape.py, checker/probing.py);
@@ -22,6 +23,7 @@ from dataclasses import dataclass
 from ..sandbox import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+STARTERS, SOLUTIONS = "starters", "solutions"   # the project's folders of the handouts and of the solutions
 ORDER = ("tumbling_crates", "more_shapes", "ball_on_ramp", "bullets", "sleeping_crates")   # the lesson's order;
 # a lab not named here comes after these, by id (the order of --list and of identify())
 
@@ -51,15 +53,25 @@ class Lab:
         """Import name of the module whose probes the child process runs on this lab's functions."""
         return f"{__name__}.{self.id}.probes"
 
+    @classmethod
+    def of_solution(cls, path):
+        """The lab whose reference solution is `path` (solutions/<id>.py: the id is the file's name)."""
+        return cls(os.path.splitext(os.path.basename(path))[0])
+
+    @property
+    def starter_file(self):
+        """File name of the lab's handout, <id>_starter.py."""
+        return f"{self.id}_starter.py"
+
     @property
     def starter(self):
         """Path of the lab's handout, starters/<id>_starter.py."""
-        return os.path.join(self.root, "starters", f"{self.id}_starter.py")
+        return os.path.join(self.root, STARTERS, self.starter_file)
 
     @property
     def solution(self):
         """Path of the lab's reference solution, solutions/<id>.py."""
-        return os.path.join(self.root, "solutions", f"{self.id}.py")
+        return os.path.join(self.root, SOLUTIONS, f"{self.id}.py")
 
     @property
     def title(self):
@@ -70,7 +82,13 @@ class Lab:
         return self.module.CHECKS
 
     def recognise(self, path, source):
-        return self.module.recognise(path, source)
+        """True if the file is this lab's: its module's recognise(path, source) if it has one, else by convention
+        the file's name holds the lab's id or its text the lab's title (any case)."""
+        own = getattr(self.module, "recognise", None)
+        if own is not None:
+            return own(path, source)
+        name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
+        return self.id in name or self.title.lower() in source.lower()
 
     def scenarios(self):
         """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""

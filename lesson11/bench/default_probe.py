@@ -6,7 +6,7 @@ For each setting, World's default sub-steps and iterations are swapped for the
 run (solve-first, the lab's order) and the Tumbling Crates solution runs in
 this process under the lab runtime, as the checker runs it, in:
   corner, ramp, bricks, own    the checker's four scenes (lesson11/crate_scenes.py)
-  pile 12                      the lab's 12-crate clicked pile (tests/lab_run.pile_settings)
+  pile 12                      the lab's 12-crate clicked pile (lesson11/crate_scenes.pile_settings)
   pile 14                      the same with 14 clicks: a denser pile
 Each figure is shown against its checker bound as value (bound/value, the
 margin); a setting "holds with margin" when every margin is at least MARGIN.
@@ -33,11 +33,9 @@ from lesson11.physics2d import World  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
-sys.path.insert(0, os.path.join(ROOT, "tests"))
-from lab_run import clicks, pile_settings  # noqa: E402
 
 MARGIN = 1.5
-DENSE_DROPS = [(590 + 70 * (k % 4), 150 + 50 * (k // 4)) for k in range(14)]
+DENSE_DROPS = scenes.pile_drops(14)
 SETTINGS = ((1, 6), (2, 4), (1, 10), (1, 20), (2, 6), (2, 10), (3, 6), (4, 4), (4, 6))
 
 
@@ -96,8 +94,8 @@ def fmt(value, bound):
 
 def clicked_pile(drops):
     """(top speed in the last 1 s (px/s), physics ms per 60 fps frame over the last 2 s) of a clicked pile."""
-    settings = pile_settings(settle_frames=240)
-    settings["script"] = clicks(drops, 10, 20)
+    settings = scenes.pile_settings(settle_frames=240)
+    settings["script"] = scenes.clicks(drops, 10, 20)
     settings["frames"] = settings["script"][-1]["frame"] + 240
     record, clock = run_lab(settings)
     tail = record["records"][-metrics.FPS:]

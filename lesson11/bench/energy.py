@@ -27,15 +27,15 @@ import os
 import random
 import time
 
+from lesson11 import crate_scenes
 from lesson11.physics2d import Body, Circle, World, box_points
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 LAB_FILE = os.path.join(ROOT, "solutions", "tumbling_crates.py")
 WINDOW = (0.0, 0.0, 900.0, 600.0)   # px: x0, y0, x1, y1 of the lab window
 STEPS_PER_FRAME = 2                 # 1/120 s steps in a 60 fps frame
-# the lab's 12-crate pile: a dozen clicks over the floor, every 20 frames from frame 10 (tests/lab_run.py)
-PILE_DROPS = [(590 + 70 * (k % 4), 150 + 50 * (k // 4)) for k in range(12)]
-OWN_DROPS = ((30, (180, 120)), (50, (620, 120)), (70, (720, 60)), (90, (300, 60)))  # the checker's clicks
+PILE_DROPS = crate_scenes.PILE_DROPS   # the lab's 12-crate pile: clicked every 20 frames from frame 10
+OWN_DROPS = crate_scenes.DROPS   # the checker's clicks in the lab's own scene: (frame, position)
 SOLVERS = {  # name: World settings
     "lesson solve-first": {"solver": "lesson", "order": "solve-first"},
     "lesson move-first": {"solver": "lesson", "order": "move-first"},

@@ -58,7 +58,7 @@ from . import energy, speed
 
 SIZES = (12, 40, 200)
 SETTINGS = {"default 4 × 6": {}, "listing's 1 × 6": {"substeps": 1, "iterations": 6}}
-SETTLE_FRAMES = 240        # frames of settling after the last click (tests/lab_run.pile_settings)
+SETTLE_FRAMES = 240        # frames of settling after the last click (lesson11/crate_scenes.pile_settings)
 FRAMES = {12: 60, 40: 30, 200: 8}   # timed 60 fps frames per setting
 QUICK_FRAMES = {12: 3, 40: 2}
 WAVES = 12                 # the clicks come in 12 waves, 20 frames apart (12 crates: one click a wave)

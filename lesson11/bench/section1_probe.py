@@ -5,7 +5,7 @@
 Rows (units px, s; targets from issue 10 §1):
   ramp     the checker's ramp scene (lesson11/crate_scenes.ramp_scenario, 3 crates, 3 s, run
            through solutions/tumbling_crates.py as the checker runs it): largest slide (px), target <= 1
-  pile     the lab's 12-crate pile (tests/lab_run.pile_settings: a dozen clicks, 4 s of settling):
+  pile     the lab's 12-crate pile (crate_scenes.pile_settings: a dozen clicks, 4 s of settling):
            top speed over the last second (px/s), target < 5; deepest corner below the floor over
            the last 2 s and over the whole run (px), targets <= 1 and < 2 (test_lab_criteria)
   bricks   the checker's brick pile (pile_scenario, 2.5 s): top speed, drift over the last second, deepest corner
@@ -37,8 +37,6 @@ from lesson11.physics2d import World  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
-sys.path.insert(0, os.path.join(ROOT, "tests"))
-from lab_run import pile_settings  # noqa: E402
 
 
 def with_order(order):
@@ -65,7 +63,7 @@ def lab_rows():
     ramp = run_lab(scenes.ramp_scenario())
     slid = max(abs(c["slid"]) for c in metrics.measure_ramp(ramp))
     ramp_tail = metrics.summary(ramp)["tail_speed"]
-    pile = run_lab(pile_settings(settle_frames=240))
+    pile = run_lab(scenes.pile_settings(settle_frames=240))
     frames = pile["records"]
     tail = frames[-metrics.FPS:]
     top = max(metrics.speed(b) for f in tail for b in metrics.dynamic(f))

@@ -126,12 +126,6 @@ PICTURE_SCENES = {"runs": ("ramp", "knock", "inside"), "rolls_without_slipping":
 CHECKS = Registry()
 
 
-def recognise(path, source):
-    """True if the file is a Ball on the Ramp lab: its name or its text says so."""
-    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-    return "ball_on_ramp" in name or "ball on the ramp" in source.lower()
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"knock": 0.8, "ramp": 0.3, "inside": 0.3}
@@ -160,25 +154,8 @@ def _bad(got):
 
 # ---------------------------------------------------------------- loading and the handout
 
-@CHECKS.check()
-def loads(sub):
-    """The file imports without errors and defines closest_on_segment, circle_polygon, separate, disc_inertia,
-    contact_point, resolve and main."""
-    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
-                             "function names: closest_on_segment, circle_polygon, separate, disc_inertia, "
-                             "contact_point, resolve and main; the checker calls them."))
-
-
-@CHECKS.check(after=["loads"])
-def handout_unchanged(sub):
-    """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, HINTS["handout"])
-
-
-@CHECKS.check(after=["loads"])
-def runtime_lines(sub):
-    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
-    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+lab_checks.register_common(CHECKS, HINTS, ("closest_on_segment", "circle_polygon", "separate", "disc_inertia",
+                                            "contact_point", "resolve", "main"))
 
 
 # ---------------------------------------------------------------- step 2: the closest point

@@ -141,25 +141,8 @@ _vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 
 # ---------------------------------------------------------------- loading and the handout
 
-@CHECKS.check()
-def loads(sub):
-    """The file imports without errors and defines circle_toi, bounding_radius, time_of_impact, swept_move,
-    BulletWorld, apply_mode, make_wall, make_bullet and main."""
-    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
-                             "names: circle_toi, bounding_radius, time_of_impact, swept_move, BulletWorld, "
-                             "apply_mode, make_wall, make_bullet and main; the checker calls them."))
-
-
-@CHECKS.check(after=["loads"])
-def handout_unchanged(sub):
-    """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, HINTS["handout"])
-
-
-@CHECKS.check(after=["loads"])
-def runtime_lines(sub):
-    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
-    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+lab_checks.register_common(CHECKS, HINTS, ("circle_toi", "bounding_radius", "time_of_impact", "swept_move",
+                                            "BulletWorld", "apply_mode", "make_wall", "make_bullet", "main"), kind="names")
 
 
 # ---------------------------------------------------------------- step 2: circle_toi (criterion 3)

@@ -108,12 +108,6 @@ PICTURE_SCENES = {"runs": ("solo", "pile"), "triangle_tips": ("solo",), "hexagon
 CHECKS = Registry()
 
 
-def recognise(path, source):
-    """True if the file is a More Shapes lab: its name or its text says so."""
-    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-    return "more_shapes" in name or "more shapes" in source.lower()
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"solo": 1.9, "pile": 1.8}
@@ -141,25 +135,8 @@ def _bad(value, what, hint):
 
 # ---------------------------------------------------------------- loading and the handout
 
-@CHECKS.check()
-def loads(sub):
-    """The file imports without errors and defines regular_polygon, polygon_centroid, polygon_inertia,
-    separating_axes, sat, build and main."""
-    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
-                             "function names: regular_polygon, polygon_centroid, polygon_inertia, separating_axes, "
-                             "sat, build and main; the checker calls them."))
-
-
-@CHECKS.check(after=["loads"])
-def handout_unchanged(sub):
-    """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, HINTS["handout"])
-
-
-@CHECKS.check(after=["loads"])
-def runtime_lines(sub):
-    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
-    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+lab_checks.register_common(CHECKS, HINTS, ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes",
+                                            "sat", "build", "main"))
 
 
 # ---------------------------------------------------------------- step 2: regular_polygon

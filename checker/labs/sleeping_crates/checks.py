@@ -85,12 +85,6 @@ PICTURE_SCENES = {"runs": ("sleep",), "pile_sleeps": ("sleep",), "no_sleep_in_ai
 CHECKS = Registry()
 
 
-def recognise(path, source):
-    """True if the file is a Sleeping Crates lab: its name or its text says so."""
-    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-    return "sleeping_crates" in name or "sleeping crates" in source.lower()
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"sleep": 1.4}
@@ -102,24 +96,7 @@ def _function(sub, functions, probe, function, step):
 
 # ---------------------------------------------------------------- loading and the handout
 
-@CHECKS.check()
-def loads(sub):
-    """The file imports without errors and defines sleep_timer, moves, wake_on_contact, build and main."""
-    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
-                             "function names: sleep_timer, moves, wake_on_contact, build and main; the checker "
-                             "calls them."))
-
-
-@CHECKS.check(after=["loads"])
-def handout_unchanged(sub):
-    """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, HINTS["handout"])
-
-
-@CHECKS.check(after=["loads"])
-def runtime_lines(sub):
-    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
-    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+lab_checks.register_common(CHECKS, HINTS, ("sleep_timer", "moves", "wake_on_contact", "build", "main"))
 
 
 # ---------------------------------------------------------------- step 2: sleep_timer

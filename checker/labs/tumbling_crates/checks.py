@@ -42,7 +42,6 @@ STEP_ADVICE = {2: "write the loop over both shapes' edge normals yourself (proje
                4: "add the spin terms (ra × n)² / I_A and (rb × n)² / I_B to k yourself",
                5: "clamp jt to [-μ j, μ j] yourself",
                6: "write the two spin lines yourself, like the velocity lines"}
-RUNTIME_HOOKS = lab_checks.RUNTIME_HOOKS
 
 # ---------------------------------------------------------------- tolerances of the function checks
 REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
@@ -129,12 +128,6 @@ PICTURE_SCENES = {"runs": ("corner", "ramp", "pile", "own_scene"), "corner_tips"
 CHECKS = Registry()
 
 
-def recognise(path, source):
-    """True if the file is a Tumbling Crates lab: its name or its text says so."""
-    name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-    return "tumbling_crates" in name or "tumbling crates" in source.lower()
-
-
 # CPU s of the solution's run of each scene (measured 2026-11-23, one job on this 2-core machine): the
 # grader starts the longest first, so a long scene does not start last and run alone.
 SCENE_SECONDS = {"pile": 4.6, "own_scene": 3.3, "ramp": 1.5, "corner": 0.9}
@@ -156,23 +149,7 @@ def _function(sub, functions, probe, function, step):
 
 # ---------------------------------------------------------------- loading and the handout
 
-@CHECKS.check()
-def loads(sub):
-    """The file imports without errors and defines sat, apply_impulse, resolve and main."""
-    return lab_checks.loaded(sub, HINTS["crash"], Hint(None, "the handout's functions", "Keep the handout's "
-                             "function names: sat, apply_impulse, resolve and main; the checker calls them."))
-
-
-@CHECKS.check(after=["loads"])
-def handout_unchanged(sub):
-    """The code outside the steps is the handout's (formatting and comments aside)."""
-    return lab_checks.handout_unchanged(sub, HINTS["handout"])
-
-
-@CHECKS.check(after=["loads"])
-def runtime_lines(sub):
-    """The lines marked `# lab runtime` are still there (seed, scene, frame_budget, tick, events, record)."""
-    lab_checks.runtime_lines(sub, HINTS["crash"], HINTS["runtime"])
+lab_checks.register_common(CHECKS, HINTS, ("sat", "apply_impulse", "resolve", "main"))
 
 
 # ---------------------------------------------------------------- step 2 and step 3: sat()
