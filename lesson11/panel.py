@@ -41,7 +41,10 @@ changed settings only (as overrides) and applies them to every World it is
 handed, so after R builds a new world the new one gets them before its first
 step. With no panel key pressed, which is how the checker runs a lab unless
 its script presses one, advance(world, dt) is exactly world.advance(dt), and
-the lab runtime's record is the same as without the panel.
+the lab runtime's record is the same as without the panel but for the World's
+settings, which advance() notes for it (runtime.note_world, recorded_settings)
+only while the checker records: `python -m checker FILE --show` draws them
+with draw_recorded, read-only.
 
 The World attributes used are: solver, iterations, substeps, warm_starting,
 contact_rule, effects, contacts, bodies, step_seconds and advance(dt). A World
@@ -56,6 +59,7 @@ from collections import deque
 import pygame
 
 from . import hook_clock
+from . import runtime
 from .physics2d.collision import circle_polygon as circle_polygon_of_physics2d
 from .physics2d.collision import sat as sat_of_physics2d
 
@@ -88,6 +92,7 @@ BUDGET_LINE = (235, 80, 80)
 SOLVERS = ("lesson", "accumulated")
 CONTACT_RULES = ("corners", "clip")
 SETTING_NAMES = ("solver", "iterations", "substeps", "warm_starting", "correction", "contact_rule")
+RECORDED = SETTING_NAMES + ("order", "effects", "step_seconds")   # what the checker's record keeps of a World
 NEW_ATTRIBUTES = {"substeps": 1, "warm_starting": True}  # their defaults, for a World that lacks them
 _study = None           # the study's table, read once: {(solver, order, substeps, iterations): row}
 
@@ -189,6 +194,16 @@ def read_setting(world, name):
     if name in NEW_ATTRIBUTES:
         return getattr(world, name, NEW_ATTRIBUTES[name])
     return getattr(world, name)
+
+
+def recorded_settings(world):
+    """The world's settings the checker records with its frames, {name: value} for RECORDED (read now, so a
+    change made by the lab's own code shows too); {} when the World cannot be read (the run goes on)."""
+    try:
+        return {name: read_setting(world, name) if name in SETTING_NAMES else getattr(world, name)
+                for name in RECORDED}
+    except Exception:   # a World the lab changed so it cannot be read: the checker gets no settings, not a crash
+        return {}
 
 
 def write_setting(world, name, value):
@@ -362,6 +377,8 @@ class LabPanel:
         if not self.paused:
             self.rates.append((spent, steps, dt, steps * world.step_seconds))
         self.last_steps = steps
+        if runtime.recording():   # only under the checker: the replay (--show) shows the settings the run had
+            runtime.note_world(recorded_settings(world))
         return steps
 
     def watch(self, world):
