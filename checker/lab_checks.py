@@ -230,7 +230,7 @@ def _shown(value):
     """A value from a record for a message: short, whatever it is (a record may hold a megabyte string)."""
     if isinstance(value, str):
         return repr(value[:30]) + ("..." if len(value) > 30 else "")
-    return repr(value) if value is None or _finite(value) else f"a {type(value).__name__}"
+    return repr(value) if value is None or isinstance(value, (bool, int, float)) else f"a {type(value).__name__}"
 
 
 def world_problem(world):
