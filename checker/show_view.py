@@ -309,10 +309,14 @@ def _boxes(frame, scale=1.0, offset=(0, 0)):
 
 
 def place_panel(replay, size, top, side_by_side=False):
-    """Where the solver panel goes (its top-left, px): of the scene's four corners below the title (`top`; side by
-    side, below the columns' labels) and above the timeline, the one whose rectangle covers the least of the moving bodies
-    of both runs over all frames (their boxes' area) (side by side, as drawn there: half size, from y SIDE_TOP); on a tie the lab's own
-    corner, top right (side by side: the bottom corners first, under the columns when the panel fits there)."""
+    """Where the solver panel goes (its top-left, px): of the scene's four corners below the title (`top`; side
+    by side, below the columns' labels) and above the timeline, the one whose rectangle covers the least of the
+    moving bodies of both runs over all frames (px² of their boxes; side by side, as drawn there: half size, from
+    y SIDE_TOP). On a tie the lab's own corner, top right (side by side: the bottom corners first, under the
+    columns, where a compact panel fits).
+
+    A full panel (H) side by side fits nowhere whole: it goes where it covers least.
+    """
     width, height = size
     right, left = SCENE[0] - 10 - width, 10
     top = max(top, SIDE_TOP) if side_by_side else top
