@@ -691,7 +691,8 @@ class LabPanel:
         rows = recorded_rows(mine or {}, theirs or {})
         compact = self.mode != "full"
         if mine is None:
-            lines = [("settings not recorded for this frame", WARNING)] + [(note, DIM)] * bool(note)
+            lines = [("settings ignored for this frame:", WARNING), (note, DIM)] if note else \
+                [("settings not recorded for this frame", WARNING)]
             rows = []
         elif compact:
             main = [row for row in rows if row[1] in ("solver", "iterations", "sub-steps")]

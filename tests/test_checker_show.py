@@ -658,5 +658,5 @@ def test_a_forged_settings_record_from_the_child_is_ignored_in_the_window(tmp_pa
     assert f"  solver panel: {note}" in replay.summary()
     viewer = show_view.run(replay, events=scripted([key(pygame.K_TAB)], [key(pygame.K_j)]), frames=2)
     texts = panel_text(viewer)
-    assert "settings not recorded for this frame" in texts and "6" not in texts
+    assert "settings ignored for this frame:" in texts and "6" not in texts
     assert "replay: recorded settings, no timing measured" in texts
