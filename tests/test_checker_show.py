@@ -660,3 +660,22 @@ def test_a_forged_settings_record_from_the_child_is_ignored_in_the_window(tmp_pa
     texts = panel_text(viewer)
     assert "settings ignored for this frame:" in texts and "6" not in texts
     assert "replay: recorded settings, no timing measured" in texts
+
+
+def test_a_run_without_the_panel_shows_no_settings():
+    """A lab whose loop calls world.advance() itself (no panel line) records no "world": nothing is made up, the
+    panel says so, and there is no note (nothing was ignored)."""
+    lab = lab_of("tumbling_crates")
+    frames = [{k: v for k, v in f.items() if k != "world"} for f in pictures.reference_record(lab, "corner")["records"]]
+
+    class Row:
+        records, preview, seed, path = {"corner": {"records": frames}}, "corner", SEED, "tumbling_crates.py"
+        results = ()
+    Row.lab = lab
+    result = type("R", (), {"id": "apply_impulse_spin", "status": "fail", "message": "m"})()
+    replay = show.build_replay(Row, result)
+    assert replay.frames == frames and replay.settings == [None] * len(frames) and replay.settings_note == ""
+    assert all(s is not None for s in replay.reference_settings)
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_p)]), frames=1)
+    texts = panel_text(viewer)
+    assert "settings not recorded for this frame" in texts and "lesson" not in texts
