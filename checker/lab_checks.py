@@ -9,6 +9,8 @@ import ast
 import math
 
 from . import handout, source
+from lesson11.physics2d.world import CONTACT_RULES, EFFECTS, ORDERS, SOLVERS
+
 from .checks import Error, Fail, Hint
 from .common import describe_function_error, describe_run_failure
 
@@ -229,6 +231,75 @@ def record_problem(record, settings):
                     return f"body {index} changes shape between frames {previous[0]} and {number}"
         previous, last = (number, bodies), number
     return ""
+
+
+MAX_RECORDED_COUNT = 10_000   # iterations and sub-steps above this are no World a lab runs at 60 fps
+
+
+def _count(value):
+    return isinstance(value, int) and not isinstance(value, bool) and 1 <= value <= MAX_RECORDED_COUNT
+
+
+# the World's settings a frame's "world" holds (lesson11/panel.py RECORDED): name -> is the value one it can have
+WORLD_SETTINGS = {
+    "solver": lambda v: isinstance(v, str) and v in SOLVERS,
+    "order": lambda v: isinstance(v, str) and v in ORDERS,
+    "iterations": _count,
+    "substeps": _count,
+    "warm_starting": lambda v: isinstance(v, bool),
+    "correction": lambda v: isinstance(v, bool),
+    "contact_rule": lambda v: isinstance(v, str) and v in CONTACT_RULES,
+    "effects": lambda v: isinstance(v, list) and len(v) <= len(EFFECTS)
+    and all(isinstance(e, str) and e in EFFECTS for e in v) and len(set(v)) == len(v),
+    "step_seconds": lambda v: _finite(v) and 0 < v <= 1,
+}
+
+
+def _shown(value):
+    """A value from a record for a message: short, whatever it is (a record may hold a megabyte string)."""
+    if isinstance(value, str):
+        return repr(value[:30]) + ("..." if len(value) > 30 else "")
+    return repr(value) if value is None or isinstance(value, (bool, int, float)) else f"a {type(value).__name__}"
+
+
+def world_problem(world):
+    """Why a frame's "world" (the World's settings, written by the child) cannot be what the runtime wrote, or ""."""
+    if not isinstance(world, dict):
+        return f"the settings are {_shown(world)}, not a mapping"
+    if not world:
+        return "the run could not read its World's settings"
+    unknown = [name for name in world if name not in WORLD_SETTINGS]
+    if unknown:
+        return f"unknown setting {_shown(unknown[0])}" if len(world) <= len(WORLD_SETTINGS) else \
+            f"{len(world)} settings, more than the {len(WORLD_SETTINGS)} a World has"
+    missing = [name for name in WORLD_SETTINGS if name not in world]
+    if missing:
+        return f"no {missing[0]}"
+    bad = next((name for name, valid in WORLD_SETTINGS.items() if not valid(world[name])), None)
+    if bad:
+        return f"{bad} cannot be {_shown(world[bad])}"
+    if world["correction"] != ("correction" in world["effects"]):
+        return "correction disagrees with the effects"
+    return ""
+
+
+def world_settings(frames):
+    """(the World's settings at each frame, note): {name: value} or None per recorded frame, and "" or why a
+    "world" was ignored.
+
+    The runtime writes "world" on the first frame and where the settings change; each holds until the next. The
+    child wrote them, so each is checked (world_problem): a bad one is ignored (None until the next good one) and
+    named in the note, never trusted and never an error: the settings are shown, not graded.
+    """
+    settings, current, note = [], None, ""
+    for frame in frames:
+        if isinstance(frame, dict) and "world" in frame:
+            problem = world_problem(frame["world"])
+            current = None if problem else dict(frame["world"])
+            if problem and not note:
+                note = f"the World's settings recorded at frame {_shown(frame.get('frame'))} are ignored: {problem}"
+        settings.append(current)
+    return settings, note
 
 
 def scene_records(sub, names, crash_hint, runtime_hint=RUNTIME_HINT):

@@ -26,6 +26,7 @@ from lesson11 import records as metrics
 from . import pictures, report
 from .checks import ERROR, FAIL, PASS
 from .grade import Grader
+from .lab_checks import world_settings
 
 VISIBLE = 1.0   # px: a body this far from the solution's is visibly elsewhere (the criteria's own scale)
 NO_DISPLAY = "no display: use --pictures DIR"
@@ -166,7 +167,9 @@ class Replay:
 
     frames / reference: the student's and the solution's recorded frames (lesson11.runtime records);
     values: the quantity per student frame; fail_frame: a recorded frame number (or None);
-    cases: the failing cases of a function check (checker/show_cases.py), possibly [].
+    cases: the failing cases of a function check (checker/show_cases.py), possibly [];
+    settings / reference_settings: the World's settings per student / solution frame (lab_checks.world_settings:
+    validated, None where none was recorded or one was ignored); settings_note: why one was ignored, or "".
     """
     path: str
     lab: object
@@ -181,6 +184,21 @@ class Replay:
     fail_frame: int | None
     fail_reason: str
     cases: list = field(default_factory=list)
+    settings: list = field(default_factory=list)
+    reference_settings: list = field(default_factory=list)
+    settings_note: str = ""
+
+    def settings_at(self, index):
+        """(the student's World settings at frames[index], the solution's at the same frame number): dicts or None."""
+        if not self.frames:
+            return None, None
+        mine = self.settings[index] if index < len(self.settings) else None
+        number = self.frames[index]["frame"]
+        nearest = min(range(len(self.reference)), key=lambda i: abs(self.reference[i]["frame"] - number),
+                      default=None)
+        theirs = self.reference_settings[nearest] if nearest is not None and nearest < len(self.reference_settings) \
+            else None
+        return mine, theirs
 
     def reference_at(self, number):
         """The solution's recorded frame with this frame number (nearest), or None."""
@@ -203,6 +221,8 @@ class Replay:
                          f"{self.fail_reason}")
         if self.cases:
             lines.append(f"  {len(self.cases)} failing case(s) drawn: [ and ] step through them")
+        if self.settings_note:
+            lines.append(f"  solver panel: {self.settings_note}")
         return lines
 
 
@@ -326,8 +346,11 @@ def build_replay(row, result, functions=None, run_scene=None, reference_record=N
     scene, graded, frames, reference = _scene_choice(row, result, run_scene, reference_record)
     fail_frame, reason, quantity, values = failure(lab, result, frames, reference, graded)
     cases = show_cases.failing_cases(lab, result, functions or {}, row.seed)
+    settings, note = world_settings(frames)
+    reference_settings, reference_note = world_settings(reference)
+    note = f"yours: {note}" if note else f"the solution's: {reference_note}" if reference_note else ""
     return Replay(row.path, lab, result, scene, graded, row.seed, frames, reference, quantity, values, fail_frame,
-                  reason, cases)
+                  reason, cases, settings, reference_settings, note)
 
 
 def prepare(path, lab, check_id=None, seed=None, limits=None, options=None):

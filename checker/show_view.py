@@ -5,9 +5,16 @@ in the isolated child, and by a run of the solution on the grading side); they a
 lesson11.physics2d.draw's draw_body and draw_contacts, the functions the labs draw with, through
 RecordedBody (a recorded body that looks like a Body to them). Both runs advance in lockstep.
 
+The lab's solver panel (lesson11/panel.py, LabPanel.draw_recorded) shows the World's settings the
+replayed run had (recorded by the runtime, validated by checker/lab_checks.py world_settings) and, where
+they differ, the solution's; read-only: no panel key reaches it but H (its size), and it says "replay"
+where the live panel has its timings. It sits where it covers the fewest moving bodies of both runs
+(place_panel), never over the title or the timeline.
+
 Keys:  P pause / play    O one frame (paused)    Left / Right one frame back / on    Home the start
        J jump to the failing frame    G ghost (the solution's outlines over yours) / side by side
-       Tab the scene / the failing cases    [ ] previous / next case    N next axis (SAT)    Esc, Q quit
+       Tab the scene / the failing cases    [ ] previous / next case    N next axis (SAT)
+       H the solver panel: compact / full / hidden    Esc, Q quit
 """
 import math
 import os
@@ -15,6 +22,7 @@ import os
 import pygame
 from pygame import Vector2
 
+from lesson11.panel import MODES, LabPanel
 from lesson11.physics2d.draw import draw_body, draw_contacts
 
 from .pictures import _font
@@ -22,6 +30,7 @@ from .show_cases import wrapped
 
 SCENE = (900, 600)          # px: the labs' window
 TIMELINE_H = 130            # px: the timeline under the scene
+SIDE_TOP = 120              # px: side by side, the top of the two half-size columns (their labels above it)
 SIZE = (SCENE[0], SCENE[1] + TIMELINE_H)
 BACKGROUND = (30, 30, 36)   # the labs' background
 GHOST = (60, 235, 235)      # the solution's outlines (ghost mode) and its line on the timeline
@@ -100,6 +109,8 @@ class Viewer:
         self.showing_cases = bool(replay.cases) and not replay.graded
         self.font = _font(22)
         self.small = _font(18)
+        self.panel = LabPanel()   # draws the recorded settings only (draw_recorded): never handed an event
+        self.panel_at = {}        # (panel size, side by side, top) -> its top-left corner (px), chosen once
 
     # ---- what is shown
     @property
@@ -149,6 +160,8 @@ class Viewer:
             self.index = self.replay.index_of(self.replay.fail_frame)
         elif key == pygame.K_g:
             self.side_by_side = not self.side_by_side
+        elif key == pygame.K_h:
+            self.panel.mode = MODES[(MODES.index(self.panel.mode) + 1) % len(MODES)]
         return True
 
     def tick(self):
@@ -172,7 +185,28 @@ class Viewer:
         else:
             self.draw_ghost(surface)
         self.draw_hud(surface)
+        if self.frame is not None and not (self.showing_cases and self.case is not None):
+            self.draw_panel(surface)
         self.draw_timeline(surface, pygame.Rect(0, SCENE[1], SIZE[0], TIMELINE_H))
+
+    def hud_bottom(self):
+        """The y (px) below the title and keys lines."""
+        return 12 + 22 * max(len(self.hud_lines()), 1) + 6
+
+    def draw_panel(self, surface):
+        """The lab's solver panel with the settings of the frame on screen, the solution's where they differ."""
+        mine, theirs = self.replay.settings_at(self.index)
+        note = self.replay.settings_note
+        if self.panel.mode == "hidden":
+            label = "[H] show the solver panel"
+            _text(surface, self.small, label, (SCENE[0] - 10 - self.small.size(label)[0], self.hud_bottom()), DIM)
+            self.panel.box = None
+            return
+        size = self.panel.recorded_size(mine, theirs, note)
+        key = (size, self.side_by_side, self.hud_bottom())
+        if key not in self.panel_at:
+            self.panel_at[key] = place_panel(self.replay, size, key[2], self.side_by_side)
+        self.panel.draw_recorded(surface, mine, theirs, note, self.panel_at[key], GHOST)
 
     def draw_ghost(self, surface):
         """The student's bodies (filled, as the lab draws them), the solution's as GHOST outlines over them."""
@@ -186,7 +220,7 @@ class Viewer:
     def draw_side_by_side(self, surface):
         """Yours on the left, the solution's on the right, each at half size."""
         scale = 0.5
-        top = 120
+        top = SIDE_TOP
         for column, (frame, label) in enumerate(((self.frame, "yours"), (self.reference_frame, "the solution"))):
             offset = (column * SCENE[0] / 2, top)
             pygame.draw.rect(surface, (40, 40, 48), (offset[0], top, SCENE[0] / 2, SCENE[1] / 2))
@@ -260,6 +294,44 @@ class Viewer:
         value = replay.values[self.index] if replay.values else None
         shown = f": {value:.3g} now" if value is not None and math.isfinite(value) else ""
         _text(surface, self.small, f"{label}{shown}   frames {first}-{frames[-1]['frame']}", (plot.left, rect.top + 6))
+
+
+def _boxes(frame, scale=1.0, offset=(0, 0)):
+    """The bounding rectangles (px, on screen) of a recorded frame's moving bodies."""
+    boxes = []
+    for body in bodies_of(frame, scale, offset):
+        if body.body.get("static"):
+            continue
+        points = body.world_points() or [body.pos - Vector2(body.radius), body.pos + Vector2(body.radius)]
+        xs, ys = [p.x for p in points], [p.y for p in points]
+        boxes.append(pygame.Rect(min(xs), min(ys), max(xs) - min(xs) + 1, max(ys) - min(ys) + 1))
+    return boxes
+
+
+def place_panel(replay, size, top, side_by_side=False):
+    """Where the solver panel goes (its top-left, px): of the scene's four corners below the title (`top`; side
+    by side, below the columns' labels) and above the timeline, the one whose rectangle covers the least of the
+    moving bodies of both runs over all frames (px² of their boxes; side by side, as drawn there: half size, from
+    y SIDE_TOP). On a tie the lab's own corner, top right (side by side: the bottom corners first, under the
+    columns, where a compact panel fits).
+
+    A full panel (H) side by side fits nowhere whole: it goes where it covers least.
+    """
+    width, height = size
+    right, left = SCENE[0] - 10 - width, 10
+    top = max(top, SIDE_TOP) if side_by_side else top
+    bottom = max(top, SCENE[1] - 6 - height)
+    corners = [(right, bottom), (left, bottom), (right, top), (left, top)] if side_by_side else \
+        [(right, top), (left, top), (right, bottom), (left, bottom)]
+    view = [(0.5, (0, SIDE_TOP)), (0.5, (SCENE[0] / 2, SIDE_TOP))] if side_by_side else [(1.0, (0, 0))] * 2
+    boxes = [box for frame in replay.frames for box in _boxes(frame, *view[0])] + \
+        [box for frame in replay.reference for box in _boxes(frame, *view[1])]
+
+    def covered(at):   # px² of moving bodies' boxes under the panel, summed over the frames
+        panel = pygame.Rect(at, size)
+        return sum(panel.clip(boxes[i]).width * panel.clip(boxes[i]).height for i in panel.collidelistall(boxes))
+
+    return min(corners, key=lambda at: (covered(at), corners.index(at)))
 
 
 def _outline(surface, body, colour):

@@ -41,7 +41,10 @@ changed settings only (as overrides) and applies them to every World it is
 handed, so after R builds a new world the new one gets them before its first
 step. With no panel key pressed, which is how the checker runs a lab unless
 its script presses one, advance(world, dt) is exactly world.advance(dt), and
-the lab runtime's record is the same as without the panel.
+the lab runtime's record is the same as without the panel but for the World's
+settings, which advance() notes for it (runtime.note_world, recorded_settings)
+only while the checker records: `python -m checker FILE --show` draws them
+with draw_recorded, read-only.
 
 The World attributes used are: solver, iterations, substeps, warm_starting,
 contact_rule, effects, contacts, bodies, step_seconds and advance(dt). A World
@@ -56,8 +59,10 @@ from collections import deque
 import pygame
 
 from . import hook_clock
+from . import runtime
 from .physics2d.collision import circle_polygon as circle_polygon_of_physics2d
 from .physics2d.collision import sat as sat_of_physics2d
+from .physics2d.world import LESSON_EFFECTS
 
 MAX_ITERATIONS = 50     # the Up key stops here: 50 passes of the lesson solver take ~30 ms per step
 MAX_SUBSTEPS = 16       # the Right key stops here
@@ -88,6 +93,7 @@ BUDGET_LINE = (235, 80, 80)
 SOLVERS = ("lesson", "accumulated")
 CONTACT_RULES = ("corners", "clip")
 SETTING_NAMES = ("solver", "iterations", "substeps", "warm_starting", "correction", "contact_rule")
+RECORDED = SETTING_NAMES + ("order", "effects", "step_seconds")   # what the checker's record keeps of a World
 NEW_ATTRIBUTES = {"substeps": 1, "warm_starting": True}  # their defaults, for a World that lacks them
 _study = None           # the study's table, read once: {(solver, order, substeps, iterations): row}
 
@@ -189,6 +195,59 @@ def read_setting(world, name):
     if name in NEW_ATTRIBUTES:
         return getattr(world, name, NEW_ATTRIBUTES[name])
     return getattr(world, name)
+
+
+def recorded_settings(world):
+    """The world's settings the checker records with its frames, {name: value} for RECORDED (read now, so a
+    change made by the lab's own code shows too); {} when the World cannot be read (the run goes on)."""
+    try:
+        return {name: read_setting(world, name) if name in SETTING_NAMES else getattr(world, name)
+                for name in RECORDED}
+    except Exception:   # a World the lab changed so it cannot be read: the checker gets no settings, not a crash
+        return {}
+
+
+class _Order:
+    """A stand-in World for the study's lookup of a recorded run (study_row reads only `order`)."""
+
+    def __init__(self, order):
+        self.order = order or "solve-first"
+
+
+def _recorded_text(name, value):
+    """One recorded setting as the panel shows it."""
+    if isinstance(value, bool):
+        return "on" if value else "off"
+    if name == "step_seconds":
+        return f"1/{round(1 / value)} s" if abs(1 / value - round(1 / value)) < 1e-6 else f"{value:.4g} s"
+    if name == "effects":
+        added = sorted(set(value) - LESSON_EFFECTS - {"correction"})
+        dropped = sorted(LESSON_EFFECTS - set(value) - {"correction"})
+        return " ".join(["lesson's"] + [f"+{e}" for e in added] + [f"-{e}" for e in dropped])
+    return str(value)
+
+
+RECORDED_ROWS = (("S", "solver", "solver"), ("", "order", "order"), ("Up/Down", "iterations", "iterations"),
+                 ("Left/Right", "sub-steps", "substeps"), ("W", "warm start", "warm_starting"),
+                 ("C", "correction", "correction"), ("K", "contact rule", "contact_rule"),
+                 ("", "step", "step_seconds"), ("", "effects", "effects"))
+
+
+def row_key(label):
+    """The RECORDED name a row label of recorded_rows shows."""
+    return next(name for _, shown, name in RECORDED_ROWS if shown == label)
+
+
+def recorded_rows(mine, theirs):
+    """[(key, label, my value, the solution's value or None where they agree)] of a recorded run's settings."""
+    rows = []
+    for key, label, name in RECORDED_ROWS:
+        if name not in mine:
+            continue
+        value = _recorded_text(name, mine[name])
+        other = _recorded_text(name, theirs[name]) if name in theirs else None
+        rows.append((key, label, value, other if other is not None and other != value else None))
+    return rows
 
 
 def write_setting(world, name, value):
@@ -362,6 +421,8 @@ class LabPanel:
         if not self.paused:
             self.rates.append((spent, steps, dt, steps * world.step_seconds))
         self.last_steps = steps
+        if runtime.recording():   # only under the checker: the replay (--show) shows the settings the run had
+            runtime.note_world(recorded_settings(world))
         return steps
 
     def watch(self, world):
@@ -606,6 +667,74 @@ class LabPanel:
         image.fill(GRAPH_BACKGROUND, self.text(f"{top} ms", DIM).get_rect(topleft=label_at).inflate(4, 0))
         self.put(image, f"{top} ms", DIM, label_at)
         self.put(image, f"physics ms per frame, last {GRAPH_SECONDS} s; red: 60 fps budget", DIM, (x, y))
+
+    # ---- a recorded run (checker --show): the settings only, read-only, no timing -------------------
+
+    def draw_recorded(self, surface, mine, theirs=None, note="", pos=None, solution_colour=CHANGED):
+        """Draw the settings a recorded run had (`mine`, RECORDED's {name: value}, or None when none was recorded)
+        at pos (px, top-left; default the live panel's corner), and beside each the solution's run's value
+        (`theirs`) where it differs. Nothing here is measured: the last line says "replay" where the live panel
+        has its ms/step. Compact: solver, iterations, sub-steps and the other settings that differ; full (H): every
+        setting and the study's line for it. Returns the panel's rectangle (also self.box; self.placed as draw())."""
+        image, self.rendered = self.recorded_image(mine, theirs, note, solution_colour), []
+        self.box = image.get_rect(topleft=pos or (surface.get_width() - 10 - image.get_width(), 36))
+        surface.blit(image, self.box)
+        self.placed = [(rect.move(self.box.topleft), words) for rect, words in self.recorded_text]
+        return self.box
+
+    def recorded_size(self, mine, theirs=None, note=""):
+        """The (width, height) in px draw_recorded takes for these settings at the current size (H)."""
+        return self.recorded_image(mine, theirs, note).get_size()
+
+    def recorded_image(self, mine, theirs, note, solution_colour=CHANGED):
+        """The picture draw_recorded blits (see there); self.recorded_text: (rectangle in it, text) per line."""
+        rows = recorded_rows(mine or {}, theirs or {})
+        compact = self.mode != "full"
+        if mine is None:
+            lines = [("settings ignored for this frame:", WARNING), (note, DIM)] if note else \
+                [("settings not recorded for this frame", WARNING)]
+            rows = []
+        elif compact:
+            main = [row for row in rows if row[1] in ("solver", "iterations", "sub-steps")]
+            others = [f"{name} {value} ({'solution ' + solution})" for _, name, value, solution in rows
+                      if solution is not None and row_key(name) not in ("solver", "iterations", "substeps")]
+            rows = main
+            lines = [("; ".join(others) if others else "the other settings: as the solution's",
+                      WARNING if others else DIM)]
+        else:
+            lines = [("keys S, arrows, W, C, K, 0 change nothing in a replay", DIM)]
+        lines.append(("replay: recorded settings, no timing measured", DIM))
+        if mine is not None and not compact:
+            lines.append((study_short(_Order(mine.get("order")), {**mine}), DIM))
+        width = PANEL_WIDTH if not compact else COMPACT_WIDTH + 60
+        wrapped = [(piece, colour) for text, colour in lines
+                   for piece in self.wrapped([w + " " for w in text.split(" ")], width - 2 * COMPACT_PADDING)]
+        line = LINE_HEIGHT if not compact else COMPACT_LINE
+        image = pygame.Surface((width, 2 * COMPACT_PADDING + line * (1 + len(rows) + len(wrapped))), pygame.SRCALPHA)
+        image.fill(BACKGROUND)
+        self.recorded_text = []
+
+        def put(words, colour, at):
+            text = self.text(words.rstrip(), colour)
+            image.blit(text, at)
+            self.recorded_text.append((text.get_rect(topleft=at), words.rstrip()))
+
+        x, y = COMPACT_PADDING, COMPACT_PADDING
+        put("SOLVER PANEL (replay)" if not compact else "solver panel (replay)", KEY if not compact else DIM, (x, y))
+        label = "[H] hide" if not compact else "[H] more"
+        put(label, DIM, (width - x - self.text(label, DIM).get_width(), y))
+        for key, name, value, solution in rows:
+            y += line
+            if key:
+                put(f"[{key}]", DIM, (x, y))
+            put(name, DIM, (x + 95, y))
+            put(value, WARNING if solution is not None else TEXT, (x + 190, y))
+            if solution is not None:
+                put(f"solution {solution}", solution_colour, (x + 200 + self.text(value, TEXT).get_width(), y))
+        for words, colour in wrapped:
+            y += line
+            put(words, colour, (x, y))
+        return image
 
     def draw_graph(self, surface, rect):
         """Physics ms per frame over the last GRAPH_FRAMES frames, newest on the right, in `rect` (px).

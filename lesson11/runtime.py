@@ -29,7 +29,10 @@ Settings (all optional):
 Each recorded frame holds "frame", "contacts" (how many), "touching" (each
 contact: body indices "a" and "b", "point", "normal" A→B, "depth") and
 "bodies" (each: "static", "asleep" (the "sleep" effect), "pos", "vel", "angle", "omega", "points", and
-"radius" for a circle, whose "points" are []).
+"radius" for a circle, whose "points" are []). A frame also holds "world", the World's settings
+(solver, order, iterations, substeps, warm_starting, correction, contact_rule, effects, step_seconds) as
+the solver panel's advance() last told them (note_world), on the first recorded frame and on every recorded
+frame where they changed; a lab run without the panel records none.
 """
 import atexit
 import json
@@ -54,6 +57,9 @@ _settings = None       # None: a student's run, every hook passes through
 _frame = 0
 _records = []
 _written = False
+_world = None          # the World's settings as the panel last noted them (plain data), or None
+_world_written = None  # the settings last put in a recorded frame
+WORLD_TEXT = 60        # characters: longest string kept of a noted setting (a recorded value is data, not a text)
 
 
 def check_settings(settings, source="lab settings"):
@@ -82,20 +88,21 @@ def check_settings(settings, source="lab settings"):
 
 def configure(settings, source="lab settings"):
     """Switch the hooks to checker mode with `settings` (a dict, see the module docstring)."""
-    global _settings, _frame, _records, _written
+    global _settings, _frame, _records, _written, _world, _world_written
     check_settings(settings, source)
     _settings = dict(settings)
     _frame = 0
     _records = []
     _written = False
+    _world = _world_written = None
     if _settings.get("record"):
         atexit.register(write_record)
 
 
 def reset():
     """Back to a student's run: every hook passes through again (nothing recorded so far is written)."""
-    global _settings, _frame, _records, _written
-    _settings, _frame, _records, _written = None, 0, [], False
+    global _settings, _frame, _records, _written, _world, _world_written
+    _settings, _frame, _records, _written, _world, _world_written = None, 0, [], False, None, None
 
 
 def _load_from_environment():
@@ -197,6 +204,34 @@ def scene(bodies, build=crate):
     return kept
 
 
+def recording():
+    """True when the checker records this run (so the panel has something to tell note_world)."""
+    return _settings is not None and bool(_settings.get("record"))
+
+
+def _plain(value):
+    """A setting as JSON data: a bool, int, float, str (cut to WORLD_TEXT) or None as it is, a set of names as a
+    sorted list of them, anything else as its repr, cut (the checker validates what it reads back)."""
+    if value is None or type(value) in (bool, int, float):
+        return value
+    if type(value) is str:
+        return value[:WORLD_TEXT]
+    if type(value) in (set, frozenset, list, tuple):
+        return sorted(_plain(item) if type(item) is str else repr(item)[:WORLD_TEXT] for item in value)
+    return repr(value)[:WORLD_TEXT]
+
+
+def note_world(settings):
+    """Remember the World's settings {name: value} for the frames recorded next; nothing for a student's run."""
+    global _world
+    if not recording():
+        return
+    try:
+        _world = {str(name)[:WORLD_TEXT]: _plain(value) for name, value in settings.items()}
+    except Exception:   # a value whose repr fails: {} (none readable) for these frames, the run goes on
+        _world = {}
+
+
 def record(bodies, contacts=()):
     """Remember this frame's body states (and contact count) for the checker; nothing for a student."""
     if _settings is None or not _settings.get("record"):
@@ -204,6 +239,7 @@ def record(bodies, contacts=()):
     last = _frame == _settings.get("frames", 600)
     if (_frame - 1) % _settings.get("record_every", 1) and not last:
         return
+    global _world_written
     index = {id(body): i for i, body in enumerate(bodies)}
     _records.append({
         "frame": _frame,
@@ -220,6 +256,8 @@ def record(bodies, contacts=()):
             **({"radius": body.radius} if getattr(getattr(body, "shape", None), "kind", None) == "circle" else {}),
         } for body in bodies],
     })
+    if _world is not None and _world != _world_written:   # the settings, when they are new since the last frame
+        _records[-1]["world"] = _world_written = _world
 
 
 def _contact(contact, index):

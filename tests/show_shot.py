@@ -4,7 +4,8 @@
 
 assets/checker_show_replay.png: Tumbling Crates with step 6 left empty (tests/corpus_tumbling_crates.py's
 spin_missing), `--show` replaying the corner scene 20 frames after the failing frame it names: the crates
-stay on their corners, the solution's (cyan outlines) have tipped flat. assets/checker_show_sat.png: step 2
+stay on their corners, the solution's (cyan outlines) have tipped flat; the lab's solver panel (compact, top right,
+clear of the crates) shows the settings the run recorded, "replay" in place of timings. assets/checker_show_sat.png: step 2
 keeping the largest overlap (sat_largest_overlap), its first failing case drawn as the SAT explorer draws
 it, the student's depth in magenta against the lesson's MTV in yellow. Both are graded as
 `python -m checker FILE --show --seed 3` grades them (the student's code in the isolated child) and drawn by

@@ -20,7 +20,7 @@ os.environ["SDL_VIDEODRIVER"] = "dummy"
 os.environ["SDL_AUDIODRIVER"] = "dummy"
 import pygame  # noqa: E402
 
-from checker import cli, labs, pictures, show, show_cases, show_cases_labs, show_view  # noqa: E402
+from checker import cli, lab_checks, labs, pictures, show, show_cases, show_cases_labs, show_view  # noqa: E402
 from lesson11 import records  # noqa: E402
 from checker.grade import Grader  # noqa: E402
 from checker.sandbox import Limits, run_child  # noqa: E402
@@ -481,3 +481,201 @@ def test_more_shapes_sat_on_the_students_axes_is_drawn_as_a_sat_case():
     top = case.band()[0]
     colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900, 2) for y in range(top, case.band()[1], 2)}
     assert show_cases.STUDENT in colours and show_cases.LESSON in colours
+
+
+# ---------------------------------------------------------------- the lab's solver panel, read-only
+
+PANEL_KEYS = (pygame.K_s, pygame.K_UP, pygame.K_DOWN, pygame.K_w, pygame.K_c, pygame.K_k, pygame.K_0)
+
+
+def panel_text(viewer):
+    """The texts on the --show window's solver panel as drawn now (after a draw)."""
+    return [words for _, words in viewer.panel.placed]
+
+
+def moving_boxes(frame, viewer):
+    """Screen rectangles of a recorded frame's moving bodies (computed here from the record's corners)."""
+    boxes = []
+    for body in frame["bodies"]:
+        if body["static"]:
+            continue
+        points = body["points"] or [[body["pos"][0] - body["radius"], body["pos"][1] - body["radius"]],
+                                    [body["pos"][0] + body["radius"], body["pos"][1] + body["radius"]]]
+        xs, ys = [p[0] for p in points], [p[1] for p in points]
+        boxes.append(pygame.Rect(min(xs), min(ys), max(xs) - min(xs) + 1, max(ys) - min(ys) + 1))
+    return boxes
+
+
+def test_the_panel_shows_the_recorded_settings(shown):
+    """Every lab: the runtime recorded the World's settings with the frames (the panel's advance() noted them in
+    the child), the window draws the lab's solver panel with them (the solution's agree: one wrong step changes
+    no setting), says "replay" and shows no timing, and the panel stays clear of the title, of the timeline and
+    of the moving bodies (both runs') at the failing frame."""
+    lab, path, row, replay = shown
+    assert replay.frames and all(s is not None for s in replay.settings) and not replay.settings_note
+    mine, theirs = replay.settings_at(replay.index_of(replay.fail_frame))
+    assert mine == theirs and set(mine) == set(lab_checks.WORLD_SETTINGS)
+    assert mine["solver"] == "lesson" and mine["iterations"] == 6 and mine["step_seconds"] == pytest.approx(1 / 120)
+    pygame.display.init()
+    pygame.font.init()
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_TAB)] * bool(replay.cases), [key(pygame.K_j)]),
+                           frames=2)
+    assert viewer.frame["frame"] == replay.fail_frame and not viewer.showing_cases
+    texts = panel_text(viewer)
+    assert "solver panel (replay)" in texts and "replay: recorded settings, no timing measured" in texts
+    assert "lesson" in texts and str(mine["iterations"]) in texts and str(mine["substeps"]) in texts
+    assert not any("ms/step" in t or "real time" in t or "PAUSED" in t for t in texts)
+    box = viewer.panel.box
+    assert box.top >= viewer.hud_bottom() and box.bottom <= show_view.SCENE[1] and box.right <= show_view.SCENE[0]
+    for frame in (viewer.frame, viewer.reference_frame):
+        assert box.collidelist(moving_boxes(frame, viewer)) == -1, (lab.id, box)
+
+
+def test_panel_keys_change_nothing_in_a_replay_and_the_shows_keys_still_work(shown):
+    """S, Up, Down, W, C, K and 0 (the live panel's setting keys) change neither the frame, nor the settings, nor
+    the panel drawn; H cycles its size (compact, full, hidden); P, O, J, G and Tab do what they do without it."""
+    lab, path, row, replay = shown
+    pygame.display.init()
+    pygame.font.init()
+    viewer = show_view.Viewer(replay)
+    viewer.showing_cases = False
+    viewer.playing = False
+    surface = pygame.Surface(show_view.SIZE)
+    viewer.draw(surface)
+    before = (viewer.index, list(replay.settings), panel_text(viewer), surface.copy())
+    for k in PANEL_KEYS:
+        assert viewer.handle(key(k))
+    viewer.draw(surface)
+    assert (viewer.index, replay.settings, panel_text(viewer)) == before[:3]
+    assert pygame.image.tobytes(surface, "RGB") == pygame.image.tobytes(before[3], "RGB")
+    viewer.handle(key(pygame.K_h))
+    viewer.draw(surface)
+    assert viewer.panel.mode == "full" and "SOLVER PANEL (replay)" in panel_text(viewer)
+    assert "keys S, arrows, W, C, K, 0 change nothing in a replay" in panel_text(viewer)
+    viewer.handle(key(pygame.K_h))
+    viewer.draw(surface)
+    assert viewer.panel.mode == "hidden" and viewer.panel.box is None
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_p)], [key(k) for k in PANEL_KEYS],
+                                                   [key(pygame.K_o)], [key(pygame.K_g)]), frames=5)
+    assert viewer.index == 1 and not viewer.playing and viewer.side_by_side
+    viewer = show_view.run(replay, events=scripted([key(k) for k in PANEL_KEYS] + [key(pygame.K_j)]), frames=1)
+    assert viewer.frame["frame"] == replay.fail_frame
+    if replay.cases:
+        viewer = show_view.run(replay, events=scripted([key(k) for k in PANEL_KEYS] + [key(pygame.K_TAB)]),
+                               frames=1)
+        assert viewer.showing_cases != (bool(replay.cases) and not replay.graded)
+
+
+def with_swept_iterations(folder):
+    """Bullets with step 5 wrong (the whole dt after the impact) and `world.iterations = 2` in that step, as a
+    student trying things might write: a World the step is handed, changed at the first hit."""
+    corpus = importlib.import_module("corpus_bullets")
+    source = corpus.build("swept_whole_step_after")
+    hit = "    bullet.pos += bullet.vel * t\n"
+    assert source.count(hit) == 1
+    path = os.path.join(folder, "bullets.py")
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(source.replace(hit, "    world.iterations = 2\n" + hit))
+    return path
+
+
+def test_a_world_the_students_code_changed_shows_its_settings(tmp_path):
+    """The student's swept_move() sets world.iterations = 2 at the first hit: the replay's settings say 6 until
+    then and 2 after, the solution's stay 6, and the panel draws "2" with "solution 6" beside it."""
+    row, replay, problem = show.prepare(with_swept_iterations(str(tmp_path)), lab_of("bullets"), seed=SEED)
+    assert replay.check.id == "swept_move_resolves" and replay.frames
+    counts = [s["iterations"] for s in replay.settings]
+    assert counts[0] == 6 and counts[-1] == 2 and counts == sorted(counts, reverse=True)
+    assert all(s["iterations"] == 6 for s in replay.reference_settings)
+    changed = counts.index(2)
+    pygame.display.init()
+    pygame.font.init()
+    viewer = show_view.Viewer(replay)
+    viewer.showing_cases, viewer.playing, viewer.index = False, False, changed
+    viewer.draw(pygame.Surface(show_view.SIZE))
+    texts = panel_text(viewer)
+    assert "2" in texts and "solution 6" in texts
+    viewer.index = 0
+    viewer.draw(pygame.Surface(show_view.SIZE))
+    assert "solution 6" not in panel_text(viewer) and "6" in panel_text(viewer)
+
+
+GOOD_WORLD = {"solver": "lesson", "order": "solve-first", "iterations": 6, "substeps": 4, "warm_starting": True,
+              "correction": True, "contact_rule": "corners", "effects": ["correction", "gravity"],
+              "step_seconds": 1 / 120}
+FORGED_WORLDS = [
+    ("not a mapping", "z" * 1_000_000, "not a mapping"),
+    ("too many settings", {f"k{i}": i for i in range(10_000)}, "more than the 9"),
+    ("one more setting", dict(GOOD_WORLD, speed_hack=1), "10 settings, more than the 9"),
+    ("unknown setting", dict({k: v for k, v in GOOD_WORLD.items() if k != "order"}, speed_hack=1),
+     "unknown setting 'speed_hack'"),
+    ("a megabyte string", dict(GOOD_WORLD, solver="x" * 1_000_000), "solver cannot be 'xxxxxxxxxx"),
+    ("a bool for a count", dict(GOOD_WORLD, iterations=True), "iterations cannot be True"),
+    ("a count out of range", dict(GOOD_WORLD, substeps=10 ** 9), "substeps cannot be 1000000000"),
+    ("a float count", dict(GOOD_WORLD, iterations=2.0), "iterations cannot be 2.0"),
+    ("no step", dict(GOOD_WORLD, step_seconds=float("nan")), "step_seconds cannot be nan"),
+    ("an unknown effect", dict(GOOD_WORLD, effects=["gravity", "telekinesis"]), "effects cannot be a list"),
+    ("a repeated effect", dict(GOOD_WORLD, effects=["gravity"] * 5), "effects cannot be a list"),
+    ("correction not in effects", dict(GOOD_WORLD, correction=False), "correction disagrees"),
+    ("a setting missing", {k: v for k, v in GOOD_WORLD.items() if k != "order"}, "no order"),
+    ("nested data", dict(GOOD_WORLD, order=[[["solve-first"]]] * 1000), "order cannot be a list"),
+]
+
+
+@pytest.mark.parametrize("what, forged, words", FORGED_WORLDS, ids=[w[0] for w in FORGED_WORLDS])
+def test_a_forged_settings_record_is_ignored_with_a_short_note(what, forged, words):
+    """The child writes "world": the parent keeps a good one, and ignores a forged one from its frame on (until a
+    good one comes again) with a one-line note naming the frame and what is wrong, short whatever the forgery."""
+    frames = [{"frame": 1, "world": GOOD_WORLD}, {"frame": 2}, {"frame": 3, "world": forged}, {"frame": 4},
+              {"frame": 5, "world": dict(GOOD_WORLD, iterations=3)}]
+    settings, note = lab_checks.world_settings(frames)
+    assert settings[:2] == [GOOD_WORLD, GOOD_WORLD] and settings[2:4] == [None, None]
+    assert settings[4] == dict(GOOD_WORLD, iterations=3)
+    assert note.startswith("the World's settings recorded at frame 3 are ignored: ") and words in note, note
+    assert len(note) < 160 and "\n" not in note
+
+
+def test_a_forged_settings_record_from_the_child_is_ignored_in_the_window(tmp_path):
+    """A file that writes the runtime's noted settings itself (an edit outside the steps, graded with
+    --allow-edits: `lab._world = {...}` with ten thousand made-up settings and a megabyte string) and gets step 6
+    wrong: --show replays the scene it ran, the forged settings are ignored with a note (printed, and on the
+    panel instead of settings), and nothing crashes; the solution's settings stay as recorded."""
+    corpus = importlib.import_module("corpus_tumbling_crates")
+    source = corpus.build("spin_missing")
+    advance = "        simulated += panel.advance(world, dt) * world.step_seconds"
+    assert source.count(advance) == 1
+    forged = '        lab._world = {"iterations": "x" * 1000000, **{f"k{i}": i for i in range(10000)}}\n'
+    line_end = source.index("\n", source.index(advance)) + 1
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(source[:line_end] + forged + source[line_end:], encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("tumbling_crates"), seed=SEED,
+                                        options={"allow_edits": True})
+    assert replay.check.id == "apply_impulse_spin" and replay.frames
+    assert all(s is None for s in replay.settings) and all(s is not None for s in replay.reference_settings)
+    note = replay.settings_note
+    assert note == "yours: the World's settings recorded at frame 1 are ignored: 10001 settings, more than the 9 " \
+                   "a World has"
+    assert f"  solver panel: {note}" in replay.summary()
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_TAB)], [key(pygame.K_j)]), frames=2)
+    texts = panel_text(viewer)
+    assert "settings ignored for this frame:" in texts and "6" not in texts
+    assert "replay: recorded settings, no timing measured" in texts
+
+
+def test_a_run_without_the_panel_shows_no_settings():
+    """A lab whose loop calls world.advance() itself (no panel line) records no "world": nothing is made up, the
+    panel says so, and there is no note (nothing was ignored)."""
+    lab = lab_of("tumbling_crates")
+    frames = [{k: v for k, v in f.items() if k != "world"} for f in pictures.reference_record(lab, "corner")["records"]]
+
+    class Row:
+        records, preview, seed, path = {"corner": {"records": frames}}, "corner", SEED, "tumbling_crates.py"
+        results = ()
+    Row.lab = lab
+    result = type("R", (), {"id": "apply_impulse_spin", "status": "fail", "message": "m"})()
+    replay = show.build_replay(Row, result)
+    assert replay.frames == frames and replay.settings == [None] * len(frames) and replay.settings_note == ""
+    assert all(s is not None for s in replay.reference_settings)
+    viewer = show_view.run(replay, events=scripted([key(pygame.K_p)]), frames=1)
+    texts = panel_text(viewer)
+    assert "settings not recorded for this frame" in texts and "lesson" not in texts

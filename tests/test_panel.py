@@ -385,7 +385,8 @@ def test_solution_marks_every_panel_line():
 
 
 def test_checker_run_records_the_same_with_and_without_the_panel(tmp_path):
-    """Same scene, script (clicks, D, R) and seed: the runtime's record is identical, frame for frame."""
+    """Same scene, script (clicks, D, R) and seed: the runtime's record is identical, frame for frame, but for
+    the World's settings, which only the panel's advance() notes (on the first frame: no key changed them)."""
     with open(SOLUTION, encoding="utf-8") as handle:
         plain = tmp_path / "tumbling_crates_no_panel.py"
         plain.write_text(apply_edits(handle.read(), NO_PANEL, "no-panel copy"), encoding="utf-8")
@@ -399,6 +400,9 @@ def test_checker_run_records_the_same_with_and_without_the_panel(tmp_path):
         work.mkdir()
         runs.append(run_lab(path, settings, work))
     with_panel, without = runs
+    noted = [frame.pop("world", None) for frame in with_panel.record["records"]]
+    assert noted[0]["iterations"] == 6 and noted[1:] == [None] * (len(noted) - 1)
+    assert all("world" not in frame for frame in without.record["records"])
     assert with_panel.record == without.record
     assert with_panel.line == without.line and with_panel.line is not None
     assert len(with_panel.frames) == 120 and any(f["contacts"] for f in with_panel.frames)

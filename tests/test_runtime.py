@@ -156,6 +156,51 @@ def test_checker_record_file_has_the_expected_keys(tmp_path):
     assert frame["bodies"][0]["static"] is True
 
 
+def test_the_panel_notes_the_worlds_settings_only_while_recording(tmp_path):
+    """panel.advance() tells the runtime the World's settings, read after the step (a change the lab makes shows);
+    they go into the first recorded frame and into every recorded frame where they changed. A student's run (no
+    checker) notes and records nothing."""
+    from lesson11.panel import LabPanel
+    world = World(statics_and_crate())
+    LabPanel().advance(world, 1 / 60)
+    assert not runtime.recording() and runtime._world is None
+    path = tmp_path / "record.json"
+    runtime.configure({"frames": 4, "record": str(path)})
+    panel = LabPanel()
+    while runtime.frame_budget():
+        if runtime._frame == 3:
+            world.iterations = 2   # as a lab's own code might
+        panel.advance(world, 1 / 60)
+        runtime.record(world.bodies, world.contacts)
+    runtime.write_record()
+    frames = json.loads(path.read_text())["records"]
+    assert [("world" in f) for f in frames] == [True, False, True, False]
+    assert frames[0]["world"] == {"solver": "lesson", "iterations": 6, "substeps": 4, "warm_starting": True,
+                                  "correction": True, "contact_rule": "corners", "order": "solve-first",
+                                  "effects": sorted(world.effects), "step_seconds": world.step_seconds}
+    assert frames[2]["world"]["iterations"] == 2
+
+
+def test_noted_settings_are_plain_data():
+    """Whatever the lab's World holds, note_world keeps JSON data (a value that cannot be written as one is its
+    repr, cut; one whose repr fails leaves {}), so writing the record never fails because of it."""
+    class Odd:
+        def __repr__(self):
+            return "odd" * 100
+
+    class Broken:
+        def __repr__(self):
+            raise RuntimeError("no")
+
+    runtime.configure({"record": "unused.json"})
+    runtime.note_world({"iterations": Odd(), "effects": frozenset({"gravity", Odd()}), "solver": "s" * 500})
+    assert runtime._world["iterations"] == ("odd" * 100)[:runtime.WORLD_TEXT]
+    assert len(runtime._world["solver"]) == runtime.WORLD_TEXT and "gravity" in runtime._world["effects"]
+    json.dumps(runtime._world)
+    runtime.note_world({"iterations": Broken()})
+    assert runtime._world == {}
+
+
 @pytest.mark.parametrize("settings, words", [
     ({"frams": 10}, "unknown setting 'frams'"),
     ({"frames": "10"}, "setting 'frames' has the wrong type"),
