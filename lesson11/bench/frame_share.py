@@ -48,13 +48,12 @@ frame at the default setting.
 import argparse
 import copy
 import math
-import os
 import time
 
 from lesson11 import hook_clock
 from lesson11.physics2d import Body, box_points, collision
 
-from . import energy, speed
+from . import energy, harness, speed
 
 SIZES = (12, 40, 200)
 SETTINGS = {"default 4 × 6": {}, "listing's 1 × 6": {"substeps": 1, "iterations": 6}}
@@ -198,9 +197,7 @@ def main(argv=None):
                         help="smoke run: 12 and 40 crates, a few frames (not a measurement)")
     args = parser.parse_args(argv)
     sizes, frames, settle = ((12, 40), QUICK_FRAMES, 20) if args.quick else (SIZES, FRAMES, SETTLE_FRAMES)
-    load = " / ".join(f"{x:.2f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "n/a"
-    print(f"python -m lesson11.bench.frame_share{' --quick' if args.quick else ''} · {os.cpu_count()} cores · "
-          f"load average {load}")
+    print(f"python -m lesson11.bench.frame_share{' --quick' if args.quick else ''} · {harness.machine_note()}")
     print(table(run(sizes, frames, settle)))
     if args.quick:
         print("Smoke run: these figures only show that the benchmark runs; they are not measurements.")
