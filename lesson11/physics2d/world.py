@@ -19,11 +19,13 @@ import math
 from collections import namedtuple
 
 from . import broadphase, collision, response, sleep
+from .bodies import Body
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
                       soft_constants)
 from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
                        vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
+from .shapes import WorldPoints
 from .vectors import Vector2, finite_number
 
 GRAVITY = Vector2(0, 980)  # px/s², the course's gravity (y down)
@@ -37,6 +39,7 @@ CONTACT_RULES = ("corners", "clip")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
 MAX_STEPS = 4              # fixed steps per advance() at most: two 60 fps frames' worth of 1/120 s steps
 
+_body_world_points = Body.world_points  # _plain_manifolds inlines it for bodies that do not override it
 Contact = namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = "One contact: bodies a and b, the world point (px), the unit normal A→B, the depth (px)."
 
@@ -687,13 +690,18 @@ def _plain_manifolds(world):
     moving = [body.inv_mass != 0 for body in bodies]
     if True not in moving:
         return
-    points = [body.world_points() for body in bodies]
-    boxes = []
-    for body, corners in zip(bodies, points):
-        if body.shape.kind == "polygon":
+    points, boxes = [], []
+    for body in bodies:
+        shape = body.shape
+        if shape.kind == "polygon" and type(body).world_points is _body_world_points:
+            # Body.world_points with pos and angle read once (not once per corner): the same floats
+            pos, angle = body.pos, body.angle
+            corners = WorldPoints([pos + p.rotate_rad(angle) for p in shape.points])
             boxes.append(_polygon_box(corners))
         else:
+            corners = body.world_points()
             boxes.append(body.aabb(corners))
+        points.append(corners)
     search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
     pairs, tested = search(boxes, moving, None, 0.0, boxes)
     world.counters["pair_tests"] += tested
