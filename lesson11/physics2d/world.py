@@ -16,7 +16,9 @@ effect's machinery is sleep.py; the measurements behind the choices made here
 are in lesson11/bench/README.md ("physics2d's choices, measured").
 """
 import math
+from collections import deque as _deque
 from collections import namedtuple
+from itertools import starmap as _starmap
 
 from . import broadphase, collision, response, sleep
 from .bodies import Body
@@ -409,12 +411,15 @@ class World:
         #    (a pair that met during the move waits for this sub-step's impulses)
         self.push_out(found, touching)
         # 3. half the gravity kick, the impact pass (resolve() once at every point), the other half
+        #    (fast paths: the passes run over one flat list of resolve()'s arguments, made once)
+        calls, run = ((_resolve_calls(found), self.resolve_calls) if collision.FAST_PATHS
+                      else (found, self.resolve_pass))
         self.integrate_velocities(h / 2)
-        self.resolve_pass(found, 0)
+        run(calls, 0)
         self.integrate_velocities(h / 2)
         # 4. `iterations` passes of resolve() (forwards, backwards, ...): what is left is below resting_speed
         for index in range(self.iterations):
-            self.resolve_pass(found, index)
+            run(calls, index)
         # 5. the move: x += v h, angle += ω h
         self.integrate_positions(h)
         return {(id(a), id(b)) for a, b, _ in found}
@@ -488,6 +493,13 @@ class World:
         """separate() on each (a, b, manifold) in `found` whose pair (id(a), id(b)) is in `touching` ("correction" only)."""
         if "correction" not in self.effects:
             return
+        if collision.FAST_PATHS and self.separate == self.lesson_separate:
+            # the library's separate: response.separate with slop and percent read once, not per pair
+            separate, slop, percent = response.separate, self.slop, self.percent
+            for a, b, m in found:
+                if (id(a), id(b)) in touching:
+                    separate(a, b, m.normal, m.depth, slop, percent)
+            return
         for a, b, m in found:
             if (id(a), id(b)) in touching:
                 self.separate(a, b, m.normal, m.depth)
@@ -507,11 +519,25 @@ class World:
             for point in (m.points if forwards else m.points[::-1]):
                 resolve(a, b, normal, point)
 
+    def resolve_calls(self, calls, index):
+        """resolve_pass on _resolve_calls(found): resolve(a, b, normal, point) for each, backwards for odd `index`.
+
+        The same calls in the same order (the flat list reversed is the pairs and
+        their points reversed), without the nested loops' per-call overhead.
+        """
+        _deque(_starmap(self.resolve, calls if index % 2 == 0 else reversed(calls)), 0)
+
     def integrate_velocities(self, dt):
         """Gravity for every dynamic body: v += g dt (only if the scene declares "gravity")."""
         if "gravity" not in self.effects:
             return
         bodies = [body for body in self.bodies if self.moves(body)] if "sleep" in self.effects else self.bodies
+        if collision.FAST_PATHS:
+            kick = self.gravity * dt  # the same Vector2 the reference computes for each body
+            for body in bodies:
+                if body.inv_mass != 0:
+                    body.vel += kick
+            return
         for body in bodies:
             if body.inv_mass != 0:
                 body.vel += self.gravity * dt
@@ -532,6 +558,9 @@ class World:
         rotation = "rotation" in self.effects
         ccd = "ccd" in self.effects
         bodies = [body for body in self.bodies if self.moves(body)] if "sleep" in self.effects else self.bodies
+        if collision.FAST_PATHS and not ccd:
+            _move_bodies(bodies, dt, rotation)
+            return
         for body in bodies:
             if body.inv_mass == 0:
                 continue
@@ -644,6 +673,37 @@ class World:
         finally:
             self.counters["narrow_tests"] += narrow
             self.counters["contacts"] += contacts
+
+
+def _resolve_calls(found):
+    """resolve()'s arguments (a, b, normal, point) for every point of every (a, b, manifold), in the pass's order."""
+    return [(a, b, m.normal, point) for a, b, m in found for point in m.points]
+
+
+def _move_bodies(bodies, dt, rotation):
+    """integrate_positions without "ccd" (fast path): x += v dt, angle += ω dt, the same floats.
+
+    For a Body (not a subclass) the setters' checks are skipped where they
+    would keep the value as it is: pos += v dt changes the body's own Vector2
+    in place (the pos setter keeps that same vector), and a finite float angle
+    is what the angle setter keeps. Anything else goes through the setters.
+    """
+    for body in bodies:
+        if body.inv_mass == 0:
+            continue
+        if type(body) is not Body:
+            body.pos += body.vel * dt
+            if rotation:
+                body.angle += body.omega * dt
+            continue
+        pos = body._pos
+        pos += body.vel * dt  # in place: body._pos is this vector
+        if rotation:
+            angle = body._angle + body.omega * dt
+            if type(angle) is float and -math.inf < angle < math.inf:
+                body._angle = angle
+            else:
+                body.angle = angle  # the setter's check, and its one-line error
 
 
 def _circle_box(body):
