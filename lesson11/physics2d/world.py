@@ -762,8 +762,10 @@ def _plain_manifolds(world):
             corners = body.world_points()
             boxes.append(body.aabb(corners))
         points.append(corners)
-    search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
-    pairs, tested = search(boxes, moving, None, 0.0, boxes)
+    if world.broad_phase == "all-pairs":
+        pairs, tested = broadphase.all_pairs(boxes, moving, None, 0.0, boxes)
+    else:
+        pairs, tested = broadphase.sweep_boxes(boxes, moving)  # sweep_and_prune without margins, written out
     world.counters["pair_tests"] += tested
     sat, rule = world.sat, world.contact_rule
     circle_polygon, circle_point = world.circle_polygon, world.circle_point
