@@ -750,9 +750,11 @@ def _plain_manifolds(world):
     moving = [body.inv_mass != 0 for body in bodies]
     if True not in moving:
         return
-    points, boxes = [], []
+    corners_rule = world.contact_rule == "corners"
+    points, boxes, lesson_pair = [], [], []  # lesson_pair[k]: body k is a polygon under the corners rule
     for body in bodies:
         shape = body.shape
+        lesson_pair.append(corners_rule and shape.kind == "polygon")
         if shape.kind == "polygon" and type(body).world_points is _body_world_points:
             # Body.world_points with pos and angle read once (not once per corner): the same floats
             pos, angle = body.pos, body.angle
@@ -775,7 +777,7 @@ def _plain_manifolds(world):
         for i, j in pairs:
             a, b = bodies[i], bodies[j]
             narrow += 1
-            if rule == "corners" and a.shape.kind == "polygon" and b.shape.kind == "polygon":
+            if lesson_pair[i] and lesson_pair[j]:
                 hit = sat(points[i], points[j])
                 if hit is None:
                     continue
@@ -803,15 +805,30 @@ def _polygon_box(corners):
         ys = [p.y for p in corners]
         return (min(xs), min(ys), max(xs), max(ys))
     (x0, y0), (x1, y1), (x2, y2), (x3, y3) = corners
-    left = right = x0
+    left = right = x0  # each of x1, x2, x3 (then y) compared in turn, as min() and max() do
+    if x1 < left:
+        left = x1
+    if x1 > right:
+        right = x1
+    if x2 < left:
+        left = x2
+    if x2 > right:
+        right = x2
+    if x3 < left:
+        left = x3
+    if x3 > right:
+        right = x3
     top = bottom = y0
-    for x, y in ((x1, y1), (x2, y2), (x3, y3)):
-        if x < left:
-            left = x
-        if x > right:
-            right = x
-        if y < top:
-            top = y
-        if y > bottom:
-            bottom = y
+    if y1 < top:
+        top = y1
+    if y1 > bottom:
+        bottom = y1
+    if y2 < top:
+        top = y2
+    if y2 > bottom:
+        bottom = y2
+    if y3 < top:
+        top = y3
+    if y3 > bottom:
+        bottom = y3
     return (left, top, right, bottom)
