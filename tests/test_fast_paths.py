@@ -86,8 +86,9 @@ def test_the_12_crate_clicked_pile_is_bit_identical(settings):
 
 
 def test_the_quick_forms_agree_with_the_readable_ones_on_random_input():
-    """project, spin_velocity, center_of and contact_points against their references, on random boxes and spins."""
-    from lesson11.physics2d import Body, box_points, regular_polygon
+    """project, spin_velocity, center_of, contact_points and the search's boxes against their references, on random
+    polygons and spins."""
+    from lesson11.physics2d import Body, box_points, regular_polygon, world
     rng = random.Random(5)
     for _ in range(3000):
         a, b = (Body(rng.choice([box_points(rng.uniform(5, 90), rng.uniform(5, 90)),  # boxes, and the generic loop
@@ -104,6 +105,7 @@ def test_the_quick_forms_agree_with_the_readable_ones_on_random_input():
         with fast_paths(False):
             centre = collision.center_of(pa)
         assert collision.center_of(pa) == centre and collision.center_of(pa) is not pa.center
+        assert [v.hex() for v in world._polygon_box(pa)] == [v.hex() for v in a.aabb(pa)]
         hit = collision.sat(pa, pb)
         if hit is not None:
             assert collision.contact_points(pa, pb, hit[0]) == collision.contact_points_reference(pa, pb, hit[0])
