@@ -50,7 +50,7 @@ def test_sweep_and_prune_finds_exactly_the_reference_pairs(scene):
 @settings(max_examples=400, deadline=None)
 @given(scenes())
 def test_sweep_boxes_is_sweep_and_prune_without_margins(scene):
-    """The lesson solver's written-out sweep: the same pairs and the same count of pairs met (zeros of both signs too)."""
+    """The lesson solver's written-out sweep: the same pairs and pairs met as sweep_and_prune (and with -0.0 edges)."""
     boxes, moving, _, _, _ = scene
     signed = [(-0.0 if k % 3 == 0 and b[0] == 0 else b[0],) + b[1:] for k, b in enumerate(boxes)]
     for case in (boxes, signed):
