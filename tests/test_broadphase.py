@@ -6,7 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, Circle, World, box_points
-from lesson11.physics2d.broadphase import all_pairs, sweep_and_prune
+from lesson11.physics2d.broadphase import all_pairs, sweep_and_prune, sweep_boxes
 
 coordinate = st.floats(-500, 500, allow_nan=False)
 size = st.floats(0, 80, allow_nan=False)
@@ -45,6 +45,16 @@ def test_sweep_and_prune_finds_exactly_the_reference_pairs(scene):
     assert found == expected                      # the same pairs, in the same (i, j) order
     assert len(found) <= met <= every             # the sweep never tests more pairs than all pairs
     assert all(moving[i] or moving[j] for i, j in found)
+
+
+@settings(max_examples=400, deadline=None)
+@given(scenes())
+def test_sweep_boxes_is_sweep_and_prune_without_margins(scene):
+    """The lesson solver's written-out sweep: the same pairs and pairs met as sweep_and_prune (and with -0.0 edges)."""
+    boxes, moving, _, _, _ = scene
+    signed = [(-0.0 if k % 3 == 0 and b[0] == 0 else b[0],) + b[1:] for k, b in enumerate(boxes)]
+    for case in (boxes, signed):
+        assert sweep_boxes(case, moving) == sweep_and_prune(case, moving, None, 0.0, case)
 
 
 def test_still_pairs_are_never_met():

@@ -86,11 +86,14 @@ def test_the_12_crate_clicked_pile_is_bit_identical(settings):
 
 
 def test_the_quick_forms_agree_with_the_readable_ones_on_random_input():
-    """project, spin_velocity, center_of and contact_points against their references, on random boxes and spins."""
-    from lesson11.physics2d import Body, box_points
+    """project, spin_velocity, center_of, contact_points and the search's boxes against their references, on random
+    polygons and spins."""
+    from lesson11.physics2d import Body, box_points, regular_polygon, world
     rng = random.Random(5)
     for _ in range(3000):
-        a, b = (Body(box_points(rng.uniform(5, 90), rng.uniform(5, 90)), (rng.uniform(0, 50), rng.uniform(0, 50)), 1,
+        a, b = (Body(rng.choice([box_points(rng.uniform(5, 90), rng.uniform(5, 90)),  # boxes, and the generic loop
+                                 regular_polygon(rng.randint(3, 6), rng.uniform(5, 50))]),
+                     (rng.uniform(0, 50), rng.uniform(0, 50)), 1,
                      angle=rng.choice([0.0, math.pi / 2, rng.uniform(-7, 7)])) for _ in range(2))
         pa, pb = a.world_points(), b.world_points()
         axis = Vector2(rng.uniform(-1, 1), rng.uniform(-1, 1))
@@ -102,6 +105,7 @@ def test_the_quick_forms_agree_with_the_readable_ones_on_random_input():
         with fast_paths(False):
             centre = collision.center_of(pa)
         assert collision.center_of(pa) == centre and collision.center_of(pa) is not pa.center
+        assert [v.hex() for v in world._polygon_box(pa)] == [v.hex() for v in a.aabb(pa)]
         hit = collision.sat(pa, pb)
         if hit is not None:
             assert collision.contact_points(pa, pb, hit[0]) == collision.contact_points_reference(pa, pb, hit[0])
@@ -126,3 +130,32 @@ def test_separate_skips_only_moves_that_change_nothing():
         response.separate_reference(a2, b2, normal, depth)
         assert [v.hex() for v in (a.pos.x, a.pos.y, b.pos.x, b.pos.y)] == \
             [v.hex() for v in (a2.pos.x, a2.pos.y, b2.pos.x, b2.pos.y)]
+
+
+def test_the_quick_move_keeps_the_setters_errors_and_a_subclass_s_properties():
+    """integrate_positions' fast path: a non-finite angle gets the angle setter's own error, and a Body subclass
+    with its own angle property is moved through it, as the reference does."""
+    from lesson11.physics2d import Body, World, box_points
+    for on in (True, False):
+        crate = Body(box_points(10, 10), (0, 0), 1, omega=1e308)
+        world = World([crate], effects={"rotation"})
+        crate.omega = math.inf
+        with fast_paths(on), pytest.raises(ValueError, match="body angle must be finite"):
+            world.integrate_positions(1.0)
+
+    class Logged(Body):
+        seen = []
+
+        @property
+        def angle(self):
+            return self._angle
+
+        @angle.setter
+        def angle(self, value):
+            Logged.seen.append(value)
+            self._angle = value
+    for on in (True, False):
+        Logged.seen = []
+        with fast_paths(on):
+            World([Logged(box_points(10, 10), (0, 0), 1, omega=2.0)]).integrate_positions(0.5)
+        assert Logged.seen == [0.0, 1.0]

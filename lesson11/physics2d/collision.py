@@ -282,24 +282,54 @@ def contact_points(pa, pb, normal):
     corners = []
     edges_a, edges_b = flat_edges(pa), flat_edges(pb)
     for points, own, other in ((pa, edges_a, edges_b), (pb, edges_b, edges_a)):
+        four = len(other) == 4
+        if four:  # a box: the edge loop below unrolled (the same sides, the same comparisons)
+            (a0x, a0y, e0x, e0y, l0), (a1x, a1y, e1x, e1y, l1), (a2x, a2y, e2x, e2y, l2), \
+                (a3x, a3y, e3x, e3y, l3) = other
         for p, (px, py, _, _, _) in zip(points, own):  # own[i] starts at corner i: its x and y
-            left = right = False
-            for ax, ay, ex, ey, limit in other:  # inside_edges on floats: side = e × (p - a)
-                side = ex * (py - ay) - ey * (px - ax)
-                if side > limit:
+            if four:
+                side = e0x * (py - a0y) - e0y * (px - a0x)
+                left, right = side > l0, side < -l0  # at most one: limits are >= 0 (or NaN: neither)
+                side = e1x * (py - a1y) - e1y * (px - a1x)
+                if side > l1:
                     left = True
-                elif side < -limit:
+                elif side < -l1:
                     right = True
                 if left and right:
+                    continue
+                side = e2x * (py - a2y) - e2y * (px - a2x)
+                if side > l2:
+                    left = True
+                elif side < -l2:
+                    right = True
+                if left and right:
+                    continue
+                side = e3x * (py - a3y) - e3y * (px - a3x)
+                if side > l3:
+                    left = True
+                elif side < -l3:
+                    right = True
+                if left and right:
+                    continue
+            else:
+                left = right = False
+                for ax, ay, ex, ey, limit in other:  # inside_edges on floats: side = e × (p - a)
+                    side = ex * (py - ay) - ey * (px - ax)
+                    if side > limit:
+                        left = True
+                    elif side < -limit:
+                        right = True
+                    if left and right:
+                        break
+                if left and right:
+                    continue
+            for q in corners:  # p == q for Vector2: closer than SAME_POINT on both axes
+                if abs(px - q.x) < SAME_POINT and abs(py - q.y) < SAME_POINT:
                     break
             else:
-                for q in corners:  # p == q for Vector2: closer than SAME_POINT on both axes
-                    if abs(px - q.x) < SAME_POINT and abs(py - q.y) < SAME_POINT:
-                        break
-                else:
-                    corners.append(p)
-                    if len(corners) == 2:
-                        return corners  # the reference keeps the first two as well
+                corners.append(p)
+                if len(corners) == 2:
+                    return corners  # the reference keeps the first two as well
     if not corners:
         corners = [min(pb, key=lambda p: p.dot(normal))]
     return corners
@@ -313,6 +343,16 @@ def flat_edges(points):
     kept = isinstance(points, WorldPoints)
     if kept and points.flat_edges is not None:
         return points.flat_edges
+    if len(points) == 4:  # a box: the loop below unrolled, the same floats
+        (ax, ay), (bx, by), (cx, cy), (dx, dy) = points
+        e0x, e0y, e1x, e1y, e2x, e2y, e3x, e3y = bx - ax, by - ay, cx - bx, cy - by, dx - cx, dy - cy, ax - dx, ay - dy
+        edges = [(ax, ay, e0x, e0y, TOUCH_TOLERANCE * sqrt(e0x * e0x + e0y * e0y)),
+                 (bx, by, e1x, e1y, TOUCH_TOLERANCE * sqrt(e1x * e1x + e1y * e1y)),
+                 (cx, cy, e2x, e2y, TOUCH_TOLERANCE * sqrt(e2x * e2x + e2y * e2y)),
+                 (dx, dy, e3x, e3y, TOUCH_TOLERANCE * sqrt(e3x * e3x + e3y * e3y))]
+        if kept:
+            points.flat_edges = edges
+        return edges
     coords = [(p.x, p.y) for p in points]
     edges = []
     for (ax, ay), (bx, by) in zip(coords, coords[1:] + coords[:1]):

@@ -129,14 +129,9 @@ class WorldPoints(list):
     It is a snapshot: the world makes new ones after the bodies move, and the
     normals and edges describe the corners as they were when first asked for.
     """
-    __slots__ = ("normals", "edges", "center", "flat_edges")
-
-    def __init__(self, points=()):
-        super().__init__(points)
-        self.normals = None
-        self.edges = None
-        self.center = None
-        self.flat_edges = None
+    # None until worked out: class-level defaults, so making one is list's own __init__ (in C), twice as quick
+    # as setting four slots in a Python __init__; the first store puts the value on the instance
+    normals = edges = center = flat_edges = None
 
 
 class Polygon:

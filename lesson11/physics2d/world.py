@@ -16,14 +16,18 @@ effect's machinery is sleep.py; the measurements behind the choices made here
 are in lesson11/bench/README.md ("physics2d's choices, measured").
 """
 import math
+from collections import deque as _deque
 from collections import namedtuple
+from itertools import starmap as _starmap
 
 from . import broadphase, collision, response, sleep
+from .bodies import Body
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
                       soft_constants)
 from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
                        vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
+from .shapes import WorldPoints
 from .vectors import Vector2, finite_number
 
 GRAVITY = Vector2(0, 980)  # px/s², the course's gravity (y down)
@@ -37,6 +41,7 @@ CONTACT_RULES = ("corners", "clip")
 LESSON_EFFECTS = frozenset({"gravity", "rotation", "friction", "restitution", "correction"})
 MAX_STEPS = 4              # fixed steps per advance() at most: two 60 fps frames' worth of 1/120 s steps
 
+_body_world_points = Body.world_points  # _plain_manifolds inlines it for bodies that do not override it
 Contact = namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = "One contact: bodies a and b, the world point (px), the unit normal A→B, the depth (px)."
 
@@ -406,12 +411,15 @@ class World:
         #    (a pair that met during the move waits for this sub-step's impulses)
         self.push_out(found, touching)
         # 3. half the gravity kick, the impact pass (resolve() once at every point), the other half
+        #    (fast paths: the passes run over one flat list of resolve()'s arguments, made once)
+        calls, run = ((_resolve_calls(found), self.resolve_calls) if collision.FAST_PATHS
+                      else (found, self.resolve_pass))
         self.integrate_velocities(h / 2)
-        self.resolve_pass(found, 0)
+        run(calls, 0)
         self.integrate_velocities(h / 2)
         # 4. `iterations` passes of resolve() (forwards, backwards, ...): what is left is below resting_speed
         for index in range(self.iterations):
-            self.resolve_pass(found, index)
+            run(calls, index)
         # 5. the move: x += v h, angle += ω h
         self.integrate_positions(h)
         return {(id(a), id(b)) for a, b, _ in found}
@@ -485,6 +493,13 @@ class World:
         """separate() on each (a, b, manifold) in `found` whose pair (id(a), id(b)) is in `touching` ("correction" only)."""
         if "correction" not in self.effects:
             return
+        if collision.FAST_PATHS and self.separate == self.lesson_separate:
+            # the library's separate: response.separate with slop and percent read once, not per pair
+            separate, slop, percent = response.separate, self.slop, self.percent
+            for a, b, m in found:
+                if (id(a), id(b)) in touching:
+                    separate(a, b, m.normal, m.depth, slop, percent)
+            return
         for a, b, m in found:
             if (id(a), id(b)) in touching:
                 self.separate(a, b, m.normal, m.depth)
@@ -504,11 +519,25 @@ class World:
             for point in (m.points if forwards else m.points[::-1]):
                 resolve(a, b, normal, point)
 
+    def resolve_calls(self, calls, index):
+        """resolve_pass on _resolve_calls(found): resolve(a, b, normal, point) for each, backwards for odd `index`.
+
+        The same calls in the same order (the flat list reversed is the pairs and
+        their points reversed), without the nested loops' per-call overhead.
+        """
+        _deque(_starmap(self.resolve, calls if index % 2 == 0 else reversed(calls)), 0)
+
     def integrate_velocities(self, dt):
         """Gravity for every dynamic body: v += g dt (only if the scene declares "gravity")."""
         if "gravity" not in self.effects:
             return
         bodies = [body for body in self.bodies if self.moves(body)] if "sleep" in self.effects else self.bodies
+        if collision.FAST_PATHS:
+            kick = self.gravity * dt  # the same Vector2 the reference computes for each body
+            for body in bodies:
+                if body.inv_mass != 0:
+                    body.vel += kick
+            return
         for body in bodies:
             if body.inv_mass != 0:
                 body.vel += self.gravity * dt
@@ -529,6 +558,9 @@ class World:
         rotation = "rotation" in self.effects
         ccd = "ccd" in self.effects
         bodies = [body for body in self.bodies if self.moves(body)] if "sleep" in self.effects else self.bodies
+        if collision.FAST_PATHS and not ccd:
+            _move_bodies(bodies, dt, rotation)
+            return
         for body in bodies:
             if body.inv_mass == 0:
                 continue
@@ -643,6 +675,37 @@ class World:
             self.counters["contacts"] += contacts
 
 
+def _resolve_calls(found):
+    """resolve()'s arguments (a, b, normal, point) for every point of every (a, b, manifold), in the pass's order."""
+    return [(a, b, m.normal, point) for a, b, m in found for point in m.points]
+
+
+def _move_bodies(bodies, dt, rotation):
+    """integrate_positions without "ccd" (fast path): x += v dt, angle += ω dt, the same floats.
+
+    For a Body (not a subclass) the setters' checks are skipped where they
+    would keep the value as it is: pos += v dt changes the body's own Vector2
+    in place (the pos setter keeps that same vector), and a finite float angle
+    is what the angle setter keeps. Anything else goes through the setters.
+    """
+    for body in bodies:
+        if body.inv_mass == 0:
+            continue
+        if type(body) is not Body:
+            body.pos += body.vel * dt
+            if rotation:
+                body.angle += body.omega * dt
+            continue
+        pos = body._pos
+        pos += body.vel * dt  # in place: body._pos is this vector
+        if rotation:
+            angle = body._angle + body.omega * dt
+            if type(angle) is float and -math.inf < angle < math.inf:
+                body._angle = angle
+            else:
+                body.angle = angle  # the setter's check, and its one-line error
+
+
 def _circle_box(body):
     """A box (left, top, right, bottom) px sure to hold the body: pos ± its bounding radius."""
     r = body.shape.radius
@@ -687,15 +750,24 @@ def _plain_manifolds(world):
     moving = [body.inv_mass != 0 for body in bodies]
     if True not in moving:
         return
-    points = [body.world_points() for body in bodies]
-    boxes = []
-    for body, corners in zip(bodies, points):
-        if body.shape.kind == "polygon":
+    corners_rule = world.contact_rule == "corners"
+    points, boxes, lesson_pair = [], [], []  # lesson_pair[k]: body k is a polygon under the corners rule
+    for body in bodies:
+        shape = body.shape
+        lesson_pair.append(corners_rule and shape.kind == "polygon")
+        if shape.kind == "polygon" and type(body).world_points is _body_world_points:
+            # Body.world_points with pos and angle read once (not once per corner): the same floats
+            pos, angle = body.pos, body.angle
+            corners = WorldPoints([pos + p.rotate_rad(angle) for p in shape.points])
             boxes.append(_polygon_box(corners))
         else:
+            corners = body.world_points()
             boxes.append(body.aabb(corners))
-    search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
-    pairs, tested = search(boxes, moving, None, 0.0, boxes)
+        points.append(corners)
+    if world.broad_phase == "all-pairs":
+        pairs, tested = broadphase.all_pairs(boxes, moving, None, 0.0, boxes)
+    else:
+        pairs, tested = broadphase.sweep_boxes(boxes, moving)  # sweep_and_prune without margins, written out
     world.counters["pair_tests"] += tested
     sat, rule = world.sat, world.contact_rule
     circle_polygon, circle_point = world.circle_polygon, world.circle_point
@@ -705,7 +777,7 @@ def _plain_manifolds(world):
         for i, j in pairs:
             a, b = bodies[i], bodies[j]
             narrow += 1
-            if rule == "corners" and a.shape.kind == "polygon" and b.shape.kind == "polygon":
+            if lesson_pair[i] and lesson_pair[j]:
                 hit = sat(points[i], points[j])
                 if hit is None:
                     continue
@@ -733,15 +805,30 @@ def _polygon_box(corners):
         ys = [p.y for p in corners]
         return (min(xs), min(ys), max(xs), max(ys))
     (x0, y0), (x1, y1), (x2, y2), (x3, y3) = corners
-    left = right = x0
+    left = right = x0  # each of x1, x2, x3 (then y) compared in turn, as min() and max() do
+    if x1 < left:
+        left = x1
+    if x1 > right:
+        right = x1
+    if x2 < left:
+        left = x2
+    if x2 > right:
+        right = x2
+    if x3 < left:
+        left = x3
+    if x3 > right:
+        right = x3
     top = bottom = y0
-    for x, y in ((x1, y1), (x2, y2), (x3, y3)):
-        if x < left:
-            left = x
-        if x > right:
-            right = x
-        if y < top:
-            top = y
-        if y > bottom:
-            bottom = y
+    if y1 < top:
+        top = y1
+    if y1 > bottom:
+        bottom = y1
+    if y2 < top:
+        top = y2
+    if y2 > bottom:
+        bottom = y2
+    if y3 < top:
+        top = y3
+    if y3 > bottom:
+        bottom = y3
     return (left, top, right, bottom)
