@@ -383,6 +383,7 @@ def readable_versions():
     before = collision.READABLE
     collision.READABLE = True
     try:
-        yield
+        with collision.fast_paths(False):
+            yield
     finally:
         collision.READABLE = before

@@ -545,6 +545,58 @@ def _unit(x, y):
     return x / length, y / length
 
 
+def edge_normals_xy(points):
+    """edge_normals on (x, y) pairs: [(nx, ny), ...], (-e.y, e.x) / |e| of each edge, zero-length edges skipped."""
+    normals = []
+    for i, (ax, ay) in enumerate(points):
+        bx, by = points[(i + 1) % len(points)]
+        ex, ey = bx - ax, by - ay
+        if ex * ex + ey * ey > 0:
+            normals.append(_unit(-ey, ex))
+    return normals
+
+
+def sat_xy(pa, xa, normals_a, pb, xb, normals_b, margin):
+    """sat(pa, pb, margin) on plain floats, for the reference solver's speculative contacts: the same answer.
+
+    xa, xb are the corners as (x, y) pairs and normals_a, normals_b their
+    edge_normals_xy; pa, pb the same corners as Vector2, used only where
+    sat turns to orient_a_to_b (both ways out equally long). sat stays the
+    readable reference (the students' lesson); tests/test_arbiter_fast.py holds the two equal.
+    """
+    best_x = best_y = None
+    best_depth = math.inf
+    limit = TOUCH_TOLERANCE - margin
+    for ax, ay in normals_a + normals_b:
+        min_a = max_a = xa[0][0] * ax + xa[0][1] * ay  # project(): the same comparisons in the same order
+        for x, y in xa:
+            d = x * ax + y * ay
+            if d < min_a:
+                min_a = d
+            elif d > max_a:
+                max_a = d
+        min_b = max_b = xb[0][0] * ax + xb[0][1] * ay
+        for x, y in xb:
+            d = x * ax + y * ay
+            if d < min_b:
+                min_b = d
+            elif d > max_b:
+                max_b = d
+        if min(max_a, max_b) - max(min_a, min_b) <= limit:
+            return None  # a gap (or exact touching): apart
+        forwards, backwards = max_a - min_b, max_b - min_a
+        depth = min(forwards, backwards)
+        if depth < best_depth:
+            if abs(forwards - backwards) <= TOUCH_TOLERANCE:
+                best_x, best_y = orient_a_to_b(Vector2(ax, ay), pa, pb)
+            elif forwards < backwards:
+                best_x, best_y = ax, ay
+            else:
+                best_x, best_y = -ax, -ay
+            best_depth = depth
+    return (None if best_x is None else Vector2(best_x, best_y)), best_depth
+
+
 def _best_edge_xy(points, dx, dy):
     """_best_edge on (x, y) pairs and a direction (dx, dy): (v1, v2, the farthest corner)."""
     distinct, (lx, ly) = [], points[-1]
@@ -594,16 +646,21 @@ def corner_manifold(pa, pb, normal, margin=0.0):
     """corner_manifold_reference on plain floats (the World's version): the same [(point, depth px), ...]."""
     if READABLE:
         return corner_manifold_reference(pa, pb, normal, margin)
-    nx, ny = normal
     xa, xb = _xy(pa), _xy(pb)
+    return corner_manifold_xy(pa, xa, _outward_faces_xy(xa), pb, xb, _outward_faces_xy(xb), normal, margin)
+
+
+def corner_manifold_xy(pa, xa, faces_a, pb, xb, faces_b, normal, margin):
+    """corner_manifold with each polygon's corners as (x, y) pairs and its outward faces (_outward_faces_xy)
+    worked out already (pa, pb: the same corners, whose objects the answer's points are)."""
+    nx, ny = normal
     limit = margin - TOUCH_TOLERANCE
     found = []
-    for corners, xy, other, dx, dy in ((pa, xa, xb, -nx, -ny), (pb, xb, xa, nx, ny)):
+    for corners, xy, other, faces, dx, dy in ((pa, xa, xb, faces_b, -nx, -ny), (pb, xb, xa, faces_a, nx, ny)):
         (v1x, v1y), (v2x, v2y), _ = _best_edge_xy(other, dx, dy)
         fx, fy = _unit(-(v2y - v1y), v2x - v1x)
         if fx * dx + fy * dy < 0:
             fx, fy = -fx, -fy  # outward
-        faces = _outward_faces_xy(other)
         for p, (px, py) in zip(corners, xy):
             for vx, vy, ex, ey in faces:  # separation < limit: no face's distance reaches it
                 if (px - vx) * ex + (py - vy) * ey >= limit:

@@ -597,6 +597,9 @@ class World:
         if collision.FAST_PATHS and not speculative and "sleep" not in self.effects:
             yield from _plain_manifolds(self)  # the same search on plain lists (the lab's case)
             return
+        if collision.FAST_PATHS and not collision.READABLE and speculative and "sleep" not in self.effects:
+            yield from _speculative_manifolds(self, speculative)  # the reference solver's search on floats
+            return
         bodies = self.bodies
         sleep = "sleep" in self.effects
         moving = [self.moves(body) for body in bodies] if sleep else [body.inv_mass != 0 for body in bodies]
@@ -721,6 +724,71 @@ def _plain_manifolds(world):
     finally:
         world.counters["narrow_tests"] += narrow
         world.counters["contacts"] += contacts
+
+
+def _speculative_manifolds(world, dt):
+    """World.manifolds(speculative=dt) without "sleep", polygons on plain floats: the same pairs and manifolds.
+
+    Each polygon's corners become (x, y) pairs once per search, with their edge
+    normals and outward faces (collision.edge_normals_xy, _outward_faces_xy) worked
+    out on first use; a polygon pair goes to collision.sat_xy and corner_manifold_xy
+    (or clip_manifold), the float forms of sat and corner_manifold that collide()
+    calls with a margin. Other pairs go through collision.collide. The reference is
+    the rest of manifolds(), which readable_versions() runs.
+    """
+    bodies = world.bodies
+    moving = [body.inv_mass != 0 for body in bodies]
+    if True not in moving:
+        return
+    points = [body.world_points() for body in bodies]
+    flat = [None] * len(bodies)  # polygon k: (corners as (x, y), edge normals, outward faces), on first use
+    boxes = []
+    for body, corners in zip(bodies, points):
+        boxes.append(_polygon_box(corners) if body.shape.kind == "polygon" else body.aabb(corners))
+    reach = [world.reach(body, dt) for body in bodies]
+    base = SPECULATIVE_MARGIN
+    search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
+    pairs, tested = search(boxes, moving, reach, base, boxes)
+    world.counters["pair_tests"] += tested
+    rule = world.contact_rule
+    narrow = contacts = 0
+    try:
+        for i, j in pairs:
+            a, b = bodies[i], bodies[j]
+            narrow += 1
+            margin = base + reach[i] + reach[j]  # broadphase.pair_margin
+            if a.shape.kind == "polygon" and b.shape.kind == "polygon":
+                manifold = _polygon_manifold(points, flat, i, j, rule, margin)
+            else:
+                manifold = collision.collide(a, b, points[i], points[j], rule, world.sat, margin,
+                                             world.circle_polygon, world.circle_point)
+            if manifold is None:
+                continue
+            contacts += len(manifold.points)
+            yield a, b, manifold
+    finally:
+        world.counters["narrow_tests"] += narrow
+        world.counters["contacts"] += contacts
+
+
+def _polygon_manifold(points, flat, i, j, rule, margin):
+    """collision.collide's polygon pair with a margin, on the floats of _speculative_manifolds: a Manifold or None."""
+    for k in (i, j):
+        if flat[k] is None:
+            xy = [(p.x, p.y) for p in points[k]]
+            flat[k] = (xy, collision.edge_normals_xy(xy), collision._outward_faces_xy(xy))
+    (xa, normals_a, faces_a), (xb, normals_b, faces_b) = flat[i], flat[j]
+    pa, pb = points[i], points[j]
+    hit = collision.sat_xy(pa, xa, normals_a, pb, xb, normals_b, margin)
+    if hit is None:
+        return None
+    normal, depth = hit
+    if rule == "clip":
+        pairs = collision.clip_manifold(pa, pb, normal, margin)
+    else:
+        pairs = (collision.corner_manifold_xy(pa, xa, faces_a, pb, xb, faces_b, normal, margin)
+                 or [(p, depth) for p in collision.contact_points(pa, pb, normal)])
+    return collision.Manifold(normal, depth, [p for p, _ in pairs], [d for _, d in pairs])
 
 
 def _polygon_box(corners):
