@@ -20,7 +20,7 @@ from collections import namedtuple
 
 from . import broadphase, collision, response, sleep
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
-                      soft_constants)
+                      soft_constants, solve_passes)
 from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
                        vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
@@ -457,6 +457,19 @@ class World:
         use_push = "correction" in self.effects
         start = {id(body): (body.pos.x, body.pos.y, body.angle) for body in self.bodies}
         motion = {key: (0.0, 0.0, 1.0, 0.0) for key in start}
+        if not collision.READABLE:  # the same phases with the passes on plain floats (arbiter.solve_passes)
+            self.float_substeps(arbiters, h, soft, use_push, start, motion)
+        else:
+            self.readable_substeps(arbiters, h, soft, use_push, start, motion)
+        # 7. restitution, from the approach speeds found in phase 2
+        for _ in range(RESTITUTION_PASSES):
+            for arbiter in arbiters.values():
+                arbiter.bounce(self.resting_speed)
+        self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
+                         for arb in arbiters.values() for c in arb.points]
+
+    def readable_substeps(self, arbiters, h, soft, use_push, start, motion):
+        """step_accumulated's phases 3 to 6, readable: ReferenceArbiter.solve for each contact, each pass."""
         for _ in range(self.substeps):
             # 3. velocities, then warm start with the accumulated impulses
             self.integrate_velocities(h)
@@ -472,12 +485,38 @@ class World:
             # 6. relax: one pass without the push-out, which takes its speed away
             for arbiter in arbiters.values():
                 arbiter.solve(h, soft, False, motion)
-        # 7. restitution, from the approach speeds found in phase 2
-        for _ in range(RESTITUTION_PASSES):
-            for arbiter in arbiters.values():
-                arbiter.bounce(self.resting_speed)
-        self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
-                         for arb in arbiters.values() for c in arb.points]
+
+    def float_substeps(self, arbiters, h, soft, use_push, start, motion):
+        """readable_substeps on plain floats: each sub-step's passes run by arbiter.solve_passes on the
+        bodies' velocities copied into lists (and back before anything else reads them); the same floats."""
+        bodies = self.bodies
+        index = {id(body): k for k, body in enumerate(bodies)}
+        contacts = list(arbiters.values())
+        for _ in range(self.substeps):
+            # 3. velocities, then warm start with the accumulated impulses
+            self.integrate_velocities(h)
+            for arbiter in contacts:
+                arbiter.warm_start()
+            # 4. solve: `iterations` passes with the soft push-out
+            groups = [arbiter.pass_group(index, motion, h, soft, use_push) for arbiter in contacts]
+            self.solve_on_floats(groups, self.iterations)
+            # 5. positions, and each body's motion since phase 2 (for the separations)
+            self.integrate_positions(h)
+            self.body_motion(start, motion)
+            # 6. relax: one pass without the push-out, which takes its speed away
+            groups = [arbiter.pass_group(index, motion, h, soft, False) for arbiter in contacts]
+            self.solve_on_floats(groups, 1)
+
+    def solve_on_floats(self, groups, passes):
+        """arbiter.solve_passes on every body's velocity and spin, copied out of the bodies and back."""
+        bodies = self.bodies
+        vx = [body.vel.x for body in bodies]
+        vy = [body.vel.y for body in bodies]
+        w = [body.omega for body in bodies]
+        solve_passes(groups, vx, vy, w, passes)
+        for body, x, y, spin in zip(bodies, vx, vy, w):
+            body.vel.update(x, y)
+            body.omega = spin
 
     # ---------------------------------------------------------------- the phases' parts
 
