@@ -556,32 +556,67 @@ def edge_normals_xy(points):
     return normals
 
 
-def sat_xy(pa, xa, normals_a, pb, xb, normals_b, margin):
+def shadow_xy(points, ax, ay):
+    """project() on (x, y) pairs: (min p·axis, max p·axis) px, the same comparisons in the same order."""
+    if len(points) == 4:  # a box: the loop unrolled (as project's fast path)
+        (x0, y0), (x1, y1), (x2, y2), (x3, y3) = points
+        lowest = highest = x0 * ax + y0 * ay
+        d = x1 * ax + y1 * ay
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        d = x2 * ax + y2 * ay
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        d = x3 * ax + y3 * ay
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        return lowest, highest
+    lowest = highest = points[0][0] * ax + points[0][1] * ay
+    for x, y in points:
+        d = x * ax + y * ay
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+    return lowest, highest
+
+
+FlatOutline = namedtuple("FlatOutline", "xy normals shadows faces distinct")
+FlatOutline.__doc__ = """A polygon's corners on plain floats, for sat_xy and corner_manifold_xy (worked out once per
+body per contact search): (x, y) pairs, edge_normals_xy, shadow_xy on each of those normals, _outward_faces_xy,
+and the corners without repeats as _best_edge drops them (_distinct_xy)."""
+
+
+def flat_outline(points):
+    """The FlatOutline of a polygon's world corners (Vector2, px)."""
+    xy = [(p.x, p.y) for p in points]
+    normals = edge_normals_xy(xy)
+    return FlatOutline(xy, normals, [shadow_xy(xy, nx, ny) for nx, ny in normals], _outward_faces_xy(xy),
+                       _distinct_xy(xy))
+
+
+def sat_xy(pa, a, pb, b, margin):
     """sat(pa, pb, margin) on plain floats, for the reference solver's speculative contacts: the same answer.
 
-    xa, xb are the corners as (x, y) pairs and normals_a, normals_b their
-    edge_normals_xy; pa, pb the same corners as Vector2, used only where
-    sat turns to orient_a_to_b (both ways out equally long). sat stays the
-    readable reference (the students' lesson); tests/test_arbiter_fast.py holds the two equal.
+    a, b are the polygons' FlatOutlines (each one's shadows on its own normals
+    worked out once per body, not once per pair); pa, pb the same corners as
+    Vector2, used only where sat turns to orient_a_to_b (both ways out equally
+    long). sat stays the readable reference (the students' lesson);
+    tests/test_arbiter_fast.py holds the two equal.
     """
+    xa, normals_a, shadows_a, xb, normals_b, shadows_b = a.xy, a.normals, a.shadows, b.xy, b.normals, b.shadows
     best_x = best_y = None
     best_depth = math.inf
     limit = TOUCH_TOLERANCE - margin
-    for ax, ay in normals_a + normals_b:
-        min_a = max_a = xa[0][0] * ax + xa[0][1] * ay  # project(): the same comparisons in the same order
-        for x, y in xa:
-            d = x * ax + y * ay
-            if d < min_a:
-                min_a = d
-            elif d > max_a:
-                max_a = d
-        min_b = max_b = xb[0][0] * ax + xb[0][1] * ay
-        for x, y in xb:
-            d = x * ax + y * ay
-            if d < min_b:
-                min_b = d
-            elif d > max_b:
-                max_b = d
+    axes = [(axis, shadow, shadow_xy(xb, *axis)) for axis, shadow in zip(normals_a, shadows_a)]
+    for (ax, ay), (min_a, max_a), (min_b, max_b) in axes + [(axis, shadow_xy(xa, *axis), shadow)
+                                                            for axis, shadow in zip(normals_b, shadows_b)]:
         if min(max_a, max_b) - max(min_a, min_b) <= limit:
             return None  # a gap (or exact touching): apart
         forwards, backwards = max_a - min_b, max_b - min_a
@@ -599,13 +634,22 @@ def sat_xy(pa, xa, normals_a, pb, xb, normals_b, margin):
 
 def _best_edge_xy(points, dx, dy):
     """_best_edge on (x, y) pairs and a direction (dx, dy): (v1, v2, the farthest corner)."""
+    return _best_edge_distinct(_distinct_xy(points), dx, dy)
+
+
+def _distinct_xy(points):
+    """The corners _best_edge keeps: each one not equal to the corner before it (or the first, if none is)."""
     distinct, (lx, ly) = [], points[-1]
     for p in points:  # p != the corner before it, as Vector2's == compares (each coordinate within 1e-6)
         ex, ey = p[0] - lx, p[1] - ly
         if not (-SAME_POINT < ex < SAME_POINT and -SAME_POINT < ey < SAME_POINT):
             distinct.append(p)
         lx, ly = p
-    points = distinct or points[:1]
+    return distinct or points[:1]
+
+
+def _best_edge_distinct(points, dx, dy):
+    """_best_edge_xy on corners _distinct_xy has kept already."""
     n = len(points)
     i, top = 0, points[0][0] * dx + points[0][1] * dy
     for k in range(1, n):  # the first corner farthest along the direction, as max() picks it
@@ -646,18 +690,18 @@ def corner_manifold(pa, pb, normal, margin=0.0):
     """corner_manifold_reference on plain floats (the World's version): the same [(point, depth px), ...]."""
     if READABLE:
         return corner_manifold_reference(pa, pb, normal, margin)
-    xa, xb = _xy(pa), _xy(pb)
-    return corner_manifold_xy(pa, xa, _outward_faces_xy(xa), pb, xb, _outward_faces_xy(xb), normal, margin)
+    return corner_manifold_xy(pa, flat_outline(pa), pb, flat_outline(pb), normal, margin)
 
 
-def corner_manifold_xy(pa, xa, faces_a, pb, xb, faces_b, normal, margin):
-    """corner_manifold with each polygon's corners as (x, y) pairs and its outward faces (_outward_faces_xy)
-    worked out already (pa, pb: the same corners, whose objects the answer's points are)."""
+def corner_manifold_xy(pa, a, pb, b, normal, margin):
+    """corner_manifold with each polygon's FlatOutline worked out already (pa, pb: the same corners, whose
+    objects the answer's points are)."""
     nx, ny = normal
     limit = margin - TOUCH_TOLERANCE
     found = []
-    for corners, xy, other, faces, dx, dy in ((pa, xa, xb, faces_b, -nx, -ny), (pb, xb, xa, faces_a, nx, ny)):
-        (v1x, v1y), (v2x, v2y), _ = _best_edge_xy(other, dx, dy)
+    for corners, xy, other, faces, dx, dy in ((pa, a.xy, b.distinct, b.faces, -nx, -ny),
+                                              (pb, b.xy, a.distinct, a.faces, nx, ny)):
+        (v1x, v1y), (v2x, v2y), _ = _best_edge_distinct(other, dx, dy)
         fx, fy = _unit(-(v2y - v1y), v2x - v1x)
         if fx * dx + fy * dy < 0:
             fx, fy = -fx, -fy  # outward

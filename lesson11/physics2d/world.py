@@ -769,8 +769,8 @@ def _speculative_manifolds(world, dt):
     """World.manifolds(speculative=dt) without "sleep", polygons on plain floats: the same pairs and manifolds.
 
     Each polygon's corners become (x, y) pairs once per search, with their edge
-    normals and outward faces (collision.edge_normals_xy, _outward_faces_xy) worked
-    out on first use; a polygon pair goes to collision.sat_xy and corner_manifold_xy
+    normals, shadows and outward faces (collision.flat_outline), worked out on
+    first use; a polygon pair goes to collision.sat_xy and corner_manifold_xy
     (or clip_manifold), the float forms of sat and corner_manifold that collide()
     calls with a margin. Other pairs go through collision.collide. The reference is
     the rest of manifolds(), which readable_versions() runs.
@@ -780,7 +780,7 @@ def _speculative_manifolds(world, dt):
     if True not in moving:
         return
     points = [body.world_points() for body in bodies]
-    flat = [None] * len(bodies)  # polygon k: (corners as (x, y), edge normals, outward faces), on first use
+    flat = [None] * len(bodies)  # polygon k: its collision.FlatOutline, on first use
     boxes = []
     for body, corners in zip(bodies, points):
         boxes.append(_polygon_box(corners) if body.shape.kind == "polygon" else body.aabb(corners))
@@ -812,20 +812,17 @@ def _speculative_manifolds(world, dt):
 
 def _polygon_manifold(points, flat, i, j, rule, margin):
     """collision.collide's polygon pair with a margin, on the floats of _speculative_manifolds: a Manifold or None."""
-    for k in (i, j):
-        if flat[k] is None:
-            xy = [(p.x, p.y) for p in points[k]]
-            flat[k] = (xy, collision.edge_normals_xy(xy), collision._outward_faces_xy(xy))
-    (xa, normals_a, faces_a), (xb, normals_b, faces_b) = flat[i], flat[j]
     pa, pb = points[i], points[j]
-    hit = collision.sat_xy(pa, xa, normals_a, pb, xb, normals_b, margin)
+    a = flat[i] = flat[i] or collision.flat_outline(pa)
+    b = flat[j] = flat[j] or collision.flat_outline(pb)
+    hit = collision.sat_xy(pa, a, pb, b, margin)
     if hit is None:
         return None
     normal, depth = hit
     if rule == "clip":
         pairs = collision.clip_manifold(pa, pb, normal, margin)
     else:
-        pairs = (collision.corner_manifold_xy(pa, xa, faces_a, pb, xb, faces_b, normal, margin)
+        pairs = (collision.corner_manifold_xy(pa, a, pb, b, normal, margin)
                  or [(p, depth) for p in collision.contact_points(pa, pb, normal)])
     return collision.Manifold(normal, depth, [p for p, _ in pairs], [d for _, d in pairs])
 
