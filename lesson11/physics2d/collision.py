@@ -587,18 +587,38 @@ def shadow_xy(points, ax, ay):
     return lowest, highest
 
 
-FlatOutline = namedtuple("FlatOutline", "xy normals shadows faces distinct")
+FlatOutline = namedtuple("FlatOutline", "xy normals shadows faces distinct regular")
 FlatOutline.__doc__ = """A polygon's corners on plain floats, for sat_xy and corner_manifold_xy (worked out once per
 body per contact search): (x, y) pairs, edge_normals_xy, shadow_xy on each of those normals, _outward_faces_xy,
-and the corners without repeats as _best_edge drops them (_distinct_xy)."""
+the corners without repeats as _best_edge drops them (_distinct_xy), and `regular`: no corner dropped and
+no zero-length edge, so normals[i] is edge i's (corner i to i + 1) and _best_face can read it."""
 
 
 def flat_outline(points):
     """The FlatOutline of a polygon's world corners (Vector2, px)."""
     xy = [(p.x, p.y) for p in points]
     normals = edge_normals_xy(xy)
-    return FlatOutline(xy, normals, [shadow_xy(xy, nx, ny) for nx, ny in normals], _outward_faces_xy(xy),
-                       _distinct_xy(xy))
+    distinct = _distinct_xy(xy)
+    return FlatOutline(xy, normals, [shadow_xy(xy, nx, ny) for nx, ny in normals], _outward_faces_of(xy, normals),
+                       distinct, len(normals) == len(xy) == len(distinct))
+
+
+def _best_face(outline, dx, dy):
+    """_best_edge_xy's edge on a regular FlatOutline, with its unit normal: (v1, (nx, ny)), the same floats.
+
+    Edge i's unit direction e / |e| is (n.y, -n.x) of its normal n = (-e.y, e.x) / |e| (exactly: the same
+    quotients), so the two edges at the farthest corner are compared without a square root.
+    """
+    points, normals = outline.xy, outline.normals
+    i, top = 0, points[0][0] * dx + points[0][1] * dy
+    for k in range(1, len(points)):  # the first corner farthest along the direction, as max() picks it
+        along = points[k][0] * dx + points[k][1] * dy
+        if along > top:
+            i, top = k, along
+    (bx, by), (ax, ay) = normals[i - 1], normals[i]  # the edge into corner i, and the edge out of it
+    if abs(by * dx + -bx * dy) <= abs(-ay * dx + ax * dy):  # |(v - before)/|..|·d| <= |(v - after)/|..|·d|
+        return points[i - 1], normals[i - 1]
+    return points[i], normals[i]
 
 
 def sat_xy(pa, a, pb, b, margin):
@@ -610,13 +630,16 @@ def sat_xy(pa, a, pb, b, margin):
     long). sat stays the readable reference (the students' lesson);
     tests/test_arbiter_fast.py holds the two equal.
     """
-    xa, normals_a, shadows_a, xb, normals_b, shadows_b = a.xy, a.normals, a.shadows, b.xy, b.normals, b.shadows
     best_x = best_y = None
     best_depth = math.inf
     limit = TOUCH_TOLERANCE - margin
-    axes = [(axis, shadow, shadow_xy(xb, *axis)) for axis, shadow in zip(normals_a, shadows_a)]
-    for (ax, ay), (min_a, max_a), (min_b, max_b) in axes + [(axis, shadow_xy(xa, *axis), shadow)
-                                                            for axis, shadow in zip(normals_b, shadows_b)]:
+    xa, xb = a.xy, b.xy
+    count_a = len(a.normals)
+    for k, (ax, ay) in enumerate(a.normals + b.normals):  # A's normals, then B's, as sat takes them
+        if k < count_a:
+            (min_a, max_a), (min_b, max_b) = a.shadows[k], shadow_xy(xb, ax, ay)
+        else:
+            (min_a, max_a), (min_b, max_b) = shadow_xy(xa, ax, ay), b.shadows[k - count_a]
         if min(max_a, max_b) - max(min_a, min_b) <= limit:
             return None  # a gap (or exact touching): apart
         forwards, backwards = max_a - min_b, max_b - min_a
@@ -668,18 +691,23 @@ def _best_edge_distinct(points, dx, dy):
 
 def _outward_faces_xy(points):
     """outward_faces on (x, y) pairs: [(vx, vy, nx, ny), ...], each edge's first corner and outward unit normal."""
+    return _outward_faces_of(points, edge_normals_xy(points))
+
+
+def _outward_faces_of(points, normals):
+    """_outward_faces_xy with the edge normals (edge_normals_xy(points)) worked out already."""
     mx = my = 0.0
     for x, y in points:  # one addition after another, as sum(points, Vector2()) adds
         mx += x
         my += y
     mx, my = mx / len(points), my / len(points)
-    faces = []
+    faces, normals = [], iter(normals)
     for i, (vx, vy) in enumerate(points):
         wx, wy = points[(i + 1) % len(points)]
         ex, ey = wx - vx, wy - vy
         if ex * ex + ey * ey == 0:
             continue
-        nx, ny = _unit(-ey, ex)
+        nx, ny = next(normals)  # _unit(-ey, ex), as edge_normals_xy found it
         if (vx - mx) * nx + (vy - my) * ny < 0:
             nx, ny = -nx, -ny
         faces.append((vx, vy, nx, ny))
@@ -699,10 +727,12 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
     nx, ny = normal
     limit = margin - TOUCH_TOLERANCE
     found = []
-    for corners, xy, other, faces, dx, dy in ((pa, a.xy, b.distinct, b.faces, -nx, -ny),
-                                              (pb, b.xy, a.distinct, a.faces, nx, ny)):
-        (v1x, v1y), (v2x, v2y), _ = _best_edge_distinct(other, dx, dy)
-        fx, fy = _unit(-(v2y - v1y), v2x - v1x)
+    for corners, xy, outline, faces, dx, dy in ((pa, a.xy, b, b.faces, -nx, -ny), (pb, b.xy, a, a.faces, nx, ny)):
+        if outline.regular:
+            (v1x, v1y), (fx, fy) = _best_face(outline, dx, dy)
+        else:
+            (v1x, v1y), (v2x, v2y), _ = _best_edge_distinct(outline.distinct, dx, dy)
+            fx, fy = _unit(-(v2y - v1y), v2x - v1x)
         if fx * dx + fy * dy < 0:
             fx, fy = -fx, -fy  # outward
         for p, (px, py) in zip(corners, xy):
