@@ -326,6 +326,21 @@ class Arbiter(ReferenceArbiter):
                 rows)
 
 
+def warm_start_floats(groups, vx, vy, w):
+    """ReferenceArbiter.warm_start for every contact on plain floats (lists as in solve_passes): P = Pn n + Pt t
+    applied at each point as response.apply_impulse applies it, the same floats."""
+    for ka, kb, nx, ny, ima, iia, imb, iib, _, rows in groups:
+        for c, rax, ray, rbx, rby, *_ in rows:
+            normal, friction = c.normal_impulse, c.friction_impulse
+            px, py = nx * normal + ny * friction, ny * normal + -nx * friction  # tangent t = (n.y, -n.x)
+            vx[ka] -= px * ima
+            vy[ka] -= py * ima
+            w[ka] -= (rax * py - ray * px) * iia  # cross(ra, P)
+            vx[kb] += px * imb
+            vy[kb] += py * imb
+            w[kb] += (rbx * py - rby * px) * iib
+
+
 def solve_passes(groups, vx, vy, w, passes):
     """ReferenceArbiter.solve for every contact, `passes` times over, on plain floats: the same impulses and velocities.
 

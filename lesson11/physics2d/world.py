@@ -20,7 +20,7 @@ from collections import namedtuple
 
 from . import broadphase, collision, response, sleep
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
-                      soft_constants, solve_passes)
+                      soft_constants, solve_passes, warm_start_floats)
 from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
                        vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
@@ -493,13 +493,11 @@ class World:
         index = {id(body): k for k, body in enumerate(bodies)}
         contacts = list(arbiters.values())
         for _ in range(self.substeps):
-            # 3. velocities, then warm start with the accumulated impulses
+            # 3. velocities, then warm start with the accumulated impulses; 4. solve: `iterations` passes with
+            # the soft push-out (what the passes read is worked out first: the bodies have not moved yet)
             self.integrate_velocities(h)
-            for arbiter in contacts:
-                arbiter.warm_start()
-            # 4. solve: `iterations` passes with the soft push-out
             groups = [arbiter.pass_group(index, motion, h, soft, use_push) for arbiter in contacts]
-            self.solve_on_floats(groups, self.iterations)
+            self.solve_on_floats(groups, self.iterations, warm_start=True)
             # 5. positions, and each body's motion since phase 2 (for the separations)
             self.integrate_positions(h)
             self.body_motion(start, motion)
@@ -507,12 +505,15 @@ class World:
             groups = [arbiter.pass_group(index, motion, h, soft, False) for arbiter in contacts]
             self.solve_on_floats(groups, 1)
 
-    def solve_on_floats(self, groups, passes):
-        """arbiter.solve_passes on every body's velocity and spin, copied out of the bodies and back."""
+    def solve_on_floats(self, groups, passes, warm_start=False):
+        """arbiter.solve_passes (after arbiter.warm_start_floats if warm_start) on every body's velocity and spin,
+        copied out of the bodies and back."""
         bodies = self.bodies
         vx = [body.vel.x for body in bodies]
         vy = [body.vel.y for body in bodies]
         w = [body.omega for body in bodies]
+        if warm_start:
+            warm_start_floats(groups, vx, vy, w)
         solve_passes(groups, vx, vy, w, passes)
         for body, x, y, spin in zip(bodies, vx, vy, w):
             body.vel.update(x, y)
