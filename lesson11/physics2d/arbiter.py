@@ -316,14 +316,14 @@ class Arbiter(ReferenceArbiter):
             rows.append((c, rax, ray, rbx, rby, bias, -c.mass_normal * mass_scale, impulse_scale, c.mass_tangent))
         return rows
 
-    def pass_group(self, index, motion, h, soft, use_bias):
-        """What solve_passes reads of this contact for one sub-step's passes: (index of A, of B, nx, ny, 1/mA, 1/IA,
-        1/mB, 1/IB, μ, pass_rows), index[id(body)] being the body's place in solve_passes' velocity lists."""
+    def pass_group(self, ka, kb, motion, h, soft, use_bias):
+        """What solve_passes reads of this contact for one sub-step's passes: (ka, kb, nx, ny, 1/mA, 1/IA, 1/mB,
+        1/IB, μ, pass_rows), ka and kb being A's and B's places in solve_passes' lists and in motion (a list of
+        each body's (dx, dy, cos Δθ, sin Δθ), as separation() reads it)."""
         a, b = self.a, self.b
         nx, ny = self.normal
-        rows = self.pass_rows(motion[id(a)], motion[id(b)], h, soft, use_bias)
-        return (index[id(a)], index[id(b)], nx, ny, a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia, self.mu,
-                rows)
+        rows = self.pass_rows(motion[ka], motion[kb], h, soft, use_bias)
+        return ka, kb, nx, ny, a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia, self.mu, rows
 
 
 def warm_start_floats(groups, vx, vy, w):

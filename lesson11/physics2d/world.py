@@ -487,22 +487,68 @@ class World:
                 arbiter.solve(h, soft, False, motion)
 
     def float_substeps(self, arbiters, h, soft, use_push, start, motion):
-        """readable_substeps on plain floats: each sub-step's passes run by arbiter.solve_passes on the
-        bodies' velocities copied into lists (and back before anything else reads them); the same floats."""
+        """readable_substeps on plain floats: every body's position, angle, velocity and spin as lists for the
+        whole step, written back to the bodies at its end; each sub-step's passes run by arbiter.solve_passes.
+
+        Each line computes what the readable phases compute (integrate_velocities, integrate_positions,
+        body_motion, the arbiters' warm_start and solve), in the same order: the same floats. With "sleep"
+        or "ccd" (whose integration is more than x += v h) float_substeps_on_bodies runs instead.
+        """
+        if "sleep" in self.effects or "ccd" in self.effects:
+            return self.float_substeps_on_bodies(arbiters, h, soft, use_push, start, motion)
         bodies = self.bodies
         index = {id(body): k for k, body in enumerate(bodies)}
-        contacts = list(arbiters.values())
+        contacts = [(index[id(arbiter.a)], index[id(arbiter.b)], arbiter) for arbiter in arbiters.values()]
+        moving = [k for k, body in enumerate(bodies) if body.inv_mass != 0]
+        x0, y0, angle0 = [body.pos.x for body in bodies], [body.pos.y for body in bodies], [b.angle for b in bodies]
+        x, y, angle = x0[:], y0[:], angle0[:]
+        vx, vy, w = [body.vel.x for body in bodies], [body.vel.y for body in bodies], [b.omega for b in bodies]
+        motion = [(0.0, 0.0, 1.0, 0.0)] * len(bodies)
+        pull = self.gravity * h if "gravity" in self.effects else None  # v += g h, as integrate_velocities adds it
+        rotation = "rotation" in self.effects
         for _ in range(self.substeps):
             # 3. velocities, then warm start with the accumulated impulses; 4. solve: `iterations` passes with
             # the soft push-out (what the passes read is worked out first: the bodies have not moved yet)
+            if pull is not None:
+                for k in moving:
+                    vx[k] += pull.x
+                    vy[k] += pull.y
+            groups = [arbiter.pass_group(ka, kb, motion, h, soft, use_push) for ka, kb, arbiter in contacts]
+            warm_start_floats(groups, vx, vy, w)
+            solve_passes(groups, vx, vy, w, self.iterations)
+            # 5. positions (x += v h, angle += ω h), and each body's motion since phase 2 (for the separations)
+            for k in moving:
+                x[k] += vx[k] * h
+                y[k] += vy[k] * h
+                if rotation:
+                    angle[k] += w[k] * h
+                turned = angle[k] - angle0[k]
+                motion[k] = (x[k] - x0[k], y[k] - y0[k], math.cos(turned), math.sin(turned))
+            # 6. relax: one pass without the push-out, which takes its speed away
+            groups = [arbiter.pass_group(ka, kb, motion, h, soft, False) for ka, kb, arbiter in contacts]
+            solve_passes(groups, vx, vy, w, 1)
+        for k, body in enumerate(bodies):  # back to the bodies (through pos's and angle's checks)
+            body.vel.update(vx[k], vy[k])
+            body.omega = w[k]
+            if body.inv_mass != 0:
+                body.pos = Vector2(x[k], y[k])
+                body.angle = angle[k]
+
+    def float_substeps_on_bodies(self, arbiters, h, soft, use_push, start, motion):
+        """float_substeps with "sleep" or "ccd": the World's own integration on the bodies each sub-step, the
+        passes on their velocities copied into lists and back."""
+        bodies = self.bodies
+        index = {id(body): k for k, body in enumerate(bodies)}
+        contacts = [(index[id(arbiter.a)], index[id(arbiter.b)], arbiter) for arbiter in arbiters.values()]
+        for _ in range(self.substeps):
             self.integrate_velocities(h)
-            groups = [arbiter.pass_group(index, motion, h, soft, use_push) for arbiter in contacts]
+            moved = [motion[id(body)] for body in bodies]
+            groups = [arbiter.pass_group(ka, kb, moved, h, soft, use_push) for ka, kb, arbiter in contacts]
             self.solve_on_floats(groups, self.iterations, warm_start=True)
-            # 5. positions, and each body's motion since phase 2 (for the separations)
             self.integrate_positions(h)
             self.body_motion(start, motion)
-            # 6. relax: one pass without the push-out, which takes its speed away
-            groups = [arbiter.pass_group(index, motion, h, soft, False) for arbiter in contacts]
+            moved = [motion[id(body)] for body in bodies]
+            groups = [arbiter.pass_group(ka, kb, moved, h, soft, False) for ka, kb, arbiter in contacts]
             self.solve_on_floats(groups, 1)
 
     def solve_on_floats(self, groups, passes, warm_start=False):
