@@ -640,10 +640,11 @@ def sat_xy(pa, a, pb, b, margin):
             (min_a, max_a), (min_b, max_b) = a.shadows[k], shadow_xy(xb, ax, ay)
         else:
             (min_a, max_a), (min_b, max_b) = shadow_xy(xa, ax, ay), b.shadows[k - count_a]
-        if min(max_a, max_b) - max(min_a, min_b) <= limit:
+        # min() and max() as conditionals: each keeps its first argument unless the second is smaller (larger)
+        if (max_b if max_b < max_a else max_a) - (min_b if min_b > min_a else min_a) <= limit:
             return None  # a gap (or exact touching): apart
         forwards, backwards = max_a - min_b, max_b - min_a
-        depth = min(forwards, backwards)
+        depth = backwards if backwards < forwards else forwards
         if depth < best_depth:
             if abs(forwards - backwards) <= TOUCH_TOLERANCE:
                 best_x, best_y = orient_a_to_b(Vector2(ax, ay), pa, pb)
