@@ -545,17 +545,6 @@ def _unit(x, y):
     return x / length, y / length
 
 
-def edge_normals_xy(points):
-    """edge_normals on (x, y) pairs: [(nx, ny), ...], (-e.y, e.x) / |e| of each edge, zero-length edges skipped."""
-    normals = []
-    for i, (ax, ay) in enumerate(points):
-        bx, by = points[(i + 1) % len(points)]
-        ex, ey = bx - ax, by - ay
-        if ex * ex + ey * ey > 0:
-            normals.append(_unit(-ey, ex))
-    return normals
-
-
 def shadow_xy(points, ax, ay):
     """project() on (x, y) pairs: (min p·axis, max p·axis) px, the same comparisons in the same order."""
     if len(points) == 4:  # a box: the loop unrolled (as project's fast path)
@@ -589,18 +578,39 @@ def shadow_xy(points, ax, ay):
 
 FlatOutline = namedtuple("FlatOutline", "xy normals shadows faces distinct regular")
 FlatOutline.__doc__ = """A polygon's corners on plain floats, for sat_xy and corner_manifold_xy (worked out once per
-body per contact search): (x, y) pairs, edge_normals_xy, shadow_xy on each of those normals, _outward_faces_xy,
-the corners without repeats as _best_edge drops them (_distinct_xy), and `regular`: no corner dropped and
-no zero-length edge, so normals[i] is edge i's (corner i to i + 1) and _best_face can read it."""
+body per contact search): (x, y) pairs; edge_normals' unit normals (nx, ny), zero-length edges skipped; the
+shadow (project) on each of those normals; outward_faces as (vx, vy, nx, ny); the corners without repeats as
+_best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no zero-length edge), so normals[i]
+is edge i's (corner i to i + 1) and _best_face can read it."""
 
 
 def flat_outline(points):
-    """The FlatOutline of a polygon's world corners (Vector2, px)."""
+    """The FlatOutline of a polygon's world corners (Vector2, px), in one pass over the edges.
+
+    Each normal is _unit(-e.y, e.x) written out ((-e.y)² is e.y², the same float), each face the normal
+    turned outward as _outward_faces_xy turns it (about the mean of the corners, added up in order).
+    """
     xy = [(p.x, p.y) for p in points]
-    normals = edge_normals_xy(xy)
-    distinct = _distinct_xy(xy)
-    return FlatOutline(xy, normals, [shadow_xy(xy, nx, ny) for nx, ny in normals], _outward_faces_of(xy, normals),
-                       distinct, len(normals) == len(xy) == len(distinct))
+    n = len(xy)
+    mx = my = 0.0
+    for x, y in xy:  # one addition after another, as sum(points, Vector2()) adds
+        mx += x
+        my += y
+    mx, my = mx / n, my / n
+    normals, faces, regular = [], [], True
+    for i, (vx, vy) in enumerate(xy):
+        wx, wy = xy[i + 1 - n]  # the next corner (i + 1 - n is i + 1 counted from the end)
+        ex, ey = wx - vx, wy - vy
+        if -SAME_POINT < ex < SAME_POINT and -SAME_POINT < ey < SAME_POINT:
+            regular = False  # _distinct_xy drops a corner here
+        if ex * ex + ey * ey == 0:
+            continue  # a zero-length edge has no normal
+        length = sqrt(ey * ey + ex * ex)
+        nx, ny = -ey / length, ex / length
+        normals.append((nx, ny))
+        faces.append((vx, vy, -nx, -ny) if (vx - mx) * nx + (vy - my) * ny < 0 else (vx, vy, nx, ny))
+    return FlatOutline(xy, normals, [shadow_xy(xy, nx, ny) for nx, ny in normals], faces,
+                       xy if regular else _distinct_xy(xy), regular)
 
 
 def _best_face(outline, dx, dy):
@@ -688,31 +698,6 @@ def _best_edge_distinct(points, dx, dy):
         if abs(bx / to_before * dx + by / to_before * dy) <= abs(ax / to_after * dx + ay / to_after * dy):
             return before, v, v
     return v, after, v
-
-
-def _outward_faces_xy(points):
-    """outward_faces on (x, y) pairs: [(vx, vy, nx, ny), ...], each edge's first corner and outward unit normal."""
-    return _outward_faces_of(points, edge_normals_xy(points))
-
-
-def _outward_faces_of(points, normals):
-    """_outward_faces_xy with the edge normals (edge_normals_xy(points)) worked out already."""
-    mx = my = 0.0
-    for x, y in points:  # one addition after another, as sum(points, Vector2()) adds
-        mx += x
-        my += y
-    mx, my = mx / len(points), my / len(points)
-    faces, normals = [], iter(normals)
-    for i, (vx, vy) in enumerate(points):
-        wx, wy = points[(i + 1) % len(points)]
-        ex, ey = wx - vx, wy - vy
-        if ex * ex + ey * ey == 0:
-            continue
-        nx, ny = next(normals)  # _unit(-ey, ex), as edge_normals_xy found it
-        if (vx - mx) * nx + (vy - my) * ny < 0:
-            nx, ny = -nx, -ny
-        faces.append((vx, vy, nx, ny))
-    return faces
 
 
 def corner_manifold(pa, pb, normal, margin=0.0):
