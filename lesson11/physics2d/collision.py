@@ -545,10 +545,14 @@ def _unit(x, y):
     return x / length, y / length
 
 
-def shadow_xy(points, ax, ay):
-    """project() on (x, y) pairs: (min p·axis, max p·axis) px, the same comparisons in the same order."""
-    if len(points) == 4:  # a box: the loop unrolled (as project's fast path)
-        (x0, y0), (x1, y1), (x2, y2), (x3, y3) = points
+def shadows_xy(points, axes):
+    """project() of (x, y) pairs on each unit axis (ax, ay): [(min p·axis, max p·axis), ...] px, the same
+    comparisons in the same order (a box's loop unrolled, as project's fast path)."""
+    if len(points) != 4:
+        return [_shadow_xy(points, ax, ay) for ax, ay in axes]
+    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = points
+    shadows = []
+    for ax, ay in axes:
         lowest = highest = x0 * ax + y0 * ay
         d = x1 * ax + y1 * ay
         if d < lowest:
@@ -565,7 +569,12 @@ def shadow_xy(points, ax, ay):
             lowest = d
         elif d > highest:
             highest = d
-        return lowest, highest
+        shadows.append((lowest, highest))
+    return shadows
+
+
+def _shadow_xy(points, ax, ay):
+    """project() on (x, y) pairs, any number of them: (min p·axis, max p·axis) px."""
     lowest = highest = points[0][0] * ax + points[0][1] * ay
     for x, y in points:
         d = x * ax + y * ay
@@ -609,7 +618,7 @@ def flat_outline(points):
         nx, ny = -ey / length, ex / length
         normals.append((nx, ny))
         faces.append((vx, vy, -nx, -ny) if (vx - mx) * nx + (vy - my) * ny < 0 else (vx, vy, nx, ny))
-    return FlatOutline(xy, normals, [shadow_xy(xy, nx, ny) for nx, ny in normals], faces,
+    return FlatOutline(xy, normals, shadows_xy(xy, normals), faces,
                        xy if regular else _distinct_xy(xy), regular)
 
 
@@ -643,13 +652,10 @@ def sat_xy(pa, a, pb, b, margin):
     best_x = best_y = None
     best_depth = math.inf
     limit = TOUCH_TOLERANCE - margin
-    xa, xb = a.xy, b.xy
-    count_a = len(a.normals)
-    for k, (ax, ay) in enumerate(a.normals + b.normals):  # A's normals, then B's, as sat takes them
-        if k < count_a:
-            (min_a, max_a), (min_b, max_b) = a.shadows[k], shadow_xy(xb, ax, ay)
-        else:
-            (min_a, max_a), (min_b, max_b) = shadow_xy(xa, ax, ay), b.shadows[k - count_a]
+    # A's normals, then B's, as sat takes them: each polygon's shadow on its own normals is known already
+    shadows_a = a.shadows + shadows_xy(a.xy, b.normals)
+    shadows_b = shadows_xy(b.xy, a.normals) + b.shadows
+    for (ax, ay), (min_a, max_a), (min_b, max_b) in zip(a.normals + b.normals, shadows_a, shadows_b):
         # min() and max() as conditionals: each keeps its first argument unless the second is smaller (larger)
         if (max_b if max_b < max_a else max_a) - (min_b if min_b > min_a else min_a) <= limit:
             return None  # a gap (or exact touching): apart
