@@ -623,7 +623,7 @@ def flat_outline(points):
 
 
 def _best_face(outline, dx, dy):
-    """_best_edge_xy's edge on a regular FlatOutline, with its unit normal: (v1, (nx, ny)), the same floats.
+    """_best_edge_distinct's edge on a regular FlatOutline, with its unit normal: (v1, (nx, ny)), the same floats.
 
     Edge i's unit direction e / |e| is (n.y, -n.x) of its normal n = (-e.y, e.x) / |e| (exactly: the same
     quotients), so the two edges at the farthest corner are compared without a square root.
@@ -672,11 +672,6 @@ def sat_xy(pa, a, pb, b, margin):
     return (None if best_x is None else Vector2(best_x, best_y)), best_depth
 
 
-def _best_edge_xy(points, dx, dy):
-    """_best_edge on (x, y) pairs and a direction (dx, dy): (v1, v2, the farthest corner)."""
-    return _best_edge_distinct(_distinct_xy(points), dx, dy)
-
-
 def _distinct_xy(points):
     """The corners _best_edge keeps: each one not equal to the corner before it (or the first, if none is)."""
     distinct, (lx, ly) = [], points[-1]
@@ -689,7 +684,8 @@ def _distinct_xy(points):
 
 
 def _best_edge_distinct(points, dx, dy):
-    """_best_edge_xy on corners _distinct_xy has kept already."""
+    """_best_edge on (x, y) pairs that _distinct_xy has kept and a direction (dx, dy): (v1, v2, the farthest
+    corner)."""
     n = len(points)
     i, top = 0, points[0][0] * dx + points[0][1] * dy
     for k in range(1, n):  # the first corner farthest along the direction, as max() picks it
@@ -759,9 +755,15 @@ def clip_manifold(pa, pb, normal, margin=0.0):
     """clip_manifold_reference on plain floats (the World's version): the same [(point, depth px), ...]."""
     if READABLE:
         return clip_manifold_reference(pa, pb, normal, margin)
+    return clip_manifold_xy(pa, _distinct_xy(_xy(pa)), pb, _distinct_xy(_xy(pb)), normal, margin)
+
+
+def clip_manifold_xy(pa, distinct_a, pb, distinct_b, normal, margin):
+    """clip_manifold with each polygon's corners as (x, y) pairs that _distinct_xy has kept (a FlatOutline's
+    `distinct`); pa, pb the same polygons as Vector2, for the rare fallback to the corners rule."""
     nx, ny = normal
-    a1, a2, a_far = _best_edge_xy(_xy(pa), nx, ny)
-    b1, b2, b_far = _best_edge_xy(_xy(pb), -nx, -ny)
+    a1, a2, a_far = _best_edge_distinct(distinct_a, nx, ny)
+    b1, b2, b_far = _best_edge_distinct(distinct_b, -nx, -ny)
     ua, ub = _unit(a2[0] - a1[0], a2[1] - a1[1]), _unit(b2[0] - b1[0], b2[1] - b1[1])
     if abs(ua[0] * nx + ua[1] * ny) <= abs(ub[0] * nx + ub[1] * ny):
         ref1, ref2, ref_far, inc1, inc2, rx, ry = a1, a2, a_far, b1, b2, nx, ny
