@@ -455,12 +455,10 @@ class World:
             arbiter.prepare(self, self.warm_starting)
         soft = soft_constants(min(CONTACT_HERTZ, 0.25 / h), DAMPING_RATIO, h)
         use_push = "correction" in self.effects
-        start = {id(body): (body.pos.x, body.pos.y, body.angle) for body in self.bodies}
-        motion = {key: (0.0, 0.0, 1.0, 0.0) for key in start}
         if not collision.READABLE:  # the same phases with the passes on plain floats (arbiter.solve_passes)
-            self.float_substeps(arbiters, h, soft, use_push, start, motion)
+            self.float_substeps(arbiters, h, soft, use_push)
         else:
-            self.readable_substeps(arbiters, h, soft, use_push, start, motion)
+            self.readable_substeps(arbiters, h, soft, use_push)
         # 7. restitution, from the approach speeds found in phase 2
         for _ in range(RESTITUTION_PASSES):
             for arbiter in arbiters.values():
@@ -468,8 +466,9 @@ class World:
         self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
                          for arb in arbiters.values() for c in arb.points]
 
-    def readable_substeps(self, arbiters, h, soft, use_push, start, motion):
+    def readable_substeps(self, arbiters, h, soft, use_push):
         """step_accumulated's phases 3 to 6, readable: ReferenceArbiter.solve for each contact, each pass."""
+        start, motion = self.motion_start()
         for _ in range(self.substeps):
             # 3. velocities, then warm start with the accumulated impulses
             self.integrate_velocities(h)
@@ -486,7 +485,12 @@ class World:
             for arbiter in arbiters.values():
                 arbiter.solve(h, soft, False, motion)
 
-    def float_substeps(self, arbiters, h, soft, use_push, start, motion):
+    def motion_start(self):
+        """Where body_motion measures from, {id(body): (x, y, angle)} now, and no motion yet (0, 0, 1, 0) each."""
+        start = {id(body): (body.pos.x, body.pos.y, body.angle) for body in self.bodies}
+        return start, {key: (0.0, 0.0, 1.0, 0.0) for key in start}
+
+    def float_substeps(self, arbiters, h, soft, use_push):
         """readable_substeps on plain floats: every body's position, angle, velocity and spin as lists for the
         whole step, written back to the bodies at its end; each sub-step's passes run by arbiter.solve_passes.
 
@@ -495,7 +499,7 @@ class World:
         or "ccd" (whose integration is more than x += v h) float_substeps_on_bodies runs instead.
         """
         if "sleep" in self.effects or "ccd" in self.effects:
-            return self.float_substeps_on_bodies(arbiters, h, soft, use_push, start, motion)
+            return self.float_substeps_on_bodies(arbiters, h, soft, use_push)
         bodies = self.bodies
         index = {id(body): k for k, body in enumerate(bodies)}
         contacts = [(index[id(arbiter.a)], index[id(arbiter.b)], arbiter) for arbiter in arbiters.values()]
@@ -534,9 +538,10 @@ class World:
                 body.pos = Vector2(x[k], y[k])
                 body.angle = angle[k]
 
-    def float_substeps_on_bodies(self, arbiters, h, soft, use_push, start, motion):
+    def float_substeps_on_bodies(self, arbiters, h, soft, use_push):
         """float_substeps with "sleep" or "ccd": the World's own integration on the bodies each sub-step, the
         passes on their velocities copied into lists and back."""
+        start, motion = self.motion_start()
         bodies = self.bodies
         index = {id(body): k for k, body in enumerate(bodies)}
         contacts = [(index[id(arbiter.a)], index[id(arbiter.b)], arbiter) for arbiter in arbiters.values()]
