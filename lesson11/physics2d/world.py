@@ -531,11 +531,11 @@ class World:
             # 6. relax: one pass without the push-out, which takes its speed away
             groups = [arbiter.pass_group(ka, kb, motion, h, soft, False) for ka, kb, arbiter in contacts]
             solve_passes(groups, vx, vy, w, 1)
-        for k, body in enumerate(bodies):  # back to the bodies (through pos's and angle's checks)
+        for k, body in enumerate(bodies):  # back to the bodies: pos in place, as `body.pos += v` changes it
             body.vel.update(vx[k], vy[k])
             body.omega = w[k]
             if body.inv_mass != 0:
-                body.pos = Vector2(x[k], y[k])
+                body.pos.update(x[k], y[k])
                 body.angle = angle[k]
 
     def float_substeps_on_bodies(self, arbiters, h, soft, use_push):
