@@ -230,9 +230,11 @@ class Arbiter(ReferenceArbiter):
     the last bit; only the Vector2 objects and calls are gone from the loops.
     The bodies do not move between the passes of one sub-step, so what each
     point's passes read (separation, bias, scaled mass) is worked out once per
-    sub-step (pass_group), and solve_passes runs every contact's passes on the
-    bodies' velocities as plain lists (World.step_accumulated). solve, warm_start
-    and bounce are the reference's. Inside readable_versions() every method runs the reference's.
+    sub-step (pass_group), and solve_passes runs every contact's passes (after
+    warm_start_floats) on the bodies' velocities as plain lists (World.step_accumulated).
+    solve and bounce are the reference's (bounce with the anchors made Vector2
+    where it reads them; warm_start, which reads them at every point, is not
+    called after the float prepare). Inside readable_versions() every method runs the reference's.
     """
     def update(self, manifold):
         if collision.READABLE:
@@ -277,7 +279,7 @@ class Arbiter(ReferenceArbiter):
             else:
                 rax = ray = rbx = rby = 0.0
             c.anchors = (rax, ray, rbx, rby)
-            c.ra, c.rb = Vector2(rax, ray), Vector2(rbx, rby)  # for warm_start and bounce, the reference's
+            c.ra = None  # ra and rb as Vector2: made by bounce() for the points it uses them at
             # 1 / k for n and t, k = 1/mA + 1/mB + (ra × d)² / IA + (rb × d)² / IB (effective_mass_inverse)
             an, bn, at, bt = rax * ny - ray * nx, rbx * ny - rby * nx, rax * ty - ray * tx, rbx * ty - rby * tx
             c.mass_normal = 1 / (ima + imb + an * an * iia + bn * bn * iib)
@@ -289,6 +291,14 @@ class Arbiter(ReferenceArbiter):
                 c.normal_impulse = c.friction_impulse = 0.0
             if self.mu == 0:
                 c.friction_impulse = 0.0
+
+    def bounce(self, resting_speed):
+        if not collision.READABLE and self.restitution != 0:
+            for c in self.points:  # the anchors as Vector2 where the reference's bounce reads them
+                if c.ra is None and c.approach < -resting_speed and c.max_normal_impulse != 0:
+                    rax, ray, rbx, rby = c.anchors
+                    c.ra, c.rb = Vector2(rax, ray), Vector2(rbx, rby)
+        super().bounce(resting_speed)
 
     def pass_rows(self, motion_a, motion_b, h, soft, use_bias):
         """What each pass of a sub-step reads, per point: (point, rax, ray, rbx, rby, bias px/s, -mass_n × the
