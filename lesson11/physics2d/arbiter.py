@@ -272,6 +272,7 @@ class Arbiter(ReferenceArbiter):
         ima, iia, imb, iib = a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia
         (apx, apy), (bpx, bpy), (vax, vay), (vbx, vby) = a.pos, b.pos, a.vel, b.vel
         wa, wb = a.omega, b.omega
+        self.anchored = False
         for c in self.points:
             if spin:
                 px, py = c.point
@@ -292,8 +293,11 @@ class Arbiter(ReferenceArbiter):
             if self.mu == 0:
                 c.friction_impulse = 0.0
 
+    anchored = True  # False after the float prepare until bounce has made the Vector2 anchors it reads
+
     def bounce(self, resting_speed):
-        if not collision.READABLE and self.restitution != 0:
+        if not self.anchored and self.restitution != 0:
+            self.anchored = True  # which points bounce does not change between its passes
             for c in self.points:  # the anchors as Vector2 where the reference's bounce reads them
                 if c.ra is None and c.approach < -resting_speed and c.max_normal_impulse != 0:
                     rax, ray, rbx, rby = c.anchors
