@@ -409,8 +409,9 @@ def solve_passes(groups, vx, vy, w, passes):
 
 @contextlib.contextmanager
 def readable_versions():
-    """Inside the block, the reference solver runs its readable versions: ReferenceArbiter's methods and
-    collision's corner_manifold_reference / clip_manifold_reference (the test and the bench compare them).
+    """Inside the block, the reference solver runs its readable versions: ReferenceArbiter's methods,
+    collision's sat, corner_manifold_reference / clip_manifold_reference, World.readable_substeps, and
+    collision.fast_paths(False) (the test and the bench compare them with the float versions).
 
     A world keeps one version for all its steps: the float Arbiter keeps what its passes read between them.
     """

@@ -20,8 +20,9 @@ from .vectors import Vector2
 TOUCH_TOLERANCE = 1e-6  # px: overlaps this small are "touching", i.e. apart
 CORNER_MERGE = 0.5      # px: corners closer than this are one contact point (corner_manifold)
 SAME_POINT = Vector2().epsilon  # px: pygame's Vector2 == counts points this close on both axes as one (1e-6)
-READABLE = False        # True: corner_manifold, clip_manifold and the reference solver's Arbiter run their
-                        # readable Vector2 versions (arbiter.readable_versions sets it, for a block)
+READABLE = False        # True: corner_manifold, clip_manifold and the reference solver (its Arbiter, its
+                        # float contact search and sub-steps in world.py) run their readable Vector2 versions
+                        # (arbiter.readable_versions sets it, with the fast paths off, for a block)
 
 # Fast paths: True runs the quicker forms of project, center_of, contact_points and collide (and the World's
 # contact search), which compute the same floats in the same order; False runs the readable reference forms.
