@@ -161,6 +161,38 @@ def test_manifolds_give_exactly_the_reference_answers():
     assert compared > 500
 
 
+def sat_answer(hit):
+    """sat's answer as plain values: None, or ((nx, ny), depth)."""
+    return None if hit is None else (tuple(hit[0]), hit[1])
+
+
+def test_sat_xy_gives_exactly_sat_answers():
+    """sat_xy (the reference solver's float sat) against sat, the students' reference: 3000 random pairs
+    (corners repeated in some, margins 0 to 3.5 px), each both ways round; mirror-image pairs (both ways out
+    equally long, where sat orients the axis from A's centre to B's); apart ones. The same answers."""
+    rng = random.Random(3131)
+    hits = apart = 0
+    for _ in range(3000):
+        pa = polygon(rng, (0, 0), rng.choice([3, 4, 5, 6]), rng.uniform(10, 40), rng.random() < 0.2)
+        pb = polygon(rng, (rng.uniform(-60, 60), rng.uniform(-60, 60)), rng.choice([3, 4, 6]), rng.uniform(10, 40),
+                     rng.random() < 0.2)
+        margin = rng.choice([0.0, 1.0, 3.5])
+        for first, second in ((pa, pb), (pb, pa)):
+            expected = sat_answer(collision.sat(first, second, margin))
+            fast = collision.sat_xy(first, collision.flat_outline(first), second, collision.flat_outline(second),
+                                    margin)
+            assert sat_answer(fast) == expected
+            hits, apart = hits + (expected is not None), apart + (expected is None)
+    box = [Vector2(x, y) for x, y in ((-20, -20), (20, -20), (20, 20), (-20, 20))]
+    for shift in ((30, 0), (0, 30), (-30, 0), (0, 0), (39.9999995, 0)):  # centred: both ways equally long
+        other = [p + Vector2(shift) for p in box]
+        for margin in (0.0, 1.0):
+            expected = sat_answer(collision.sat(box, other, margin))
+            fast = collision.sat_xy(box, collision.flat_outline(box), other, collision.flat_outline(other), margin)
+            assert sat_answer(fast) == expected, shift
+    assert hits > 1000 and apart > 1000
+
+
 def test_equal_boxes_merge_corners_as_the_reference_does():
     """Two equal boxes, the upper one turned ±0.01 rad and shifted across in 0.5 mm steps, so its lower corner
     passes the lower box's upper one at about CORNER_MERGE (0.5 px) across the normal: the same lists."""
@@ -177,9 +209,13 @@ def test_equal_boxes_merge_corners_as_the_reference_does():
 
 
 def test_readable_versions_restores_the_float_ones():
-    """The switch holds only inside the block, also when the block raises."""
+    """The switch holds only inside the block, also when the block raises; inside it the fast paths are off
+    too (collision.FAST_PATHS, vectors.FAST_PATHS), so the block runs the readable step throughout."""
+    from lesson11.physics2d import vectors
     with pytest.raises(RuntimeError):
         with readable_versions():
             assert collision.READABLE
+            assert not collision.FAST_PATHS and not vectors.FAST_PATHS
             raise RuntimeError("inside")
     assert not collision.READABLE
+    assert collision.FAST_PATHS and vectors.FAST_PATHS

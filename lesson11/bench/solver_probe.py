@@ -27,8 +27,8 @@ figures: accuracy_cost's "solvers" study advances them in lockstep, and every sc
 steps it took and the seconds spent inside them (scene.steps, scene.seconds).
 
 --speed times the reference solver's two versions on the brick pile in one run: the readable one
-(arbiter.ReferenceArbiter, collision.corner_manifold_reference / clip_manifold_reference, chosen by
-arbiter.readable_versions) and the float one the World runs. The two piles step in turn, one step
+(arbiter.ReferenceArbiter, collision.sat and corner_manifold_reference / clip_manifold_reference, the
+World's Vector2 sub-steps, every fast path off: arbiter.readable_versions) and the float one the World runs. The two piles step in turn, one step
 each, the first alternating, each step timed by the process's CPU clock; each repeat starts both
 piles afresh and the median of the repeats is kept. It also prints how far apart the two piles end.
 """

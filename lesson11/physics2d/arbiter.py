@@ -230,12 +230,12 @@ class Arbiter(ReferenceArbiter):
     the last bit; only the Vector2 objects and calls are gone from the loops.
     The bodies do not move between the passes of one sub-step, so what each
     point's passes read (separation, bias, scaled mass) is worked out once per
-    sub-step and kept while the bodies' motion and the pass's settings are the same.
-    warm_start and bounce (once a sub-step, and the restitution passes) are the reference's.
-    Inside readable_versions() every method runs the reference's.
+    sub-step (pass_group), and solve_passes runs every contact's passes (after
+    warm_start_floats) on the bodies' velocities as plain lists (World.step_accumulated).
+    solve and bounce are the reference's (bounce with the anchors made Vector2
+    where it reads them; warm_start, which reads them at every point, is not
+    called after the float prepare). Inside readable_versions() every method runs the reference's.
     """
-    kept_for = None  # (motion of A, of B, h, soft, use_bias): what the kept pass rows belong to (solve)
-
     def update(self, manifold):
         if collision.READABLE:
             return super().update(manifold)
@@ -272,6 +272,7 @@ class Arbiter(ReferenceArbiter):
         ima, iia, imb, iib = a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia
         (apx, apy), (bpx, bpy), (vax, vay), (vbx, vby) = a.pos, b.pos, a.vel, b.vel
         wa, wb = a.omega, b.omega
+        self.anchored = False
         for c in self.points:
             if spin:
                 px, py = c.point
@@ -279,7 +280,7 @@ class Arbiter(ReferenceArbiter):
             else:
                 rax = ray = rbx = rby = 0.0
             c.anchors = (rax, ray, rbx, rby)
-            c.ra, c.rb = Vector2(rax, ray), Vector2(rbx, rby)  # for warm_start and bounce, the reference's
+            c.ra = None  # ra and rb as Vector2: made by bounce() for the points it uses them at
             # 1 / k for n and t, k = 1/mA + 1/mB + (ra × d)² / IA + (rb × d)² / IB (effective_mass_inverse)
             an, bn, at, bt = rax * ny - ray * nx, rbx * ny - rby * nx, rax * ty - ray * tx, rbx * ty - rby * tx
             c.mass_normal = 1 / (ima + imb + an * an * iia + bn * bn * iib)
@@ -291,9 +292,17 @@ class Arbiter(ReferenceArbiter):
                 c.normal_impulse = c.friction_impulse = 0.0
             if self.mu == 0:
                 c.friction_impulse = 0.0
-        # what every pass reads: the bodies, their motion keys, the normal, the inverse masses, μ
-        self.fixed = (a, b, id(a), id(b), nx, ny, ima, iia, imb, iib, self.mu)
-        self.kept_for = None  # the pass rows are worked out again at the first solve
+
+    anchored = True  # False after the float prepare until bounce has made the Vector2 anchors it reads
+
+    def bounce(self, resting_speed):
+        if not self.anchored and self.restitution != 0:
+            self.anchored = True  # which points bounce does not change between its passes
+            for c in self.points:  # the anchors as Vector2 where the reference's bounce reads them
+                if c.ra is None and c.approach < -resting_speed and c.max_normal_impulse != 0:
+                    rax, ray, rbx, rby = c.anchors
+                    c.ra, c.rb = Vector2(rax, ray), Vector2(rbx, rby)
+        super().bounce(resting_speed)
 
     def pass_rows(self, motion_a, motion_b, h, soft, use_bias):
         """What each pass of a sub-step reads, per point: (point, rax, ray, rbx, rby, bias px/s, -mass_n × the
@@ -321,68 +330,95 @@ class Arbiter(ReferenceArbiter):
             rows.append((c, rax, ray, rbx, rby, bias, -c.mass_normal * mass_scale, impulse_scale, c.mass_tangent))
         return rows
 
-    def solve(self, h, soft, use_bias, motion):
-        if collision.READABLE:
-            return super().solve(h, soft, use_bias, motion)
-        a, b, key_a, key_b, nx, ny, ima, iia, imb, iib, mu = self.fixed
-        now = (tuple(motion[key_a]), tuple(motion[key_b]), h, soft, use_bias)
-        if now != self.kept_for:  # a body moved (a new sub-step), or the relax pass: work the rows out again
-            self.kept_for, self.kept = now, self.pass_rows(*now)
-        (vax, vay), (vbx, vby) = a.vel, b.vel
-        wa, wb = a.omega, b.omega
-        for c, rax, ray, rbx, rby, bias, scaled_mass, impulse_scale, _ in self.kept:
-            vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
-            old = c.normal_impulse
-            new = old + (scaled_mass * (vn + bias) - impulse_scale * old)
-            if 0.0 > new:  # max(new, 0.0)
-                new = 0.0
-            c.normal_impulse = new
-            p = new - old
-            if p > c.max_normal_impulse:
-                c.max_normal_impulse = p
-            px, py = nx * p, ny * p
-            vax -= px * ima
-            vay -= py * ima
-            wa -= (rax * py - ray * px) * iia
-            vbx += px * imb
-            vby += py * imb
-            wb += (rbx * py - rby * px) * iib
-        if mu != 0:
-            tx, ty = ny, -nx
-            for c, rax, ray, rbx, rby, _, _, _, mass_tangent in self.kept:
-                vt = (vbx - wb * rby - vax + wa * ray) * tx + (vby + wb * rbx - vay - wa * rax) * ty
-                old = c.friction_impulse
-                limit = mu * c.normal_impulse
-                new = old - mass_tangent * vt
-                if not new < limit:  # clamp(new, -limit, limit), as max(-limit, min(limit, new)) picks
-                    new = limit
-                if not new > -limit:
-                    new = -limit
-                c.friction_impulse = new
+    def pass_group(self, ka, kb, motion, h, soft, use_bias):
+        """What solve_passes reads of this contact for one sub-step's passes: (ka, kb, nx, ny, 1/mA, 1/IA, 1/mB,
+        1/IB, μ, pass_rows), ka and kb being A's and B's places in solve_passes' lists and in motion (a list of
+        each body's (dx, dy, cos Δθ, sin Δθ), as separation() reads it)."""
+        a, b = self.a, self.b
+        nx, ny = self.normal
+        rows = self.pass_rows(motion[ka], motion[kb], h, soft, use_bias)
+        return ka, kb, nx, ny, a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia, self.mu, rows
+
+
+def warm_start_floats(groups, vx, vy, w):
+    """ReferenceArbiter.warm_start for every contact on plain floats (lists as in solve_passes): P = Pn n + Pt t
+    applied at each point as response.apply_impulse applies it, the same floats."""
+    for ka, kb, nx, ny, ima, iia, imb, iib, _, rows in groups:
+        for c, rax, ray, rbx, rby, *_ in rows:
+            normal, friction = c.normal_impulse, c.friction_impulse
+            px, py = nx * normal + ny * friction, ny * normal + -nx * friction  # tangent t = (n.y, -n.x)
+            vx[ka] -= px * ima
+            vy[ka] -= py * ima
+            w[ka] -= (rax * py - ray * px) * iia  # cross(ra, P)
+            vx[kb] += px * imb
+            vy[kb] += py * imb
+            w[kb] += (rbx * py - rby * px) * iib
+
+
+def solve_passes(groups, vx, vy, w, passes):
+    """ReferenceArbiter.solve for every contact, `passes` times over, on plain floats: the same impulses and velocities.
+
+    groups: each arbiter's pass_group, in the World's order; vx, vy, w: every
+    body's velocity (px/s) and spin (rad/s) as lists, read and written in place
+    (the World copies them from the bodies and back: between two contacts'
+    solves a body's velocity is the same float either way). Each line computes
+    what ReferenceArbiter.solve computes, in the same order.
+    """
+    for _ in range(passes):
+        for ka, kb, nx, ny, ima, iia, imb, iib, mu, rows in groups:
+            vax, vay, wa, vbx, vby, wb = vx[ka], vy[ka], w[ka], vx[kb], vy[kb], w[kb]
+            for c, rax, ray, rbx, rby, bias, scaled_mass, impulse_scale, _ in rows:
+                vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
+                old = c.normal_impulse
+                new = old + (scaled_mass * (vn + bias) - impulse_scale * old)
+                if 0.0 > new:  # max(new, 0.0)
+                    new = 0.0
+                c.normal_impulse = new
                 p = new - old
-                px, py = tx * p, ty * p
+                if p > c.max_normal_impulse:
+                    c.max_normal_impulse = p
+                px, py = nx * p, ny * p
                 vax -= px * ima
                 vay -= py * ima
                 wa -= (rax * py - ray * px) * iia
                 vbx += px * imb
                 vby += py * imb
                 wb += (rbx * py - rby * px) * iib
-        a.vel.update(vax, vay)
-        a.omega = wa
-        b.vel.update(vbx, vby)
-        b.omega = wb
+            if mu != 0:
+                tx, ty = ny, -nx
+                for c, rax, ray, rbx, rby, _, _, _, mass_tangent in rows:
+                    vt = (vbx - wb * rby - vax + wa * ray) * tx + (vby + wb * rbx - vay - wa * rax) * ty
+                    old = c.friction_impulse
+                    limit = mu * c.normal_impulse
+                    new = old - mass_tangent * vt
+                    if not new < limit:  # clamp(new, -limit, limit), as max(-limit, min(limit, new)) picks
+                        new = limit
+                    if not new > -limit:
+                        new = -limit
+                    c.friction_impulse = new
+                    p = new - old
+                    px, py = tx * p, ty * p
+                    vax -= px * ima
+                    vay -= py * ima
+                    wa -= (rax * py - ray * px) * iia
+                    vbx += px * imb
+                    vby += py * imb
+                    wb += (rbx * py - rby * px) * iib
+            vx[ka], vy[ka], w[ka], vx[kb], vy[kb], w[kb] = vax, vay, wa, vbx, vby, wb
 
 
 @contextlib.contextmanager
 def readable_versions():
-    """Inside the block, the reference solver runs its readable versions: ReferenceArbiter's methods and
-    collision's corner_manifold_reference / clip_manifold_reference (the test and the bench compare them).
+    """Inside the block, the reference solver runs its readable versions: ReferenceArbiter's methods,
+    collision's sat, corner_manifold_reference / clip_manifold_reference, World.readable_substeps, and
+    collision.fast_paths(False) (the test and the bench compare them with the float versions).
 
     A world keeps one version for all its steps: the float Arbiter keeps what its passes read between them.
     """
     before = collision.READABLE
     collision.READABLE = True
     try:
-        yield
+        with collision.fast_paths(False):
+            yield
     finally:
         collision.READABLE = before

@@ -20,8 +20,9 @@ from .vectors import Vector2
 TOUCH_TOLERANCE = 1e-6  # px: overlaps this small are "touching", i.e. apart
 CORNER_MERGE = 0.5      # px: corners closer than this are one contact point (corner_manifold)
 SAME_POINT = Vector2().epsilon  # px: pygame's Vector2 == counts points this close on both axes as one (1e-6)
-READABLE = False        # True: corner_manifold, clip_manifold and the reference solver's Arbiter run their
-                        # readable Vector2 versions (arbiter.readable_versions sets it, for a block)
+READABLE = False        # True: corner_manifold, clip_manifold and the reference solver (its Arbiter, its
+                        # float contact search and sub-steps in world.py) run their readable Vector2 versions
+                        # (arbiter.readable_versions sets it, with the fast paths off, for a block)
 
 # Fast paths: True runs the quicker forms of project, center_of, contact_points and collide (and the World's
 # contact search), which compute the same floats in the same order; False runs the readable reference forms.
@@ -585,15 +586,147 @@ def _unit(x, y):
     return x / length, y / length
 
 
-def _best_edge_xy(points, dx, dy):
-    """_best_edge on (x, y) pairs and a direction (dx, dy): (v1, v2, the farthest corner)."""
+def shadows_xy(points, axes):
+    """project() of (x, y) pairs on each unit axis (ax, ay): [(min p·axis, max p·axis), ...] px, the same
+    comparisons in the same order (a box's loop unrolled, as project's fast path)."""
+    if len(points) != 4:
+        return [_shadow_xy(points, ax, ay) for ax, ay in axes]
+    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = points
+    shadows = []
+    for ax, ay in axes:
+        lowest = highest = x0 * ax + y0 * ay
+        d = x1 * ax + y1 * ay
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        d = x2 * ax + y2 * ay
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        d = x3 * ax + y3 * ay
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+        shadows.append((lowest, highest))
+    return shadows
+
+
+def _shadow_xy(points, ax, ay):
+    """project() on (x, y) pairs, any number of them: (min p·axis, max p·axis) px."""
+    lowest = highest = points[0][0] * ax + points[0][1] * ay
+    for x, y in points:
+        d = x * ax + y * ay
+        if d < lowest:
+            lowest = d
+        elif d > highest:
+            highest = d
+    return lowest, highest
+
+
+FlatOutline = namedtuple("FlatOutline", "xy normals shadows faces distinct regular")
+FlatOutline.__doc__ = """A polygon's corners on plain floats, for sat_xy and corner_manifold_xy (worked out once per
+body per contact search): (x, y) pairs; edge_normals' unit normals (nx, ny), zero-length edges skipped; the
+shadow (project) on each of those normals; outward_faces as (vx, vy, nx, ny); the corners without repeats as
+_best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no zero-length edge), so normals[i]
+is edge i's (corner i to i + 1) and _best_face can read it."""
+
+
+def flat_outline(points):
+    """The FlatOutline of a polygon's world corners (Vector2, px), in one pass over the edges.
+
+    Each normal is _unit(-e.y, e.x) written out ((-e.y)² is e.y², the same float), each face the normal
+    turned outward as _outward_faces_xy turns it (about the mean of the corners, added up in order).
+    """
+    xy = [(p.x, p.y) for p in points]
+    n = len(xy)
+    mx = my = 0.0
+    for x, y in xy:  # one addition after another, as sum(points, Vector2()) adds
+        mx += x
+        my += y
+    mx, my = mx / n, my / n
+    normals, faces, regular = [], [], True
+    for i, (vx, vy) in enumerate(xy):
+        wx, wy = xy[i + 1 - n]  # the next corner (i + 1 - n is i + 1 counted from the end)
+        ex, ey = wx - vx, wy - vy
+        if -SAME_POINT < ex < SAME_POINT and -SAME_POINT < ey < SAME_POINT:
+            regular = False  # _distinct_xy drops a corner here
+        if ex * ex + ey * ey == 0:
+            continue  # a zero-length edge has no normal
+        length = sqrt(ey * ey + ex * ex)
+        nx, ny = -ey / length, ex / length
+        normals.append((nx, ny))
+        faces.append((vx, vy, -nx, -ny) if (vx - mx) * nx + (vy - my) * ny < 0 else (vx, vy, nx, ny))
+    return FlatOutline(xy, normals, shadows_xy(xy, normals), faces,
+                       xy if regular else _distinct_xy(xy), regular)
+
+
+def _best_face(outline, dx, dy):
+    """_best_edge_distinct's edge on a regular FlatOutline, with its unit normal: (v1, (nx, ny)), the same floats.
+
+    Edge i's unit direction e / |e| is (n.y, -n.x) of its normal n = (-e.y, e.x) / |e| (exactly: the same
+    quotients), so the two edges at the farthest corner are compared without a square root.
+    """
+    points, normals = outline.xy, outline.normals
+    i, top = 0, points[0][0] * dx + points[0][1] * dy
+    for k in range(1, len(points)):  # the first corner farthest along the direction, as max() picks it
+        along = points[k][0] * dx + points[k][1] * dy
+        if along > top:
+            i, top = k, along
+    (bx, by), (ax, ay) = normals[i - 1], normals[i]  # the edge into corner i, and the edge out of it
+    if abs(by * dx + -bx * dy) <= abs(-ay * dx + ax * dy):  # |(v - before)/|..|·d| <= |(v - after)/|..|·d|
+        return points[i - 1], normals[i - 1]
+    return points[i], normals[i]
+
+
+def sat_xy(pa, a, pb, b, margin):
+    """sat(pa, pb, margin) on plain floats, for the reference solver's speculative contacts: the same answer.
+
+    a, b are the polygons' FlatOutlines (each one's shadows on its own normals
+    worked out once per body, not once per pair); pa, pb the same corners as
+    Vector2, used only where sat turns to orient_a_to_b (both ways out equally
+    long). sat stays the readable reference (the students' lesson);
+    tests/test_arbiter_fast.py holds the two equal.
+    """
+    best_x = best_y = None
+    best_depth = math.inf
+    limit = TOUCH_TOLERANCE - margin
+    # A's normals, then B's, as sat takes them: each polygon's shadow on its own normals is known already
+    shadows_a = a.shadows + shadows_xy(a.xy, b.normals)
+    shadows_b = shadows_xy(b.xy, a.normals) + b.shadows
+    for (ax, ay), (min_a, max_a), (min_b, max_b) in zip(a.normals + b.normals, shadows_a, shadows_b):
+        # min() and max() as conditionals: each keeps its first argument unless the second is smaller (larger)
+        if (max_b if max_b < max_a else max_a) - (min_b if min_b > min_a else min_a) <= limit:
+            return None  # a gap (or exact touching): apart
+        forwards, backwards = max_a - min_b, max_b - min_a
+        depth = backwards if backwards < forwards else forwards
+        if depth < best_depth:
+            if abs(forwards - backwards) <= TOUCH_TOLERANCE:
+                best_x, best_y = orient_a_to_b(Vector2(ax, ay), pa, pb)
+            elif forwards < backwards:
+                best_x, best_y = ax, ay
+            else:
+                best_x, best_y = -ax, -ay
+            best_depth = depth
+    return (None if best_x is None else Vector2(best_x, best_y)), best_depth
+
+
+def _distinct_xy(points):
+    """The corners _best_edge keeps: each one not equal to the corner before it (or the first, if none is)."""
     distinct, (lx, ly) = [], points[-1]
     for p in points:  # p != the corner before it, as Vector2's == compares (each coordinate within 1e-6)
         ex, ey = p[0] - lx, p[1] - ly
         if not (-SAME_POINT < ex < SAME_POINT and -SAME_POINT < ey < SAME_POINT):
             distinct.append(p)
         lx, ly = p
-    points = distinct or points[:1]
+    return distinct or points[:1]
+
+
+def _best_edge_distinct(points, dx, dy):
+    """_best_edge on (x, y) pairs that _distinct_xy has kept and a direction (dx, dy): (v1, v2, the farthest
+    corner)."""
     n = len(points)
     i, top = 0, points[0][0] * dx + points[0][1] * dy
     for k in range(1, n):  # the first corner farthest along the direction, as max() picks it
@@ -610,40 +743,27 @@ def _best_edge_xy(points, dx, dy):
     return v, after, v
 
 
-def _outward_faces_xy(points):
-    """outward_faces on (x, y) pairs: [(vx, vy, nx, ny), ...], each edge's first corner and outward unit normal."""
-    mx = my = 0.0
-    for x, y in points:  # one addition after another, as sum(points, Vector2()) adds
-        mx += x
-        my += y
-    mx, my = mx / len(points), my / len(points)
-    faces = []
-    for i, (vx, vy) in enumerate(points):
-        wx, wy = points[(i + 1) % len(points)]
-        ex, ey = wx - vx, wy - vy
-        if ex * ex + ey * ey == 0:
-            continue
-        nx, ny = _unit(-ey, ex)
-        if (vx - mx) * nx + (vy - my) * ny < 0:
-            nx, ny = -nx, -ny
-        faces.append((vx, vy, nx, ny))
-    return faces
-
-
 def corner_manifold(pa, pb, normal, margin=0.0):
     """corner_manifold_reference on plain floats (the World's version): the same [(point, depth px), ...]."""
     if READABLE:
         return corner_manifold_reference(pa, pb, normal, margin)
+    return corner_manifold_xy(pa, flat_outline(pa), pb, flat_outline(pb), normal, margin)
+
+
+def corner_manifold_xy(pa, a, pb, b, normal, margin):
+    """corner_manifold with each polygon's FlatOutline worked out already (pa, pb: the same corners, whose
+    objects the answer's points are)."""
     nx, ny = normal
-    xa, xb = _xy(pa), _xy(pb)
     limit = margin - TOUCH_TOLERANCE
     found = []
-    for corners, xy, other, dx, dy in ((pa, xa, xb, -nx, -ny), (pb, xb, xa, nx, ny)):
-        (v1x, v1y), (v2x, v2y), _ = _best_edge_xy(other, dx, dy)
-        fx, fy = _unit(-(v2y - v1y), v2x - v1x)
+    for corners, xy, outline, faces, dx, dy in ((pa, a.xy, b, b.faces, -nx, -ny), (pb, b.xy, a, a.faces, nx, ny)):
+        if outline.regular:
+            (v1x, v1y), (fx, fy) = _best_face(outline, dx, dy)
+        else:
+            (v1x, v1y), (v2x, v2y), _ = _best_edge_distinct(outline.distinct, dx, dy)
+            fx, fy = _unit(-(v2y - v1y), v2x - v1x)
         if fx * dx + fy * dy < 0:
             fx, fy = -fx, -fy  # outward
-        faces = _outward_faces_xy(other)
         for p, (px, py) in zip(corners, xy):
             for vx, vy, ex, ey in faces:  # separation < limit: no face's distance reaches it
                 if (px - vx) * ex + (py - vy) * ey >= limit:
@@ -676,9 +796,15 @@ def clip_manifold(pa, pb, normal, margin=0.0):
     """clip_manifold_reference on plain floats (the World's version): the same [(point, depth px), ...]."""
     if READABLE:
         return clip_manifold_reference(pa, pb, normal, margin)
+    return clip_manifold_xy(pa, _distinct_xy(_xy(pa)), pb, _distinct_xy(_xy(pb)), normal, margin)
+
+
+def clip_manifold_xy(pa, distinct_a, pb, distinct_b, normal, margin):
+    """clip_manifold with each polygon's corners as (x, y) pairs that _distinct_xy has kept (a FlatOutline's
+    `distinct`); pa, pb the same polygons as Vector2, for the rare fallback to the corners rule."""
     nx, ny = normal
-    a1, a2, a_far = _best_edge_xy(_xy(pa), nx, ny)
-    b1, b2, b_far = _best_edge_xy(_xy(pb), -nx, -ny)
+    a1, a2, a_far = _best_edge_distinct(distinct_a, nx, ny)
+    b1, b2, b_far = _best_edge_distinct(distinct_b, -nx, -ny)
     ua, ub = _unit(a2[0] - a1[0], a2[1] - a1[1]), _unit(b2[0] - b1[0], b2[1] - b1[1])
     if abs(ua[0] * nx + ua[1] * ny) <= abs(ub[0] * nx + ub[1] * ny):
         ref1, ref2, ref_far, inc1, inc2, rx, ry = a1, a2, a_far, b1, b2, nx, ny

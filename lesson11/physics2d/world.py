@@ -23,7 +23,7 @@ from itertools import starmap as _starmap
 from . import broadphase, collision, response, sleep
 from .bodies import Body
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
-                      soft_constants)
+                      soft_constants, solve_passes, warm_start_floats)
 from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
                        vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
@@ -463,8 +463,20 @@ class World:
             arbiter.prepare(self, self.warm_starting)
         soft = soft_constants(min(CONTACT_HERTZ, 0.25 / h), DAMPING_RATIO, h)
         use_push = "correction" in self.effects
-        start = {id(body): (body.pos.x, body.pos.y, body.angle) for body in self.bodies}
-        motion = {key: (0.0, 0.0, 1.0, 0.0) for key in start}
+        if not collision.READABLE:  # the same phases with the passes on plain floats (arbiter.solve_passes)
+            self.float_substeps(arbiters, h, soft, use_push)
+        else:
+            self.readable_substeps(arbiters, h, soft, use_push)
+        # 7. restitution, from the approach speeds found in phase 2
+        for _ in range(RESTITUTION_PASSES):
+            for arbiter in arbiters.values():
+                arbiter.bounce(self.resting_speed)
+        self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
+                         for arb in arbiters.values() for c in arb.points]
+
+    def readable_substeps(self, arbiters, h, soft, use_push):
+        """step_accumulated's phases 3 to 6, readable: ReferenceArbiter.solve for each contact, each pass."""
+        start, motion = self.motion_start()
         for _ in range(self.substeps):
             # 3. velocities, then warm start with the accumulated impulses
             self.integrate_velocities(h)
@@ -480,12 +492,91 @@ class World:
             # 6. relax: one pass without the push-out, which takes its speed away
             for arbiter in arbiters.values():
                 arbiter.solve(h, soft, False, motion)
-        # 7. restitution, from the approach speeds found in phase 2
-        for _ in range(RESTITUTION_PASSES):
-            for arbiter in arbiters.values():
-                arbiter.bounce(self.resting_speed)
-        self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
-                         for arb in arbiters.values() for c in arb.points]
+
+    def motion_start(self):
+        """Where body_motion measures from, {id(body): (x, y, angle)} now, and no motion yet (0, 0, 1, 0) each."""
+        start = {id(body): (body.pos.x, body.pos.y, body.angle) for body in self.bodies}
+        return start, {key: (0.0, 0.0, 1.0, 0.0) for key in start}
+
+    def float_substeps(self, arbiters, h, soft, use_push):
+        """readable_substeps on plain floats: every body's position, angle, velocity and spin as lists for the
+        whole step, written back to the bodies at its end; each sub-step's passes run by arbiter.solve_passes.
+
+        Each line computes what the readable phases compute (integrate_velocities, integrate_positions,
+        body_motion, the arbiters' warm_start and solve), in the same order: the same floats. With "sleep"
+        or "ccd" (whose integration is more than x += v h) float_substeps_on_bodies runs instead.
+        """
+        if "sleep" in self.effects or "ccd" in self.effects:
+            return self.float_substeps_on_bodies(arbiters, h, soft, use_push)
+        bodies = self.bodies
+        index = {id(body): k for k, body in enumerate(bodies)}
+        contacts = [(index[id(arbiter.a)], index[id(arbiter.b)], arbiter) for arbiter in arbiters.values()]
+        moving = [k for k, body in enumerate(bodies) if body.inv_mass != 0]
+        x0, y0, angle0 = [body.pos.x for body in bodies], [body.pos.y for body in bodies], [b.angle for b in bodies]
+        x, y, angle = x0[:], y0[:], angle0[:]
+        vx, vy, w = [body.vel.x for body in bodies], [body.vel.y for body in bodies], [b.omega for b in bodies]
+        motion = [(0.0, 0.0, 1.0, 0.0)] * len(bodies)
+        pull = self.gravity * h if "gravity" in self.effects else None  # v += g h, as integrate_velocities adds it
+        rotation = "rotation" in self.effects
+        for _ in range(self.substeps):
+            # 3. velocities, then warm start with the accumulated impulses; 4. solve: `iterations` passes with
+            # the soft push-out (what the passes read is worked out first: the bodies have not moved yet)
+            if pull is not None:
+                for k in moving:
+                    vx[k] += pull.x
+                    vy[k] += pull.y
+            groups = [arbiter.pass_group(ka, kb, motion, h, soft, use_push) for ka, kb, arbiter in contacts]
+            warm_start_floats(groups, vx, vy, w)
+            solve_passes(groups, vx, vy, w, self.iterations)
+            # 5. positions (x += v h, angle += ω h), and each body's motion since phase 2 (for the separations)
+            for k in moving:
+                x[k] += vx[k] * h
+                y[k] += vy[k] * h
+                if rotation:
+                    angle[k] += w[k] * h
+                turned = angle[k] - angle0[k]
+                motion[k] = (x[k] - x0[k], y[k] - y0[k], math.cos(turned), math.sin(turned))
+            # 6. relax: one pass without the push-out, which takes its speed away
+            groups = [arbiter.pass_group(ka, kb, motion, h, soft, False) for ka, kb, arbiter in contacts]
+            solve_passes(groups, vx, vy, w, 1)
+        for k, body in enumerate(bodies):  # back to the bodies: pos in place, as `body.pos += v` changes it
+            body.vel.update(vx[k], vy[k])
+            body.omega = w[k]
+            if body.inv_mass != 0:
+                body.pos.update(x[k], y[k])
+                body.angle = angle[k]
+
+    def float_substeps_on_bodies(self, arbiters, h, soft, use_push):
+        """float_substeps with "sleep" or "ccd": the World's own integration on the bodies each sub-step, the
+        passes on their velocities copied into lists and back."""
+        start, motion = self.motion_start()
+        bodies = self.bodies
+        index = {id(body): k for k, body in enumerate(bodies)}
+        contacts = [(index[id(arbiter.a)], index[id(arbiter.b)], arbiter) for arbiter in arbiters.values()]
+        for _ in range(self.substeps):
+            self.integrate_velocities(h)
+            moved = [motion[id(body)] for body in bodies]
+            groups = [arbiter.pass_group(ka, kb, moved, h, soft, use_push) for ka, kb, arbiter in contacts]
+            self.solve_on_floats(groups, self.iterations, warm_start=True)
+            self.integrate_positions(h)
+            self.body_motion(start, motion)
+            moved = [motion[id(body)] for body in bodies]
+            groups = [arbiter.pass_group(ka, kb, moved, h, soft, False) for ka, kb, arbiter in contacts]
+            self.solve_on_floats(groups, 1)
+
+    def solve_on_floats(self, groups, passes, warm_start=False):
+        """arbiter.solve_passes (after arbiter.warm_start_floats if warm_start) on every body's velocity and spin,
+        copied out of the bodies and back."""
+        bodies = self.bodies
+        vx = [body.vel.x for body in bodies]
+        vy = [body.vel.y for body in bodies]
+        w = [body.omega for body in bodies]
+        if warm_start:
+            warm_start_floats(groups, vx, vy, w)
+        solve_passes(groups, vx, vy, w, passes)
+        for body, x, y, spin in zip(bodies, vx, vy, w):
+            body.vel.update(x, y)
+            body.omega = spin
 
     # ---------------------------------------------------------------- the phases' parts
 
@@ -628,6 +719,9 @@ class World:
         """
         if collision.FAST_PATHS and not speculative and "sleep" not in self.effects:
             yield from _plain_manifolds(self)  # the same search on plain lists (the lab's case)
+            return
+        if collision.FAST_PATHS and not collision.READABLE and speculative and "sleep" not in self.effects:
+            yield from _speculative_manifolds(self, speculative)  # the reference solver's search on floats
             return
         bodies = self.bodies
         sleep = "sleep" in self.effects
@@ -793,6 +887,68 @@ def _plain_manifolds(world):
     finally:
         world.counters["narrow_tests"] += narrow
         world.counters["contacts"] += contacts
+
+
+def _speculative_manifolds(world, dt):
+    """World.manifolds(speculative=dt) without "sleep", polygons on plain floats: the same pairs and manifolds.
+
+    Each polygon's corners become (x, y) pairs once per search, with their edge
+    normals, shadows and outward faces (collision.flat_outline), worked out on
+    first use; a polygon pair goes to collision.sat_xy and corner_manifold_xy
+    (or clip_manifold), the float forms of sat and corner_manifold that collide()
+    calls with a margin. Other pairs go through collision.collide. The reference is
+    the rest of manifolds(), which readable_versions() runs.
+    """
+    bodies = world.bodies
+    moving = [body.inv_mass != 0 for body in bodies]
+    if True not in moving:
+        return
+    points = [body.world_points() for body in bodies]
+    flat = [None] * len(bodies)  # polygon k: its collision.FlatOutline, on first use
+    boxes = []
+    for body, corners in zip(bodies, points):
+        boxes.append(_polygon_box(corners) if body.shape.kind == "polygon" else body.aabb(corners))
+    reach = [world.reach(body, dt) for body in bodies]
+    base = SPECULATIVE_MARGIN
+    search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
+    pairs, tested = search(boxes, moving, reach, base, boxes)
+    world.counters["pair_tests"] += tested
+    rule = world.contact_rule
+    narrow = contacts = 0
+    try:
+        for i, j in pairs:
+            a, b = bodies[i], bodies[j]
+            narrow += 1
+            margin = base + reach[i] + reach[j]  # broadphase.pair_margin
+            if a.shape.kind == "polygon" and b.shape.kind == "polygon":
+                manifold = _polygon_manifold(points, flat, i, j, rule, margin)
+            else:
+                manifold = collision.collide(a, b, points[i], points[j], rule, world.sat, margin,
+                                             world.circle_polygon, world.circle_point)
+            if manifold is None:
+                continue
+            contacts += len(manifold.points)
+            yield a, b, manifold
+    finally:
+        world.counters["narrow_tests"] += narrow
+        world.counters["contacts"] += contacts
+
+
+def _polygon_manifold(points, flat, i, j, rule, margin):
+    """collision.collide's polygon pair with a margin, on the floats of _speculative_manifolds: a Manifold or None."""
+    pa, pb = points[i], points[j]
+    a = flat[i] = flat[i] or collision.flat_outline(pa)
+    b = flat[j] = flat[j] or collision.flat_outline(pb)
+    hit = collision.sat_xy(pa, a, pb, b, margin)
+    if hit is None:
+        return None
+    normal, depth = hit
+    if rule == "clip":
+        pairs = collision.clip_manifold_xy(pa, a.distinct, pb, b.distinct, normal, margin)
+    else:
+        pairs = (collision.corner_manifold_xy(pa, a, pb, b, normal, margin)
+                 or [(p, depth) for p in collision.contact_points(pa, pb, normal)])
+    return collision.Manifold(normal, depth, [p for p, _ in pairs], [d for _, d in pairs])
 
 
 def _polygon_box(corners):
