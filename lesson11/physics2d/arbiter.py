@@ -304,6 +304,15 @@ class Arbiter(ReferenceArbiter):
                     c.ra, c.rb = Vector2(rax, ray), Vector2(rbx, rby)
         super().bounce(resting_speed)
 
+    def bounces(self, resting_speed):
+        """Whether bounce() changes anything: restitution, and a point that approached faster than resting_speed
+        and pushed (what bounce reads of them does not change between its passes)."""
+        if self.restitution != 0:
+            for c in self.points:
+                if c.approach < -resting_speed and c.max_normal_impulse != 0:
+                    return True
+        return False
+
     def pass_rows(self, motion_a, motion_b, h, soft, use_bias):
         """What each pass of a sub-step reads, per point: (point, rax, ray, rbx, rby, bias px/s, -mass_n × the
         mass scale, the impulse scale, mass_t), from the separation s as ReferenceArbiter.separation works it

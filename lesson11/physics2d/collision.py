@@ -764,12 +764,8 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
             fx, fy = _unit(-(v2y - v1y), v2x - v1x)
         if fx * dx + fy * dy < 0:
             fx, fy = -fx, -fy  # outward
-        for p, (px, py) in zip(corners, xy):
-            for vx, vy, ex, ey in faces:  # separation < limit: no face's distance reaches it
-                if (px - vx) * ex + (py - vy) * ey >= limit:
-                    break
-            else:
-                found.append((p, -((px - v1x) * fx + (py - v1y) * fy), px, py))
+        for p, px, py in _within_faces(corners, xy, faces, limit):
+            found.append((p, -((px - v1x) * fx + (py - v1y) * fy), px, py))
     found.sort(key=lambda pd: -pd[1])  # stable: ties keep their order
     if not found:
         return []
@@ -780,6 +776,24 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
             kept.append((p, depth))
             break
     return kept
+
+
+def _within_faces(corners, xy, faces, limit):
+    """[(p, px, py), ...] for each corner (p, and its (px, py) in xy) whose separation from every face
+    (vx, vy, nx, ny) is less than limit px: (p - v)·n < limit, in the faces' order (a box's four unrolled)."""
+    if len(faces) != 4:
+        within = []
+        for p, (px, py) in zip(corners, xy):
+            for vx, vy, ex, ey in faces:
+                if (px - vx) * ex + (py - vy) * ey >= limit:
+                    break
+            else:
+                within.append((p, px, py))
+        return within
+    (ax, ay, aex, aey), (bx, by, bex, bey), (cx, cy, cex, cey), (dx, dy, dex, dey) = faces
+    return [(p, px, py) for p, (px, py) in zip(corners, xy)  # `not >=`: as the loop's break reads it
+            if not (px - ax) * aex + (py - ay) * aey >= limit and not (px - bx) * bex + (py - by) * bey >= limit
+            and not (px - cx) * cex + (py - cy) * cey >= limit and not (px - dx) * dex + (py - dy) * dey >= limit]
 
 
 def _clip_xy(v1, v2, dx, dy, offset):

@@ -468,8 +468,11 @@ class World:
         else:
             self.readable_substeps(arbiters, h, soft, use_push)
         # 7. restitution, from the approach speeds found in phase 2
+        #    (the float version passes over the contacts whose bounce would change nothing)
+        bouncing = (arbiters.values() if collision.READABLE
+                    else [arbiter for arbiter in arbiters.values() if arbiter.bounces(self.resting_speed)])
         for _ in range(RESTITUTION_PASSES):
-            for arbiter in arbiters.values():
+            for arbiter in bouncing:
                 arbiter.bounce(self.resting_speed)
         self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
                          for arb in arbiters.values() for c in arb.points]
