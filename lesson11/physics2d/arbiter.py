@@ -65,7 +65,7 @@ def soft_constants(hertz, damping_ratio, h):
 
 class ContactPoint:
     """One persistent contact point and the impulses accumulated on it (mass·px/s)."""
-    __slots__ = ("point", "depth", "local_a", "normal_impulse", "friction_impulse", "ra", "rb", "anchors",
+    __slots__ = ("point", "depth", "local_a", "local_xy", "normal_impulse", "friction_impulse", "ra", "rb", "anchors",
                  "mass_normal", "mass_tangent", "approach", "max_normal_impulse")
 
     def __init__(self, point, depth, local_a):
@@ -244,11 +244,11 @@ class Arbiter(ReferenceArbiter):
         pos, turn = self.a.pos, -self.a.angle
         for point, depth in zip(manifold.points, manifold.depths):
             local_a = (point - pos).rotate_rad(turn)  # pygame's rotation, as the reference (exact quarter turns)
-            lx, ly = local_a
             contact = ContactPoint(point, depth, local_a)
+            lx, ly = contact.local_xy = local_a.x, local_a.y  # local_a's floats, for the next step's matching
             nearest, match = math.inf, None
             for c in old:  # the first nearest, as min() picks it
-                ox, oy = c.local_a
+                ox, oy = c.local_xy
                 dx, dy = ox - lx, oy - ly
                 distance_squared = dx * dx + dy * dy
                 if distance_squared < nearest:

@@ -12,6 +12,7 @@ import contextlib
 import math
 from collections import namedtuple
 from math import sqrt
+from operator import itemgetter
 
 from . import vectors
 from .shapes import WorldPoints
@@ -634,13 +635,15 @@ _best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no ze
 is edge i's (corner i to i + 1) and _best_face can read it."""
 
 
-def flat_outline(points):
-    """The FlatOutline of a polygon's world corners (Vector2, px), in one pass over the edges.
+def flat_outline(points, xy=None):
+    """The FlatOutline of a polygon's world corners (Vector2, px; xy: the same as (x, y) pairs, if made already),
+    in one pass over the edges.
 
     Each normal is _unit(-e.y, e.x) written out ((-e.y)² is e.y², the same float), each face the normal
     turned outward as _outward_faces_xy turns it (about the mean of the corners, added up in order).
     """
-    xy = [(p.x, p.y) for p in points]
+    if xy is None:
+        xy = [(p.x, p.y) for p in points]
     n = len(xy)
     mx = my = 0.0
     for x, y in xy:  # one addition after another, as sum(points, Vector2()) adds
@@ -750,6 +753,9 @@ def corner_manifold(pa, pb, normal, margin=0.0):
     return corner_manifold_xy(pa, flat_outline(pa), pb, flat_outline(pb), normal, margin)
 
 
+_depth = itemgetter(1)
+
+
 def corner_manifold_xy(pa, a, pb, b, normal, margin):
     """corner_manifold with each polygon's FlatOutline worked out already (pa, pb: the same corners, whose
     objects the answer's points are)."""
@@ -766,7 +772,7 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
             fx, fy = -fx, -fy  # outward
         for p, px, py in _within_faces(corners, xy, faces, limit):
             found.append((p, -((px - v1x) * fx + (py - v1y) * fy), px, py))
-    found.sort(key=lambda pd: -pd[1])  # stable: ties keep their order
+    found.sort(key=_depth, reverse=True)  # deepest first; stable (reverse too): ties keep their order
     if not found:
         return []
     kept = [found[0][:2]]

@@ -547,7 +547,11 @@ class World:
             body.omega = w[k]
             if body.inv_mass != 0:
                 body.pos.update(x[k], y[k])
-                body.angle = angle[k]
+                turned = angle[k]
+                if type(body) is Body and -math.inf < turned < math.inf:
+                    body._angle = turned  # what the angle setter keeps of a finite float (as _move_bodies)
+                else:
+                    body.angle = turned  # the setter's check, and its one-line error
 
     def float_substeps_on_bodies(self, arbiters, h, soft, use_push):
         """float_substeps with "sleep" or "ccd": the World's own integration on the bodies each sub-step, the
@@ -906,12 +910,19 @@ def _speculative_manifolds(world, dt):
     moving = [body.inv_mass != 0 for body in bodies]
     if True not in moving:
         return
-    points = [body.world_points() for body in bodies]
+    points, xy, boxes = [], [], []  # each body's world points; a polygon's also as (x, y) pairs
+    for body in bodies:
+        if body.shape.kind == "polygon":
+            corners = _world_corners(body)
+            pairs = [(p.x, p.y) for p in corners]
+            boxes.append(_polygon_box(pairs if len(pairs) == 4 else corners))  # the same floats either way
+        else:
+            corners, pairs = body.world_points(), None
+            boxes.append(body.aabb(corners))
+        points.append(corners)
+        xy.append(pairs)
     flat = [None] * len(bodies)  # polygon k: its collision.FlatOutline, on first use
-    boxes = []
-    for body, corners in zip(bodies, points):
-        boxes.append(_polygon_box(corners) if body.shape.kind == "polygon" else body.aabb(corners))
-    reach = [world.reach(body, dt) for body in bodies]
+    reach = _reaches(world, dt)
     base = SPECULATIVE_MARGIN
     search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
     pairs, tested = search(boxes, moving, reach, base, boxes)
@@ -924,7 +935,7 @@ def _speculative_manifolds(world, dt):
             narrow += 1
             margin = base + reach[i] + reach[j]  # broadphase.pair_margin
             if a.shape.kind == "polygon" and b.shape.kind == "polygon":
-                manifold = _polygon_manifold(points, flat, i, j, rule, margin)
+                manifold = _polygon_manifold(points, xy, flat, i, j, rule, margin)
             else:
                 manifold = collision.collide(a, b, points[i], points[j], rule, world.sat, margin,
                                              world.circle_polygon, world.circle_point)
@@ -937,11 +948,30 @@ def _speculative_manifolds(world, dt):
         world.counters["contacts"] += contacts
 
 
-def _polygon_manifold(points, flat, i, j, rule, margin):
+def _world_corners(body):
+    """body.world_points() of a polygon, with pos and angle read once (not once per corner) for a body that does
+    not override world_points: the same floats."""
+    if type(body).world_points is not _body_world_points:
+        return body.world_points()
+    pos, angle = body.pos, body.angle
+    return WorldPoints([pos + p.rotate_rad(angle) for p in body.shape.points])
+
+
+def _reaches(world, dt):
+    """[world.reach(body, dt) for body in world.bodies], |g| dt worked out once for World's own reach: the same
+    floats."""
+    if type(world).reach is not World.reach:
+        return [world.reach(body, dt) for body in world.bodies]
+    fall = world.gravity.length() * dt
+    return [0.0 if body.inv_mass == 0 else (body.vel.length() + fall + abs(body.omega) * body.shape.radius) * dt
+            for body in world.bodies]
+
+
+def _polygon_manifold(points, xy, flat, i, j, rule, margin):
     """collision.collide's polygon pair with a margin, on the floats of _speculative_manifolds: a Manifold or None."""
     pa, pb = points[i], points[j]
-    a = flat[i] = flat[i] or collision.flat_outline(pa)
-    b = flat[j] = flat[j] or collision.flat_outline(pb)
+    a = flat[i] = flat[i] or collision.flat_outline(pa, xy[i])
+    b = flat[j] = flat[j] or collision.flat_outline(pb, xy[j])
     hit = collision.sat_xy(pa, a, pb, b, margin)
     if hit is None:
         return None
