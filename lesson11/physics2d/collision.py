@@ -763,6 +763,9 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
     limit = margin - TOUCH_TOLERANCE
     found = []
     for corners, xy, outline, faces, dx, dy in ((pa, a.xy, b, b.faces, -nx, -ny), (pb, b.xy, a, a.faces, nx, ny)):
+        within = _within_faces(corners, xy, faces, limit)
+        if not within and outline.regular:
+            continue  # no corner to measure from the face: skip _best_face (which has no other effect)
         if outline.regular:
             (v1x, v1y), (fx, fy) = _best_face(outline, dx, dy)
         else:
@@ -770,7 +773,7 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
             fx, fy = _unit(-(v2y - v1y), v2x - v1x)
         if fx * dx + fy * dy < 0:
             fx, fy = -fx, -fy  # outward
-        for p, px, py in _within_faces(corners, xy, faces, limit):
+        for p, px, py in within:
             found.append((p, -((px - v1x) * fx + (py - v1y) * fy), px, py))
     found.sort(key=_depth, reverse=True)  # deepest first; stable (reverse too): ties keep their order
     if not found:
