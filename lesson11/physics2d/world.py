@@ -23,7 +23,7 @@ from itertools import starmap as _starmap
 from . import broadphase, collision, response, sleep
 from .bodies import Body
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
-                      soft_constants, solve_passes, warm_start_floats)
+                      pass_groups, soft_constants, solve_passes, warm_start_floats)
 from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
                        vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
@@ -528,7 +528,7 @@ class World:
                 for k in moving:
                     vx[k] += pull.x
                     vy[k] += pull.y
-            groups = [arbiter.pass_group(ka, kb, motion, h, soft, use_push) for ka, kb, arbiter in contacts]
+            groups = pass_groups(contacts, motion, h, soft, use_push)
             warm_start_floats(groups, vx, vy, w)
             solve_passes(groups, vx, vy, w, self.iterations)
             # 5. positions (x += v h, angle += ω h), and each body's motion since phase 2 (for the separations)
@@ -540,7 +540,7 @@ class World:
                 turned = angle[k] - angle0[k]
                 motion[k] = (x[k] - x0[k], y[k] - y0[k], math.cos(turned), math.sin(turned))
             # 6. relax: one pass without the push-out, which takes its speed away
-            groups = [arbiter.pass_group(ka, kb, motion, h, soft, False) for ka, kb, arbiter in contacts]
+            groups = pass_groups(contacts, motion, h, soft, False)
             solve_passes(groups, vx, vy, w, 1)
         for k, body in enumerate(bodies):  # back to the bodies: pos in place, as `body.pos += v` changes it
             body.vel.update(vx[k], vy[k])
@@ -563,12 +563,12 @@ class World:
         for _ in range(self.substeps):
             self.integrate_velocities(h)
             moved = [motion[id(body)] for body in bodies]
-            groups = [arbiter.pass_group(ka, kb, moved, h, soft, use_push) for ka, kb, arbiter in contacts]
+            groups = pass_groups(contacts, moved, h, soft, use_push)
             self.solve_on_floats(groups, self.iterations, warm_start=True)
             self.integrate_positions(h)
             self.body_motion(start, motion)
             moved = [motion[id(body)] for body in bodies]
-            groups = [arbiter.pass_group(ka, kb, moved, h, soft, False) for ka, kb, arbiter in contacts]
+            groups = pass_groups(contacts, moved, h, soft, False)
             self.solve_on_floats(groups, 1)
 
     def solve_on_floats(self, groups, passes, warm_start=False):
