@@ -65,7 +65,7 @@ def soft_constants(hertz, damping_ratio, h):
 
 class ContactPoint:
     """One persistent contact point and the impulses accumulated on it (mass·px/s)."""
-    __slots__ = ("point", "depth", "local_a", "normal_impulse", "friction_impulse", "ra", "rb", "anchors",
+    __slots__ = ("point", "depth", "local_a", "local_xy", "normal_impulse", "friction_impulse", "ra", "rb", "anchors",
                  "mass_normal", "mass_tangent", "approach", "max_normal_impulse")
 
     def __init__(self, point, depth, local_a):
@@ -230,7 +230,7 @@ class Arbiter(ReferenceArbiter):
     the last bit; only the Vector2 objects and calls are gone from the loops.
     The bodies do not move between the passes of one sub-step, so what each
     point's passes read (separation, bias, scaled mass) is worked out once per
-    sub-step (pass_group), and solve_passes runs every contact's passes (after
+    sub-step (pass_groups), and solve_passes runs every contact's passes (after
     warm_start_floats) on the bodies' velocities as plain lists (World.step_accumulated).
     solve and bounce are the reference's (bounce with the anchors made Vector2
     where it reads them; warm_start, which reads them at every point, is not
@@ -244,11 +244,11 @@ class Arbiter(ReferenceArbiter):
         pos, turn = self.a.pos, -self.a.angle
         for point, depth in zip(manifold.points, manifold.depths):
             local_a = (point - pos).rotate_rad(turn)  # pygame's rotation, as the reference (exact quarter turns)
-            lx, ly = local_a
             contact = ContactPoint(point, depth, local_a)
+            lx, ly = contact.local_xy = local_a.x, local_a.y  # local_a's floats, for the next step's matching
             nearest, match = math.inf, None
             for c in old:  # the first nearest, as min() picks it
-                ox, oy = c.local_a
+                ox, oy = c.local_xy
                 dx, dy = ox - lx, oy - ly
                 distance_squared = dx * dx + dy * dy
                 if distance_squared < nearest:
@@ -304,16 +304,34 @@ class Arbiter(ReferenceArbiter):
                     c.ra, c.rb = Vector2(rax, ray), Vector2(rbx, rby)
         super().bounce(resting_speed)
 
-    def pass_rows(self, motion_a, motion_b, h, soft, use_bias):
-        """What each pass of a sub-step reads, per point: (point, rax, ray, rbx, rby, bias px/s, -mass_n × the
-        mass scale, the impulse scale, mass_t), from the separation s as ReferenceArbiter.separation works it
-        out and the bias solve() picks for it (the bodies do not move between the passes of a sub-step)."""
-        dax, day, ca, sa = motion_a
-        dbx, dby, cb, sb = motion_b
-        nx, ny = self.normal
-        bias_rate, soft_mass, soft_impulse = soft
+    def bounces(self, resting_speed):
+        """Whether bounce() changes anything: restitution, and a point that approached faster than resting_speed
+        and pushed (what bounce reads of them does not change between its passes)."""
+        if self.restitution != 0:
+            for c in self.points:
+                if c.approach < -resting_speed and c.max_normal_impulse != 0:
+                    return True
+        return False
+
+
+def pass_groups(contacts, motion, h, soft, use_bias):
+    """What solve_passes reads of each contact for one sub-step's passes, [(ka, kb, nx, ny, 1/mA, 1/IA, 1/mB, 1/IB,
+    μ, rows), ...] for contacts = [(ka, kb, arbiter), ...] (ka and kb: A's and B's places in solve_passes' lists
+    and in motion, a list of each body's (dx, dy, cos Δθ, sin Δθ) as ReferenceArbiter.separation reads it).
+
+    rows has, per point, (point, rax, ray, rbx, rby, bias px/s, -mass_n × the mass scale, the impulse scale,
+    mass_t), from the separation s as separation() works it out and the bias solve() picks for it (the bodies
+    do not move between the passes of a sub-step).
+    """
+    bias_rate, soft_mass, soft_impulse = soft
+    groups = []
+    for ka, kb, arbiter in contacts:
+        a, b = arbiter.a, arbiter.b
+        nx, ny = arbiter.normal
+        dax, day, ca, sa = motion[ka]
+        dbx, dby, cb, sb = motion[kb]
         rows = []
-        for c in self.points:
+        for c in arbiter.points:
             rax, ray, rbx, rby = c.anchors
             mx = (dbx + cb * rbx - sb * rby - rbx) - (dax + ca * rax - sa * ray - rax)
             my = (dby + sb * rbx + cb * rby - rby) - (day + sa * rax + ca * ray - ray)
@@ -328,16 +346,8 @@ class Arbiter(ReferenceArbiter):
             else:
                 bias, mass_scale, impulse_scale = 0.0, 1.0, 0.0
             rows.append((c, rax, ray, rbx, rby, bias, -c.mass_normal * mass_scale, impulse_scale, c.mass_tangent))
-        return rows
-
-    def pass_group(self, ka, kb, motion, h, soft, use_bias):
-        """What solve_passes reads of this contact for one sub-step's passes: (ka, kb, nx, ny, 1/mA, 1/IA, 1/mB,
-        1/IB, μ, pass_rows), ka and kb being A's and B's places in solve_passes' lists and in motion (a list of
-        each body's (dx, dy, cos Δθ, sin Δθ), as separation() reads it)."""
-        a, b = self.a, self.b
-        nx, ny = self.normal
-        rows = self.pass_rows(motion[ka], motion[kb], h, soft, use_bias)
-        return ka, kb, nx, ny, a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia, self.mu, rows
+        groups.append((ka, kb, nx, ny, a.inv_mass, a.inv_inertia, b.inv_mass, b.inv_inertia, arbiter.mu, rows))
+    return groups
 
 
 def warm_start_floats(groups, vx, vy, w):
@@ -358,7 +368,7 @@ def warm_start_floats(groups, vx, vy, w):
 def solve_passes(groups, vx, vy, w, passes):
     """ReferenceArbiter.solve for every contact, `passes` times over, on plain floats: the same impulses and velocities.
 
-    groups: each arbiter's pass_group, in the World's order; vx, vy, w: every
+    groups: pass_groups' answer, in the World's order; vx, vy, w: every
     body's velocity (px/s) and spin (rad/s) as lists, read and written in place
     (the World copies them from the bodies and back: between two contacts'
     solves a body's velocity is the same float either way). Each line computes

@@ -12,6 +12,7 @@ import contextlib
 import math
 from collections import namedtuple
 from math import sqrt
+from operator import itemgetter
 
 from . import vectors
 from .shapes import WorldPoints
@@ -634,13 +635,15 @@ _best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no ze
 is edge i's (corner i to i + 1) and _best_face can read it."""
 
 
-def flat_outline(points):
-    """The FlatOutline of a polygon's world corners (Vector2, px), in one pass over the edges.
+def flat_outline(points, xy=None):
+    """The FlatOutline of a polygon's world corners (Vector2, px; xy: the same as (x, y) pairs, if made already),
+    in one pass over the edges.
 
     Each normal is _unit(-e.y, e.x) written out ((-e.y)² is e.y², the same float), each face the normal
     turned outward as _outward_faces_xy turns it (about the mean of the corners, added up in order).
     """
-    xy = [(p.x, p.y) for p in points]
+    if xy is None:
+        xy = [(p.x, p.y) for p in points]
     n = len(xy)
     mx = my = 0.0
     for x, y in xy:  # one addition after another, as sum(points, Vector2()) adds
@@ -750,6 +753,9 @@ def corner_manifold(pa, pb, normal, margin=0.0):
     return corner_manifold_xy(pa, flat_outline(pa), pb, flat_outline(pb), normal, margin)
 
 
+_depth = itemgetter(1)
+
+
 def corner_manifold_xy(pa, a, pb, b, normal, margin):
     """corner_manifold with each polygon's FlatOutline worked out already (pa, pb: the same corners, whose
     objects the answer's points are)."""
@@ -757,6 +763,9 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
     limit = margin - TOUCH_TOLERANCE
     found = []
     for corners, xy, outline, faces, dx, dy in ((pa, a.xy, b, b.faces, -nx, -ny), (pb, b.xy, a, a.faces, nx, ny)):
+        within = _within_faces(corners, xy, faces, limit)
+        if not within and outline.regular:
+            continue  # no corner to measure from the face: skip _best_face (which has no other effect)
         if outline.regular:
             (v1x, v1y), (fx, fy) = _best_face(outline, dx, dy)
         else:
@@ -764,13 +773,9 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
             fx, fy = _unit(-(v2y - v1y), v2x - v1x)
         if fx * dx + fy * dy < 0:
             fx, fy = -fx, -fy  # outward
-        for p, (px, py) in zip(corners, xy):
-            for vx, vy, ex, ey in faces:  # separation < limit: no face's distance reaches it
-                if (px - vx) * ex + (py - vy) * ey >= limit:
-                    break
-            else:
-                found.append((p, -((px - v1x) * fx + (py - v1y) * fy), px, py))
-    found.sort(key=lambda pd: -pd[1])  # stable: ties keep their order
+        for p, px, py in within:
+            found.append((p, -((px - v1x) * fx + (py - v1y) * fy), px, py))
+    found.sort(key=_depth, reverse=True)  # deepest first; stable (reverse too): ties keep their order
     if not found:
         return []
     kept = [found[0][:2]]
@@ -780,6 +785,24 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
             kept.append((p, depth))
             break
     return kept
+
+
+def _within_faces(corners, xy, faces, limit):
+    """[(p, px, py), ...] for each corner (p, and its (px, py) in xy) whose separation from every face
+    (vx, vy, nx, ny) is less than limit px: (p - v)·n < limit, in the faces' order (a box's four unrolled)."""
+    if len(faces) != 4:
+        within = []
+        for p, (px, py) in zip(corners, xy):
+            for vx, vy, ex, ey in faces:
+                if (px - vx) * ex + (py - vy) * ey >= limit:
+                    break
+            else:
+                within.append((p, px, py))
+        return within
+    (ax, ay, aex, aey), (bx, by, bex, bey), (cx, cy, cex, cey), (dx, dy, dex, dey) = faces
+    return [(p, px, py) for p, (px, py) in zip(corners, xy)  # `not >=`: as the loop's break reads it
+            if not (px - ax) * aex + (py - ay) * aey >= limit and not (px - bx) * bex + (py - by) * bey >= limit
+            and not (px - cx) * cex + (py - cy) * cey >= limit and not (px - dx) * dex + (py - dy) * dey >= limit]
 
 
 def _clip_xy(v1, v2, dx, dy, offset):

@@ -23,7 +23,7 @@ from itertools import starmap as _starmap
 from . import broadphase, collision, response, sleep
 from .bodies import Body
 from .arbiter import (CONTACT_HERTZ, DAMPING_RATIO, RESTITUTION_PASSES, SPECULATIVE_MARGIN, Arbiter,
-                      soft_constants, solve_passes, warm_start_floats)
+                      pass_groups, soft_constants, solve_passes, warm_start_floats)
 from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, positive_seconds, setting,
                        vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
@@ -468,8 +468,11 @@ class World:
         else:
             self.readable_substeps(arbiters, h, soft, use_push)
         # 7. restitution, from the approach speeds found in phase 2
+        #    (the float version passes over the contacts whose bounce would change nothing)
+        bouncing = (arbiters.values() if collision.READABLE
+                    else [arbiter for arbiter in arbiters.values() if arbiter.bounces(self.resting_speed)])
         for _ in range(RESTITUTION_PASSES):
-            for arbiter in arbiters.values():
+            for arbiter in bouncing:
                 arbiter.bounce(self.resting_speed)
         self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
                          for arb in arbiters.values() for c in arb.points]
@@ -525,7 +528,7 @@ class World:
                 for k in moving:
                     vx[k] += pull.x
                     vy[k] += pull.y
-            groups = [arbiter.pass_group(ka, kb, motion, h, soft, use_push) for ka, kb, arbiter in contacts]
+            groups = pass_groups(contacts, motion, h, soft, use_push)
             warm_start_floats(groups, vx, vy, w)
             solve_passes(groups, vx, vy, w, self.iterations)
             # 5. positions (x += v h, angle += ω h), and each body's motion since phase 2 (for the separations)
@@ -537,14 +540,18 @@ class World:
                 turned = angle[k] - angle0[k]
                 motion[k] = (x[k] - x0[k], y[k] - y0[k], math.cos(turned), math.sin(turned))
             # 6. relax: one pass without the push-out, which takes its speed away
-            groups = [arbiter.pass_group(ka, kb, motion, h, soft, False) for ka, kb, arbiter in contacts]
+            groups = pass_groups(contacts, motion, h, soft, False)
             solve_passes(groups, vx, vy, w, 1)
         for k, body in enumerate(bodies):  # back to the bodies: pos in place, as `body.pos += v` changes it
             body.vel.update(vx[k], vy[k])
             body.omega = w[k]
             if body.inv_mass != 0:
                 body.pos.update(x[k], y[k])
-                body.angle = angle[k]
+                turned = angle[k]
+                if type(body) is Body and -math.inf < turned < math.inf:
+                    body._angle = turned  # what the angle setter keeps of a finite float (as _move_bodies)
+                else:
+                    body.angle = turned  # the setter's check, and its one-line error
 
     def float_substeps_on_bodies(self, arbiters, h, soft, use_push):
         """float_substeps with "sleep" or "ccd": the World's own integration on the bodies each sub-step, the
@@ -556,12 +563,12 @@ class World:
         for _ in range(self.substeps):
             self.integrate_velocities(h)
             moved = [motion[id(body)] for body in bodies]
-            groups = [arbiter.pass_group(ka, kb, moved, h, soft, use_push) for ka, kb, arbiter in contacts]
+            groups = pass_groups(contacts, moved, h, soft, use_push)
             self.solve_on_floats(groups, self.iterations, warm_start=True)
             self.integrate_positions(h)
             self.body_motion(start, motion)
             moved = [motion[id(body)] for body in bodies]
-            groups = [arbiter.pass_group(ka, kb, moved, h, soft, False) for ka, kb, arbiter in contacts]
+            groups = pass_groups(contacts, moved, h, soft, False)
             self.solve_on_floats(groups, 1)
 
     def solve_on_floats(self, groups, passes, warm_start=False):
@@ -903,12 +910,19 @@ def _speculative_manifolds(world, dt):
     moving = [body.inv_mass != 0 for body in bodies]
     if True not in moving:
         return
-    points = [body.world_points() for body in bodies]
+    points, xy, boxes = [], [], []  # each body's world points; a polygon's also as (x, y) pairs
+    for body in bodies:
+        if body.shape.kind == "polygon":
+            corners = _world_corners(body)
+            pairs = [(p.x, p.y) for p in corners]
+            boxes.append(_polygon_box(pairs if len(pairs) == 4 else corners))  # the same floats either way
+        else:
+            corners, pairs = body.world_points(), None
+            boxes.append(body.aabb(corners))
+        points.append(corners)
+        xy.append(pairs)
     flat = [None] * len(bodies)  # polygon k: its collision.FlatOutline, on first use
-    boxes = []
-    for body, corners in zip(bodies, points):
-        boxes.append(_polygon_box(corners) if body.shape.kind == "polygon" else body.aabb(corners))
-    reach = [world.reach(body, dt) for body in bodies]
+    reach = _reaches(world, dt)
     base = SPECULATIVE_MARGIN
     search = broadphase.all_pairs if world.broad_phase == "all-pairs" else broadphase.sweep_and_prune
     pairs, tested = search(boxes, moving, reach, base, boxes)
@@ -921,7 +935,7 @@ def _speculative_manifolds(world, dt):
             narrow += 1
             margin = base + reach[i] + reach[j]  # broadphase.pair_margin
             if a.shape.kind == "polygon" and b.shape.kind == "polygon":
-                manifold = _polygon_manifold(points, flat, i, j, rule, margin)
+                manifold = _polygon_manifold(points, xy, flat, i, j, rule, margin)
             else:
                 manifold = collision.collide(a, b, points[i], points[j], rule, world.sat, margin,
                                              world.circle_polygon, world.circle_point)
@@ -934,11 +948,30 @@ def _speculative_manifolds(world, dt):
         world.counters["contacts"] += contacts
 
 
-def _polygon_manifold(points, flat, i, j, rule, margin):
+def _world_corners(body):
+    """body.world_points() of a polygon, with pos and angle read once (not once per corner) for a body that does
+    not override world_points: the same floats."""
+    if type(body).world_points is not _body_world_points:
+        return body.world_points()
+    pos, angle = body.pos, body.angle
+    return WorldPoints([pos + p.rotate_rad(angle) for p in body.shape.points])
+
+
+def _reaches(world, dt):
+    """[world.reach(body, dt) for body in world.bodies], |g| dt worked out once for World's own reach: the same
+    floats."""
+    if type(world).reach is not World.reach:
+        return [world.reach(body, dt) for body in world.bodies]
+    fall = world.gravity.length() * dt
+    return [0.0 if body.inv_mass == 0 else (body.vel.length() + fall + abs(body.omega) * body.shape.radius) * dt
+            for body in world.bodies]
+
+
+def _polygon_manifold(points, xy, flat, i, j, rule, margin):
     """collision.collide's polygon pair with a margin, on the floats of _speculative_manifolds: a Manifold or None."""
     pa, pb = points[i], points[j]
-    a = flat[i] = flat[i] or collision.flat_outline(pa)
-    b = flat[j] = flat[j] or collision.flat_outline(pb)
+    a = flat[i] = flat[i] or collision.flat_outline(pa, xy[i])
+    b = flat[j] = flat[j] or collision.flat_outline(pb, xy[j])
     hit = collision.sat_xy(pa, a, pb, b, margin)
     if hit is None:
         return None
