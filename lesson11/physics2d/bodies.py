@@ -110,8 +110,10 @@ class Body:
     apply_impulse sets each of them at every contact point in every pass
     (about 6,700 sets a step in the lab's 12-crate pile), and checking each
     set made the lab's step 1.29 times as long (lesson11/bench/README.md,
-    "physics2d's choices, measured"). World.add() and the end of every step
-    check that they are finite, naming the body and the time.
+    "physics2d's choices, measured"). Instead World.add() checks them, the
+    start of every step checks each body's vel and omega (World.check_motion,
+    one line naming the body and the field), and the end of every step checks
+    that the step left every body finite.
 
     >>> from lesson11.physics2d import Body, box_points
     >>> crate = Body(box_points(40, 40), (100, 100), mass=2)

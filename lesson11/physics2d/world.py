@@ -28,7 +28,7 @@ from .settings import (at_least_zero, effect_set, flag, fraction, hook, one_of, 
                        vector, whole_number)
 from .sleep import SLEEP_AFTER, SLEEP_SPEED, SLEEP_SPIN  # noqa: F401 (World's defaults, importable from here)
 from .shapes import WorldPoints
-from .vectors import Vector2, finite_number
+from .vectors import Vector2, finite_number, finite_vector
 
 GRAVITY = Vector2(0, 980)  # px/s², the course's gravity (y down)
 STEP = 1 / 120             # s, the course's fixed physics step
@@ -357,6 +357,7 @@ class World:
         a ValueError if any body ends the step with a non-finite state.
         """
         dt = self.step_seconds if dt is None else positive_seconds("step dt")(self, dt)
+        self.check_motion()
         if self.solver == "accumulated":
             self.step_accumulated(dt)
         elif self.order == "solve-first":
@@ -364,6 +365,20 @@ class World:
         else:
             self.step_move_first(dt)
         self.end_step(dt)
+
+    def check_motion(self):
+        """Check every body's vel (a Vector2 of finite px/s) and omega (a finite number of rad/s) once a step.
+
+        They are plain attributes, not checked settings (bodies.py says why), so a
+        bad value set between steps is caught here, in one line naming the body:
+        a pair such as (3, 4) becomes a Vector2, anything else is a ValueError.
+        """
+        for index, body in enumerate(self.bodies):
+            vel, omega = body.vel, body.omega
+            if vel.__class__ is not Vector2 or not (math.isfinite(vel.x) and math.isfinite(vel.y)):
+                body.vel = finite_vector(vel, f"body {index}'s vel")
+            if omega.__class__ is not float or not math.isfinite(omega):
+                body.omega = finite_number(omega, f"body {index}'s omega")
 
     def end_step(self, dt):
         """What ends every step of dt s: "sleep" (sleep.update), the clock, the step counter, the finite check."""
