@@ -159,3 +159,52 @@ def test_the_quick_move_keeps_the_setters_errors_and_a_subclass_s_properties():
         with fast_paths(on):
             World([Logged(box_points(10, 10), (0, 0), 1, omega=2.0)]).integrate_positions(0.5)
         assert Logged.seen == [0.0, 1.0]
+
+
+
+def test_the_summed_finite_check_raises_what_the_loop_raises():
+    """end_step's fast finite check (one sum over every body) lets through exactly the worlds the readable loop lets
+    through: a NaN or inf in any field, anywhere, gets the loop's error naming that body; finite values whose sum
+    overflows, a vel that does not add to a float and a subclass's own is_finite are judged by the loop too."""
+    from lesson11.physics2d import Body, World, box_points
+
+    class Judged(Body):
+        verdict = True
+
+        def is_finite(self):
+            return Judged.verdict
+
+    def outcome(field, value, on, kind=Body):
+        crates = [kind(box_points(10, 10), (5.0 * k, 0), 1) for k in range(4)]
+        world = World(crates, effects=set())
+        if field in ("x", "y"):
+            setattr(crates[2].pos, field, value)  # in place, as a student's edit could leave it
+        elif field == "angle":
+            crates[2]._angle = value  # past the setter, likewise
+        else:
+            setattr(crates[2], field, value)
+        with fast_paths(on):
+            try:
+                world.end_step(0.01)
+            except ValueError as error:
+                return str(error)
+        return "ok"
+    cases = [(field, value) for field in ("x", "y", "angle", "omega") for value in (math.nan, math.inf, -math.inf)]
+    cases += [("vel", Vector2(math.nan, 0)), ("vel", Vector2(0, -math.inf)), ("x", 1e308), ("omega", 1e308),
+              ("vel", Vector2(1e308, 1e308)), ("omega", 0), ("vel", (0, 0)), ("angle", 1.5)]
+    for field, value in cases:
+        expected = outcome(field, value, False) if field != "vel" or isinstance(value, Vector2) else "TypeError"
+        if expected == "TypeError":  # vel as a tuple: both forms fail alike (is_finite reads vel.x)
+            for on in (True, False):
+                with pytest.raises(AttributeError):
+                    outcome(field, value, on)
+            continue
+        assert outcome(field, value, True) == expected, (field, value)
+        finite = all(map(math.isfinite, [value.x, value.y] if field == "vel" else [value]))
+        assert (expected == "ok") == finite and (finite or "body 2 " in expected), (field, value, expected)
+    for on in (True, False):
+        Judged.verdict = True  # World.add asks too
+        world = World([Judged(box_points(10, 10), (0, 0), 1)], effects=set())
+        Judged.verdict = False
+        with fast_paths(on), pytest.raises(ValueError, match="body 0 "):
+            world.end_step(0.01)

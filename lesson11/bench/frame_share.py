@@ -3,6 +3,7 @@
     python -m lesson11.bench.frame_share           # 12, 40 and 200 crates; 10-20 minutes on 2 cores
                                                    # (clicking and settling the 200-crate pile takes most)
     python -m lesson11.bench.frame_share --quick   # smoke run (12 and 40 crates, a few frames): not a measurement
+    python -m lesson11.bench.frame_share --sizes 12 200   # a per-size run: only those piles, the same figures
 
 The pile is the lab's clicked pile: the finished lab (solutions/tumbling_crates.py,
 loaded by energy.lab()) with its own scene, make_crate, sat and resolve, seed 11,
@@ -15,9 +16,10 @@ the lesson listing's 1 × 6 (World(substeps=1, iterations=6), solve-first). Each
 is measured twice in the same turns: with physics2d's fast paths (as the lab runs)
 and with the readable reference forms they replace (collision.fast_paths(False):
 the same numbers, bit for bit, tests/test_fast_paths.py), so the table shows what
-the fast paths buy, side by side. (The sweep-and-prune broad phase has no switch:
-its reference is broad_phase="all-pairs", and tests/test_broadphase.py holds the two
-to the same pairs; both forms here run the sweep as it is now.)
+the fast paths buy, side by side. (The broad phase is sweep and prune in both: with
+the fast paths on, the lesson solver's search runs broadphase.sweep_boxes, the sweep
+written out for boxes without margins; the reference forms run broadphase.sweep_and_prune.
+tests/test_broadphase.py holds the two, and broad_phase="all-pairs", to the same pairs.)
 
 Definitions (per frame, in ms):
   frame    the CPU time (time.process_time) of the two World.step calls, measured on
@@ -48,6 +50,7 @@ frame at the default setting.
 import argparse
 import copy
 import math
+import sys
 import time
 
 from lesson11 import hook_clock
@@ -195,9 +198,13 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true",
                         help="smoke run: 12 and 40 crates, a few frames (not a measurement)")
+    parser.add_argument("--sizes", type=int, nargs="+", choices=SIZES, metavar="CRATES",
+                        help=f"only these pile sizes (of {', '.join(map(str, SIZES))}; a per-size run)")
     args = parser.parse_args(argv)
     sizes, frames, settle = ((12, 40), QUICK_FRAMES, 20) if args.quick else (SIZES, FRAMES, SETTLE_FRAMES)
-    print(f"python -m lesson11.bench.frame_share{' --quick' if args.quick else ''} · {harness.machine_note()}")
+    sizes = tuple(args.sizes) if args.sizes else sizes
+    command = " ".join(["python -m lesson11.bench.frame_share"] + (argv if argv is not None else sys.argv[1:]))
+    print(f"{command} · {harness.machine_note()}")
     print(table(run(sizes, frames, settle)))
     if args.quick:
         print("Smoke run: these figures only show that the benchmark runs; they are not measurements.")
