@@ -302,7 +302,11 @@ def test_nan_set_by_hand_is_caught_before_it_spreads():
     crate = Body(box_points(20, 20), (0, -12), 1)
     world = World([floor, crate])
     crate.vel = Vector2(math.nan, 0)
-    with pytest.raises(ValueError, match="became non-finite"):
+    with pytest.raises(ValueError, match="body 1's vel must be finite"):
+        world.step()                     # World.check_motion, before the step moves anything
+    crate.vel = Vector2()
+    crate.vel.x = math.nan               # in place, mid-run: the same check at the next step
+    with pytest.raises(ValueError, match="body 1's vel must be finite"):
         world.step()
     bad = Body(box_points(5, 5), (0, 0), 1)
     with pytest.raises(ValueError, match="body position must be finite"):
