@@ -896,9 +896,7 @@ def _plain_manifolds(world):
         shape = body.shape
         lesson_pair.append(corners_rule and shape.kind == "polygon")
         if shape.kind == "polygon" and type(body).world_points is _body_world_points:
-            # Body.world_points with pos and angle read once (not once per corner): the same floats
-            pos, angle = body.pos, body.angle
-            corners = WorldPoints([pos + p.rotate_rad(angle) for p in shape.points])
+            corners = _rotated_corners(body)
             boxes.append(_polygon_box(corners))
         else:
             corners = body.world_points()
@@ -992,6 +990,11 @@ def _world_corners(body):
     not override world_points: the same floats."""
     if type(body).world_points is not _body_world_points:
         return body.world_points()
+    return _rotated_corners(body)
+
+
+def _rotated_corners(body):
+    """Body.world_points() of a polygon body that does not override it, pos and angle read once: the same floats."""
     pos, angle = body.pos, body.angle
     return WorldPoints([pos + p.rotate_rad(angle) for p in body.shape.points])
 
