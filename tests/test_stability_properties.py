@@ -7,7 +7,7 @@ or rejected by Polygon) are skipped with assume(). 200 examples per property.
 import math
 
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from lesson11.physics2d import (TOUCH_TOLERANCE, Polygon, Vector2, circle_toi, closest_on_segment, edge_normals,
@@ -66,8 +66,14 @@ def test_sat_is_symmetric(pa, pb):
         assert overlap_on(ba[0], pa, pb) == pytest.approx(ab[1], abs=1e-9)
 
 
+NEAR_TWIN_A = [Vector2(58.1878, -12.7776), Vector2(30.6059, 12.4665), Vector2(-26.7811, 14.5013),
+               Vector2(-61.2118, -8.54399)]
+NEAR_TWIN_B = NEAR_TWIN_A[:3] + [Vector2(-61.2118, -8.544)]
+
+
 @SETTINGS
 @given(posed(), posed())
+@example(NEAR_TWIN_A, NEAR_TWIN_B)  # found by a CI run: two ways out 1e-5 px apart
 def test_sat_depth_is_positive_and_the_mtv_separates(pa, pb):
     """Property: a hit has depth > TOUCH_TOLERANCE and a unit normal A→B; moving B by normal × depth separates.
 
@@ -84,10 +90,12 @@ def test_sat_depth_is_positive_and_the_mtv_separates(pa, pb):
     # Exactly the depth leaves a shadow overlap of rounding size (measured |overlap| <= 2.8e-14 px): apart.
     assert sat(pa, moved) is None
     # Moving the other way must not separate them (the normal points A→B), unless both ways
-    # out are equally long on this axis (e.g. identical shapes on top of each other).
+    # out are nearly equally long on this axis. Near-twins (CI found one whose ways differed by
+    # 1e-5 px) have a second, nearly parallel edge normal whose leftover overlap can reach zero,
+    # so the property is asserted only where the longer way is longer by a visible 1e-3 px.
     min_a, max_a = project(pa, normal)
     min_b, max_b = project(pb, normal)
-    if (max_b - min_a) - (max_a - min_b) > 1e-6:
+    if (max_b - min_a) - (max_a - min_b) > 1e-3:
         assert sat(pa, [p - normal * depth for p in pb]) is not None
 
 
