@@ -142,3 +142,38 @@ def test_world_refuses_nan_frames_and_bodies_and_catches_nan_in_a_step():
     crate.vel.y = INF                                # changed in place: the next step's check sees it too
     refused(world.step, "body 1's vel", "finite")
     assert world.time == pytest.approx(world.step_seconds)  # refused before it moved anything
+
+
+def set_mid_step(field, value):
+    """A resolve() hook that sets the second body's `field` to `value` (what a buggy student hook might do)."""
+    def resolve(a, b, normal, point):
+        setattr(b, field, value)
+    return resolve
+
+
+@pytest.mark.parametrize("order", ["solve-first", "move-first"])
+@pytest.mark.parametrize("field, value", [("vel", None), ("vel", (1, 2)), ("vel", [0.0, 5.0]), ("omega", None),
+                                          ("omega", "0.5")])
+def test_a_hook_that_breaks_vel_or_omega_mid_step_is_named_not_a_library_line(order, field, value):
+    """Hard input: resolve() sets b.vel or b.omega to something the next line of the step cannot use.
+
+    Without World.name_bad_motion this surfaced as a raw TypeError or AttributeError on a
+    library line (response.separate's `None * float`, the end-of-step sum's `.x`): the
+    step must instead say, in one ValueError line, which body and what it became.
+    """
+    world = World([Body(box_points(400, 40), (200, 300), 0), Body(box_points(40, 40), (200, 265), 1.0)],
+                  order=order)
+    world.resolve = set_mid_step(field, value)
+    message = refused(lambda: [world.step() for _ in range(10)], "body 1's vel or omega became", repr(value))
+    assert "hook" in message
+
+
+def test_a_hooks_own_type_error_is_left_as_it_is():
+    """A TypeError the hook raises itself, with every body still sound, reaches the caller unchanged."""
+    def resolve(a, b, normal, point):
+        raise TypeError("the hook's own mistake")
+    world = World([Body(box_points(400, 40), (200, 300), 0), Body(box_points(40, 40), (200, 265), 1.0)])
+    world.resolve = resolve
+    with pytest.raises(TypeError, match="the hook's own mistake"):
+        for _ in range(10):
+            world.step()

@@ -358,13 +358,17 @@ class World:
         """
         dt = self.step_seconds if dt is None else positive_seconds("step dt")(self, dt)
         self.check_motion()
-        if self.solver == "accumulated":
-            self.step_accumulated(dt)
-        elif self.order == "solve-first":
-            self.step_solve_first(dt)
-        else:
-            self.step_move_first(dt)
-        self.end_step(dt)
+        try:
+            if self.solver == "accumulated":
+                self.step_accumulated(dt)
+            elif self.order == "solve-first":
+                self.step_solve_first(dt)
+            else:
+                self.step_move_first(dt)
+            self.end_step(dt)
+        except (TypeError, AttributeError) as error:
+            self.name_bad_motion(error)
+            raise
 
     def check_motion(self):
         """Check every body's vel (a Vector2 of finite px/s) and omega (a finite number of rad/s) once a step.
@@ -379,6 +383,20 @@ class World:
                 body.vel = finite_vector(vel, f"body {index}'s vel")
             if omega.__class__ is not float or not math.isfinite(omega):
                 body.omega = finite_number(omega, f"body {index}'s omega")
+
+    def name_bad_motion(self, error):
+        """After `error` (a TypeError or AttributeError) inside a step: a ValueError naming the body whose vel or
+        omega a hook set to something else than a Vector2 or a number, if there is one (else nothing).
+
+        A hook (resolve, separate, ...) that sets b.vel = None or (1, 2) mid-step
+        would otherwise surface as an error on a library line it never wrote.
+        """
+        for index, body in enumerate(self.bodies):
+            vel, omega = getattr(body, "vel", None), getattr(body, "omega", None)
+            if vel.__class__ is not Vector2 or not isinstance(omega, (int, float)):
+                raise ValueError(f"body {index}'s vel or omega became {vel!r}, {omega!r} during the step at "
+                                 f"t = {self.time:.4f} s: a hook must keep vel a Vector2 (px/s) and omega a number "
+                                 f"(rad/s)") from error
 
     def end_step(self, dt):
         """What ends every step of dt s: "sleep" (sleep.update), the clock, the step counter, the finite check."""
