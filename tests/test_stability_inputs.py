@@ -177,3 +177,20 @@ def test_a_hooks_own_type_error_is_left_as_it_is():
     with pytest.raises(TypeError, match="the hook's own mistake"):
         for _ in range(10):
             world.step()
+
+
+@pytest.mark.parametrize("order", ["solve-first", "move-first"])
+@pytest.mark.parametrize("value", [NAN, INF])
+def test_a_hook_that_makes_a_body_non_finite_mid_step_is_named(order, value):
+    """Hard input: resolve() writes NaN or inf into b.vel.y in place, on a stack of two crates.
+
+    The NaN body's corners give the next sub-step's SAT no normal, and the push-out
+    used to fail there with a raw TypeError (`None * float` in response.separate);
+    now the step names the body, as the end-of-step check does.
+    """
+    def resolve(a, b, normal, point):
+        b.vel.y = value
+    world = World([Body(box_points(400, 40), (200, 300), 0), Body(box_points(40, 40), (200, 265), 1.0),
+                   Body(box_points(40, 40), (200, 225), 1.0)], order=order)
+    world.resolve = resolve
+    refused(lambda: [world.step() for _ in range(50)], "became non-finite", "check its mass, the step and the hooks")

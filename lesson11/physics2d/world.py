@@ -385,11 +385,12 @@ class World:
                 body.omega = finite_number(omega, f"body {index}'s omega")
 
     def name_bad_motion(self, error):
-        """After `error` (a TypeError or AttributeError) inside a step: a ValueError naming the body whose vel or
-        omega a hook set to something else than a Vector2 or a number, if there is one (else nothing).
+        """After `error` (a TypeError or AttributeError) inside a step: a ValueError naming the body a hook broke,
+        if there is one (else nothing, and the error stands).
 
-        A hook (resolve, separate, ...) that sets b.vel = None or (1, 2) mid-step
-        would otherwise surface as an error on a library line it never wrote.
+        A hook (resolve, separate, ...) that sets b.vel = None or (1, 2) mid-step, or
+        makes a body NaN (whose SAT then finds no normal), would otherwise surface as
+        an error on a library line it never wrote (response.separate's `None * float`).
         """
         for index, body in enumerate(self.bodies):
             vel, omega = getattr(body, "vel", None), getattr(body, "omega", None)
@@ -397,6 +398,14 @@ class World:
                 raise ValueError(f"body {index}'s vel or omega became {vel!r}, {omega!r} during the step at "
                                  f"t = {self.time:.4f} s: a hook must keep vel a Vector2 (px/s) and omega a number "
                                  f"(rad/s)") from error
+        self.name_non_finite(error)
+
+    def name_non_finite(self, cause=None):
+        """Raise a ValueError naming the first body whose pos, angle, vel or omega is NaN or infinite, if any."""
+        for index, body in enumerate(self.bodies):
+            if not body.is_finite():
+                raise ValueError(f"body {index} {body!r} became non-finite at t = {self.time:.4f} s; "
+                                 "check its mass, the step and the hooks") from cause
 
     def end_step(self, dt):
         """What ends every step of dt s: "sleep" (sleep.update), the clock, the step counter, the finite check."""
@@ -406,10 +415,7 @@ class World:
         self.counters["steps"] += 1
         if collision.FAST_PATHS and _sum_is_finite(self.bodies):
             return  # every state finite (a NaN or inf anywhere makes the sum non-finite: then the loop names it)
-        for index, body in enumerate(self.bodies):
-            if not body.is_finite():
-                raise ValueError(f"body {index} {body!r} became non-finite at t = {self.time:.4f} s; "
-                                 "check its mass, the step and the hooks")
+        self.name_non_finite()
 
     # ---------------------------------------------------------------- one phase list per solver
 
