@@ -800,9 +800,13 @@ def _within_faces(corners, xy, faces, limit):
                 within.append((p, px, py))
         return within
     (ax, ay, aex, aey), (bx, by, bex, bey), (cx, cy, cex, cey), (dx, dy, dex, dey) = faces
-    return [(p, px, py) for p, (px, py) in zip(corners, xy)  # `not >=`: as the loop's break reads it
-            if not (px - ax) * aex + (py - ay) * aey >= limit and not (px - bx) * bex + (py - by) * bey >= limit
-            and not (px - cx) * cex + (py - cy) * cey >= limit and not (px - dx) * dex + (py - dy) * dey >= limit]
+    within = []
+    for p, (px, py) in zip(corners, xy):  # a loop, not a comprehension: the faces stay fast locals, not cells
+        if ((px - ax) * aex + (py - ay) * aey >= limit or (px - bx) * bex + (py - by) * bey >= limit
+                or (px - cx) * cex + (py - cy) * cey >= limit or (px - dx) * dex + (py - dy) * dey >= limit):
+            continue  # as the loop above breaks
+        within.append((p, px, py))
+    return within
 
 
 def _clip_xy(v1, v2, dx, dy, offset):

@@ -18,6 +18,7 @@ are in lesson11/bench/README.md ("physics2d's choices, measured").
 import math
 from collections import deque as _deque
 from collections import namedtuple
+from functools import partial
 from itertools import starmap as _starmap
 
 from . import broadphase, collision, response, sleep
@@ -44,6 +45,7 @@ MAX_STEPS = 4              # fixed steps per advance() at most: two 60 fps frame
 _body_world_points = Body.world_points  # _plain_manifolds inlines it for bodies that do not override it
 Contact = namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = "One contact: bodies a and b, the world point (px), the unit normal A→B, the depth (px)."
+_contact = partial(tuple.__new__, Contact)  # Contact._make of a 5-tuple: the same Contact, made in C
 
 
 class World:
@@ -469,11 +471,12 @@ class World:
         """The reference solver (arbiter.py's phases): impulses kept across passes and steps, soft contacts."""
         h = dt / self.substeps
         # 1. collide once per step: speculative manifolds, matched with last step's arbiters
-        arbiters = {}
-        for a, b, manifold in self.manifolds(speculative=dt):
-            arbiter = self.arbiters.get((id(a), id(b))) or Arbiter(a, b)
+        arbiters, kept = {}, self.arbiters
+        for a, b, manifold in self.speculative_search(dt):
+            key = (id(a), id(b))
+            arbiter = kept.get(key) or Arbiter(a, b)
             arbiter.update(manifold)
-            arbiters[(id(a), id(b))] = arbiter
+            arbiters[key] = arbiter
         self.arbiters = arbiters
         # 2. prepare: anchors, effective masses, approach speeds (before any impulse)
         for arbiter in arbiters.values():
@@ -491,8 +494,15 @@ class World:
         for _ in range(RESTITUTION_PASSES):
             for arbiter in bouncing:
                 arbiter.bounce(self.resting_speed)
-        self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
+        self.contacts = [_contact((arb.a, arb.b, c.point, arb.normal, c.depth))  # Contact(...) without its __new__
                          for arb in arbiters.values() for c in arb.points]
+
+    def speculative_search(self, dt):
+        """self.manifolds(speculative=dt); the float search called directly when manifolds() would call it."""
+        if (type(self).manifolds is World.manifolds and collision.FAST_PATHS and not collision.READABLE
+                and "sleep" not in self.effects):
+            return _speculative_manifolds(self, dt)  # the same generator, without manifolds()' yield from
+        return self.manifolds(speculative=dt)
 
     def readable_substeps(self, arbiters, h, soft, use_push):
         """step_accumulated's phases 3 to 6, readable: ReferenceArbiter.solve for each contact, each pass."""
