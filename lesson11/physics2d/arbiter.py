@@ -376,7 +376,12 @@ def solve_passes(groups, vx, vy, w, passes):
     """
     for _ in range(passes):
         for ka, kb, nx, ny, ima, iia, imb, iib, mu, rows in groups:
-            vax, vay, wa, vbx, vby, wb = vx[ka], vy[ka], w[ka], vx[kb], vy[kb], w[kb]
+            vax = vx[ka]  # one statement each: a six-name assignment would build and unpack a tuple
+            vay = vy[ka]
+            wa = w[ka]
+            vbx = vx[kb]
+            vby = vy[kb]
+            wb = w[kb]
             for c, rax, ray, rbx, rby, bias, scaled_mass, impulse_scale, _ in rows:
                 vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
                 old = c.normal_impulse
@@ -414,7 +419,12 @@ def solve_passes(groups, vx, vy, w, passes):
                     vbx += px * imb
                     vby += py * imb
                     wb += (rbx * py - rby * px) * iib
-            vx[ka], vy[ka], w[ka], vx[kb], vy[kb], w[kb] = vax, vay, wa, vbx, vby, wb
+            vx[ka] = vax
+            vy[ka] = vay
+            w[ka] = wa
+            vx[kb] = vbx
+            vy[kb] = vby
+            w[kb] = wb
 
 
 @contextlib.contextmanager

@@ -587,14 +587,14 @@ def _unit(x, y):
     return x / length, y / length
 
 
-def shadows_xy(points, axes):
-    """project() of (x, y) pairs on each unit axis (ax, ay): [(min p·axis, max p·axis), ...] px, the same
-    comparisons in the same order (a box's loop unrolled, as project's fast path)."""
+def axes_xy(points, normals):
+    """Each unit normal (nx, ny) with project() of the (x, y) pairs on it: [(nx, ny, min p·n, max p·n), ...] px,
+    the same comparisons in the same order (a box's loop unrolled, as project's fast path)."""
     if len(points) != 4:
-        return [_shadow_xy(points, ax, ay) for ax, ay in axes]
+        return [(nx, ny, *_shadow_xy(points, nx, ny)) for nx, ny in normals]
     (x0, y0), (x1, y1), (x2, y2), (x3, y3) = points
-    shadows = []
-    for ax, ay in axes:
+    axes = []
+    for ax, ay in normals:
         lowest = highest = x0 * ax + y0 * ay
         d = x1 * ax + y1 * ay
         if d < lowest:
@@ -611,8 +611,8 @@ def shadows_xy(points, axes):
             lowest = d
         elif d > highest:
             highest = d
-        shadows.append((lowest, highest))
-    return shadows
+        axes.append((ax, ay, lowest, highest))
+    return axes
 
 
 def _shadow_xy(points, ax, ay):
@@ -627,10 +627,10 @@ def _shadow_xy(points, ax, ay):
     return lowest, highest
 
 
-FlatOutline = namedtuple("FlatOutline", "xy normals shadows faces distinct regular")
+FlatOutline = namedtuple("FlatOutline", "xy normals axes faces distinct regular")
 FlatOutline.__doc__ = """A polygon's corners on plain floats, for sat_xy and corner_manifold_xy (worked out once per
-body per contact search): (x, y) pairs; edge_normals' unit normals (nx, ny), zero-length edges skipped; the
-shadow (project) on each of those normals; outward_faces as (vx, vy, nx, ny); the corners without repeats as
+body per contact search): (x, y) pairs; edge_normals' unit normals (nx, ny), zero-length edges skipped; each of
+those normals with the polygon's shadow (project) on it, (nx, ny, min, max); outward_faces as (vx, vy, nx, ny); the corners without repeats as
 _best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no zero-length edge), so normals[i]
 is edge i's (corner i to i + 1) and _best_face can read it."""
 
@@ -662,8 +662,7 @@ def flat_outline(points, xy=None):
         nx, ny = -ey / length, ex / length
         normals.append((nx, ny))
         faces.append((vx, vy, -nx, -ny) if (vx - mx) * nx + (vy - my) * ny < 0 else (vx, vy, nx, ny))
-    return FlatOutline(xy, normals, shadows_xy(xy, normals), faces,
-                       xy if regular else _distinct_xy(xy), regular)
+    return FlatOutline(xy, normals, axes_xy(xy, normals), faces, xy if regular else _distinct_xy(xy), regular)
 
 
 def _best_face(outline, dx, dy):
@@ -687,32 +686,60 @@ def _best_face(outline, dx, dy):
 def sat_xy(pa, a, pb, b, margin):
     """sat(pa, pb, margin) on plain floats, for the reference solver's speculative contacts: the same answer.
 
-    a, b are the polygons' FlatOutlines (each one's shadows on its own normals
-    worked out once per body, not once per pair); pa, pb the same corners as
-    Vector2, used only where sat turns to orient_a_to_b (both ways out equally
-    long). sat stays the readable reference (the students' lesson);
-    tests/test_arbiter_fast.py holds the two equal.
+    a, b are the polygons' FlatOutlines (each one's shadow on its own normals
+    worked out once per body, not once per pair; the other's shadow is projected
+    axis by axis, as sat projects it); pa, pb the same corners as Vector2, used
+    only where sat turns to orient_a_to_b (both ways out equally long). sat stays
+    the readable reference (the students' lesson); tests/test_arbiter_fast.py
+    holds the two equal.
     """
     best_x = best_y = None
     best_depth = math.inf
     limit = TOUCH_TOLERANCE - margin
-    # A's normals, then B's, as sat takes them: each polygon's shadow on its own normals is known already
-    shadows_a = a.shadows + shadows_xy(a.xy, b.normals)
-    shadows_b = shadows_xy(b.xy, a.normals) + b.shadows
-    for (ax, ay), (min_a, max_a), (min_b, max_b) in zip(a.normals + b.normals, shadows_a, shadows_b):
-        # min() and max() as conditionals: each keeps its first argument unless the second is smaller (larger)
-        if (max_b if max_b < max_a else max_a) - (min_b if min_b > min_a else min_a) <= limit:
-            return None  # a gap (or exact touching): apart
-        forwards, backwards = max_a - min_b, max_b - min_a
-        depth = backwards if backwards < forwards else forwards
-        if depth < best_depth:
-            if abs(forwards - backwards) <= TOUCH_TOLERANCE:
-                best_x, best_y = orient_a_to_b(Vector2(ax, ay), pa, pb)
-            elif forwards < backwards:
-                best_x, best_y = ax, ay
+    # A's normals, then B's, as sat takes them
+    for axes, other, own_is_a in ((a.axes, b.xy, True), (b.axes, a.xy, False)):
+        four = len(other) == 4
+        if four:
+            (x0, y0), (x1, y1), (x2, y2), (x3, y3) = other
+        for ax, ay, own_min, own_max in axes:
+            if four:  # project() of the other polygon, its box loop unrolled (the same comparisons in order)
+                low = high = x0 * ax + y0 * ay
+                d = x1 * ax + y1 * ay
+                if d < low:
+                    low = d
+                elif d > high:
+                    high = d
+                d = x2 * ax + y2 * ay
+                if d < low:
+                    low = d
+                elif d > high:
+                    high = d
+                d = x3 * ax + y3 * ay
+                if d < low:
+                    low = d
+                elif d > high:
+                    high = d
             else:
-                best_x, best_y = -ax, -ay
-            best_depth = depth
+                low, high = _shadow_xy(other, ax, ay)
+            if own_is_a:
+                min_a, max_a = own_min, own_max
+                min_b, max_b = low, high
+            else:
+                min_a, max_a = low, high
+                min_b, max_b = own_min, own_max
+            # min() and max() as conditionals: each keeps its first argument unless the second is smaller (larger)
+            if (max_b if max_b < max_a else max_a) - (min_b if min_b > min_a else min_a) <= limit:
+                return None  # a gap (or exact touching): apart
+            forwards, backwards = max_a - min_b, max_b - min_a
+            depth = backwards if backwards < forwards else forwards
+            if depth < best_depth:
+                if abs(forwards - backwards) <= TOUCH_TOLERANCE:
+                    best_x, best_y = orient_a_to_b(Vector2(ax, ay), pa, pb)
+                elif forwards < backwards:
+                    best_x, best_y = ax, ay
+                else:
+                    best_x, best_y = -ax, -ay
+                best_depth = depth
     return (None if best_x is None else Vector2(best_x, best_y)), best_depth
 
 
