@@ -140,6 +140,12 @@ def polygon(rng, centre, sides, radius, duplicate=False):
     return points
 
 
+def clip_with_outlines(pa, pb, normal, margin):
+    """clip_manifold_outlines (the World's search: edges read off each FlatOutline) with the outlines made here."""
+    return collision.clip_manifold_outlines(pa, collision.flat_outline(pa), pb, collision.flat_outline(pb), normal,
+                                            margin)
+
+
 def test_manifolds_give_exactly_the_reference_answers():
     """2000 random pairs of touching, overlapping and nearly touching polygons, with margins: the same lists."""
     rng = random.Random(31)
@@ -154,7 +160,8 @@ def test_manifolds_give_exactly_the_reference_answers():
             continue
         normal = hit[0]
         for fast, reference in ((collision.corner_manifold, collision.corner_manifold_reference),
-                                (collision.clip_manifold, collision.clip_manifold_reference)):
+                                (collision.clip_manifold, collision.clip_manifold_reference),
+                                (clip_with_outlines, collision.clip_manifold_reference)):
             expected = [(tuple(p), d) for p, d in reference(pa, pb, normal, margin)]
             assert [(tuple(p), d) for p, d in fast(pa, pb, normal, margin)] == expected
         compared += 1
@@ -203,7 +210,8 @@ def test_equal_boxes_merge_corners_as_the_reference_does():
             upper = [centre + (p - Vector2(20, 20)).rotate_rad(turn) for p in lower]
             normal = collision.sat(lower, upper, 1.0)[0]
             for fast, reference in ((collision.corner_manifold, collision.corner_manifold_reference),
-                                    (collision.clip_manifold, collision.clip_manifold_reference)):
+                                    (collision.clip_manifold, collision.clip_manifold_reference),
+                                    (clip_with_outlines, collision.clip_manifold_reference)):
                 expected = [(tuple(p), d) for p, d in reference(lower, upper, normal, 1.0)]
                 assert [(tuple(p), d) for p, d in fast(lower, upper, normal, 1.0)] == expected, (turn, k)
 

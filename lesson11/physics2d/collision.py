@@ -666,7 +666,8 @@ def flat_outline(points, xy=None):
 
 
 def _best_face(outline, dx, dy):
-    """_best_edge_distinct's edge on a regular FlatOutline, with its unit normal: (v1, (nx, ny)), the same floats.
+    """_best_edge_distinct's edge on a regular FlatOutline, by index: (k, i), edge k (corner k to k + 1, normal
+    normals[k]) and the farthest corner i; the same choice, from the same floats.
 
     Edge i's unit direction e / |e| is (n.y, -n.x) of its normal n = (-e.y, e.x) / |e| (exactly: the same
     quotients), so the two edges at the farthest corner are compared without a square root.
@@ -679,8 +680,8 @@ def _best_face(outline, dx, dy):
             i, top = k, along
     (bx, by), (ax, ay) = normals[i - 1], normals[i]  # the edge into corner i, and the edge out of it
     if abs(by * dx + -bx * dy) <= abs(-ay * dx + ax * dy):  # |(v - before)/|..|·d| <= |(v - after)/|..|·d|
-        return points[i - 1], normals[i - 1]
-    return points[i], normals[i]
+        return i - 1, i
+    return i, i
 
 
 def sat_xy(pa, a, pb, b, margin):
@@ -794,7 +795,8 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
         if not within and outline.regular:
             continue  # no corner to measure from the face: skip _best_face (which has no other effect)
         if outline.regular:
-            (v1x, v1y), (fx, fy) = _best_face(outline, dx, dy)
+            k, _ = _best_face(outline, dx, dy)
+            (v1x, v1y), (fx, fy) = outline.xy[k], outline.normals[k]
         else:
             (v1x, v1y), (v2x, v2y), _ = _best_edge_distinct(outline.distinct, dx, dy)
             fx, fy = _unit(-(v2y - v1y), v2x - v1x)
@@ -857,15 +859,42 @@ def clip_manifold_xy(pa, distinct_a, pb, distinct_b, normal, margin):
     """clip_manifold with each polygon's corners as (x, y) pairs that _distinct_xy has kept (a FlatOutline's
     `distinct`); pa, pb the same polygons as Vector2, for the rare fallback to the corners rule."""
     nx, ny = normal
-    a1, a2, a_far = _best_edge_distinct(distinct_a, nx, ny)
-    b1, b2, b_far = _best_edge_distinct(distinct_b, -nx, -ny)
-    ua, ub = _unit(a2[0] - a1[0], a2[1] - a1[1]), _unit(b2[0] - b1[0], b2[1] - b1[1])
+    return _clip_edges(pa, pb, normal, margin, _clip_edge(distinct_a, nx, ny), _clip_edge(distinct_b, -nx, -ny))
+
+
+def clip_manifold_outlines(pa, a, pb, b, normal, margin):
+    """clip_manifold_xy with each polygon's FlatOutline: a regular outline's edge and its unit direction are read
+    off its corners and normals (_best_face), without the square roots; the same floats."""
+    nx, ny = normal
+    return _clip_edges(pa, pb, normal, margin, _outline_edge(a, nx, ny), _outline_edge(b, -nx, -ny))
+
+
+def _clip_edge(distinct, dx, dy):
+    """_best_edge_distinct's (v1, v2, farthest corner) with the edge's unit direction (v2 - v1) / |v2 - v1|."""
+    v1, v2, far = _best_edge_distinct(distinct, dx, dy)
+    return v1, v2, far, _unit(v2[0] - v1[0], v2[1] - v1[1])
+
+
+def _outline_edge(outline, dx, dy):
+    """_clip_edge(outline.distinct, dx, dy) of a FlatOutline; for a regular one, the unit direction of edge k is
+    (n.y, -n.x) of its normal n (the same quotients as _unit's, as _best_face says)."""
+    if not outline.regular:
+        return _clip_edge(outline.distinct, dx, dy)
+    k, i = _best_face(outline, dx, dy)
+    points, (ex, ey) = outline.xy, outline.normals[k]
+    return points[k], points[k + 1 - len(points)], points[i], (ey, -ex)  # k + 1 - n: corner k + 1, from the end
+
+
+def _clip_edges(pa, pb, normal, margin, a_edge, b_edge):
+    """clip_manifold_xy's clipping, from each polygon's best edge (v1, v2, farthest corner, unit v1 → v2)."""
+    nx, ny = normal
+    a1, a2, a_far, ua = a_edge
+    b1, b2, b_far, ub = b_edge
     if abs(ua[0] * nx + ua[1] * ny) <= abs(ub[0] * nx + ub[1] * ny):
-        ref1, ref2, ref_far, inc1, inc2, rx, ry = a1, a2, a_far, b1, b2, nx, ny
+        ref1, ref2, ref_far, (sx, sy), inc1, inc2, rx, ry = a1, a2, a_far, ua, b1, b2, nx, ny
     else:
-        ref1, ref2, ref_far, inc1, inc2, rx, ry = b1, b2, b_far, a1, a2, -nx, -ny
-    sx, sy = _unit(ref2[0] - ref1[0], ref2[1] - ref1[1])
-    kept = _clip_xy(inc1, inc2, sx, sy, sx * ref1[0] + sy * ref1[1])
+        ref1, ref2, ref_far, (sx, sy), inc1, inc2, rx, ry = b1, b2, b_far, ub, a1, a2, -nx, -ny
+    kept = _clip_xy(inc1, inc2, sx, sy, sx * ref1[0] + sy * ref1[1])  # (sx, sy): the reference edge's direction
     if len(kept) == 2:
         kept = _clip_xy(kept[0], kept[1], -sx, -sy, -(sx * ref2[0] + sy * ref2[1]))
     face = rx * ref_far[0] + ry * ref_far[1]
