@@ -635,6 +635,9 @@ _best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no ze
 is edge i's (corner i to i + 1) and _best_face can read it."""
 
 
+_new_tuple = tuple.__new__  # _new_tuple(cls, values): a namedtuple cls's _make, in C
+
+
 def flat_outline(points, xy=None):
     """The FlatOutline of a polygon's world corners (Vector2, px; xy: the same as (x, y) pairs, if made already),
     in one pass over the edges.
@@ -656,13 +659,15 @@ def flat_outline(points, xy=None):
         ex, ey = wx - vx, wy - vy
         if -SAME_POINT < ex < SAME_POINT and -SAME_POINT < ey < SAME_POINT:
             regular = False  # _distinct_xy drops a corner here
-        if ex * ex + ey * ey == 0:
+        squared = ey * ey + ex * ex  # = ex² + ey² (a sum of two floats does not depend on their order)
+        if squared == 0:
             continue  # a zero-length edge has no normal
-        length = sqrt(ey * ey + ex * ex)
+        length = sqrt(squared)
         nx, ny = -ey / length, ex / length
         normals.append((nx, ny))
         faces.append((vx, vy, -nx, -ny) if (vx - mx) * nx + (vy - my) * ny < 0 else (vx, vy, nx, ny))
-    return FlatOutline(xy, normals, axes_xy(xy, normals), faces, xy if regular else _distinct_xy(xy), regular)
+    return _new_tuple(FlatOutline, (xy, normals, axes_xy(xy, normals), faces, xy if regular else _distinct_xy(xy),
+                                    regular))  # FlatOutline(...) without its Python-level __new__
 
 
 def _best_face(outline, dx, dy):
