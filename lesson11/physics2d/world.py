@@ -46,6 +46,7 @@ _body_world_points = Body.world_points  # _plain_manifolds inlines it for bodies
 Contact = namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = "One contact: bodies a and b, the world point (px), the unit normal A→B, the depth (px)."
 _contact = partial(tuple.__new__, Contact)  # Contact._make of a 5-tuple: the same Contact, made in C
+_manifold = partial(tuple.__new__, collision.Manifold)  # collision.Manifold._make of a 4-tuple, the same way
 
 
 class World:
@@ -501,7 +502,7 @@ class World:
         """self.manifolds(speculative=dt); the float search called directly when manifolds() would call it."""
         if (type(self).manifolds is World.manifolds and collision.FAST_PATHS and not collision.READABLE
                 and "sleep" not in self.effects):
-            return _speculative_manifolds(self, dt)  # the same generator, without manifolds()' yield from
+            return _speculative_manifolds(self, dt)  # the same search, without manifolds()' yield from
         return self.manifolds(speculative=dt)
 
     def readable_substeps(self, arbiters, h, soft, use_push):
@@ -951,12 +952,13 @@ def _speculative_manifolds(world, dt):
     first use; a polygon pair goes to collision.sat_xy and corner_manifold_xy
     (or clip_manifold), the float forms of sat and corner_manifold that collide()
     calls with a margin. Other pairs go through collision.collide. The reference is
-    the rest of manifolds(), which readable_versions() runs.
+    the rest of manifolds(), which readable_versions() runs. A list of (a, b, Manifold), not a generator:
+    step_accumulated takes them all, and a list is quicker to go through.
     """
     bodies = world.bodies
     moving = [body.inv_mass != 0 for body in bodies]
     if True not in moving:
-        return
+        return []
     points, xy, boxes = [], [], []  # each body's world points; a polygon's also as (x, y) pairs
     for body in bodies:
         if body.shape.kind == "polygon":
@@ -975,7 +977,7 @@ def _speculative_manifolds(world, dt):
     pairs, tested = search(boxes, moving, reach, base, boxes)
     world.counters["pair_tests"] += tested
     rule = world.contact_rule
-    narrow = contacts = 0
+    found, narrow, contacts = [], 0, 0
     try:
         for i, j in pairs:
             a, b = bodies[i], bodies[j]
@@ -989,10 +991,11 @@ def _speculative_manifolds(world, dt):
             if manifold is None:
                 continue
             contacts += len(manifold.points)
-            yield a, b, manifold
-    finally:
+            found.append((a, b, manifold))
+    finally:  # counted also when a pair's test raises, as manifolds() counts
         world.counters["narrow_tests"] += narrow
         world.counters["contacts"] += contacts
+    return found
 
 
 def _world_corners(body):
@@ -1033,7 +1036,7 @@ def _polygon_manifold(points, xy, flat, i, j, rule, margin):
     else:
         pairs = (collision.corner_manifold_xy(pa, a, pb, b, normal, margin)
                  or [(p, depth) for p in collision.contact_points(pa, pb, normal)])
-    return collision.Manifold(normal, depth, [p for p, _ in pairs], [d for _, d in pairs])
+    return _manifold((normal, depth, [p for p, _ in pairs], [d for _, d in pairs]))  # Manifold(...), made in C
 
 
 def _polygon_box(corners):
