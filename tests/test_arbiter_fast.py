@@ -94,6 +94,14 @@ def test_brick_pile_ends_within_1e_9_px():
     assert solver_probe.reference_speed(dict(solver="accumulated"), steps=20, repeats=1)[2] <= TOLERANCE
 
 
+def test_the_labs_clicked_pile_ends_within_1e_9_px():
+    """--speed's last row, the Tumbling Crates 12-crate clicked pile (all 12 clicks, then 20 steps): the readable
+    and float versions end within 1e-9 px of each other."""
+    readable, fast, apart = solver_probe.clicked_pile_speed(dict(solver="accumulated"), settle=20, repeats=1)
+    assert apart <= TOLERANCE
+    assert readable > 0 and fast > 0
+
+
 # ---------------------------------------------------------------- the lab scenes
 
 LABS = {"tumbling_crates": (crate_scenes, ["corner_scenario", "ramp_scenario", "pile_scenario"]),
