@@ -242,9 +242,12 @@ class Arbiter(ReferenceArbiter):
         old = self.points
         self.points = []
         pos, turn = self.a.pos, -self.a.angle
+        new_point = ContactPoint.__new__
         for point, depth in zip(manifold.points, manifold.depths):
             local_a = (point - pos).rotate_rad(turn)  # pygame's rotation, as the reference (exact quarter turns)
-            contact = ContactPoint(point, depth, local_a)
+            contact = new_point(ContactPoint)  # ContactPoint(point, depth, local_a), its __init__ written out
+            contact.point, contact.depth, contact.local_a = point, depth, local_a
+            contact.normal_impulse = contact.friction_impulse = 0.0
             lx, ly = contact.local_xy = local_a.x, local_a.y  # local_a's floats, for the next step's matching
             nearest, match = math.inf, None
             for c in old:  # the first nearest, as min() picks it

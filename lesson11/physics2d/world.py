@@ -1036,7 +1036,11 @@ def _polygon_manifold(points, xy, flat, i, j, rule, margin):
     else:
         pairs = (collision.corner_manifold_xy(pa, a, pb, b, normal, margin)
                  or [(p, depth) for p in collision.contact_points(pa, pb, normal)])
-    return _manifold((normal, depth, [p for p, _ in pairs], [d for _, d in pairs]))  # Manifold(...), made in C
+    points, depths = [], []
+    for p, d in pairs:
+        points.append(p)
+        depths.append(d)
+    return _manifold((normal, depth, points, depths))  # Manifold(normal, depth, points, depths), made in C
 
 
 def _polygon_box(corners):
