@@ -149,9 +149,11 @@ def polygon(rng, centre, sides, radius, duplicate=False):
 
 
 def clip_with_outlines(pa, pb, normal, margin):
-    """clip_manifold_outlines (the World's search: edges read off each FlatOutline) with the outlines made here."""
-    return collision.clip_manifold_outlines(pa, collision.flat_outline(pa), pb, collision.flat_outline(pb), normal,
-                                            margin)
+    """clip_manifold_outlines (the World's search: edges read off each FlatOutline, the pair's depth from sat_xy)
+    with the outlines made here."""
+    a, b = collision.flat_outline(pa), collision.flat_outline(pb)
+    depth = collision.sat_xy(pa, a, pb, b, margin)[1]
+    return collision.clip_manifold_outlines(pa, a, pb, b, normal, depth, margin)
 
 
 def test_manifolds_give_exactly_the_reference_answers():

@@ -864,14 +864,18 @@ def clip_manifold_xy(pa, distinct_a, pb, distinct_b, normal, margin):
     """clip_manifold with each polygon's corners as (x, y) pairs that _distinct_xy has kept (a FlatOutline's
     `distinct`); pa, pb the same polygons as Vector2, for the rare fallback to the corners rule."""
     nx, ny = normal
-    return _clip_edges(pa, pb, normal, margin, _clip_edge(distinct_a, nx, ny), _clip_edge(distinct_b, -nx, -ny))
+    return (_clip_edges(normal, margin, _clip_edge(distinct_a, nx, ny), _clip_edge(distinct_b, -nx, -ny))
+            or _corners_fallback(pa, pb, normal, margin))
 
 
-def clip_manifold_outlines(pa, a, pb, b, normal, margin):
-    """clip_manifold_xy with each polygon's FlatOutline: a regular outline's edge and its unit direction are read
-    off its corners and normals (_best_face), without the square roots; the same floats."""
+def clip_manifold_outlines(pa, a, pb, b, normal, depth, margin):
+    """clip_manifold_xy with each polygon's FlatOutline, and the pair's depth from sat(pa, pb, margin) (sat_xy's):
+    a regular outline's edge and its unit direction are read off its corners and normals (_best_face), without
+    the square roots, and the fallback to the corners rule takes the depth given (_corners_fallback would work
+    it out again); the same floats."""
     nx, ny = normal
-    return _clip_edges(pa, pb, normal, margin, _outline_edge(a, nx, ny), _outline_edge(b, -nx, -ny))
+    return (_clip_edges(normal, margin, _outline_edge(a, nx, ny), _outline_edge(b, -nx, -ny))
+            or [(p, depth) for p in contact_points(pa, pb, normal)])
 
 
 def _clip_edge(distinct, dx, dy):
@@ -890,8 +894,9 @@ def _outline_edge(outline, dx, dy):
     return points[k], points[k + 1 - len(points)], points[i], (ey, -ex)  # k + 1 - n: corner k + 1, from the end
 
 
-def _clip_edges(pa, pb, normal, margin, a_edge, b_edge):
-    """clip_manifold_xy's clipping, from each polygon's best edge (v1, v2, farthest corner, unit v1 → v2)."""
+def _clip_edges(normal, margin, a_edge, b_edge):
+    """clip_manifold_xy's clipping, from each polygon's best edge (v1, v2, farthest corner, unit v1 → v2): the
+    points kept, [(point, depth px), ...], possibly none (the caller then falls back to the corners rule)."""
     nx, ny = normal
     a1, a2, a_far, ua = a_edge
     b1, b2, b_far, ub = b_edge
@@ -903,9 +908,8 @@ def _clip_edges(pa, pb, normal, margin, a_edge, b_edge):
     if len(kept) == 2:
         kept = _clip_xy(kept[0], kept[1], -sx, -sy, -(sx * ref2[0] + sy * ref2[1]))
     face = rx * ref_far[0] + ry * ref_far[1]
-    manifold = [(Vector2(x, y), face - (rx * x + ry * y)) for x, y in kept
-                if rx * x + ry * y <= face + TOUCH_TOLERANCE + margin]
-    return manifold or _corners_fallback(pa, pb, normal, margin)
+    return [(Vector2(x, y), face - (rx * x + ry * y)) for x, y in kept
+            if rx * x + ry * y <= face + TOUCH_TOLERANCE + margin]
 
 
 def _circle_answer(hit, test):

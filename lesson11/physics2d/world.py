@@ -1032,7 +1032,7 @@ def _polygon_manifold(points, xy, flat, i, j, rule, margin):
         return None
     normal, depth = hit
     if rule == "clip":
-        pairs = collision.clip_manifold_outlines(pa, a, pb, b, normal, margin)
+        pairs = collision.clip_manifold_outlines(pa, a, pb, b, normal, depth, margin)
     else:
         pairs = (collision.corner_manifold_xy(pa, a, pb, b, normal, margin)
                  or [(p, depth) for p in collision.contact_points(pa, pb, normal)])
