@@ -648,14 +648,19 @@ def flat_outline(points, xy=None):
     if xy is None:
         xy = [(p.x, p.y) for p in points]
     n = len(xy)
-    mx = my = 0.0
-    for x, y in xy:  # one addition after another, as sum(points, Vector2()) adds
-        mx += x
-        my += y
-    mx, my = mx / n, my / n
+    if n == 4:  # a box: the mean's sums written out, and each corner's next one named
+        (x0, y0), (x1, y1), (x2, y2), (x3, y3) = xy
+        mx, my = ((((0.0 + x0) + x1) + x2) + x3) / 4, ((((0.0 + y0) + y1) + y2) + y3) / 4
+        edges = zip(xy, (xy[1], xy[2], xy[3], xy[0]))
+    else:
+        mx = my = 0.0
+        for x, y in xy:  # one addition after another, as sum(points, Vector2()) adds
+            mx += x
+            my += y
+        mx, my = mx / n, my / n
+        edges = zip(xy, xy[1:] + xy[:1])
     normals, faces, regular = [], [], True
-    for i, (vx, vy) in enumerate(xy):
-        wx, wy = xy[i + 1 - n]  # the next corner (i + 1 - n is i + 1 counted from the end)
+    for (vx, vy), (wx, wy) in edges:  # each corner and the next
         ex, ey = wx - vx, wy - vy
         if -SAME_POINT < ex < SAME_POINT and -SAME_POINT < ey < SAME_POINT:
             regular = False  # _distinct_xy drops a corner here
