@@ -683,11 +683,23 @@ def _best_face(outline, dx, dy):
     quotients), so the two edges at the farthest corner are compared without a square root.
     """
     points, normals = outline.xy, outline.normals
-    i, top = 0, points[0][0] * dx + points[0][1] * dy
-    for k in range(1, len(points)):  # the first corner farthest along the direction, as max() picks it
-        along = points[k][0] * dx + points[k][1] * dy
+    if len(points) == 4:  # a box: the loop below unrolled, the same comparisons in order
+        (x0, y0), (x1, y1), (x2, y2), (x3, y3) = points
+        i, top = 0, x0 * dx + y0 * dy
+        along = x1 * dx + y1 * dy
         if along > top:
-            i, top = k, along
+            i, top = 1, along
+        along = x2 * dx + y2 * dy
+        if along > top:
+            i, top = 2, along
+        if x3 * dx + y3 * dy > top:
+            i = 3
+    else:
+        i, top = 0, points[0][0] * dx + points[0][1] * dy
+        for k in range(1, len(points)):  # the first corner farthest along the direction, as max() picks it
+            along = points[k][0] * dx + points[k][1] * dy
+            if along > top:
+                i, top = k, along
     (bx, by), (ax, ay) = normals[i - 1], normals[i]  # the edge into corner i, and the edge out of it
     if abs(by * dx + -bx * dy) <= abs(-ay * dx + ax * dy):  # |(v - before)/|..|·d| <= |(v - after)/|..|·d|
         return i - 1, i
