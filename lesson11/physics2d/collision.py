@@ -630,9 +630,9 @@ def _shadow_xy(points, ax, ay):
 FlatOutline = namedtuple("FlatOutline", "xy normals axes faces distinct regular")
 FlatOutline.__doc__ = """A polygon's corners on plain floats, for sat_xy and corner_manifold_xy (worked out once per
 body per contact search): (x, y) pairs; edge_normals' unit normals (nx, ny), zero-length edges skipped; each of
-those normals with the polygon's shadow (project) on it, (nx, ny, min, max); outward_faces as (vx, vy, nx, ny); the corners without repeats as
-_best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no zero-length edge), so normals[i]
-is edge i's (corner i to i + 1) and _best_face can read it."""
+those normals with the polygon's shadow (project) on it, (nx, ny, min, max); outward_faces as (vx, vy, nx, ny);
+the corners without repeats as _best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no
+zero-length edge), so normals[i] is edge i's (corner i to i + 1) and _best_face can read it."""
 
 
 _new_tuple = tuple.__new__  # _new_tuple(cls, values): a namedtuple cls's _make, in C
