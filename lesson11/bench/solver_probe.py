@@ -28,9 +28,12 @@ steps it took and the seconds spent inside them (scene.steps, scene.seconds).
 
 --speed times the reference solver's two versions on the brick pile in one run: the readable one
 (arbiter.ReferenceArbiter, collision.sat and corner_manifold_reference / clip_manifold_reference, the
-World's Vector2 sub-steps, every fast path off: arbiter.readable_versions) and the float one the World runs. The two piles step in turn, one step
-each, the first alternating, each step timed by the process's CPU clock; each repeat starts both
-piles afresh and the median of the repeats is kept. It also prints how far apart the two piles end.
+World's Vector2 sub-steps, every fast path off: arbiter.readable_versions) and the float one the World
+runs. The two piles step in turn, one step each, the first alternating, each step timed by the process's
+CPU clock (the switch into the readable versions is outside the timing); each repeat starts both piles
+afresh and the median of the repeats is kept. It also prints how far apart the two piles end. Its last
+row is the Tumbling Crates lab's 12-crate clicked pile (energy.scene("pile"), the issue's pile) in the
+World's default 1×6 setting: both versions run the clicks, and the steps after the last one are timed.
 """
 import math
 import statistics
@@ -343,6 +346,35 @@ SPEED_SETTINGS = {"World default 1×6, corners": dict(solver="accumulated"),
                   "probe's 3×1, clip": ENGINES["reference clip"]}
 
 
+def side_by_side(worlds, steps, timed_from=0, drops=None):
+    """Step worlds = [readable, float] `steps` times, one step each in turn (the first alternating), the readable
+    one inside readable_versions(); the CPU seconds of each one's steps from step `timed_from` on (the switch into
+    the readable versions is not timed). drops: {step: function(world) -> bodies to add before that step}."""
+    spent = [0.0, 0.0]
+    for k in range(steps):
+        for which in ((0, 1) if k % 2 == 0 else (1, 0)):
+            world = worlds[which]
+            for body in (drops or {}).get(k, lambda _: ())(world):
+                world.add(body)
+            if which == 0:
+                with readable_versions():
+                    start = time.process_time()
+                    world.step()
+                    took = time.process_time() - start
+            else:
+                start = time.process_time()
+                world.step()
+                took = time.process_time() - start
+            if k >= timed_from:
+                spent[which] += took
+    return spent
+
+
+def gap_px(worlds):
+    """Largest distance (px) between the same body's positions in the two worlds."""
+    return max((p.pos - q.pos).length() for p, q in zip(worlds[0].bodies, worlds[1].bodies))
+
+
 def reference_speed(settings, steps=300, repeats=3):
     """The brick pile in the reference solver, readable and float versions side by side:
     (readable CPU ms per step, float CPU ms per step, largest difference of any body's position, px)."""
@@ -351,36 +383,47 @@ def reference_speed(settings, steps=300, repeats=3):
         piles = [make(settings), make(settings)]  # [readable, float]
         for pile in piles:
             brick_pile(pile)
-        spent = [0.0, 0.0]
-        for k in range(steps):
-            for which in ((0, 1) if k % 2 == 0 else (1, 0)):
-                start = time.process_time()
-                if which == 0:
-                    with readable_versions():
-                        piles[0].world.step()
-                else:
-                    piles[1].world.step()
-                spent[which] += time.process_time() - start
-        gap = max((p.pos - q.pos).length() for p, q in zip(piles[0].world.bodies, piles[1].world.bodies))
-        runs.append((1000 * spent[0] / steps, 1000 * spent[1] / steps, gap))
+        worlds = [pile.world for pile in piles]
+        spent = side_by_side(worlds, steps)
+        runs.append((1000 * spent[0] / steps, 1000 * spent[1] / steps, gap_px(worlds)))
     return statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs), max(r[2] for r in runs)
 
 
-def speed_main(steps=300, repeats=3):
-    """--speed: the table of reference_speed for each of SPEED_SETTINGS."""
+def clicked_pile_speed(settings, settle=240, repeats=3):
+    """Tumbling Crates' 12-crate clicked pile (energy.scene("pile"): the lab's world, its crates clicked in every
+    20 frames) in the reference solver, readable and float side by side; the `settle` steps after the last click
+    are timed: (readable CPU ms per step, float CPU ms per step, largest position difference, px)."""
+    from . import energy  # the lab's scene: imported here, the accuracy tables do not need it
+    runs = []
+    for _ in range(repeats):
+        made = [energy.scene("pile", settings) for _ in range(2)]  # [readable, float], each with its own crates
+        worlds = [world for world, _ in made]
+        last = max(made[0][1])
+        drops = {step: (lambda world, step=step: made[worlds.index(world)][1][step]) for step in made[0][1]}
+        spent = side_by_side(worlds, last + 1 + settle, timed_from=last + 1, drops=drops)
+        runs.append((1000 * spent[0] / settle, 1000 * spent[1] / settle, gap_px(worlds)))
+    return statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs), max(r[2] for r in runs)
+
+
+def speed_main(steps=300, repeats=3, settle=240):
+    """--speed: the table of reference_speed for each of SPEED_SETTINGS, and the lab's clicked pile."""
     print(f"Reference solver on the 12-crate brick pile, {steps} steps of 1/120 s, median of {repeats} repeats "
           f"(CPU ms per step):")
     print()
     print("| setting | readable (Vector2) | float | readable / float | positions apart at the end |")
     print("|---|---:|---:|---:|---:|")
-    for name, settings in SPEED_SETTINGS.items():
-        readable, fast, gap = reference_speed(settings, steps, repeats)
+    rows = [(name, lambda settings=settings: reference_speed(settings, steps, repeats))
+            for name, settings in SPEED_SETTINGS.items()]
+    rows.append((f"lab's 12-crate clicked pile, 1×6 corners ({settle} steps after the last click)",
+                 lambda: clicked_pile_speed(dict(solver="accumulated"), settle, repeats)))
+    for name, measure in rows:
+        readable, fast, gap = measure()
         print(f"| {name} | {readable:.3f} ms | {fast:.3f} ms | {readable / fast:.2f}× | {gap:.1e} px |", flush=True)
 
 
 def main():
     if "--speed" in sys.argv[1:]:
-        return speed_main(*([30, 1] if "--quick" in sys.argv[1:] else []))
+        return speed_main(*([30, 1, 30] if "--quick" in sys.argv[1:] else []))
     engines = list(ENGINES) + (["pymunk"] if pymunk else [])
     print("| engine | flat e=0.5 rebound (spin) | flat e=0.9 rebound (spin) | 10-stack drift 20 s | 100:1 overlap 5 s (on top) | ramp rest 3 s |")
     print("|---|---|---|---|---|---|")

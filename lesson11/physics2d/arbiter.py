@@ -242,9 +242,12 @@ class Arbiter(ReferenceArbiter):
         old = self.points
         self.points = []
         pos, turn = self.a.pos, -self.a.angle
+        new_point = ContactPoint.__new__
         for point, depth in zip(manifold.points, manifold.depths):
             local_a = (point - pos).rotate_rad(turn)  # pygame's rotation, as the reference (exact quarter turns)
-            contact = ContactPoint(point, depth, local_a)
+            contact = new_point(ContactPoint)  # ContactPoint(point, depth, local_a), its __init__ written out
+            contact.point, contact.depth, contact.local_a = point, depth, local_a
+            contact.normal_impulse = contact.friction_impulse = 0.0
             lx, ly = contact.local_xy = local_a.x, local_a.y  # local_a's floats, for the next step's matching
             nearest, match = math.inf, None
             for c in old:  # the first nearest, as min() picks it
@@ -376,7 +379,12 @@ def solve_passes(groups, vx, vy, w, passes):
     """
     for _ in range(passes):
         for ka, kb, nx, ny, ima, iia, imb, iib, mu, rows in groups:
-            vax, vay, wa, vbx, vby, wb = vx[ka], vy[ka], w[ka], vx[kb], vy[kb], w[kb]
+            vax = vx[ka]  # one statement each: a six-name assignment would build and unpack a tuple
+            vay = vy[ka]
+            wa = w[ka]
+            vbx = vx[kb]
+            vby = vy[kb]
+            wb = w[kb]
             for c, rax, ray, rbx, rby, bias, scaled_mass, impulse_scale, _ in rows:
                 vn = (vbx - wb * rby - vax + wa * ray) * nx + (vby + wb * rbx - vay - wa * rax) * ny
                 old = c.normal_impulse
@@ -414,7 +422,12 @@ def solve_passes(groups, vx, vy, w, passes):
                     vbx += px * imb
                     vby += py * imb
                     wb += (rbx * py - rby * px) * iib
-            vx[ka], vy[ka], w[ka], vx[kb], vy[kb], w[kb] = vax, vay, wa, vbx, vby, wb
+            vx[ka] = vax
+            vy[ka] = vay
+            w[ka] = wa
+            vx[kb] = vbx
+            vy[kb] = vby
+            w[kb] = wb
 
 
 @contextlib.contextmanager

@@ -587,14 +587,14 @@ def _unit(x, y):
     return x / length, y / length
 
 
-def shadows_xy(points, axes):
-    """project() of (x, y) pairs on each unit axis (ax, ay): [(min p·axis, max p·axis), ...] px, the same
-    comparisons in the same order (a box's loop unrolled, as project's fast path)."""
+def axes_xy(points, normals):
+    """Each unit normal (nx, ny) with project() of the (x, y) pairs on it: [(nx, ny, min p·n, max p·n), ...] px,
+    the same comparisons in the same order (a box's loop unrolled, as project's fast path)."""
     if len(points) != 4:
-        return [_shadow_xy(points, ax, ay) for ax, ay in axes]
+        return [(nx, ny, *_shadow_xy(points, nx, ny)) for nx, ny in normals]
     (x0, y0), (x1, y1), (x2, y2), (x3, y3) = points
-    shadows = []
-    for ax, ay in axes:
+    axes = []
+    for ax, ay in normals:
         lowest = highest = x0 * ax + y0 * ay
         d = x1 * ax + y1 * ay
         if d < lowest:
@@ -611,8 +611,8 @@ def shadows_xy(points, axes):
             lowest = d
         elif d > highest:
             highest = d
-        shadows.append((lowest, highest))
-    return shadows
+        axes.append((ax, ay, lowest, highest))
+    return axes
 
 
 def _shadow_xy(points, ax, ay):
@@ -627,12 +627,15 @@ def _shadow_xy(points, ax, ay):
     return lowest, highest
 
 
-FlatOutline = namedtuple("FlatOutline", "xy normals shadows faces distinct regular")
+FlatOutline = namedtuple("FlatOutline", "xy normals axes faces distinct regular")
 FlatOutline.__doc__ = """A polygon's corners on plain floats, for sat_xy and corner_manifold_xy (worked out once per
-body per contact search): (x, y) pairs; edge_normals' unit normals (nx, ny), zero-length edges skipped; the
-shadow (project) on each of those normals; outward_faces as (vx, vy, nx, ny); the corners without repeats as
-_best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no zero-length edge), so normals[i]
-is edge i's (corner i to i + 1) and _best_face can read it."""
+body per contact search): (x, y) pairs; edge_normals' unit normals (nx, ny), zero-length edges skipped; each of
+those normals with the polygon's shadow (project) on it, (nx, ny, min, max); outward_faces as (vx, vy, nx, ny);
+the corners without repeats as _best_edge drops them (_distinct_xy); and `regular`: no corner dropped (so no
+zero-length edge), so normals[i] is edge i's (corner i to i + 1) and _best_face can read it."""
+
+
+_new_tuple = tuple.__new__  # _new_tuple(cls, values): a namedtuple cls's _make, in C
 
 
 def flat_outline(points, xy=None):
@@ -645,74 +648,121 @@ def flat_outline(points, xy=None):
     if xy is None:
         xy = [(p.x, p.y) for p in points]
     n = len(xy)
-    mx = my = 0.0
-    for x, y in xy:  # one addition after another, as sum(points, Vector2()) adds
-        mx += x
-        my += y
-    mx, my = mx / n, my / n
+    if n == 4:  # a box: the mean's sums written out, and each corner's next one named
+        (x0, y0), (x1, y1), (x2, y2), (x3, y3) = xy
+        mx, my = ((((0.0 + x0) + x1) + x2) + x3) / 4, ((((0.0 + y0) + y1) + y2) + y3) / 4
+        edges = zip(xy, (xy[1], xy[2], xy[3], xy[0]))
+    else:
+        mx = my = 0.0
+        for x, y in xy:  # one addition after another, as sum(points, Vector2()) adds
+            mx += x
+            my += y
+        mx, my = mx / n, my / n
+        edges = zip(xy, xy[1:] + xy[:1])
     normals, faces, regular = [], [], True
-    for i, (vx, vy) in enumerate(xy):
-        wx, wy = xy[i + 1 - n]  # the next corner (i + 1 - n is i + 1 counted from the end)
+    for (vx, vy), (wx, wy) in edges:  # each corner and the next
         ex, ey = wx - vx, wy - vy
         if -SAME_POINT < ex < SAME_POINT and -SAME_POINT < ey < SAME_POINT:
             regular = False  # _distinct_xy drops a corner here
-        if ex * ex + ey * ey == 0:
+        squared = ey * ey + ex * ex  # = ex² + ey² (a sum of two floats does not depend on their order)
+        if squared == 0:
             continue  # a zero-length edge has no normal
-        length = sqrt(ey * ey + ex * ex)
+        length = sqrt(squared)
         nx, ny = -ey / length, ex / length
         normals.append((nx, ny))
         faces.append((vx, vy, -nx, -ny) if (vx - mx) * nx + (vy - my) * ny < 0 else (vx, vy, nx, ny))
-    return FlatOutline(xy, normals, shadows_xy(xy, normals), faces,
-                       xy if regular else _distinct_xy(xy), regular)
+    return _new_tuple(FlatOutline, (xy, normals, axes_xy(xy, normals), faces, xy if regular else _distinct_xy(xy),
+                                    regular))  # FlatOutline(...) without its Python-level __new__
 
 
 def _best_face(outline, dx, dy):
-    """_best_edge_distinct's edge on a regular FlatOutline, with its unit normal: (v1, (nx, ny)), the same floats.
+    """_best_edge_distinct's edge on a regular FlatOutline, by index: (k, i), edge k (corner k to k + 1, normal
+    normals[k]) and the farthest corner i; the same choice, from the same floats.
 
     Edge i's unit direction e / |e| is (n.y, -n.x) of its normal n = (-e.y, e.x) / |e| (exactly: the same
     quotients), so the two edges at the farthest corner are compared without a square root.
     """
     points, normals = outline.xy, outline.normals
-    i, top = 0, points[0][0] * dx + points[0][1] * dy
-    for k in range(1, len(points)):  # the first corner farthest along the direction, as max() picks it
-        along = points[k][0] * dx + points[k][1] * dy
+    if len(points) == 4:  # a box: the loop below unrolled, the same comparisons in order
+        (x0, y0), (x1, y1), (x2, y2), (x3, y3) = points
+        i, top = 0, x0 * dx + y0 * dy
+        along = x1 * dx + y1 * dy
         if along > top:
-            i, top = k, along
+            i, top = 1, along
+        along = x2 * dx + y2 * dy
+        if along > top:
+            i, top = 2, along
+        if x3 * dx + y3 * dy > top:
+            i = 3
+    else:
+        i, top = 0, points[0][0] * dx + points[0][1] * dy
+        for k in range(1, len(points)):  # the first corner farthest along the direction, as max() picks it
+            along = points[k][0] * dx + points[k][1] * dy
+            if along > top:
+                i, top = k, along
     (bx, by), (ax, ay) = normals[i - 1], normals[i]  # the edge into corner i, and the edge out of it
     if abs(by * dx + -bx * dy) <= abs(-ay * dx + ax * dy):  # |(v - before)/|..|·d| <= |(v - after)/|..|·d|
-        return points[i - 1], normals[i - 1]
-    return points[i], normals[i]
+        return i - 1, i
+    return i, i
 
 
 def sat_xy(pa, a, pb, b, margin):
     """sat(pa, pb, margin) on plain floats, for the reference solver's speculative contacts: the same answer.
 
-    a, b are the polygons' FlatOutlines (each one's shadows on its own normals
-    worked out once per body, not once per pair); pa, pb the same corners as
-    Vector2, used only where sat turns to orient_a_to_b (both ways out equally
-    long). sat stays the readable reference (the students' lesson);
-    tests/test_arbiter_fast.py holds the two equal.
+    a, b are the polygons' FlatOutlines (each one's shadow on its own normals
+    worked out once per body, not once per pair; the other's shadow is projected
+    axis by axis, as sat projects it); pa, pb the same corners as Vector2, used
+    only where sat turns to orient_a_to_b (both ways out equally long). sat stays
+    the readable reference (the students' lesson); tests/test_arbiter_fast.py
+    holds the two equal.
     """
     best_x = best_y = None
     best_depth = math.inf
     limit = TOUCH_TOLERANCE - margin
-    # A's normals, then B's, as sat takes them: each polygon's shadow on its own normals is known already
-    shadows_a = a.shadows + shadows_xy(a.xy, b.normals)
-    shadows_b = shadows_xy(b.xy, a.normals) + b.shadows
-    for (ax, ay), (min_a, max_a), (min_b, max_b) in zip(a.normals + b.normals, shadows_a, shadows_b):
-        # min() and max() as conditionals: each keeps its first argument unless the second is smaller (larger)
-        if (max_b if max_b < max_a else max_a) - (min_b if min_b > min_a else min_a) <= limit:
-            return None  # a gap (or exact touching): apart
-        forwards, backwards = max_a - min_b, max_b - min_a
-        depth = backwards if backwards < forwards else forwards
-        if depth < best_depth:
-            if abs(forwards - backwards) <= TOUCH_TOLERANCE:
-                best_x, best_y = orient_a_to_b(Vector2(ax, ay), pa, pb)
-            elif forwards < backwards:
-                best_x, best_y = ax, ay
+    # A's normals, then B's, as sat takes them
+    for axes, other, own_is_a in ((a.axes, b.xy, True), (b.axes, a.xy, False)):
+        four = len(other) == 4
+        if four:
+            (x0, y0), (x1, y1), (x2, y2), (x3, y3) = other
+        for ax, ay, own_min, own_max in axes:
+            if four:  # project() of the other polygon, its box loop unrolled (the same comparisons in order)
+                low = high = x0 * ax + y0 * ay
+                d = x1 * ax + y1 * ay
+                if d < low:
+                    low = d
+                elif d > high:
+                    high = d
+                d = x2 * ax + y2 * ay
+                if d < low:
+                    low = d
+                elif d > high:
+                    high = d
+                d = x3 * ax + y3 * ay
+                if d < low:
+                    low = d
+                elif d > high:
+                    high = d
             else:
-                best_x, best_y = -ax, -ay
-            best_depth = depth
+                low, high = _shadow_xy(other, ax, ay)
+            if own_is_a:
+                min_a, max_a = own_min, own_max
+                min_b, max_b = low, high
+            else:
+                min_a, max_a = low, high
+                min_b, max_b = own_min, own_max
+            # min() and max() as conditionals: each keeps its first argument unless the second is smaller (larger)
+            if (max_b if max_b < max_a else max_a) - (min_b if min_b > min_a else min_a) <= limit:
+                return None  # a gap (or exact touching): apart
+            forwards, backwards = max_a - min_b, max_b - min_a
+            depth = backwards if backwards < forwards else forwards
+            if depth < best_depth:
+                if abs(forwards - backwards) <= TOUCH_TOLERANCE:
+                    best_x, best_y = orient_a_to_b(Vector2(ax, ay), pa, pb)
+                elif forwards < backwards:
+                    best_x, best_y = ax, ay
+                else:
+                    best_x, best_y = -ax, -ay
+                best_depth = depth
     return (None if best_x is None else Vector2(best_x, best_y)), best_depth
 
 
@@ -767,7 +817,8 @@ def corner_manifold_xy(pa, a, pb, b, normal, margin):
         if not within and outline.regular:
             continue  # no corner to measure from the face: skip _best_face (which has no other effect)
         if outline.regular:
-            (v1x, v1y), (fx, fy) = _best_face(outline, dx, dy)
+            k, _ = _best_face(outline, dx, dy)
+            (v1x, v1y), (fx, fy) = outline.xy[k], outline.normals[k]
         else:
             (v1x, v1y), (v2x, v2y), _ = _best_edge_distinct(outline.distinct, dx, dy)
             fx, fy = _unit(-(v2y - v1y), v2x - v1x)
@@ -800,9 +851,13 @@ def _within_faces(corners, xy, faces, limit):
                 within.append((p, px, py))
         return within
     (ax, ay, aex, aey), (bx, by, bex, bey), (cx, cy, cex, cey), (dx, dy, dex, dey) = faces
-    return [(p, px, py) for p, (px, py) in zip(corners, xy)  # `not >=`: as the loop's break reads it
-            if not (px - ax) * aex + (py - ay) * aey >= limit and not (px - bx) * bex + (py - by) * bey >= limit
-            and not (px - cx) * cex + (py - cy) * cey >= limit and not (px - dx) * dex + (py - dy) * dey >= limit]
+    within = []
+    for p, (px, py) in zip(corners, xy):  # a loop, not a comprehension: the faces stay fast locals, not cells
+        if ((px - ax) * aex + (py - ay) * aey >= limit or (px - bx) * bex + (py - by) * bey >= limit
+                or (px - cx) * cex + (py - cy) * cey >= limit or (px - dx) * dex + (py - dy) * dey >= limit):
+            continue  # as the loop above breaks
+        within.append((p, px, py))
+    return within
 
 
 def _clip_xy(v1, v2, dx, dy, offset):
@@ -826,21 +881,52 @@ def clip_manifold_xy(pa, distinct_a, pb, distinct_b, normal, margin):
     """clip_manifold with each polygon's corners as (x, y) pairs that _distinct_xy has kept (a FlatOutline's
     `distinct`); pa, pb the same polygons as Vector2, for the rare fallback to the corners rule."""
     nx, ny = normal
-    a1, a2, a_far = _best_edge_distinct(distinct_a, nx, ny)
-    b1, b2, b_far = _best_edge_distinct(distinct_b, -nx, -ny)
-    ua, ub = _unit(a2[0] - a1[0], a2[1] - a1[1]), _unit(b2[0] - b1[0], b2[1] - b1[1])
+    return (_clip_edges(normal, margin, _clip_edge(distinct_a, nx, ny), _clip_edge(distinct_b, -nx, -ny))
+            or _corners_fallback(pa, pb, normal, margin))
+
+
+def clip_manifold_outlines(pa, a, pb, b, normal, depth, margin):
+    """clip_manifold_xy with each polygon's FlatOutline, and the pair's depth from sat(pa, pb, margin) (sat_xy's):
+    a regular outline's edge and its unit direction are read off its corners and normals (_best_face), without
+    the square roots, and the fallback to the corners rule takes the depth given (_corners_fallback would work
+    it out again); the same floats."""
+    nx, ny = normal
+    return (_clip_edges(normal, margin, _outline_edge(a, nx, ny), _outline_edge(b, -nx, -ny))
+            or [(p, depth) for p in contact_points(pa, pb, normal)])
+
+
+def _clip_edge(distinct, dx, dy):
+    """_best_edge_distinct's (v1, v2, farthest corner) with the edge's unit direction (v2 - v1) / |v2 - v1|."""
+    v1, v2, far = _best_edge_distinct(distinct, dx, dy)
+    return v1, v2, far, _unit(v2[0] - v1[0], v2[1] - v1[1])
+
+
+def _outline_edge(outline, dx, dy):
+    """_clip_edge(outline.distinct, dx, dy) of a FlatOutline; for a regular one, the unit direction of edge k is
+    (n.y, -n.x) of its normal n (the same quotients as _unit's, as _best_face says)."""
+    if not outline.regular:
+        return _clip_edge(outline.distinct, dx, dy)
+    k, i = _best_face(outline, dx, dy)
+    points, (ex, ey) = outline.xy, outline.normals[k]
+    return points[k], points[k + 1 - len(points)], points[i], (ey, -ex)  # k + 1 - n: corner k + 1, from the end
+
+
+def _clip_edges(normal, margin, a_edge, b_edge):
+    """clip_manifold_xy's clipping, from each polygon's best edge (v1, v2, farthest corner, unit v1 → v2): the
+    points kept, [(point, depth px), ...], possibly none (the caller then falls back to the corners rule)."""
+    nx, ny = normal
+    a1, a2, a_far, ua = a_edge
+    b1, b2, b_far, ub = b_edge
     if abs(ua[0] * nx + ua[1] * ny) <= abs(ub[0] * nx + ub[1] * ny):
-        ref1, ref2, ref_far, inc1, inc2, rx, ry = a1, a2, a_far, b1, b2, nx, ny
+        ref1, ref2, ref_far, (sx, sy), inc1, inc2, rx, ry = a1, a2, a_far, ua, b1, b2, nx, ny
     else:
-        ref1, ref2, ref_far, inc1, inc2, rx, ry = b1, b2, b_far, a1, a2, -nx, -ny
-    sx, sy = _unit(ref2[0] - ref1[0], ref2[1] - ref1[1])
-    kept = _clip_xy(inc1, inc2, sx, sy, sx * ref1[0] + sy * ref1[1])
+        ref1, ref2, ref_far, (sx, sy), inc1, inc2, rx, ry = b1, b2, b_far, ub, a1, a2, -nx, -ny
+    kept = _clip_xy(inc1, inc2, sx, sy, sx * ref1[0] + sy * ref1[1])  # (sx, sy): the reference edge's direction
     if len(kept) == 2:
         kept = _clip_xy(kept[0], kept[1], -sx, -sy, -(sx * ref2[0] + sy * ref2[1]))
     face = rx * ref_far[0] + ry * ref_far[1]
-    manifold = [(Vector2(x, y), face - (rx * x + ry * y)) for x, y in kept
-                if rx * x + ry * y <= face + TOUCH_TOLERANCE + margin]
-    return manifold or _corners_fallback(pa, pb, normal, margin)
+    return [(Vector2(x, y), face - (rx * x + ry * y)) for x, y in kept
+            if rx * x + ry * y <= face + TOUCH_TOLERANCE + margin]
 
 
 def _circle_answer(hit, test):

@@ -18,6 +18,7 @@ are in lesson11/bench/README.md ("physics2d's choices, measured").
 import math
 from collections import deque as _deque
 from collections import namedtuple
+from functools import partial
 from itertools import starmap as _starmap
 
 from . import broadphase, collision, response, sleep
@@ -44,6 +45,8 @@ MAX_STEPS = 4              # fixed steps per advance() at most: two 60 fps frame
 _body_world_points = Body.world_points  # _plain_manifolds inlines it for bodies that do not override it
 Contact = namedtuple("Contact", "a b point normal depth")
 Contact.__doc__ = "One contact: bodies a and b, the world point (px), the unit normal A→B, the depth (px)."
+_contact = partial(tuple.__new__, Contact)  # Contact._make of a 5-tuple: the same Contact, made in C
+_manifold = partial(tuple.__new__, collision.Manifold)  # collision.Manifold._make of a 4-tuple, the same way
 
 
 class World:
@@ -493,11 +496,12 @@ class World:
         """The reference solver (arbiter.py's phases): impulses kept across passes and steps, soft contacts."""
         h = dt / self.substeps
         # 1. collide once per step: speculative manifolds, matched with last step's arbiters
-        arbiters = {}
-        for a, b, manifold in self.manifolds(speculative=dt):
-            arbiter = self.arbiters.get((id(a), id(b))) or Arbiter(a, b)
+        arbiters, kept = {}, self.arbiters
+        for a, b, manifold in self.speculative_search(dt):
+            key = (id(a), id(b))
+            arbiter = kept.get(key) or Arbiter(a, b)
             arbiter.update(manifold)
-            arbiters[(id(a), id(b))] = arbiter
+            arbiters[key] = arbiter
         self.arbiters = arbiters
         # 2. prepare: anchors, effective masses, approach speeds (before any impulse)
         for arbiter in arbiters.values():
@@ -515,8 +519,15 @@ class World:
         for _ in range(RESTITUTION_PASSES):
             for arbiter in bouncing:
                 arbiter.bounce(self.resting_speed)
-        self.contacts = [Contact(arb.a, arb.b, c.point, arb.normal, c.depth)
+        self.contacts = [_contact((arb.a, arb.b, c.point, arb.normal, c.depth))  # Contact(...) without its __new__
                          for arb in arbiters.values() for c in arb.points]
+
+    def speculative_search(self, dt):
+        """self.manifolds(speculative=dt); the float search called directly when manifolds() would call it."""
+        if (type(self).manifolds is World.manifolds and collision.FAST_PATHS and not collision.READABLE
+                and "sleep" not in self.effects):
+            return _speculative_manifolds(self, dt)  # the same search, without manifolds()' yield from
+        return self.manifolds(speculative=dt)
 
     def readable_substeps(self, arbiters, h, soft, use_push):
         """step_accumulated's phases 3 to 6, readable: ReferenceArbiter.solve for each contact, each pass."""
@@ -965,12 +976,13 @@ def _speculative_manifolds(world, dt):
     first use; a polygon pair goes to collision.sat_xy and corner_manifold_xy
     (or clip_manifold), the float forms of sat and corner_manifold that collide()
     calls with a margin. Other pairs go through collision.collide. The reference is
-    the rest of manifolds(), which readable_versions() runs.
+    the rest of manifolds(), which readable_versions() runs. A list of (a, b, Manifold), not a generator:
+    step_accumulated takes them all, and a list is quicker to go through.
     """
     bodies = world.bodies
     moving = [body.inv_mass != 0 for body in bodies]
     if True not in moving:
-        return
+        return []
     points, xy, boxes = [], [], []  # each body's world points; a polygon's also as (x, y) pairs
     for body in bodies:
         if body.shape.kind == "polygon":
@@ -989,7 +1001,7 @@ def _speculative_manifolds(world, dt):
     pairs, tested = search(boxes, moving, reach, base, boxes)
     world.counters["pair_tests"] += tested
     rule = world.contact_rule
-    narrow = contacts = 0
+    found, narrow, contacts = [], 0, 0
     try:
         for i, j in pairs:
             a, b = bodies[i], bodies[j]
@@ -1003,10 +1015,11 @@ def _speculative_manifolds(world, dt):
             if manifold is None:
                 continue
             contacts += len(manifold.points)
-            yield a, b, manifold
-    finally:
+            found.append((a, b, manifold))
+    finally:  # counted also when a pair's test raises, as manifolds() counts
         world.counters["narrow_tests"] += narrow
         world.counters["contacts"] += contacts
+    return found
 
 
 def _world_corners(body):
@@ -1043,11 +1056,15 @@ def _polygon_manifold(points, xy, flat, i, j, rule, margin):
         return None
     normal, depth = hit
     if rule == "clip":
-        pairs = collision.clip_manifold_xy(pa, a.distinct, pb, b.distinct, normal, margin)
+        pairs = collision.clip_manifold_outlines(pa, a, pb, b, normal, depth, margin)
     else:
         pairs = (collision.corner_manifold_xy(pa, a, pb, b, normal, margin)
                  or [(p, depth) for p in collision.contact_points(pa, pb, normal)])
-    return collision.Manifold(normal, depth, [p for p, _ in pairs], [d for _, d in pairs])
+    points, depths = [], []
+    for p, d in pairs:
+        points.append(p)
+        depths.append(d)
+    return _manifold((normal, depth, points, depths))  # Manifold(normal, depth, points, depths), made in C
 
 
 def _polygon_box(corners):
