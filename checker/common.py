@@ -64,6 +64,8 @@ def describe_function_error(name, error, lab_name):
         return f"{error['message']} (it was at {at}{text}): is there an endless loop?"
     if error.get("kind") == "flood":
         return f"{name}() {error['message']} of output (printing at {at}{text}); remove the print."
+    if error.get("kind") == "value":   # the grader's account: the function left a body's motion of the wrong kind
+        return f"{name}() {error['message']}: a body's vel stays a Vector2 and its omega a number."
     if error.get("kind") == "report":   # the grader's account of the child's report, not something the function raised
         return error["message"].rstrip(".") + "."
     if error.get("kind") == "exit":

@@ -148,6 +148,9 @@ def judge(lab, path, settings, child):
             functions[name] = {"ok": False, "error": child_error or _error(
                 f"{function}() stopped in the child, but the child gave no account of the error ({exc})", "report")}
             continue
+        except tape.StudentValue as exc:   # the function left a body's vel or omega of the wrong kind
+            functions[name] = {"ok": False, "error": _error(str(exc), "value")}
+            continue
         except tape.TapeMismatch as exc:
             functions[name] = {"ok": False, "error": _error(
                 f"the checker could not replay what {function}() did ({exc}): the code outside the steps "

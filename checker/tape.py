@@ -109,6 +109,22 @@ class TapeMismatch(Exception):
     """The parent's probe asked for a call the tape does not hold (other inputs, another order)."""
 
 
+class StudentValue(Exception):
+    """A replayed call left a body's vel or omega as something a body's motion cannot be (a Vector2 omega, a
+    tuple or None for vel): the student's mistake, named, where arithmetic on it would fail in the grader."""
+
+
+def motion_problem(bodies):
+    """How a body of `bodies` breaks its motion's kinds (vel a Vector2 in px/s, omega a number in rad/s), or ""."""
+    for body in bodies:
+        vel, omega = getattr(body, "vel", None), getattr(body, "omega", None)
+        if not isinstance(vel, Vector2):
+            return f"left a body's vel as {repr(vel)[:60]}, not a Vector2 (px/s)"
+        if not isinstance(omega, numbers.Real):
+            return f"left a body's omega as {repr(omega)[:60]}, not a number (rad/s)"
+    return ""
+
+
 class StudentRaised(Exception):
     """A replayed call that raised in the child: carries the child's account of the error."""
 
@@ -566,11 +582,13 @@ class Replayer:
                     raise TapeMismatch("the tape calls a function the probe did not put in the student's place")
                 restore(arguments, event.get("state"), seen)
                 self._guard(name, bodies, frozen)
+                self._motion(bodies)
                 hook_args, hook_kwargs = decode(event.get("args"), seen)
                 hook(*hook_args, **hook_kwargs)
             if entry.get("post") is not None:
                 restore(arguments, entry["post"], seen)
                 self._guard(name, bodies, frozen)
+                self._motion(bodies)
             if entry.get("raised"):
                 raise StudentRaised({"kind": "exception", "message": "raised"})
             return decode(entry.get("ret"), seen)
@@ -578,6 +596,13 @@ class Replayer:
         replayed.__name__ = name
         return replayed
 
+
+    @staticmethod
+    def _motion(bodies):
+        """Raise StudentValue if a replayed call left a body's vel or omega of the wrong kind (motion_problem)."""
+        problem = motion_problem(bodies)
+        if problem:
+            raise StudentValue(problem)
 
     def _guard(self, name, bodies, frozen):
         """Note the FROZEN fields of `bodies` that differ from `frozen` (their state before the call)."""

@@ -388,6 +388,13 @@ STEP6_WRONG = [
         b.omega += cross(rb, impulse) / b.inertia
     """}, status=("error",),
         why="the same for two dynamic bodies; a static body has inertia 0: ZeroDivisionError"),
+    wrong("spin_vector_assigned", "forgot the cross product and assigned: b.omega = impulse * b.inv_inertia, a "
+          "Vector2 where a number belongs", "apply_impulse_spin", {6: """
+        a.omega -= cross(ra, impulse) * a.inv_inertia
+        b.omega = impulse * b.inv_inertia
+    """}, status=("error",),
+        why="B's omega becomes a Vector2: the replay names it (it was the checker's own TypeError, 'a bug in the "
+            "checker', until the tape checked a body's motion)"),
     wrong("spin_rotates_levers_in_place", "turns ra and rb a quarter turn in place to write r × P as a dot product",
           "apply_impulse_spin", {6: """
         ra.rotate_ip(90)   # (-ra.y, ra.x) · P = ra × P
@@ -676,6 +683,7 @@ SAYS = {
     "spin_assigned": ("set to the change",),
     "spin_both_plus": ("changed the wrong way",),
     "spin_divides_inertia": ("ZeroDivisionError",),
+    "spin_vector_assigned": ("left a body's omega as Vector2(", "not a number (rad/s)"),
     "spin_rotates_levers_in_place": ("changed its argument ra in place",),
     "outside_gravity_world": ("gravity=(0, 500)",),
     "outside_gravity_set": ("world.gravity = pygame.Vector2(0, 300)",),

@@ -119,3 +119,39 @@ def test_the_child_never_sends_a_reference_value(tmp_path):
     cases = judged["functions"]["sat"]["data"]
     assert all(case["got"] is None for case in cases)
     assert sum(case["lesson"] is not None for case in cases) >= 10
+
+
+def _forge_motion(node, field, value):
+    """Set `field` of the first body ({"b": k, "vars": {...}}) found in a tape entry's encoded state; True if done."""
+    if isinstance(node, dict):
+        if "b" in node and isinstance(node.get("vars"), dict) and field in node["vars"]:
+            node["vars"][field] = value
+            return True
+        return any(_forge_motion(item, field, value) for item in node.values())
+    if isinstance(node, list):
+        return any(_forge_motion(item, field, value) for item in node)
+    return False
+
+
+@pytest.mark.parametrize("field, value, words", [
+    ("omega", {"v": [1.5, -2.0]}, "omega as Vector2(1.5, -2)"),   # the spin set to a vector (cross forgotten)
+    ("omega", None, "omega as None"),
+    ("omega", "0.5", "omega as '0.5'"),
+    ("vel", {"t": [1.0, 2.0]}, "vel as (1.0, 2.0)"),                  # the velocity set to a tuple
+    ("vel", {"o": "NoneType", "repr": "None"}, "vel as None"),
+])
+def test_a_body_left_with_motion_of_the_wrong_kind_is_the_students_error_not_the_graders(field, value, words, tmp_path):
+    """A step function that leaves b.omega a Vector2 (or vel a tuple, or either None) is named as the file's
+    mistake, in one line under its check; before tape.motion_problem the check's own arithmetic raised
+    TypeError and the report said 'a bug in the checker'. The same data from a forged tape gets the same answer."""
+    lab = lab_by_id("tumbling_crates")
+    path = os.path.join(ROOT, "solutions", "tumbling_crates.py")
+    settings, result, source = recorded(lab, path, 5, tmp_path)
+    forged = copy.deepcopy(result)
+    call = forged["tapes"]["apply_impulse"]["tape"][0]
+    assert _forge_motion(call["post"], field, value)
+    statuses, judged = function_results(lab, path, source, settings, forged)
+    error = judged["functions"]["apply_impulse"]["error"]
+    assert error["kind"] == "value" and words in error["message"]
+    status, message = statuses["apply_impulse_spin"]
+    assert status == "error" and "not a" in message and "\n" not in message
