@@ -17,6 +17,7 @@ from pygame import Vector2
 
 from lesson11.physics2d import box_points, centre_of, cross, edge_normals, project, regular_polygon
 
+from .common import real
 from .tape import judging, reference, splice_name  # noqa: F401 (the labs' probes import them from here)
 
 
@@ -173,7 +174,7 @@ def sat_answer(hit):
     if isinstance(first, (int, float)) and not isinstance(second, (int, float)):
         return {"bad": "(depth, normal)"}
     try:
-        normal, depth = Vector2(first), float(second)
+        normal, depth = Vector2(first), real(second)
     except (TypeError, ValueError):
         return {"bad": f"({_short_repr(first)}, {_short_repr(second)})"}
     if not (math.isfinite(normal.x) and math.isfinite(normal.y) and math.isfinite(depth)):

@@ -43,6 +43,8 @@ from pygame import Vector2
 from lesson11.physics2d import Body, World
 from lesson11.physics2d import shapes as _shapes
 
+from .common import number_problem, vector_problem
+
 # bound when the child imports this module, before any lab: a lab that replaces json.dumps or hashlib.sha256
 # does not change how the recorder tells a changed argument from an unchanged one
 _dumps, _sha256 = json.dumps, hashlib.sha256
@@ -110,18 +112,23 @@ class TapeMismatch(Exception):
 
 
 class StudentValue(Exception):
-    """A replayed call left a body's vel or omega as something a body's motion cannot be (a Vector2 omega, a
-    tuple or None for vel): the student's mistake, named, where arithmetic on it would fail in the grader."""
+    """A replayed call left a body's pos, vel, angle or omega as something a body's motion cannot be (a Vector2
+    omega, a tuple or None for vel, NaN): the student's mistake, named, where arithmetic on it would fail in the
+    grader."""
+
+
+MOTION = (("pos", vector_problem, "px"), ("vel", vector_problem, "px/s"), ("angle", number_problem, "rad"),
+          ("omega", number_problem, "rad/s"))
 
 
 def motion_problem(bodies):
-    """How a body of `bodies` breaks its motion's kinds (vel a Vector2 in px/s, omega a number in rad/s), or ""."""
+    """How a body of `bodies` breaks its motion's kinds (pos and vel finite Vector2s in px and px/s, angle and omega
+    finite numbers in rad and rad/s), or ""."""
     for body in bodies:
-        vel, omega = getattr(body, "vel", None), getattr(body, "omega", None)
-        if not isinstance(vel, Vector2):
-            return f"left a body's vel as {repr(vel)[:60]}, not a Vector2 (px/s)"
-        if not isinstance(omega, numbers.Real):
-            return f"left a body's omega as {repr(omega)[:60]}, not a number (rad/s)"
+        for field, problem_of, unit in MOTION:
+            problem = problem_of(getattr(body, field, None), unit)
+            if problem:
+                return f"left a body's {field} as {problem}"
     return ""
 
 
@@ -160,8 +167,10 @@ def encode(value, seen, depth=0):
         return {"o": type(value).__name__, "repr": "(nested too deep)"}
     if value is None or isinstance(value, (bool, str)):
         return value
-    if isinstance(value, numbers.Integral):
-        return int(value)
+    if isinstance(value, numbers.Integral):   # beyond a float's range no step's answer is right, and a JSON text of
+        # more than 4300 digits is refused by json itself: carried as a stand-in that names its size
+        return int(value) if int(value).bit_length() <= 1024 else \
+            {"o": "int", "repr": f"an int of {int(value).bit_length()} bits, too large for a float"}
     if isinstance(value, numbers.Real):
         return float(value)
     if isinstance(value, Vector2):

@@ -29,6 +29,7 @@ from pygame import Vector2
 from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
+from ...common import real
 from ...probe_kit import box, changed_vectors, judging, ngon, reference, twin, with_reference_steps
 from ...tape import run_rng
 
@@ -44,7 +45,10 @@ def answer_point(value):
     A bare number is no point (Vector2(0.3) would make it (0.3, 0.3)): {"bad": ..., "number": value}.
     """
     if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        return {"bad": f"the number {_short(value)}, not a point", "number": float(value)}
+        try:
+            return {"bad": f"the number {_short(value)}, not a point", "number": real(value)}
+        except ValueError:   # an int too large for a float
+            return {"bad": f"the number {_short(value)}, not a point"}
     try:
         point = Vector2(value)
     except (TypeError, ValueError):
@@ -65,7 +69,7 @@ def answer_hit(hit):
     if isinstance(first, (int, float)) and not isinstance(second, (int, float)):
         return {"bad": "(depth, normal)"}
     try:
-        normal, depth = Vector2(first), float(second)
+        normal, depth = Vector2(first), real(second)
     except (TypeError, ValueError):
         return {"bad": f"({_short(first)}, {_short(second)})"}
     if not (math.isfinite(normal.x) and math.isfinite(normal.y) and math.isfinite(depth)):
@@ -325,7 +329,7 @@ def probe_inertia(module, lab_path):
                          (rng.uniform(2.5, 9.0), rng.uniform(5.0, 40.0))):
         got = module.disc_inertia(mass, radius)
         try:
-            got = float(got)
+            got = real(got)
         except (TypeError, ValueError):
             got = {"bad": _short(got)}
         cases.append({"mass": mass, "radius": radius, "got": got})

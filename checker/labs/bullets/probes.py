@@ -28,6 +28,7 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
+from ...common import real
 from ...probe_kit import box, judging, ngon, reference, twin
 from ...tape import clock, run_rng
 
@@ -47,7 +48,7 @@ def answer_time(value):
     if isinstance(value, bool):
         return {"bad": repr(value)}
     try:
-        t = float(value)
+        t = real(value)
     except (TypeError, ValueError):
         return {"bad": _short(value)}
     return t if math.isfinite(t) else {"bad": f"a number that is not finite: {t!r}"}
@@ -266,7 +267,7 @@ def _plain_hit(hit):
         return None
     try:
         t, normal = hit
-        return {"t": float(t), "normal": [float(Vector2(normal).x), float(Vector2(normal).y)]}
+        return {"t": real(t), "normal": [float(Vector2(normal).x), float(Vector2(normal).y)]}
     except (TypeError, ValueError):
         return {"bad": _short(hit)}
 

@@ -27,6 +27,7 @@ from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, 
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from ... import probe_kit
+from ...common import real
 from ...probe_kit import judging, reference
 
 reference_centroid = reference(polygon_centroid)
@@ -53,7 +54,7 @@ def _points(value):
 
 def _number(value):
     try:
-        number = float(value)
+        number = real(value)
     except (TypeError, ValueError):
         text = repr(value)
         return text if len(text) <= 60 else text[:57] + "..."

@@ -17,6 +17,7 @@ Units: px, s, rad.
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
 
+from ...common import real
 from ...probe_kit import judging, reference
 from ...tape import clock, run_rng
 
@@ -37,7 +38,7 @@ def _text(value):
 
 def _number(value):
     try:
-        return float(value)
+        return real(value)
     except (TypeError, ValueError):
         return _text(value)
 

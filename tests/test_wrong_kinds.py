@@ -1,0 +1,160 @@
+"""A step function that returns, or leaves in its arguments, a value of the wrong kind is the file's failure.
+
+For each lab and each step function the checker probes, this module writes student files whose step region
+returns a wrong-kind value (a tuple where a Vector2 belongs, a Vector2 where a number belongs, a string, a
+3-tuple, NaN, a bool, an int too big for a float, a dict, ...) or, for a function that changes its arguments,
+leaves a body's field of the wrong kind. The other steps hold the solution's code. Each lab's files are graded in
+ONE run of `python -m checker --json`, as a teacher runs it, and every file must get: a graded row (no "not
+graded" / internal error), the function's check failing or erroring, and that check's message one line that
+does not blame the checker. Before these tests such values raised inside the checks' own arithmetic (TypeError,
+OverflowError) and the file got "this is a bug in the checker".
+
+The plausible mistakes among these are in the lab corpora too (tests/corpus_<lab>.py, with their SAYS words).
+"""
+import json
+import os
+import subprocess
+import sys
+from types import SimpleNamespace
+
+import pytest
+
+from corpus_files import CorpusFiles
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+V = "pygame.Vector2"   # the one module attribute a step may use (checker/step_rules.py)
+
+# wrong kinds by the kind the function returns
+NUMBER = [f"{V}(1, 0)", "'1.5'", "[1.5]", "float('nan')", "True", "10 ** 400", "{'x': 1.0}", "10 ** 5000"]
+VECTOR = ["(1.0, 2.0)", "[1.0, 2.0]", "3.0", f"{V}(float('nan'), 0)", "'v'", "{'x': 1.0}"]
+POINTS = ["[(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)]", f"{V}(1, 0)", "[1.0, 2.0, 3.0]", "'abc'",
+          f"[{V}(float('nan'), 0)] * 3", "5", "[{V}(1, 0), 'x', None]".replace("{V}", V)]
+HIT = [f"({V}(1, 0), (1.0, 2.0))", "((1.0, 0.0), 2.0)", f"({V}(1, 0), 2.0, 3.0)", "2.0",
+       f"({V}(1, 0), {V}(1, 0))", f"({V}(1, 0), float('nan'))", f"({V}(1, 0), '3')", f"({V}(1, 0), 10 ** 400)",
+       "{'normal': 1}"]
+TOI = ["(0.5, (1.0, 0.0))", f"({V}(1, 0), 0.5)", f"(0.5, {V}(1, 0), 1)", "0.5", f"('0.5', {V}(1, 0))",
+       f"(float('nan'), {V}(1, 0))", f"(10 ** 400, {V}(1, 0))", f"(True, {V}(1, 0))"]
+AS_TEXT = ["str(answer)"]
+FLAGS = ["'yes'", f"{V}(1, 0)", "[True]", "float('nan')"]
+
+
+def returns(values):
+    """Each value as a step region's whole code: `return value`."""
+    return [f"return {value}" for value in values]
+
+
+def after_solution(statements):
+    """Each statement run after the solution's own code of the step (a body left of the wrong kind)."""
+    return [("+", statement) for statement in statements]
+
+
+def wrapped(wraps):
+    """Each wrap of the solution's own answer (`answer`), for a step region that holds its function's return: the
+    right value in the wrong kind (a string, a one-item list) must fail as surely as a wrong value."""
+    return [("wrap", wrap) for wrap in wraps]
+
+
+MOTION = ["a.omega = 'spin'", "b.omega = float('nan')", "a.omega = [0.5]", "b.omega = 10 ** 400",
+          f"a.vel = {V}(float('nan'), 0)", "b.vel = (0.0, 0.0)"]
+PLACES = ["a.pos = (1.0, 2.0)", "b.pos = 'here'", f"b.pos = {V}(float('nan'), 0)", "a.angle = [0.5]",
+          f"b.angle = {V}(1, 0)", "b.pos = None"]
+
+# lab -> [(function, step, [step code or ("+", statement)])]
+CASES = {
+    "tumbling_crates": [("sat", 2, returns(HIT)), ("apply_impulse", 6, after_solution(MOTION)),
+                        ("resolve", 4, after_solution(MOTION[:3] + ["a.pos = 'x'"]))],
+    "more_shapes": [("regular_polygon", 2, returns(POINTS) + wrapped(AS_TEXT + ["[str(p) for p in answer]"])),
+                    ("polygon_centroid", 3, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])),
+                    ("polygon_inertia", 4, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]", "(answer,)"])),
+                    ("separating_axes", 5, returns(POINTS) + wrapped(["[str(p) for p in answer]"]))],
+    "ball_on_ramp": [("closest_on_segment", 2, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])), ("circle_polygon", 3, returns(HIT)),
+                     ("separate", 4, after_solution(PLACES)), ("disc_inertia", 5, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
+                     ("contact_point", 6, returns(VECTOR) + wrapped(AS_TEXT)), ("resolve", 7, after_solution(MOTION[:4]))],
+    "sleeping_crates": [("sleep_timer", 2, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
+                        ("moves", 3, returns(FLAGS) + wrapped(["[answer]"])),
+                        ("wake_on_contact", 4, returns(["a", "(a, b)", "[a, 'b']", "'ab'", "[a, b, a] * 400",
+                                                        "5", "{'a': a}"]))],
+    "bullets": [("circle_toi", 2, returns(NUMBER) + wrapped(["None if answer is None else str(answer)",
+                                                             "None if answer is None else [answer]"])),
+                ("bounding_radius", 3, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
+                ("time_of_impact", 4, returns(TOI)),
+                ("swept_move", 5, after_solution(["bullet.pos = (1.0, 2.0)", "bullet.vel = 'fast'",
+                                                  f"bullet.pos = {V}(float('nan'), 0)",
+                                                  f"bullet.omega = {V}(1, 0)", "bullet.vel = None"]))],
+}
+
+
+def _entries(lab):
+    """{file stem: (function, step, code)} for the lab's cases."""
+    out = {}
+    for function, step, codes in CASES[lab]:
+        for index, code in enumerate(codes):
+            out[f"{lab}_{function}_{index}"] = (function, step, code)
+    return out
+
+
+def _code(solution, code):
+    """A step region's code from a case: its own text, the solution's then a statement ("+"), or the solution's
+    inside a local function whose answer is returned wrapped ("wrap")."""
+    if not isinstance(code, tuple):
+        return code
+    kind, text = code
+    if kind == "+":
+        return solution + "\n" + text
+    inner = "\n".join("    " + line if line.strip() else "" for line in solution.split("\n"))
+    return f"def right():\n{inner}\nanswer = right()\nreturn {text}"
+
+
+def _build(lab, directory):
+    """Write the lab's wrong-kind files; {path: (function, step, code)}."""
+    files = CorpusFiles(os.path.join(ROOT, "starters", f"{lab}_starter.py"), os.path.join(ROOT, "solutions", f"{lab}.py"),
+                        [step for _, step, _ in CASES[lab]], {}, "test_wrong_kinds")
+    solution = open(files.solution, encoding="utf-8").read()
+    solved = files.step_code(solution)
+    built = {}
+    for stem, (function, step, code) in _entries(lab).items():
+        text = _code(solved[step], code)
+        files.by_name[stem] = SimpleNamespace(steps={step: text}, edits=())
+        path = os.path.join(directory, f"{stem}.py")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(files.build(stem))
+        built[path] = (function, step, text)
+    return built
+
+
+def _step_of(check, lab):
+    """The step a check's hint names, read from the lab's corpus module (CHECK_STEP)."""
+    return __import__(f"corpus_{lab}").CHECK_STEP.get(check)
+
+
+@pytest.fixture(scope="module", params=sorted(CASES))
+def graded(request, tmp_path_factory):
+    """(lab, {path: (function, step, code)}, {path: the JSON row}) from one checker run over the lab's files."""
+    lab = request.param
+    built = _build(lab, tmp_path_factory.mktemp(lab))
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--csv", "none", "--quiet", "--timeout", "120",
+                           *built], cwd=ROOT, env=env, capture_output=True, text=True, timeout=3600)
+    assert proc.returncode in (0, 1), proc.stderr[-3000:]
+    rows = {os.path.abspath(row["path"]): row for row in json.loads(proc.stdout)["labs"]}
+    return lab, built, rows, proc.stderr
+
+
+def test_a_wrong_kind_is_the_files_failure_never_the_checkers(graded):
+    lab, built, rows, stderr = graded
+    problems = []
+    for path, (function, step, code) in built.items():
+        row = rows[os.path.abspath(path)]
+        what = f"{os.path.basename(path)} ({function}, step {step}: {code.splitlines()[-1].strip()})"
+        checks = {c["id"]: c for c in row["criteria"]}
+        if not checks:
+            problems.append(f"{what}: not graded: {row.get('message')}")
+            continue
+        mine = [c for cid, c in checks.items() if _step_of(cid, lab) == step]
+        if not mine or not any(c["status"] in ("fail", "error") for c in mine):
+            problems.append(f"{what}: its step's checks " + "; ".join(f"{c['id']} {c['status']}" for c in mine))
+        for check in checks.values():
+            message = check.get("message") or ""
+            if "bug in the checker" in message or "\n" in message.strip():
+                problems.append(f"{what}: {check['id']}: {message[:300]!r}")
+    assert not problems, "\n".join(problems)
