@@ -17,7 +17,7 @@ from pygame import Vector2
 
 from lesson11.physics2d import box_points, centre_of, cross, edge_normals, project, regular_polygon
 
-from .common import real
+from .common import real, value_text
 from .tape import judging, reference, splice_name  # noqa: F401 (the labs' probes import them from here)
 
 
@@ -182,8 +182,6 @@ def sat_answer(hit):
     return {"normal": [normal.x, normal.y], "depth": depth}
 
 
-def _short_repr(value):
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+_short_repr = value_text   # repr cut to 60 characters; safe for a 5000-digit int
 
 

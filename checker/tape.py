@@ -170,7 +170,7 @@ def encode(value, seen, depth=0):
     if isinstance(value, numbers.Integral):   # beyond a float's range no step's answer is right, and a JSON text of
         # more than 4300 digits is refused by json itself: carried as a stand-in that names its size
         return int(value) if int(value).bit_length() <= 1024 else \
-            {"o": "int", "repr": f"an int of {int(value).bit_length()} bits, too large for a float"}
+            {"o": "int", "repr": f"<an int of {int(value).bit_length()} bits: too large for a float>"}
     if isinstance(value, numbers.Real):
         return float(value)
     if isinstance(value, Vector2):

@@ -66,7 +66,7 @@ CASES = {
     "more_shapes": [("regular_polygon", 2, returns(POINTS) + wrapped(AS_TEXT + ["[str(p) for p in answer]"])),
                     ("polygon_centroid", 3, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])),
                     ("polygon_inertia", 4, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]", "(answer,)"])),
-                    ("separating_axes", 5, returns(POINTS) + wrapped(["[str(p) for p in answer]"]))],
+                    ("separating_axes", 5, returns(POINTS))],
     "ball_on_ramp": [("closest_on_segment", 2, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])), ("circle_polygon", 3, returns(HIT)),
                      ("separate", 4, after_solution(PLACES)), ("disc_inertia", 5, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
                      ("contact_point", 6, returns(VECTOR) + wrapped(AS_TEXT)), ("resolve", 7, after_solution(MOTION[:4]))],
@@ -155,6 +155,6 @@ def test_a_wrong_kind_is_the_files_failure_never_the_checkers(graded):
             problems.append(f"{what}: its step's checks " + "; ".join(f"{c['id']} {c['status']}" for c in mine))
         for check in checks.values():
             message = check.get("message") or ""
-            if "bug in the checker" in message or "\n" in message.strip():
+            if "bug in the checker" in message or "\n" in message.strip() or len(message) > 600:
                 problems.append(f"{what}: {check['id']}: {message[:300]!r}")
     assert not problems, "\n".join(problems)

@@ -29,7 +29,7 @@ from pygame import Vector2
 from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
-from ...common import real
+from ...common import real, value_text
 from ...probe_kit import box, changed_vectors, judging, ngon, reference, twin, with_reference_steps
 from ...tape import run_rng
 
@@ -77,9 +77,7 @@ def answer_hit(hit):
     return {"normal": [normal.x, normal.y], "depth": depth}
 
 
-def _short(value):
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+_short = value_text   # repr cut to 60 characters; safe for a 5000-digit int
 
 
 # ---------------------------------------------------------------- the lesson's formulas

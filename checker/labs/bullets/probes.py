@@ -28,7 +28,7 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
-from ...common import real
+from ...common import real, value_text
 from ...probe_kit import box, judging, ngon, reference, twin
 from ...tape import clock, run_rng
 
@@ -54,9 +54,7 @@ def answer_time(value):
     return t if math.isfinite(t) else {"bad": f"a number that is not finite: {t!r}"}
 
 
-def _short(value):
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+_short = value_text   # repr cut to 60 characters; safe for a 5000-digit int
 
 
 # ---------------------------------------------------------------- step 2: circle_toi

@@ -27,7 +27,7 @@ from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, 
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from ... import probe_kit
-from ...common import real
+from ...common import real, value_text
 from ...probe_kit import judging, reference
 
 reference_centroid = reference(polygon_centroid)
@@ -48,16 +48,14 @@ def _points(value):
     try:
         return [[float(Vector2(p).x), float(Vector2(p).y)] for p in value]
     except (TypeError, ValueError):
-        text = repr(value)
-        return text if len(text) <= 60 else text[:57] + "..."
+        return value_text(value)
 
 
 def _number(value):
     try:
         number = real(value)
     except (TypeError, ValueError):
-        text = repr(value)
-        return text if len(text) <= 60 else text[:57] + "..."
+        return value_text(value)
     return number
 
 
@@ -65,8 +63,7 @@ def _vector(value):
     try:
         v = Vector2(value)
     except (TypeError, ValueError):
-        text = repr(value)
-        return text if len(text) <= 60 else text[:57] + "..."
+        return value_text(value)
     return [v.x, v.y]
 
 

@@ -17,7 +17,7 @@ Units: px, s, rad.
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
 
-from ...common import real
+from ...common import real, value_text
 from ...probe_kit import judging, reference
 from ...tape import clock, run_rng
 
@@ -31,9 +31,7 @@ W, H = 50, 36       # px
 FLOOR_TOP = 560.0   # px
 
 
-def _text(value):
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+_text = value_text   # repr cut to 60 characters; safe for a 5000-digit int
 
 
 def _number(value):
