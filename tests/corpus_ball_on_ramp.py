@@ -141,6 +141,11 @@ WRONG = [
     wrong("inertia_sphere", "I = 2/5 m r² (a solid sphere's)", "ball_inertia", {5: """
         return 2 / 5 * mass * radius ** 2
     """}, why="0.4 m r² instead of 0.5 m r²"),
+    wrong("inertia_trailing_comma", "return 0.5 * mass * radius ** 2, (a trailing comma: a 1-tuple, not a number)",
+          "ball_inertia", {5: """
+        return 0.5 * mass * radius ** 2,
+    """}, why="the right number inside a tuple: a wrong kind is a failure named with its value, never read as the "
+              "number it holds"),
     # ---- step 6: the contact point
     wrong("contact_at_centre", "returns the ball's center as the contact point", "contact_on_surface", {6: """
         return center
@@ -187,6 +192,18 @@ WRONG = [
         a.vel -= t * jt * a.inv_mass
         b.vel += t * jt * b.inv_mass
     """}, why="the same as at the centres: no spin change, so the ball slides"),
+    wrong("friction_spin_vector", "updates the spins by hand without the cross product: omega += t * jt * "
+          "inv_inertia, a Vector2 where a number belongs", "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        a.vel -= t * jt * a.inv_mass
+        b.vel += t * jt * b.inv_mass
+        a.omega -= t * jt * a.inv_inertia
+        b.omega += t * jt * b.inv_inertia
+    """}, status=("error",), why="float -= Vector2 raises in the student's own line on the first slipping contact: "
+                                 "the error is the file's, shown at that line"),
     wrong("friction_crashes", "uses a name that does not exist (tangent_speed)", "friction_rolls", {7: """
         jt = -tangent_speed / kt
         apply_impulse(a, b, t * jt, ra, rb)
@@ -315,6 +332,7 @@ SAYS = {
     "inertia_ring": ("ring",),
     "inertia_ignores_mass": ("mass is left out",),
     "inertia_sphere": ("sphere",),
+    "inertia_trailing_comma": ("returned (", "expected the number"),
     "contact_at_centre": ("the ball's center",),
     "contact_halfway": ("halfway",),
     "contact_far_side": ("far side",),
@@ -323,6 +341,7 @@ SAYS = {
     "friction_kt_no_spin": ("lacks the spin terms",),
     "friction_at_centre": ("changes no spin",),
     "friction_velocity_only": ("changes no spin",),
+    "friction_spin_vector": ("unsupported operand", "a.omega -= t * jt * a.inv_inertia"),
     "friction_crashes": ("NameError",),
     "friction_kt_is_k": ("kt = k",),
     "friction_bodies_swapped": ("apply_impulse(b, a",),

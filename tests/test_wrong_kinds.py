@@ -54,6 +54,11 @@ def wrapped(wraps):
     return [("wrap", wrap) for wrap in wraps]
 
 
+def before_solution(statements):
+    """Each statement run before the solution's own code of the step (for a step region that returns)."""
+    return [("pre", statement) for statement in statements]
+
+
 MOTION = ["a.omega = 'spin'", "b.omega = float('nan')", "a.omega = [0.5]", "b.omega = 10 ** 400",
           f"a.vel = {V}(float('nan'), 0)", "b.vel = (0.0, 0.0)"]
 PLACES = ["a.pos = (1.0, 2.0)", "b.pos = 'here'", f"b.pos = {V}(float('nan'), 0)", "a.angle = [0.5]",
@@ -71,13 +76,15 @@ CASES = {
                      ("separate", 4, after_solution(PLACES)), ("disc_inertia", 5, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
                      ("contact_point", 6, returns(VECTOR) + wrapped(AS_TEXT)), ("resolve", 7, after_solution(MOTION[:4]))],
     "sleeping_crates": [("sleep_timer", 2, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
-                        ("moves", 3, returns(FLAGS) + wrapped(["[answer]"])),
+                        ("moves", 3, returns(FLAGS) + wrapped(["[answer]"])
+                         + before_solution(["body.asleep = 'no'", "body.vel = None", "body.sleep_time = 'x'"])),
                         ("wake_on_contact", 4, returns(["a", "(a, b)", "[a, 'b']", "'ab'", "[a, b, a] * 400",
-                                                        "5", "{'a': a}"]))],
+                                                        "5", "{'a': a}"])
+                         + before_solution(["a.asleep = [1]", "b.omega = 'x'"]))],
     "bullets": [("circle_toi", 2, returns(NUMBER) + wrapped(["None if answer is None else str(answer)",
                                                              "None if answer is None else [answer]"])),
                 ("bounding_radius", 3, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
-                ("time_of_impact", 4, returns(TOI)),
+                ("time_of_impact", 4, returns(TOI) + before_solution(["bullet.vel = (1.0, 2.0)", "other.omega = 'x'"])),
                 ("swept_move", 5, after_solution(["bullet.pos = (1.0, 2.0)", "bullet.vel = 'fast'",
                                                   f"bullet.pos = {V}(float('nan'), 0)",
                                                   f"bullet.omega = {V}(1, 0)", "bullet.vel = None"]))],
@@ -101,6 +108,8 @@ def _code(solution, code):
     kind, text = code
     if kind == "+":
         return solution + "\n" + text
+    if kind == "pre":
+        return text + "\n" + solution
     inner = "\n".join("    " + line if line.strip() else "" for line in solution.split("\n"))
     return f"def right():\n{inner}\nanswer = right()\nreturn {text}"
 
