@@ -53,6 +53,11 @@ def wrapped(wraps):
     return [("wrap", wrap) for wrap in wraps]
 
 
+def substituted(old, news):
+    """The solution's code with `old` replaced by each of `news` (a hook called with a wrong-kind argument)."""
+    return [("sub", old, new) for new in news]
+
+
 def before_solution(statements):
     """Each statement run before the solution's own code of the step (for a step region that returns)."""
     return [("pre", statement) for statement in statements]
@@ -66,14 +71,20 @@ PLACES = ["a.pos = (1.0, 2.0)", "b.pos = 'here'", f"b.pos = {V}(float('nan'), 0)
 # lab -> [(function, step, [step code or ("+", statement)])]
 CASES = {
     "tumbling_crates": [("sat", 2, returns(HIT)), ("apply_impulse", 6, after_solution(MOTION)),
-                        ("resolve", 4, after_solution(MOTION[:3] + ["a.pos = 'x'"]))],
+                        ("resolve", 4, after_solution(MOTION[:3] + ["a.pos = 'x'", f"k += {V}(1, 0)", "k = float('nan')",
+                                                                    "k = '1'"])),
+                        ("resolve", 5, after_solution([f"jt = {V}(1, 0)", "jt = (1.0, 0.0)", "jt = float('inf')",
+                                                       "jt = 10 ** 400", "jt = None"]))],
     "more_shapes": [("regular_polygon", 2, returns(POINTS) + wrapped(AS_TEXT + ["[str(p) for p in answer]"])),
                     ("polygon_centroid", 3, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])),
                     ("polygon_inertia", 4, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]", "(answer,)"])),
                     ("separating_axes", 5, returns(POINTS))],
     "ball_on_ramp": [("closest_on_segment", 2, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])), ("circle_polygon", 3, returns(HIT)),
                      ("separate", 4, after_solution(PLACES)), ("disc_inertia", 5, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
-                     ("contact_point", 6, returns(VECTOR) + wrapped(AS_TEXT)), ("resolve", 7, after_solution(MOTION[:4]))],
+                     ("contact_point", 6, returns(VECTOR) + wrapped(AS_TEXT)), ("resolve", 7, after_solution(MOTION[:4]) + substituted(
+                         "apply_impulse(a, b, t * jt, ra, rb)",
+                         ["apply_impulse(a, b, (t * jt).x, ra, rb)", "apply_impulse(a, b, tuple(t * jt), ra, rb)",
+                          "apply_impulse(a, b, t * jt, tuple(ra), rb)", "apply_impulse(a, b, t * jt, ra, 'rb')"]))],
     "sleeping_crates": [("sleep_timer", 2, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
                         ("moves", 3, returns(FLAGS) + wrapped(["[answer]"])
                          + before_solution(["body.asleep = 'no'", "body.vel = None", "body.sleep_time = 'x'"])),
@@ -86,7 +97,10 @@ CASES = {
                 ("time_of_impact", 4, returns(TOI) + before_solution(["bullet.vel = (1.0, 2.0)", "other.omega = 'x'"])),
                 ("swept_move", 5, after_solution(["bullet.pos = (1.0, 2.0)", "bullet.vel = 'fast'",
                                                   f"bullet.pos = {V}(float('nan'), 0)",
-                                                  f"bullet.omega = {V}(1, 0)", "bullet.vel = None"]))],
+                                                  f"bullet.omega = {V}(1, 0)", "bullet.vel = None"])
+                 + substituted("normal, bullet.pos + normal * bullet.radius)",
+                               ["normal, 'here')",
+                                "normal, None)", "tuple(normal), bullet.pos + normal * bullet.radius)"]))],
 }
 
 
@@ -95,7 +109,7 @@ def _entries(lab):
     out = {}
     for function, step, codes in CASES[lab]:
         for index, code in enumerate(codes):
-            out[f"{lab}_{function}_{index}"] = (function, step, code)
+            out[f"{lab}_{function}_step{step}_{index}"] = (function, step, code)
     return out
 
 
@@ -104,11 +118,14 @@ def _code(solution, code):
     inside a local function whose answer is returned wrapped ("wrap")."""
     if not isinstance(code, tuple):
         return code
-    kind, text = code
+    kind, text = code[:2]
     if kind == "+":
         return solution + "\n" + text
     if kind == "pre":
         return text + "\n" + solution
+    if kind == "sub":   # ("sub", old, new): the solution's code with one call's argument of the wrong kind
+        assert solution.count(code[1]) == 1, code
+        return solution.replace(code[1], code[2])
     inner = "\n".join("    " + line if line.strip() else "" for line in solution.split("\n"))
     return f"def right():\n{inner}\nanswer = right()\nreturn {text}"
 
