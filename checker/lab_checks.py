@@ -154,9 +154,9 @@ def function_data(sub, functions, probe, function, step, crash_hint):
         raise Error(f"{sub.name} defines no {function}().", crash_hint)
     if not entry["ok"] and entry["error"].get("kind") == "value":   # tape.StudentValue: a body's motion's kind
         raise Error(describe_function_error(function, entry["error"], sub.name),
-                    Hint(step, f"what {function}() leaves in a body", "A body's vel is a Vector2 (px/s) and its "
-                         "omega a number (rad/s): change them with values of the same kind (cross() gives a "
-                         "number, impulse * inv_mass a Vector2)."))
+                    Hint(step, f"what {function}() leaves in a body", "A body's pos and vel are Vector2s (px, "
+                         "px/s), its angle and omega numbers (rad, rad/s), all finite: change them with values of "
+                         "the same kind (cross() gives a number, impulse * inv_mass a Vector2)."))
     if not entry["ok"]:
         hint = Hint(step, f"the error in {function}()", f"Your code in {function}() stopped with the error above; "
                     "fix it at the line shown, then run the checker again.")
