@@ -93,7 +93,7 @@ def value_text(value, limit=60):
     try:
         text = repr(value)
     except Exception:  # noqa: BLE001 - ValueError for a huge int, anything from a student's __repr__
-        text = f"<a {type(value).__name__}>"
+        text = f"<an int of {value.bit_length()} bits>" if isinstance(value, int) else f"<a {type(value).__name__}>"
     text = " ".join(text.split())   # one line
     return text if len(text) <= limit else text[:limit - 3] + "..."
 

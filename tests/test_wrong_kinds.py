@@ -178,3 +178,38 @@ def test_a_wrong_kind_is_the_files_failure_never_the_checkers(graded):
             if "bug in the checker" in message or "\n" in message.strip() or len(message) > 600:
                 problems.append(f"{what}: {check['id']}: {message[:300]!r}")
     assert not problems, "\n".join(problems)
+
+
+# ---------------------------------------------------------------- the helpers, on the values above
+
+def test_real_reads_numbers_only():
+    from checker.common import real
+    assert real(3) == 3.0 and real(-0.5) == -0.5 and real(float("inf")) == float("inf")
+    for value in ("1.5", True, [1.5], None, {"x": 1.0}):
+        with pytest.raises(TypeError):
+            real(value)
+    with pytest.raises(ValueError, match="too large for a float"):   # not OverflowError: the probes catch ValueError
+        real(10 ** 400)
+
+
+def test_a_body_left_with_a_non_finite_or_non_number_motion_is_named():
+    from pygame import Vector2
+    from checker.tape import motion_problem
+
+    def body(**fields):
+        return SimpleNamespace(**{"pos": Vector2(1, 2), "vel": Vector2(), "angle": 0.5, "omega": 0, **fields})
+    assert motion_problem([body()]) == ""
+    for field, value, says in (("omega", True, "not a number (rad/s)"), ("omega", float("nan"), "not a finite number"),
+                               ("omega", 10 ** 400, "too large for a float"), ("angle", [0.5], "not a number (rad)"),
+                               ("vel", Vector2(float("inf"), 0), "not finite (px/s)"), ("pos", (1, 2), "not a Vector2")):
+        problem = motion_problem([body(), body(**{field: value})])
+        assert problem.startswith(f"left a body's {field} as ") and says in problem, problem
+
+
+def test_an_int_beyond_json_crosses_the_tape_as_a_named_stand_in():
+    from checker.common import value_text
+    from checker.tape import decode, encode
+    assert encode(2 ** 1000, None) == 2 ** 1000
+    back = decode(encode(10 ** 5000, None), None)
+    assert value_text(back) == "<an int of 16610 bits: too large for a float>"
+    assert value_text(10 ** 5000) == "<an int of 16610 bits>" and len(value_text("x" * 500)) == 60   # repr of 10**5000 raises
