@@ -111,7 +111,7 @@ TABLE = (
             "checker's centroid check finds it", "looks_right"),
     Symptom("more_shapes", "inertia_no_six", 4, "the triangle-fan sum without the 6",
             "shapes are six times too hard to turn: a hexagon pushed along the floor at 420 px/s hardly tips "
-            "(about 50° in all, against about 250° as it rolls over its corners)", "hardly_turn"),
+            "(it turns about 36° in all, rocking, against about 205° as it rolls over its corners)", "hardly_turn"),
     Symptom("more_shapes", "axes_of_a_only", 5, "only the first shape's edge directions",
             "a triangle falling past a box's corner stops in mid-air beside it, about 60 px above the floor",
             "hang"),
