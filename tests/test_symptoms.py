@@ -11,7 +11,8 @@ runs it) on the scene named here, and the symptom the row states is asserted wit
   Ball on the Ramp the checker's ramp, knock and inside scenes (checker/labs/ball_on_ramp/scenes.py)
   Sleeping Crates  the checker's scene (checker/labs/sleeping_crates/scenes.py, 1.5 s)
   Bullets          the lab's own scene, key 5 (CCD), twelve shots at 12000 px/s at the wall (1 s)
-The text, the hints and the table agree: lesson11/README.md's Hint section is the table's rendering, and no
+The text, the hints and the table agree: lesson11/README.md's Hint section and each lab page's (lesson11/labs/)
+are the table's rendering, and no
 checker hint names a symptom its lab's table does not have at the hint's step.
 """
 import math
@@ -434,10 +435,14 @@ def test_every_case_has_a_row_and_every_lab_step_a_row():
     assert all(symptoms.kinds_named(row.shows) >= {row.kind} for row in symptoms.TABLE)
 
 
-def test_the_lessons_hint_section_is_the_table():
+def test_the_lessons_and_the_lab_pages_hint_tables_are_the_table():
+    """The lesson's Hint section is the Tumbling Crates table; each Going Further lab's page has its own."""
     with open(os.path.join(ROOT, "lesson11", "README.md"), encoding="utf-8") as handle:
-        text = handle.read()
-    assert symptoms.hint_section() in text
+        assert symptoms.markdown("tumbling_crates") in handle.read()
+    for lab in symptoms.LABS:
+        if lab != "tumbling_crates":
+            with open(os.path.join(ROOT, "lesson11", "labs", lab + ".md"), encoding="utf-8") as handle:
+                assert symptoms.markdown(lab) in handle.read(), lab
 
 
 def hints():
