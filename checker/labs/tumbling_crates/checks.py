@@ -70,8 +70,8 @@ HINTS = {
                       "best_depth)."),
     "normal_flipped": Hint(3, "the normal must point from A to B",
                            "The axis may point either way, whichever body's edge gave it (each axis comes from two "
-                           "opposite edges and the first is kept). Turn it round when its dot product with "
-                           "centre_of(pb) - centre_of(pa) is negative: the axis, not the depth. Without the flip the "
+                           "opposite edges and the first is kept). Turn it round when its dot product with the vector "
+                           "from A's centre to B's is negative: the axis, not the depth. Without the flip the "
                            "crates fall through the floor; with the test reversed they sink into it."),
     "k_spin": Hint(4, "the spin terms of the effective mass",
                    "A corner hit should feel lighter: k needs both spin terms, (ra × n)² / I_A and (rb × n)² / "
