@@ -3,7 +3,8 @@
 One row per mistake: the lab, a key, the step it belongs to, the mistake in a few words, what the window
 shows (measured: tests/test_symptoms.py applies each mistake to solutions/<lab>.py, runs the scene the row
 names headless and asserts the symptom with a bound), and the symptom's kind. The lesson's Hint section
-(lesson11/README.md) renders this table with `markdown(lab)`; the checker's hints
+(lesson11/README.md) renders the Tumbling Crates rows with `markdown(lab)`, and each Going Further lab's page
+(lesson11/labs/<lab>.md) its own; the checker's hints
 (checker/labs/*/checks.py) may only name a symptom whose kind a row of their lab has (tests/test_symptoms.py
 reads every hint with `kinds_named`).
 
@@ -190,7 +191,3 @@ def markdown(lab):
         lines.append(f"| {shows} | {row.mistake} | step {row.step} |")
     return "\n".join(lines)
 
-
-def hint_section():
-    """Every lab's table under its name, as lesson11/README.md's Hint section renders them."""
-    return "\n\n".join(f"**{name}**\n\n{markdown(lab)}" for lab, name in LABS.items())
