@@ -174,16 +174,13 @@ def write_outputs(args, rows):
     """Write the outputs asked for; returns (the one-line problems (an output that could not be written),
     what was written, {row path: {check id: [picture paths]}})."""
     problems, written, links = [], [], {}
-    try:
-        made = pictures.all_pictures(rows) if args.pictures or args.html else {}
-    except Exception as exc:  # a picture that cannot be drawn must not cost the grades: no pictures then
-        made = {}
-        problems.append(f"cannot draw the pictures ({type(exc).__name__}: {exc}); none written")
+    # a picture that cannot be drawn or written costs no grade and no other row's pictures: that row goes without
+    made = pictures.all_pictures(rows, problems) if args.pictures or args.html else {}
     shown = made if args.pictures else None   # pictures go into results.json only when --pictures asks
     if args.pictures:
         try:
             links = pictures.write_pictures(rows, args.pictures, outputs.submission_names([r.path for r in rows]),
-                                            made)
+                                            made, problems)
             count = sum(len(paths) for by_check in links.values() for paths in by_check.values())
             written.append(f"Pictures: {count} PNG file(s) written under {args.pictures}")
         except OSError as exc:
@@ -207,9 +204,9 @@ def write_outputs(args, rows):
         count = 0
         for row in rows:
             target = os.path.join(args.gradescope_dir, names[row.path], "results.json")
-            try:
-                os.makedirs(os.path.dirname(target), exist_ok=True)
-                report.write_atomic(target, report.gradescope_text([row], pictures=shown))
+            try:   # in folders the grader made, following no link (outputs.write_below)
+                outputs.write_below(args.gradescope_dir, names[row.path], "results.json",
+                                    report.gradescope_text([row], pictures=shown).encode("utf-8"))
                 count += 1
             except OSError as exc:
                 problems.append(f"--gradescope-dir: cannot write {target}: {exc.strerror or exc}")

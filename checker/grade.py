@@ -22,6 +22,7 @@ from dataclasses import asdict, dataclass, field
 
 from . import probing, source, step_rules
 from .checks import ERROR, FAIL, PASS, skipped_all
+from .common import checked_result
 from .sandbox import Limits, run_child
 
 
@@ -149,6 +150,7 @@ class Grader:
             run = run_child(lab_path, task, settings, limits)
         finally:
             self.slots.release()
+        run.result = checked_result(run.result)   # the child's errors checked before any check reads them
         run.lab_path = lab_path
         run.timeout = limits.timeout
         run.cut_short = limits.timeout < self.limits.timeout and run.status == "timeout"

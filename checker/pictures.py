@@ -360,33 +360,50 @@ def prairielearn_images(report, check_id):
     return [{"label": f"{p.check_id}: scene {p.scene}", "url": p.data_url} for p in pictures_for(report, check_id)]
 
 
-def all_pictures(rows):
-    """{row path: {check id: [Picture]}} for every failed behaviour check of every row (rows without any left out)."""
+def all_pictures(rows, problems=None):
+    """{row path: {check id: [Picture]}} for every failed behaviour check of every row (rows without any left out).
+
+    A row whose pictures cannot be drawn loses only its own: with a list as `problems`, one line naming
+    it is appended there (else the exception is raised, as before)."""
     found = {}
     for row in rows:
-        for result in pictured_results(row):
-            pictures = pictures_for(row, result.id)
-            if pictures:
-                found.setdefault(row.path, {})[result.id] = pictures
+        try:
+            for result in pictured_results(row):
+                shown = pictures_for(row, result.id)
+                if shown:
+                    found.setdefault(row.path, {})[result.id] = shown
+        except Exception as exc:  # noqa: BLE001 - one row's record or our drawing: that row goes without
+            if problems is None:
+                raise
+            found.pop(row.path, None)
+            problems.append(f"{row.path}: cannot draw its pictures ({type(exc).__name__}: {exc}); none for it")
     return found
 
 
-def write_pictures(rows, folder, names, pictures=None):
+def write_pictures(rows, folder, names, pictures=None, problems=None):
     """Write each picture to folder/<submission name>/<check id>[-<scene>].png; returns {row path: {check id: [paths]}}.
 
     names: {row path: submission folder name} (checker/outputs.submission_names).
     pictures: all_pictures(rows), if already made.
+    Every file is created by the grader in folders it made, following no link (outputs.write_below): a
+    picture or folder some other user planted there (a link to /etc/...) is replaced or refused, never
+    written through. A row whose pictures cannot be written loses only its own: one line naming it is
+    appended to `problems` (a list; else the OSError is raised).
     """
-    pictures = all_pictures(rows) if pictures is None else pictures
+    from .outputs import write_below
+    pictures = all_pictures(rows, problems) if pictures is None else pictures
     written = {}
     for path, by_check in pictures.items():
-        target = os.path.join(folder, names[path])
-        os.makedirs(target, exist_ok=True)
-        for check_id, shown in by_check.items():
-            for picture in shown:
-                name = check_id if len(shown) == 1 else f"{check_id}-{picture.scene}"
-                file = os.path.join(target, name + ".png")
-                with open(file, "wb") as handle:
-                    handle.write(picture.png)
-                written.setdefault(path, {}).setdefault(check_id, []).append(file)
+        try:
+            for check_id, shown in by_check.items():
+                for picture in shown:
+                    name = check_id if len(shown) == 1 else f"{check_id}-{picture.scene}"
+                    file = write_below(folder, names[path], name + ".png", picture.png)
+                    written.setdefault(path, {}).setdefault(check_id, []).append(file)
+        except OSError as exc:
+            if problems is None:
+                raise
+            written.pop(path, None)
+            problems.append(f"--pictures {folder}: {path}: its pictures were not written "
+                            f"({exc.strerror or exc})")
     return written

@@ -34,6 +34,7 @@ import html
 import io
 import json
 import os
+import stat
 import tempfile
 from dataclasses import dataclass
 
@@ -250,8 +251,11 @@ def write_atomic(path, text):
             handle.write(text)
             handle.flush()
             os.fsync(handle.fileno())
-        try:
-            mode = os.stat(path).st_mode & 0o7777
+        try:   # the old file's permissions: of the file itself, never of what a link there points to
+            info = os.lstat(path)
+            if not stat.S_ISREG(info.st_mode):
+                raise OSError("not a regular file")
+            mode = info.st_mode & 0o777
         except OSError:
             umask = os.umask(0)
             os.umask(umask)
