@@ -23,6 +23,7 @@ from dataclasses import asdict, dataclass, field
 from . import probing, source, step_rules
 from .checks import ERROR, FAIL, PASS, skipped_all
 from .common import checked_result
+from .lab_checks import record_problem
 from .sandbox import Limits, run_child
 
 
@@ -201,8 +202,10 @@ class Grader:
         if self.keep_records:   # only the scenes a failed check reads (the lab's picture_scenes): records are big
             scenes = getattr(lab, "picture_scenes", None) or {}
             wanted = {scene for r in results if r.status in (FAIL, ERROR) for scene in scenes.get(r.id, ())}
+            settings_of = lab.scenarios()   # a record is kept only when it can be the runtime's (record_problem)
             records = {name: run.record for name, run in sub.scenarios.items()
-                       if name in wanted and getattr(run, "record", None)}
+                       if name in wanted and getattr(run, "record", None)
+                       and not record_problem(run.record, settings_of.get(name) or {})}
         preview = ""
         if self.keep_records and not sub.scenarios and self._wants_preview(results):
             # a function check failed, so no scene ran: run the lab's own scene anyway, for a picture only
@@ -211,7 +214,9 @@ class Grader:
             scene_settings = lab.scenarios().get(name) if name else None
             run = self.run(path, "scenario", dict(scene_settings, probes=lab.probes),
                            lab.scene_seconds(name, scene_settings)) if scene_settings is not None else None
-            if run is not None and getattr(run, "record", None) and run.record.get("records"):
+            # checked as a graded scene's record is: the child wrote it ({"records": [1]} draws nothing)
+            if run is not None and getattr(run, "record", None) and not record_problem(run.record, scene_settings) \
+                    and run.record["records"]:
                 records[name], preview = run.record, name
         runs = [sub.probe, *sub.scenarios.values()]
         notes = sorted({note for run in runs for note in getattr(run, "notes", ())})

@@ -119,7 +119,7 @@ def _view(frames, focus=None):
         for index, body in enumerate(frame.get("bodies", ())):
             if body.get("static") or (focus and index not in focus):
                 continue
-            r = body.get("radius") or 0.0
+            r = _radius(body)
             points = body.get("points") or [body["pos"]]
             for x, y in points:
                 if abs(x) < 1e5 and abs(y) < 1e5:
@@ -164,6 +164,17 @@ def _nearest(frames, number):
     return min(frames, key=lambda f: abs(f.get("frame", 0) - number))
 
 
+def _radius(body):
+    """A body's radius in px when the record holds a finite one below 1e5 (the child wrote it), else 0."""
+    r = body.get("radius")
+    return r if isinstance(r, (int, float)) and not isinstance(r, bool) and 0 < r < 1e5 else 0.0
+
+
+def _pair(value):
+    return isinstance(value, list) and len(value) == 2 and all(
+        isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
+
+
 def _draw_frame(surface, rect, frame, view, marked):
     """Draw one recorded frame into rect (a pygame.Rect) of surface, seen through view."""
     left, top, width, height = view
@@ -194,9 +205,9 @@ def _draw_frame(surface, rect, frame, view, marked):
                 corners = [at(p) for p in points]
                 pygame.draw.polygon(surface, fill, corners)
                 outlines.append(("polygon", corners))
-            elif body.get("radius"):
+            elif _radius(body):
                 centre = at(body["pos"])
-                r = max(2, round(body["radius"] * scale))
+                r = max(2, round(_radius(body) * scale))
                 pygame.draw.circle(surface, fill, centre, r)
                 spoke = pygame.Vector2(1, 0).rotate_rad(body.get("angle", 0.0)) * r
                 outlines.append(("circle", (centre, r, (centre[0] + spoke.x, centre[1] + spoke.y))))
@@ -207,9 +218,9 @@ def _draw_frame(surface, rect, frame, view, marked):
                 centre, r, tip = shape
                 pygame.draw.circle(surface, OUTLINE, centre, r, 1)
                 pygame.draw.line(surface, OUTLINE, centre, tip, 1)
-        for contact in frame.get("touching", ()):
-            point, normal = contact["point"], contact["normal"]
-            if not all(abs(v) < 1e6 for v in point + normal):
+        for contact in frame.get("touching") or ():   # the child wrote these: drawn only when they are numbers
+            point, normal = (contact.get("point"), contact.get("normal")) if isinstance(contact, dict) else (0, 0)
+            if not (_pair(point) and _pair(normal) and all(abs(v) < 1e6 for v in point + normal)):
                 continue
             p = at(point)
             pygame.draw.line(surface, CONTACT, p, (p[0] + normal[0] * 9, p[1] + normal[1] * 9), 1)

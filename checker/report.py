@@ -71,25 +71,39 @@ def message_of(row):
     return getattr(row, "message", "") or ""
 
 
+def indented(text, indent):
+    """text with `indent` before each of its lines (every line break Python's str.splitlines() knows, \\r and
+    form feeds included): a message holding line breaks, which may come from the student's code (an exception's
+    text), stays under its check and cannot print a line that reads like another file's row."""
+    return "\n".join(indent + line for line in str(text).splitlines() or [""])
+
+
+def one_line(text):
+    """text on one line: its line breaks as spaces (for a table cell)."""
+    return " ".join(str(text).splitlines())
+
+
 def text_report(report, stream, root=None, pictures=None):
     """The readable report of one row: a mark per check, the message, and the hint under each failure.
 
-    pictures: {check id: [PNG paths]} (--pictures), each listed under its check.
+    pictures: {check id: [PNG paths]} (--pictures), each listed under its check. Every line of a message or
+    hint is indented (indented()), so no message can print a line at the left margin.
     """
-    name = _rel(report.path, root)
+    name = one_line(_rel(report.path, root))
     if isinstance(report, NotGraded):
         title = f" - {report.lab.title}" if report.lab is not None else ""
+        first, *rest = str(report.message).splitlines() or [""]
         stream.write(f"{name}{title}: 0/{report.max_score:g} (error, not graded)\n"
-                     f"  :( could not be graded: {report.message}\n\n")
+                     f"  :( could not be graded: {first}\n" + "".join(f"      {line}\n" for line in rest) + "\n")
         return
     stream.write(f"{name} - {report.lab.title}: {report.score:g}/{report.max_score:g} "
                  f"({report.status}, {report.seconds:.1f} s)\n")
     for r in report.results:
-        stream.write(f"  {SYMBOL[r.status]} {r.name}\n")
+        stream.write(f"  {SYMBOL[r.status]} {one_line(r.name)}\n")
         if r.message:
-            stream.write(f"      {r.message}\n")
+            stream.write(indented(r.message, "      ") + "\n")
         if r.hint:
-            stream.write(f"      hint {r.hint}\n")
+            stream.write(indented("hint " + r.hint, "      ") + "\n")
         for picture in (pictures or {}).get(r.id, ()):
             stream.write(f"      picture {picture}\n")
     stream.write("\n")
@@ -196,11 +210,11 @@ def summary_table(reports, stream, root=None):
     stream.write(f"{'file':<{width}}  score   status  first problem\n")
     for r in reports:
         if isinstance(r, NotGraded):
-            problem = f"not graded: {r.message}"
+            problem = one_line(f"not graded: {r.message}")
         else:
             first = next((c for c in r.results if c.status != "pass"), None)
             problem = f"{check_label(first)}: {first.status}" if first else ""
-        stream.write(f"{_rel(r.path, root):<{width}}  {r.score:>2g}/{r.max_score:<3g} {r.status:<7} {problem}\n")
+        stream.write(f"{one_line(_rel(r.path, root)):<{width}}  {r.score:>2g}/{r.max_score:<3g} {r.status:<7} {problem}\n")
     stream.write(_summary_line(reports) + "\n")
 
 

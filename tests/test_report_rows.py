@@ -1,0 +1,117 @@
+"""Issue 39.6, 39.8 (first half) and 39.9: one row cannot harm the class's report, forge the checker's own
+failure, or print rows of its own. One CLI run as it is used (as root the child runs as `nobody`) over a class
+folder, each attack beside its honest twin (the same file without the attack), with --pictures, --html and
+--csv:
+
+- alice: the starter whose main() puts a frame the runtime never writes (`1`) into its record, so the
+  ungraded preview record is {"records": [1, ...]}; bob, her twin, the same line adding nothing. Before, the
+  picture code raised on alice's record and "cannot draw the pictures" dropped every row's pictures.
+- carol: module-level code that writes a last result line `{"phase": "run", "error": "x"}` on the result
+  channel (fd 3) and kills itself (SIGKILL). Before, the row said "this is a bug in the checker" and --show
+  died with a traceback.
+- dave: an exception at import whose message holds line breaks and a fake row ("class/bob/... 17/17 (pass)").
+"""
+import csv
+import io
+import json
+import os
+import re
+import subprocess
+import sys
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
+SEED_LINE = "    rng = random.Random(lab.seed(11))  # lab runtime: seed()\n"
+FAKE_ROW = "class/zed/tumbling_crates.py - Tumbling Crates: 17/17 (pass, 1.0 s)"
+
+
+def starter():
+    with open(STARTER, encoding="utf-8") as handle:
+        return handle.read()
+
+
+def after_imports(text, code):
+    marker = "from lesson11.physics2d.draw import"
+    at = text.index("\n", text.index(marker)) + 1
+    return text[:at] + code + text[at:]
+
+
+def files():
+    text = starter()
+    assert SEED_LINE in text
+    forged = ("import os as _os\n"
+              "_os.write(3, b'{\"phase\": \"run\", \"error\": \"x\"}\\n')\n"
+              "_os.kill(_os.getpid(), 9)\n")
+    spoof = f"raise RuntimeError('boom\\n{FAKE_ROW}\\n\\rclass/yan/tumbling_crates.py: 0/17 fail')\n"
+    return {
+        "alice": text.replace(SEED_LINE, SEED_LINE + "    lab._records.append(1)\n"),
+        "bob": text.replace(SEED_LINE, SEED_LINE + "    lab._records.extend([])\n"),
+        "carol": after_imports(text, forged),
+        "dave": after_imports(text, spoof),
+        "erin": after_imports(text, "import os as _os\n"),   # carol's and dave's twin: their import, no attack
+    }
+
+
+def run_checker(*args, cwd):
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    done = subprocess.run([sys.executable, "-m", "checker", *args], cwd=cwd, capture_output=True, text=True,
+                          env=env, timeout=600)
+    return done.returncode, done.stdout, done.stderr
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    base = tmp_path_factory.mktemp("rows")
+    for name, text in files().items():
+        os.makedirs(base / "class" / name)
+        (base / "class" / name / "tumbling_crates.py").write_text(text, encoding="utf-8")
+    status, out, err = run_checker("class", "--pictures", "pics", "--html", "report.html", "--csv", "grades.csv",
+                                   "--timeout", "60", cwd=str(base))
+    with open(base / "grades.csv", encoding="utf-8", newline="") as handle:
+        rows = {row["student"]: row for row in csv.DictReader(handle)}
+    return {"base": base, "status": status, "out": out, "err": err, "csv": rows,
+            "html": (base / "report.html").read_text(encoding="utf-8")}
+
+
+def test_a_bad_preview_record_costs_only_its_own_picture(graded):
+    base, rows = graded["base"], graded["csv"]
+    assert "cannot draw" not in graded["err"], graded["err"]
+    assert graded["status"] == 1
+    bob = sorted(os.listdir(base / "pics" / "bob" / "tumbling_crates"))
+    assert bob and all(name.endswith(".png") for name in bob)
+    assert not (base / "pics" / "alice").exists()     # alice's record is refused: no picture, no error
+    assert re.search(r'<img alt="[a-z_]+: scene [a-z_]+" src="data:image/png;base64,', graded["html"])
+    assert float(rows["alice"]["score"]) <= float(rows["bob"]["score"]), (rows["alice"], rows["bob"])
+
+
+def test_a_forged_error_line_is_the_files_error_not_the_checkers(graded):
+    rows, out = graded["csv"], graded["out"]
+    assert "bug in the checker" not in out + graded["err"]
+    assert rows["carol"]["status"] == "error" and float(rows["carol"]["score"]) <= float(rows["erin"]["score"])
+    block = out[out.index("class/carol/tumbling_crates.py"):]
+    assert "result names an error in a form the child never writes" in block.split("\n\n")[0]
+
+
+def test_show_never_shows_a_traceback_for_a_forged_line(graded):
+    status, out, err = run_checker("class/carol/tumbling_crates.py", "--show", cwd=str(graded["base"]))
+    assert "Traceback" not in out + err and status == 1, (out, err)
+
+
+def test_a_message_cannot_print_rows(graded):
+    lines = graded["out"].splitlines()
+    assert not any(line.startswith(("class/zed", "class/yan", "\rclass")) for line in lines), graded["out"]
+    assert FAKE_ROW in graded["out"]   # the message is shown, indented under its check
+    shown = next(line for line in lines if FAKE_ROW in line)
+    assert shown.startswith("      ")
+    # the summary table: one line per file, a row's problem on its own line
+    start = next(k for k, line in enumerate(lines) if line.startswith("file ") and "first problem" in line)
+    table = lines[start:]
+    assert len([line for line in table if line.startswith("class/")]) == 5
+    # CSV and HTML: quoted and escaped, one row per file
+    assert sorted(graded["csv"]) == ["alice", "bob", "carol", "dave", "erin"]
+    html = graded["html"]
+    assert html.count('<tr data-index="') == 5
+    inside = "".join(re.findall(r'<div class="msg">([^<]*)</div>', html))
+    assert html.count("class/zed/") == inside.count("class/zed/") >= 1   # only ever inside a message
