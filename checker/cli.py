@@ -129,7 +129,7 @@ def plan(args):
 
 def grade_all(entries, grader, jobs, progress):
     """One row per entry, in order: a LabReport, or a NotGraded when the entry (or the grader on it) failed."""
-    rows = [NotGraded(e.path, e.lab, e.problem) if not e.gradable else None for e in entries]
+    rows = [NotGraded(e.path, e.lab, e.problem, counted=e.counted) if not e.gradable else None for e in entries]
     todo = [i for i, row in enumerate(rows) if row is None]
     start = time.monotonic()
     done = 0
@@ -158,7 +158,8 @@ def grade_all(entries, grader, jobs, progress):
                         said.add(str(exc))
                         print(f"checker: error: {exc}", file=sys.stderr, flush=True)
                 except OSError as exc:  # the file went away or became unreadable after it was found
-                    rows[index] = NotGraded(entry.path, entry.lab, f"cannot read: {exc.strerror or exc}")
+                    rows[index] = NotGraded(entry.path, entry.lab, f"cannot read: {exc.strerror or exc}",
+                                            counted=True)
                 except Exception as exc:  # a bug of ours: this file gets an error row, the batch goes on
                     rows[index] = NotGraded(entry.path, entry.lab,
                                             f"the checker failed on this file ({type(exc).__name__}: {exc}); "

@@ -55,6 +55,7 @@ class NotGraded:
     lab: object
     message: str
     seconds: float = 0.0
+    counted: bool = False   # a submission that scores 0 though no lab is known (an empty or unreadable file)
 
     results = ()
     score = 0.0
@@ -69,6 +70,23 @@ class NotGraded:
 
 def message_of(row):
     return getattr(row, "message", "") or ""
+
+
+REASON_LIMIT = 300   # characters of a check's message in a row's reason
+
+
+def reason(row):
+    """Why a row scored what it did, in one line: why it was not graded, else the first check that failed or erred
+    with its message ("Step 2 (sat_axes) fail: ..."), else "all checks pass"."""
+    if isinstance(row, NotGraded) or not row.results:
+        return one_line(message_of(row)) or "not graded"
+    first = next((r for r in row.results if r.status in ("fail", "error")), None) or \
+        next((r for r in row.results if r.status != "pass"), None)
+    if first is None:
+        return "all checks pass"
+    text = one_line(first.message)
+    text = text if len(text) <= REASON_LIMIT else text[:REASON_LIMIT - 3] + "..."
+    return f"{check_label(first)} {first.status}" + (f": {text}" if text else "")
 
 
 def indented(text, indent):
@@ -220,8 +238,9 @@ def summary_table(reports, stream, root=None):
 
 def csv_text(reports, root=None):
     """One row per entry: student (the submission's folder), path, lab, status, score, max_score, fraction (of
-    its own lab's points), each check's status, then message. With several labs a check's column is
-    "lab:check", so no column mixes two labs' checks."""
+    its own lab's points; 0 for a file that scores 0 of no lab's points, such as an empty one), each check's
+    status, then message: the row's reason (reason()). With several labs a check's column is "lab:check", so no
+    column mixes two labs' checks."""
     several = len({r.lab.id for r in reports if r.lab is not None}) > 1
     columns = []
     for r in reports:
@@ -237,9 +256,9 @@ def csv_text(reports, root=None):
     for r in reports:
         lab = r.lab.id if r.lab is not None else ""
         by_id = {(lab, c.id): c.status for c in r.results}
-        fraction = f"{r.score / r.max_score:.3f}" if r.max_score else ""
+        fraction = f"{r.score / r.max_score:.3f}" if r.max_score else ("0.000" if getattr(r, "counted", False) else "")
         writer.writerow([student_of(names[r.path]), _rel(r.path, root), lab, r.status, f"{r.score:g}",
-                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns], message_of(r)])
+                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns], reason(r)])
     return out.getvalue()
 
 
