@@ -51,7 +51,12 @@ def files():
         "carol": after_imports(text, forged),
         "dave": after_imports(text, spoof),
         "erin": after_imports(text, "import os as _os\n"),   # carol's and dave's twin: their import, no attack
+        # issue 40.6: an empty file, and a file under another name with a syntax error (a lab by its text)
+        "nina": "",
+        "mallory": text.replace(SEED_LINE, SEED_LINE + "    if True\n"),
     }
+
+NAMES = {"nina": "nina.py", "mallory": "mallory.py"}   # the others: tumbling_crates.py
 
 
 def run_checker(*args, cwd):
@@ -66,7 +71,7 @@ def graded(tmp_path_factory):
     base = tmp_path_factory.mktemp("rows")
     for name, text in files().items():
         os.makedirs(base / "class" / name)
-        (base / "class" / name / "tumbling_crates.py").write_text(text, encoding="utf-8")
+        (base / "class" / name / NAMES.get(name, "tumbling_crates.py")).write_text(text, encoding="utf-8")
     status, out, err = run_checker("class", "--pictures", "pics", "--html", "report.html", "--csv", "grades.csv",
                                    "--timeout", "60", cwd=str(base))
     with open(base / "grades.csv", encoding="utf-8", newline="") as handle:
@@ -108,10 +113,28 @@ def test_a_message_cannot_print_rows(graded):
     # the summary table: one line per file, a row's problem on its own line
     start = next(k for k, line in enumerate(lines) if line.startswith("file ") and "first problem" in line)
     table = lines[start:]
-    assert len([line for line in table if line.startswith("class/")]) == 5
+    assert len([line for line in table if line.startswith("class/")]) == len(files())
     # CSV and HTML: quoted and escaped, one row per file
-    assert sorted(graded["csv"]) == ["alice", "bob", "carol", "dave", "erin"]
+    assert sorted(graded["csv"]) == sorted(files())
     html = graded["html"]
-    assert html.count('<tr data-index="') == 5
-    inside = "".join(re.findall(r'<div class="msg">([^<]*)</div>', html))
-    assert html.count("class/zed/") == inside.count("class/zed/") >= 1   # only ever inside a message
+    assert html.count('<tr data-index="') == len(files())
+    cells = re.findall(r'<div class="msg">([^<]*)</div>|<td>([^<]*)</td>', html)
+    inside = "".join(a + b for a, b in cells)
+    # only ever inside a message or the file's first-problem cell, escaped
+    assert html.count("class/zed/") == inside.count("class/zed/") >= 1
+
+
+def test_every_row_of_the_sheet_has_a_reason_and_a_fraction(graded):
+    """Issue 40.6: the CSV's message is never empty (the first failing check with its rationale), an empty file
+    counts 0 of the class's lab with a fraction, and the hint runs the file under the name it was submitted as."""
+    rows = graded["csv"]
+    for student, row in rows.items():
+        assert row["message"], (student, row)
+        assert row["fraction"] and float(row["fraction"]) == pytest.approx(float(row["score"]) / 17, abs=1e-3)
+    assert rows["bob"]["message"].startswith("handout_unchanged fail: code outside the steps differs")
+    assert rows["nina"]["lab"] == "tumbling_crates" and rows["nina"]["max_score"] == "17"
+    assert rows["nina"]["fraction"] == "0.000" and rows["nina"]["message"] == "the file is empty: nothing to grade"
+    assert rows["mallory"]["message"].startswith("loads error: ") and "SyntaxError" in rows["mallory"]["message"]
+    block = graded["out"][graded["out"].index("class/mallory/mallory.py"):].split("\n\n")[0]
+    assert "(python mallory.py)" in block and "python tumbling_crates.py" not in block, block
+    assert "not graded: the file is empty" in graded["html"]
