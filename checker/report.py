@@ -77,7 +77,7 @@ REASON_LIMIT = 300   # characters of a check's message in a row's reason
 
 def reason(row):
     """Why a row scored what it did, in one line: why it was not graded, else the first check that failed or erred
-    with its message ("Step 2 (sat_axes) fail: ..."), else "all checks pass"."""
+    with its message ("Step 2 (sat_axes): fail: ..."), else "all checks pass"."""
     if isinstance(row, NotGraded) or not row.results:
         return one_line(message_of(row)) or "not graded"
     first = next((r for r in row.results if r.status in ("fail", "error")), None) or \
@@ -86,7 +86,7 @@ def reason(row):
         return "all checks pass"
     text = one_line(first.message)
     text = text if len(text) <= REASON_LIMIT else text[:REASON_LIMIT - 3] + "..."
-    return f"{check_label(first)} {first.status}" + (f": {text}" if text else "")
+    return f"{check_label(first)}: {first.status}" + (f": {text}" if text else "")
 
 
 def indented(text, indent):

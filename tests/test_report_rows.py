@@ -131,10 +131,34 @@ def test_every_row_of_the_sheet_has_a_reason_and_a_fraction(graded):
     for student, row in rows.items():
         assert row["message"], (student, row)
         assert row["fraction"] and float(row["fraction"]) == pytest.approx(float(row["score"]) / 17, abs=1e-3)
-    assert rows["bob"]["message"].startswith("handout_unchanged fail: code outside the steps differs")
+    assert rows["bob"]["message"].startswith("handout_unchanged: fail: code outside the steps differs")
     assert rows["nina"]["lab"] == "tumbling_crates" and rows["nina"]["max_score"] == "17"
     assert rows["nina"]["fraction"] == "0.000" and rows["nina"]["message"] == "the file is empty: nothing to grade"
-    assert rows["mallory"]["message"].startswith("loads error: ") and "SyntaxError" in rows["mallory"]["message"]
+    assert rows["mallory"]["message"].startswith("loads: error: ") and "SyntaxError" in rows["mallory"]["message"]
     block = graded["out"][graded["out"].index("class/mallory/mallory.py"):].split("\n\n")[0]
     assert "(python mallory.py)" in block and "python tumbling_crates.py" not in block, block
     assert "not graded: the file is empty" in graded["html"]
+
+
+@pytest.mark.parametrize("forged", ["x", 1, None, [], {"message": 5}, {"kind": "report", "message": "a bug in the "
+                                    "checker"}, {"kind": "value", "message": "m", "line": True, "text": 7},
+                                    {"kind": "exit", "message": "m" * 10_000, "line": -3, "traceback": ["a"]}])
+def test_every_error_account_from_the_child_is_checked_before_use(forged):
+    """common.checked_result: a result line's error, and each probe tape's, whatever the child wrote, becomes an
+    account the describers read without an exception; only the grader writes kinds "report" and "value"."""
+    from types import SimpleNamespace
+    from checker.common import CHILD_KINDS, checked_result, describe_function_error, describe_run_failure
+    result = checked_result({"phase": "run", "error": forged, "probe": {"tapes": {"p": {"tape": [], "error": forged}}}})
+    errors = [result["error"]] + [e for e in [result["probe"]["tapes"]["p"]["error"]] if e is not None]
+    assert len(errors) == (1 if forged is None else 2)   # no error on a tape stays no error
+    for error in errors:
+        assert set(error) == {"kind", "message", "line", "text", "traceback"}
+        assert error["kind"] in CHILD_KINDS or error["message"].startswith("the child's result names an error")
+        assert isinstance(error["message"], str) and len(error["message"]) <= 600
+        assert error["line"] is None or (isinstance(error["line"], int) and error["line"] > 0)
+        assert error["text"] is None or isinstance(error["text"], str)
+        run = SimpleNamespace(result=result, status="error", returncode=-9, max_output=1024, memory_mb=768,
+                              stderr="", stdout="", timeout_trace="", lab_path="x.py", timeout=1.0)
+        assert describe_run_failure(run, "x.py", "The file") and describe_function_error("sat", error, "x.py")
+    assert "bug in the checker" not in result["error"]["message"] or result["error"]["kind"] == "exception"
+    assert checked_result("x") == {} and checked_result({"phase": "done"}) == {"phase": "done"}
