@@ -171,7 +171,8 @@ class Grader:
         When the only edits outside the steps are changed values of constants that no step and no part of the
         lab's checks reads (MAX_CRATES = 30), the runs grade the file with those lines put back to the handout's
         (handout.constant_edits): the edits never run, so they change no grade, and handout_unchanged says so
-        as a warning. Any other edit is graded as before (handout_unchanged fails and the scenes wait for it).
+        as a warning. When the scenes run they also run on the file itself: an edit that changes what they record
+        or print is graded as any other edit is (handout_unchanged fails and the criteria wait for it).
         """
         scratch = None
         try:
@@ -229,15 +230,12 @@ class Grader:
             sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
         state = lab.checks.run(sub, stop_at_scenarios=True)
         if lab.checks.wants_scenarios(state):
-            wanted = lab.scenarios()
-            with ThreadPoolExecutor(max_workers=len(wanted)) as pool:
-                futures = {name: pool.submit(self.run, runs, "scenario", dict(settings, probes=lab.probes),
-                                             lab.scene_seconds(name, settings))
-                           for name, settings in wanted.items()}
-                for name, future in futures.items():
-                    run = future.result()
-                    if run is not None:
-                        sub.scenarios[name] = run
+            sub.scenarios = self._scenes(runs, lab)
+            if sub.edits_not_run and not self._same_scenes(sub.scenarios, self._scenes(path, lab)):
+                # the edited constant changes what the scenes show (MAX_CRATES = 4: clicks drop nothing): an edit
+                # that fails handout_unchanged, and the scenes wait for it, as for any other edit
+                sub.edits_not_run, sub.scenarios = [], {}
+                state = lab.checks.run(sub, stop_at_scenarios=True, state=None)
         results = lab.checks.run(sub, state=state).ordered(lab.checks)
         with open(path, "rb") as handle:
             if hashlib.sha256(handle.read()).hexdigest() != digest:
@@ -266,6 +264,28 @@ class Grader:
         notes = sorted({note for run in runs for note in getattr(run, "notes", ())})
         return LabReport(given, lab, results, time.monotonic() - start, records, preview, settings["seed"],
                          [asdict(b) for b in sub.flags], notes)
+
+    def _scenes(self, path, lab):
+        """{scene name: its run} of every scene of the lab, run in parallel on `path` (a scene the whole run's time
+        limit left out is missing)."""
+        wanted, runs = lab.scenarios(), {}
+        with ThreadPoolExecutor(max_workers=len(wanted)) as pool:
+            futures = {name: pool.submit(self.run, path, "scenario", dict(settings, probes=lab.probes),
+                                         lab.scene_seconds(name, settings))
+                       for name, settings in wanted.items()}
+            for name, future in futures.items():
+                run = future.result()
+                if run is not None:
+                    runs[name] = run
+        return runs
+
+    @staticmethod
+    def _same_scenes(graded, own):
+        """True when the file's own runs of the scenes show exactly what the graded runs (the handout's lines put
+        back) show: the same end, records and printed output."""
+        return set(graded) == set(own) and all(
+            (graded[n].status, graded[n].record, graded[n].stdout) == (own[n].status, own[n].record, own[n].stdout)
+            for n in graded)
 
     @staticmethod
     def _wants_preview(results):

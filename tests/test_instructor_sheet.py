@@ -3,10 +3,11 @@ Gradescope package says which file students submit and what it is worth.
 
 A constant changed outside the steps that no check reads (handout.constant_edits; grade.checked_names: no
 step region, and none of the lab's checks, probes and scenes names it) is graded with the handout's line put
-back, so the edit never runs: the file scores exactly what it scores without the edit, and handout_unchanged
-passes with a warning. That is the guard against forging: whatever such an edit does, the grade is the
-unedited file's. A constant a check reads (Ball on the Ramp's SLOP), two constants on one line, or any other
-edit still fails handout_unchanged as before.
+back, so the edit never runs in a graded run: the file scores exactly what it scores without the edit, and
+handout_unchanged passes with a warning. That is the guard against forging: the grade is the unedited
+file's. When the scenes run, the file's own runs of them are compared with the graded ones: if the edit
+changes what they record or print (MAX_CRATES = 4), it fails handout_unchanged as before. A constant a check
+reads (Ball on the Ramp's SLOP), a constant over two lines, or any other edit also fails as before.
 """
 import os
 import re
@@ -48,17 +49,35 @@ def test_a_constant_no_check_reads_costs_a_warning_not_the_grade(tmp_path):
     assert message.startswith("warning: line ") and "MAX_CRATES = 30" in message and "put it back" in message
 
 
-@pytest.mark.parametrize("lab, name, value", [("bullets", "BULLET_MASS", 50.0), ("bullets", "MAX_BULLETS", 0)])
-def test_a_free_constant_gains_nothing_and_loses_nothing(tmp_path, lab, name, value):
-    """The attack: a constant no check reads, changed where running it would change what a scene measures (a
-    bullet 10x heavier; no bullet at all). Graded with the handout's line, the file scores exactly what its
-    unedited twin scores: the solution all, the starter what the starter scores."""
+def test_a_free_constant_that_changes_a_scene_still_fails(tmp_path):
+    """MAX_CRATES = 4 (tests/corpus_tumbling_crates.py's outside_max_crates: the four clicks drop nothing): no
+    check reads the name, but the file's own runs of the scenes differ from the handout's, so it is an edit that
+    fails handout_unchanged and the criteria wait for it, as before."""
+    row, by_id = grade(tmp_path, "tumbling_crates", edited(text_of("solutions/tumbling_crates.py"), "MAX_CRATES", 4))
+    assert by_id["handout_unchanged"].status == "fail" and "MAX_CRATES = 4" in by_id["handout_unchanged"].message
+    assert by_id["fast_movers_zero"].status == "skip" and row.score == 7
+
+
+@pytest.mark.parametrize("name, value", [("BULLET_MASS", 50.0), ("MAX_BULLETS", 0), ("BULLET_COLOR", (1, 2, 3))])
+def test_a_free_constant_gains_nothing(tmp_path, name, value):
+    """The attack: a constant no check reads, changed where running it could change what a scene measures (a
+    bullet 50x heavier, MAX_BULLETS = 0), and a colour that changes nothing measured. Beside its unedited twin
+    (the solution, the starter) none scores more: either it scores the same with a warning (its scenes show
+    exactly what the handout's line shows, or never run), or it fails handout_unchanged as before."""
     for kind in ("solutions/{}.py", "starters/{}_starter.py"):
-        text = text_of(kind.format(lab))
-        honest, _ = grade(tmp_path, lab, text)
-        attack, by_id = grade(tmp_path, lab, edited(text, name, value))
-        assert attack.score == honest.score, (kind, [(r.id, r.status) for r in attack.results])
-        assert by_id["handout_unchanged"].status == "pass" and "warning" in by_id["handout_unchanged"].message
+        text = text_of(kind.format("bullets"))
+        honest, _ = grade(tmp_path, "bullets", text)
+        attack, by_id = grade(tmp_path, "bullets", edited(text, name, value))
+        shown = (kind, [(r.id, r.status) for r in attack.results])
+        assert attack.score <= honest.score, shown
+        if by_id["handout_unchanged"].status == "pass":   # the edit changed nothing graded: a warning, same score
+            assert attack.score == honest.score and by_id["handout_unchanged"].message.startswith("warning"), shown
+        else:   # it changed what a scene shows: an edit that fails, the criteria waiting, as before
+            assert by_id["runs"].status == "skip", shown
+        if name == "BULLET_COLOR" or kind.startswith("starters"):   # nothing measured / no scene runs
+            assert by_id["handout_unchanged"].status == "pass", shown
+        if name == "BULLET_MASS" and kind.startswith("solutions"):    # a heavier bullet: the scene differs
+            assert by_id["handout_unchanged"].status == "fail", shown
 
 
 def test_a_constant_a_check_reads_still_fails(tmp_path):
