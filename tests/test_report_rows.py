@@ -162,3 +162,27 @@ def test_every_error_account_from_the_child_is_checked_before_use(forged):
         assert describe_run_failure(run, "x.py", "The file") and describe_function_error("sat", error, "x.py")
     assert "bug in the checker" not in result["error"]["message"] or result["error"]["kind"] == "exception"
     assert checked_result("x") == {} and checked_result({"phase": "done"}) == {"phase": "done"}
+
+
+def test_a_forged_error_line_on_the_portable_path(tmp_path):
+    """The same forgery where Windows and macOS take the portable path (CHECKER_PORTABLE=1 emulates it on Linux:
+    the result channel is the child's stdout): the last line written on fd 1 and on fd 3 where it is open, then
+    SIGKILL. The row is the file's error, never the checker's bug, and scores no more than its twin (erin)."""
+    text = starter()
+    forged = ("import os as _os\n"
+              "for _fd in (1, 3):\n"
+              "    try:\n"
+              "        _os.write(_fd, b'\\n{\"phase\": \"run\", \"error\": \"x\"}\\n')\n"
+              "    except OSError:\n"
+              "        pass\n"
+              "_os.kill(_os.getpid(), 9)\n")
+    (tmp_path / "carol").mkdir()
+    (tmp_path / "erin").mkdir()
+    (tmp_path / "carol" / "tumbling_crates.py").write_text(after_imports(text, forged), encoding="utf-8")
+    (tmp_path / "erin" / "tumbling_crates.py").write_text(after_imports(text, "import os as _os\n"), encoding="utf-8")
+    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", CHECKER_PORTABLE="1")
+    done = subprocess.run([sys.executable, "-m", "checker", ".", "--json", "--quiet"], cwd=tmp_path,
+                          capture_output=True, text=True, env=env, timeout=600)
+    rows = {row["path"].split("/")[0]: row for row in json.loads(done.stdout)["labs"]}
+    assert "bug in the checker" not in done.stdout + done.stderr, done.stdout
+    assert rows["carol"]["status"] == "error" and rows["carol"]["score"] <= rows["erin"]["score"]
