@@ -125,6 +125,34 @@ def test_gradescope_pictures_folder_is_not_the_students(crates_bundle, tmp_path)
         shutil.rmtree(tmpdir, ignore_errors=True)
 
 
+@pytest.mark.skipif(not AS_ROOT, reason="the attack is on a root grader; run as root")
+def test_prairielearn_pictures_folder_is_not_the_students(tmp_path):
+    """PrairieLearn's entrypoint uses the same script: the same attack, by its own procedure (GRADE_ROOT in place
+    of /grade, the student's code as `nobody`)."""
+    out = tmp_path / "pl"
+    done = run_package("prairielearn", "--out", str(out), "--labs", "tumbling_crates", "--image", "me/l11")
+    assert done.returncode == 0, done.stderr
+    secret = victim(tmp_path)
+    tmpdir = tempfile.mkdtemp(prefix="i39-root-writes-", dir="/tmp")
+    try:
+        os.chmod(tmpdir, 0o755)
+        with open(os.path.join(ROOT, "starters", "tumbling_crates_starter.py"), encoding="utf-8") as handle:
+            attack = with_payload(handle.read(), payload(tmpdir, secret))
+        grade = tmp_path / "grade"
+        (grade / "student").mkdir(parents=True)
+        (grade / "student" / "tumbling_crates.py").write_text(attack, encoding="utf-8")
+        env = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "GRADE_ROOT": str(grade),
+               "GRADER_PYTHON": sys.executable, "AUTOGRADER_USER": "nobody", "TMPDIR": tmpdir}
+        done = subprocess.run([str(out / "run_prairielearn")], env=env, capture_output=True, text=True, timeout=300)
+        assert done.returncode == 0, done.stderr
+        doc = json.loads((grade / "results" / "results.json").read_text())
+        assert doc["gradable"] is True and doc["score"] < 1
+        with open(secret, "rb") as handle:
+            assert handle.read() == SECRET, "the grader wrote through the student's link"
+    finally:
+        shutil.rmtree(tmpdir, ignore_errors=True)
+
+
 class _Row:
     """The least a row needs for write_pictures: its path."""
     def __init__(self, path):
