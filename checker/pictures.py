@@ -119,7 +119,7 @@ def _view(frames, focus=None):
         for index, body in enumerate(frame.get("bodies", ())):
             if body.get("static") or (focus and index not in focus):
                 continue
-            r = body.get("radius") or 0.0
+            r = _radius(body)
             points = body.get("points") or [body["pos"]]
             for x, y in points:
                 if abs(x) < 1e5 and abs(y) < 1e5:
@@ -164,6 +164,17 @@ def _nearest(frames, number):
     return min(frames, key=lambda f: abs(f.get("frame", 0) - number))
 
 
+def _radius(body):
+    """A body's radius in px when the record holds a finite one below 1e5 (the child wrote it), else 0."""
+    r = body.get("radius")
+    return r if isinstance(r, (int, float)) and not isinstance(r, bool) and 0 < r < 1e5 else 0.0
+
+
+def _pair(value):
+    return isinstance(value, list) and len(value) == 2 and all(
+        isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
+
+
 def _draw_frame(surface, rect, frame, view, marked):
     """Draw one recorded frame into rect (a pygame.Rect) of surface, seen through view."""
     left, top, width, height = view
@@ -194,9 +205,9 @@ def _draw_frame(surface, rect, frame, view, marked):
                 corners = [at(p) for p in points]
                 pygame.draw.polygon(surface, fill, corners)
                 outlines.append(("polygon", corners))
-            elif body.get("radius"):
+            elif _radius(body):
                 centre = at(body["pos"])
-                r = max(2, round(body["radius"] * scale))
+                r = max(2, round(_radius(body) * scale))
                 pygame.draw.circle(surface, fill, centre, r)
                 spoke = pygame.Vector2(1, 0).rotate_rad(body.get("angle", 0.0)) * r
                 outlines.append(("circle", (centre, r, (centre[0] + spoke.x, centre[1] + spoke.y))))
@@ -207,9 +218,9 @@ def _draw_frame(surface, rect, frame, view, marked):
                 centre, r, tip = shape
                 pygame.draw.circle(surface, OUTLINE, centre, r, 1)
                 pygame.draw.line(surface, OUTLINE, centre, tip, 1)
-        for contact in frame.get("touching", ()):
-            point, normal = contact["point"], contact["normal"]
-            if not all(abs(v) < 1e6 for v in point + normal):
+        for contact in frame.get("touching") or ():   # the child wrote these: drawn only when they are numbers
+            point, normal = (contact.get("point"), contact.get("normal")) if isinstance(contact, dict) else (0, 0)
+            if not (_pair(point) and _pair(normal) and all(abs(v) < 1e6 for v in point + normal)):
                 continue
             p = at(point)
             pygame.draw.line(surface, CONTACT, p, (p[0] + normal[0] * 9, p[1] + normal[1] * 9), 1)
@@ -360,33 +371,50 @@ def prairielearn_images(report, check_id):
     return [{"label": f"{p.check_id}: scene {p.scene}", "url": p.data_url} for p in pictures_for(report, check_id)]
 
 
-def all_pictures(rows):
-    """{row path: {check id: [Picture]}} for every failed behaviour check of every row (rows without any left out)."""
+def all_pictures(rows, problems=None):
+    """{row path: {check id: [Picture]}} for every failed behaviour check of every row (rows without any left out).
+
+    A row whose pictures cannot be drawn loses only its own: with a list as `problems`, one line naming
+    it is appended there (else the exception is raised, as before)."""
     found = {}
     for row in rows:
-        for result in pictured_results(row):
-            pictures = pictures_for(row, result.id)
-            if pictures:
-                found.setdefault(row.path, {})[result.id] = pictures
+        try:
+            for result in pictured_results(row):
+                shown = pictures_for(row, result.id)
+                if shown:
+                    found.setdefault(row.path, {})[result.id] = shown
+        except Exception as exc:  # noqa: BLE001 - one row's record or our drawing: that row goes without
+            if problems is None:
+                raise
+            found.pop(row.path, None)
+            problems.append(f"{row.path}: cannot draw its pictures ({type(exc).__name__}: {exc}); none for it")
     return found
 
 
-def write_pictures(rows, folder, names, pictures=None):
+def write_pictures(rows, folder, names, pictures=None, problems=None):
     """Write each picture to folder/<submission name>/<check id>[-<scene>].png; returns {row path: {check id: [paths]}}.
 
     names: {row path: submission folder name} (checker/outputs.submission_names).
     pictures: all_pictures(rows), if already made.
+    Every file is created by the grader in folders it made, following no link (outputs.write_below): a
+    picture or folder some other user planted there (a link to /etc/...) is replaced or refused, never
+    written through. A row whose pictures cannot be written loses only its own: one line naming it is
+    appended to `problems` (a list; else the OSError is raised).
     """
-    pictures = all_pictures(rows) if pictures is None else pictures
+    from .outputs import write_below
+    pictures = all_pictures(rows, problems) if pictures is None else pictures
     written = {}
     for path, by_check in pictures.items():
-        target = os.path.join(folder, names[path])
-        os.makedirs(target, exist_ok=True)
-        for check_id, shown in by_check.items():
-            for picture in shown:
-                name = check_id if len(shown) == 1 else f"{check_id}-{picture.scene}"
-                file = os.path.join(target, name + ".png")
-                with open(file, "wb") as handle:
-                    handle.write(picture.png)
-                written.setdefault(path, {}).setdefault(check_id, []).append(file)
+        try:
+            for check_id, shown in by_check.items():
+                for picture in shown:
+                    name = check_id if len(shown) == 1 else f"{check_id}-{picture.scene}"
+                    file = write_below(folder, names[path], name + ".png", picture.png)
+                    written.setdefault(path, {}).setdefault(check_id, []).append(file)
+        except OSError as exc:
+            if problems is None:
+                raise
+            written.pop(path, None)
+            problems.append(f"--pictures {folder}: {path}: its pictures were not written "
+                            f"({exc.strerror or exc})")
     return written

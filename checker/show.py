@@ -403,8 +403,13 @@ def main(args, entries, events=None, frames=None, out=None, err=None):
         print(f"checker: error: --show {check_id}: {entry.lab.title} has no such check; its checks: {known}",
               file=err)
         return 2
-    row, replay, problem = prepare(entry.path, entry.lab, check_id, args.seed, limits,
-                                   {"allow_edits": args.allow_edits})
+    try:
+        row, replay, problem = prepare(entry.path, entry.lab, check_id, args.seed, limits,
+                                       {"allow_edits": args.allow_edits})
+    except Exception as exc:  # noqa: BLE001 - a bug of ours on this file: one line, never a traceback
+        print(f"checker: error: --show could not grade {entry.path} ({type(exc).__name__}: {exc}); this is a bug "
+              "in the checker, please report it", file=err)
+        return 1
     report.text_report(row, out)
     print(f"Graded with seed {row.seed} (--seed {row.seed} grades with the same inputs).", file=out)
     if replay is None:
