@@ -294,9 +294,9 @@ def _scenes_of(report, check_id):
 
 
 def focus_bodies(frame, reference):
-    """Indices of the moving bodies a failure is about in a frame: those more than show.VISIBLE px from the
+    """Indices of the moving bodies a failure is about in a frame: those more than preview.VISIBLE_PX from the
     solution's body of the same index, else every moving body."""
-    from .show import VISIBLE
+    from .preview import VISIBLE_PX as VISIBLE
     moving = [i for i, b in enumerate((frame or {}).get("bodies", ())) if not b.get("static")]
     if reference is None or len(reference.get("bodies", ())) != len(frame.get("bodies", ())):
         return set(moving)
@@ -308,10 +308,11 @@ def _distance(a, b):
     return ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
 
 
-def caption(check_id, scene, title, ungraded, fail_frame, quantity, value):
-    """The filmstrip's title: the check, the scene, the failing frame and the check's quantity there."""
+def caption(check_id, scene, title, ungraded, fail_frame, quantity, value, spliced=""):
+    """The filmstrip's title: the check, the scene (and what ran, when the preview spliced the lesson's other
+    steps in: checker/preview.py), the failing frame and the check's quantity there."""
     head = (f"not graded, to show what {check_id} means: " if ungraded else f"{check_id}: ") + \
-        f"scene '{scene}' ({title})"
+        f"scene '{scene}' ({title})" + (f", {spliced}" if spliced else "")
     if fail_frame is not None:
         head += f"; frame {fail_frame} (t = {fail_frame / FPS:.2f} s)"
         if quantity is not None and value is not None:
@@ -344,7 +345,8 @@ def pictures_for(report, check_id, with_reference=True):
             if fail_frame is not None else None
         value = values[at] if at is not None and values else None
         focus = focus_bodies(frames[at], _nearest(theirs, fail_frame)) if at is not None else None
-        title = caption(check_id, scene, report.lab.title, ungraded, fail_frame, quantity, value)
+        title = caption(check_id, scene, report.lab.title, ungraded, fail_frame, quantity, value,
+                        getattr(report, "preview_note", "") if ungraded else "")
         surface = filmstrip(record, reference, fail_frame, title, focus=focus)
         pictures.append(Picture(check_id, scene, png_bytes(surface)))
     return pictures

@@ -81,16 +81,27 @@ def _finite(body):
     return all(math.isfinite(v) and abs(v) < 1e6 for v in values)
 
 
+def recorded_colour(body):
+    """The colour the lab drew the body with (its recorded "color": three ints 0-255), or None."""
+    value = body.get("color")
+    if isinstance(value, list) and len(value) == 3 and \
+            all(isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in value):
+        return tuple(value)
+    return None
+
+
 def bodies_of(frame, scale=1.0, offset=(0, 0)):
-    """The frame's bodies as RecordedBody (the labs' colours: grey statics, a colour per moving body)."""
+    """The frame's bodies as RecordedBody in the lab's own colours (recorded; a record without them: grey
+    statics, a colour per moving body); asleep, darker, as Sleeping Crates draws them."""
     shown, moving = [], 0
     for body in (frame or {}).get("bodies", ()):
         if not _finite(body):
             continue
+        colour = recorded_colour(body)
         if body.get("static"):
-            colour = STATIC
+            colour = colour or STATIC
         else:
-            colour = PALETTE[moving % len(PALETTE)]
+            colour = colour or PALETTE[moving % len(PALETTE)]
             colour = tuple(int(c * 0.45) for c in colour) if body.get("asleep") else colour
             moving += 1
         shown.append(RecordedBody(body, colour, scale, offset))
@@ -240,10 +251,10 @@ class Viewer:
         mode = "side by side" if self.side_by_side else "ghost: the solution in cyan"
         head = f"{replay.lab.title} - {replay.check.id} ({replay.check.status}) | '{replay.scene}'" \
                f"{'' if replay.graded else ' ungraded'} | frame {frame['frame']} ({frame['frame'] / 60:.2f} s)" \
-               f"{'' if self.playing else ' PAUSED'} | {mode}"
+               f"{'' if self.playing else ' PAUSED'} | {mode}" + (f" | {replay.spliced}" if replay.spliced else "")
         rows = wrapped(self.font, [head], SCENE[0] - 30, " | ")
-        keys = "P pause  O step  Left/Right  J jump to the failing frame  G ghost/side by side" + \
-            ("  Tab cases" if replay.cases else "") + "  Esc quit"
+        keys = "P pause  O / Right one frame on  Left one back  Home start  J the failing frame  G ghost / side by " \
+            "side  H panel" + ("  Tab cases" if replay.cases else "") + "  Esc quit"
         return [rows[0]] + ["| " + row for row in rows[1:]] + [keys]
 
     def draw_hud(self, surface):
