@@ -11,7 +11,7 @@ they differ, the solution's; read-only: no panel key reaches it but H (its size)
 where the live panel has its timings. It sits where it covers the fewest moving bodies of both runs
 (place_panel), never over the title or the timeline.
 
-Keys:  P pause / play    O one frame (paused)    Left / Right one frame back / on    Home the start
+Keys:  P pause / play    O / Right one frame on (paused)    Left one frame back    Home the start
        J jump to the failing frame    G ghost (the solution's outlines over yours) / side by side
        Tab the scene / the failing cases    [ ] previous / next case    N next axis (SAT)
        H the solver panel: compact / full / hidden    Esc, Q quit
