@@ -39,6 +39,7 @@ os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 import pygame  # noqa: E402
 
+from .preview import recorded_colour  # noqa: E402
 from .sandbox import Limits, run_child  # noqa: E402
 
 FRAMES = 6                 # frames per row
@@ -183,10 +184,11 @@ def _draw_frame(surface, rect, frame, view, marked):
         for body in frame.get("bodies", ()):
             if not all(abs(v) < 1e6 for v in body["pos"]):
                 continue
+            own = recorded_colour(body)   # the lab's own colour, when the record holds one
             if body.get("static"):
-                fill = STATIC
+                fill = own or STATIC
             else:
-                fill = PALETTE[moving % len(PALETTE)]
+                fill = own or PALETTE[moving % len(PALETTE)]
                 fill = tuple((c + 255) // 2 for c in fill) if body.get("asleep") else fill
                 moving += 1
             points = body.get("points") or []
@@ -235,15 +237,18 @@ def filmstrip(record, reference=None, marked=None, title="", count=FRAMES, focus
     view = _view(shown + [f for f in rows[-1][1] if f is not None], focus)
     label_w = 70
     width = label_w + len(shown) * (TILE[0] + GAP) + GAP
-    height = HEAD_H + len(rows) * (TILE[1] + LABEL_H + GAP) + GAP
+    small, big = _font(16), _font(19)
+    titles = _title_lines(big, title, max(width, 320) - 2 * GAP - 4)
+    head = HEAD_H + (len(titles) - 1) * (HEAD_H - 4)
+    height = head + len(rows) * (TILE[1] + LABEL_H + GAP) + GAP
     surface = pygame.Surface((max(width, 320), height))
     surface.fill(BACKGROUND)
-    small, big = _font(16), _font(19)
-    surface.blit(big.render(title, True, TEXT), (GAP + 2, 4))
+    for k, line in enumerate(titles):
+        surface.blit(big.render(line, True, TEXT), (GAP + 2, 4 + k * (HEAD_H - 4)))
     marked_at = min(shown, key=lambda f: abs(f.get("frame", 0) - marked)).get("frame") \
         if marked is not None and shown else None
     for r, (name, row) in enumerate(rows):
-        y = HEAD_H + r * (TILE[1] + LABEL_H + GAP)
+        y = head + r * (TILE[1] + LABEL_H + GAP)
         surface.blit(small.render(name, True, TEXT), (GAP + 2, y + LABEL_H + TILE[1] // 2 - 6))
         for k, frame in enumerate(row):
             x = label_w + k * (TILE[0] + GAP)
@@ -253,6 +258,19 @@ def filmstrip(record, reference=None, marked=None, title="", count=FRAMES, focus
             surface.blit(small.render(label, True, MARK if is_marked else TEXT), (x + 2, y + 3))
             _draw_frame(surface, pygame.Rect(x, y + LABEL_H, TILE[0], TILE[1]), frame, view, is_marked)
     return surface
+
+
+def _title_lines(font, title, width):
+    """The title broken after "; " where it is wider than `width` px (a piece wider alone stays whole)."""
+    lines, current = [], ""
+    for piece in re.split(r"(?<=;) ", title):
+        joined = f"{current} {piece}" if current else piece
+        if current and font.size(joined)[0] > width:
+            lines.append(current)
+            current = piece
+        else:
+            current = joined
+    return lines + [current]
 
 
 def png_bytes(surface):

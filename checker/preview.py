@@ -40,6 +40,16 @@ def visible(frame, reference):
     return not (px < VISIBLE_PX and deg < VISIBLE_DEG)
 
 
+def recorded_colour(body):
+    """The colour the lab drew a recorded body with (its "color": three ints 0-255), or None (none recorded, or
+    one the record cannot hold: the record comes from the child)."""
+    value = body.get("color")
+    if isinstance(value, list) and len(value) == 3 and \
+            all(isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in value):
+        return tuple(value)
+    return None
+
+
 def nearest(frames, number):
     """The recorded frame with this frame number (nearest), or None."""
     return min(frames, key=lambda f: abs(f.get("frame", 0) - number)) if frames else None
@@ -93,8 +103,14 @@ def describe(step, taken):
     6" ("" when nothing was spliced)."""
     if not taken:
         return ""
-    return f"your step {step} with the lesson's step{'s' if len(taken) > 1 else ''} " + \
-        ", ".join(str(s) for s in taken)
+    runs = []   # consecutive steps as one range: [2, 3, 4, 6] -> "2-4", "6"
+    for s in sorted(taken):
+        if runs and s == runs[-1][1] + 1:
+            runs[-1][1] = s
+        else:
+            runs.append([s, s])
+    text = ", ".join(f"{a}" if a == b else f"{a}, {b}" if b == a + 1 else f"{a}-{b}" for a, b in runs)
+    return f"your step {step} with the lesson's step{'s' if len(taken) > 1 else ''} {text}"
 
 
 def runner(run, path, lab, text=None):
@@ -143,13 +159,11 @@ def failing_step(results):
     return next((r for r in results if r.status in ("fail", "error")), None)
 
 
-def scene_for(run, path, text, lab, result, reference_record=None):
+def scene_for(run, path, text, lab, result, reference_record):
     """(scene, record, note) to show for a failed function check `result` of the file at `path` (its source
     `text`): the student's failing step with the solution's other steps (note: describe()'s line; the whole file,
     note "", when the check names no step or the markers cannot be read), in the scene choose() picks.
-    run: Grader.run; reference_record(lab, scene): the solution's record (default checker/pictures.py's)."""
-    if reference_record is None:
-        from .pictures import reference_record
+    run: Grader.run; reference_record(lab, scene): the solution's record (checker/pictures.py's)."""
     step = getattr(result, "step", None)
     spliced = None
     if step and getattr(lab, "solution", None):

@@ -155,7 +155,7 @@ def divergence(frame, reference):
     return max(px, deg * previews.VISIBLE_PX / previews.VISIBLE_DEG)
 
 
-DIVERGENCE = Quantity("apart from the solution's (px, or degrees turned)", None, previews.VISIBLE_PX)
+DIVERGENCE = Quantity("off the solution's (px or degrees)", None, previews.VISIBLE_PX)
 
 
 # ---------------------------------------------------------------- the replay
@@ -373,7 +373,7 @@ def prepare(path, lab, check_id=None, seed=None, limits=None, options=None, anno
             text = source.read(path)
         except (OSError, source.SourceError):
             return None, None, ""
-        return previews.scene_for(grader.run, path, text, lab, other)
+        return previews.scene_for(grader.run, path, text, lab, other, pictures.reference_record)
 
     grader.recording()
     return row, build_replay(row, result, grader.probe_functions(), rerun), ""

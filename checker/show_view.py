@@ -26,6 +26,7 @@ from lesson11.panel import MODES, LabPanel
 from lesson11.physics2d.draw import draw_body, draw_contacts
 
 from .pictures import _font
+from .preview import recorded_colour
 from .show_cases import wrapped
 
 SCENE = (900, 600)          # px: the labs' window
@@ -79,15 +80,6 @@ def _finite(body):
     """True when every coordinate of the body is a number pygame can draw (|v| < 1e6 px)."""
     values = list(body["pos"]) + [c for p in body.get("points") or () for c in p] + [body.get("radius") or 0.0]
     return all(math.isfinite(v) and abs(v) < 1e6 for v in values)
-
-
-def recorded_colour(body):
-    """The colour the lab drew the body with (its recorded "color": three ints 0-255), or None."""
-    value = body.get("color")
-    if isinstance(value, list) and len(value) == 3 and \
-            all(isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in value):
-        return tuple(value)
-    return None
 
 
 def bodies_of(frame, scale=1.0, offset=(0, 0)):

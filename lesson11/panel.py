@@ -702,7 +702,7 @@ class LabPanel:
             lines = [("; ".join(others) if others else "the other settings: as the solution's",
                       WARNING if others else DIM)]
         else:
-            lines = [("the panel keys S, Up/Down, W, C, K, 0 change nothing in a replay", DIM)]
+            lines = [("keys S, Up/Down, W, C, K, 0 change nothing here", DIM)]
         lines.append(("replay: recorded settings, no timing measured", DIM))
         if mine is not None and not compact:
             lines.append((study_short(_Order(mine.get("order")), {**mine}), DIM))

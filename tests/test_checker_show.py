@@ -561,7 +561,7 @@ def test_panel_keys_change_nothing_in_a_replay_and_the_shows_keys_still_work(sho
     viewer.handle(key(pygame.K_h))
     viewer.draw(surface)
     assert viewer.panel.mode == "full" and "SOLVER PANEL (replay)" in panel_text(viewer)
-    assert "the panel keys S, Up/Down, W, C, K, 0 change nothing in a replay" in panel_text(viewer)
+    assert "keys S, Up/Down, W, C, K, 0 change nothing here" in panel_text(viewer)
     viewer.handle(key(pygame.K_h))
     viewer.draw(surface)
     assert viewer.panel.mode == "hidden" and viewer.panel.box is None

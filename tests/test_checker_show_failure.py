@@ -99,7 +99,7 @@ def test_pictures_draw_a_scene_where_the_students_run_differs(unclamped):
 
 def test_the_picture_caption_says_what_ran(unclamped):
     lab, path, row = unclamped
-    assert row.preview_note == "your step 2 with the lesson's steps 3, 4, 5, 6, 7"
+    assert row.preview_note == "your step 2 with the lesson's steps 3-7"
     first = next(r for r in row.results if r.status == "fail")
     replay = show.build_replay(row, first)
     assert replay.spliced == row.preview_note
@@ -107,6 +107,13 @@ def test_the_picture_caption_says_what_ran(unclamped):
 
 
 # ---------------------------------------------------------------- the failing step alone
+
+def test_the_spliced_steps_are_named_in_ranges():
+    assert preview.describe(5, [2, 3, 4, 6]) == "your step 5 with the lesson's steps 2-4, 6"
+    assert preview.describe(2, [3]) == "your step 2 with the lesson's step 3"
+    assert preview.describe(4, [2, 3, 5, 6]) == "your step 4 with the lesson's steps 2, 3, 5, 6"
+    assert preview.describe(4, []) == ""
+
 
 def test_replay_source_splices_every_other_step_as_text():
     lab = lab_of("tumbling_crates")
@@ -157,7 +164,7 @@ def test_working_in_order_the_step5_replay_shows_friction_not_step6(working_in_o
     and they still differ from the solution's (friction); the window's title and the summary say so."""
     lab, path, row, replay, lines = working_in_order
     assert replay.check.id == "resolve_friction" and not replay.graded
-    assert replay.spliced == "your step 5 with the lesson's steps 2, 3, 4, 6"
+    assert replay.spliced == "your step 5 with the lesson's steps 2-4, 6"
     crates = [i for i, b in enumerate(replay.frames[0]["bodies"]) if not b["static"]]
     turned = [abs(math.degrees(replay.frames[-1]["bodies"][i]["angle"] - replay.frames[0]["bodies"][i]["angle"]))
               for i in crates]
@@ -181,13 +188,16 @@ def test_show_says_what_it_does_while_it_prepares(working_in_order):
 
 
 def test_another_function_check_is_replayed_with_its_own_step(working_in_order):
-    """--show apply_impulse_spin on the same file: step 6 with the lesson's step 5 (the crates freeze there)."""
+    """--show apply_impulse_spin on the same file: step 6 with the lesson's steps 2-5 (the crates freeze there)."""
     lab, path, row, replay, lines = working_in_order
     other = next(r for r in row.results if r.id == "apply_impulse_spin")
     assert other.status == "fail"
-    rerun = lambda result: preview.scene_for(Grader().run, path, open(path, encoding="utf-8").read(), lab, result)  # noqa: E731
+    def rerun(result):
+        return preview.scene_for(Grader().run, path, open(path, encoding="utf-8").read(), lab, result,
+                                 pictures.reference_record)
+
     spin = show.build_replay(row, other, rerun=rerun)
-    assert spin.spliced == "your step 6 with the lesson's steps 2, 3, 4, 5"
+    assert spin.spliced == "your step 6 with the lesson's steps 2-5"
     assert spin.scene and differs_visibly(spin.frames, spin.reference)
 
 
