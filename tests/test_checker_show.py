@@ -312,6 +312,8 @@ def test_command_line_show_replays_and_returns(tmp_path):
     assert status == 1, err
     assert ":( Step 6" in out and f"graded with seed {SEED}" in out
     assert "--show: apply_impulse_spin (fail)" in out and "failing frame" in out
+    # said while it prepares (the 2-10 s before the window), on stderr: the report on stdout stays as it was
+    assert err.index(f"grading {path}...") < err.index("recording the replay")
     status, out, err = run_checker(path, "--show", "ramp_holds", "--seed", str(SEED))
     assert status == 1 and "--show: ramp_holds (skip)" in out
 
