@@ -206,10 +206,10 @@ class Grader:
         if self.keep_records and not sub.scenarios and self._wants_preview(results):
             # a function check failed, so no scene ran: run a scene anyway, for a picture only (not graded):
             # the failing step with the solution's others, where it differs from the solution (checker/preview.py)
-            from . import pictures, preview as previews
+            from . import preview as previews
             self.preview_started()
             name, record, note = previews.scene_for(self.run, path, sub.source, lab, previews.failing_step(results),
-                                                    pictures.reference_record)
+                                                    previews.reference_record)
             if record:
                 records[name], preview, preview_note = record, name, note
         runs = [sub.probe, *sub.scenarios.values()]

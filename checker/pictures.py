@@ -28,7 +28,6 @@ import base64
 import io
 import os
 import re
-import threading
 from dataclasses import dataclass
 
 # the video driver the user's environment named (None: SDL picks the desktop's), before the pictures' own default:
@@ -39,8 +38,7 @@ os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 import pygame  # noqa: E402
 
-from .preview import recorded_colour  # noqa: E402
-from .sandbox import Limits, run_child  # noqa: E402
+from .preview import recorded_colour, reference_record  # noqa: E402,F401 (reference_record: used here, and by callers)
 
 FRAMES = 6                 # frames per row
 TILE = (220, 150)          # px of one frame (the 900 × 600 scene drawn at about 1/4)
@@ -81,26 +79,7 @@ class Picture:
         return "data:image/png;base64," + self.base64
 
 
-# ---------------------------------------------------------------- the reference solution's runs (cached)
-
-_REFERENCE = {}
-_REFERENCE_LOCK = threading.Lock()
-
-
-def reference_record(lab, scene, limits=None):
-    """The record of the lab's SOLUTION running `scene` (one child run per process and scene), or None."""
-    key = (getattr(lab, "id", None), scene)
-    with _REFERENCE_LOCK:
-        if key in _REFERENCE:
-            return _REFERENCE[key]
-        record = None
-        solution = getattr(lab, "solution", None)
-        settings = lab.scenarios().get(scene) if solution and os.path.isfile(solution) else None
-        if settings is not None:
-            run = run_child(solution, "scenario", dict(settings, probes=lab.probes), limits or Limits())
-            record = getattr(run, "record", None)
-        _REFERENCE[key] = record
-        return record
+# the reference solution's runs: checker/preview.py reference_record (one child run per process and scene, cached)
 
 
 # ---------------------------------------------------------------- drawing

@@ -12,9 +12,11 @@ The scene is the lab's preview scene, unless the run there never differs visibly
 import math
 import os
 import tempfile
+import threading
 
 from . import source as source_text
 from .handout import MarkerError, step_regions
+from .sandbox import Limits, run_child
 
 VISIBLE_PX = 5.0    # px: a body this far from the solution's is visibly elsewhere at the window's scale
 VISIBLE_DEG = 5.0   # degrees: a body turned this much more or less than the solution's visibly differs
@@ -71,6 +73,28 @@ def trusted_frames(lab, scene, record):
     if not record or settings is None or record_problem(record, settings):
         return []
     return record["records"]
+
+
+# ---------------------------------------------------------------- the solution's runs (cached)
+
+_REFERENCE = {}
+_REFERENCE_LOCK = threading.Lock()
+
+
+def reference_record(lab, scene, limits=None):
+    """The record of the lab's SOLUTION running `scene` (one child run per process and scene), or None."""
+    key = (getattr(lab, "id", None), scene)
+    with _REFERENCE_LOCK:
+        if key in _REFERENCE:
+            return _REFERENCE[key]
+        record = None
+        solution = getattr(lab, "solution", None)
+        settings = lab.scenarios().get(scene) if solution and os.path.isfile(solution) else None
+        if settings is not None:
+            run = run_child(solution, "scenario", dict(settings, probes=lab.probes), limits or Limits())
+            record = getattr(run, "record", None)
+        _REFERENCE[key] = record
+        return record
 
 
 # ---------------------------------------------------------------- the student's step with the lesson's others

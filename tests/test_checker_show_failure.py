@@ -244,7 +244,8 @@ def test_friction_case_draws_the_slip_and_the_impulses_on_the_boxes(working_in_o
     corners = [p for body in (a, b) for p in body.world_points()]
     scale, offset = show_cases._fit([(p.x, p.y) for p in corners], (260, 150, 380, 200))
     contact = Vector2(point) * scale + offset
-    lesson_jt = max(-case.case["mu"] * case.case["j"], min(case.case["mu"] * case.case["j"], case.case["friction"]["stop"]))
+    bound = case.case["mu"] * case.case["j"]
+    lesson_jt = max(-bound, min(bound, case.case["friction"]["stop"]))
     on_b = contact + normal * 34 + t * (60 if lesson_jt > 0 else -60)   # along the lesson's arrow on B
     assert tuple(surface.get_at((round(on_b.x), round(on_b.y))))[:3] == show_cases.LESSON
     slip = contact + normal * 14 + t * 40
