@@ -406,8 +406,28 @@ class ImpulseCase:
             _arrow(surface, TEXT, contact, contact + impulse.normalize() * 60, 2)
             label = self.case.get("impulse_label", "impulse P")
             surface.blit(font.render(label, True, TEXT), contact + impulse.normalize() * 66)
+        if self.case.get("friction"):
+            self.draw_friction(surface, contact, font)
         _footer(surface, self.lines(), "arrows: velocity change, arcs: spin change (+ clockwise), each to one scale  "
                 "[ ]: case  Tab: scene")
+
+    def draw_friction(self, surface, contact, font):
+        """At the contact: B's slip past A (grey) and the friction impulse on B, the lesson's (yellow) and the
+        student's (magenta), to one scale (case["friction"]: vectors, see show_cases_labs.friction_arrows)."""
+        friction = self.case["friction"]
+        slip = Vector2(friction["slip"])
+        grey = (170, 175, 190)
+        if slip.length() > 1e-9:
+            tip = contact + slip.normalize() * 70
+            _arrow(surface, grey, contact, tip, 2)
+            surface.blit(font.render(f"slip {slip.length():.3g} px/s", True, grey), tip + Vector2(6, 4))
+        pushes = [(Vector2(friction[who]), colour, width) for who, colour, width in
+                  (("lesson", LESSON, 5), ("yours", STUDENT, 2))]
+        largest = max([p.length() for p, _, _ in pushes] + [1e-9])
+        for push, colour, width in pushes:
+            if push.length() > 1e-9 * largest:
+                _arrow(surface, colour, contact, contact + push * (90 / largest), width)
+        surface.blit(font.render("friction on B", True, LESSON), contact + Vector2(-150, 20))
 
 
 FULL_TURN = 1.75 * math.pi   # the arc of the largest spin change in a case (a ring left open at the top)

@@ -282,3 +282,25 @@ def test_the_key_line_and_the_replay_panel_name_only_keys_that_do_something(work
     assert "solver panel (replay)" in texts
     assert not any(t.startswith("[") and t not in ("[H] more", "[H] hide") for t in texts), texts
     assert show_view.SCENE[0] - 10 > viewer.small.size(keys)[0]   # the key line fits the window
+
+
+def test_ball_on_the_ramp_friction_case_draws_the_slip_and_both_friction_impulses(tmp_path):
+    """Step 7 with jt's sign flipped: the lesson's friction on the ball opposes its slip, the student's pushes
+    along it; both are drawn from the contact, with the slip."""
+    corpus = importlib.import_module("corpus_ball_on_ramp")
+    path = tmp_path / "ball_on_ramp.py"
+    path.write_text(corpus.build("friction_sign_flipped"), encoding="utf-8")
+    row, replay, problem = show.prepare(str(path), lab_of("ball_on_ramp"), seed=SEED)
+    assert replay.check.id == "friction_rolls" and replay.cases
+    for case in replay.cases:
+        friction = case.case["friction"]
+        slip, yours, lesson = (Vector2(friction[k]) for k in ("slip", "yours", "lesson"))
+        assert slip.length() > 0 and lesson.dot(slip) < 0 < yours.dot(slip), case.case["case"]
+    pygame.font.init()
+    surface = pygame.Surface(show_cases.SIZE)
+    replay.cases[0].draw(surface)
+    friction = replay.cases[0].case["friction"]
+    largest = max(Vector2(friction["yours"]).length(), Vector2(friction["lesson"]).length())
+    contact = Vector2(show_cases.SIZE[0] / 2, 230)
+    along = contact + Vector2(friction["lesson"]) * (60 / largest)   # two thirds along the lesson's arrow
+    assert tuple(surface.get_at((round(along.x), round(along.y))))[:3] == show_cases.LESSON
