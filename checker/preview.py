@@ -186,7 +186,8 @@ def failing_step(results):
 def scene_for(run, path, text, lab, result, reference_record):
     """(scene, record, note) to show for a failed function check `result` of the file at `path` (its source
     `text`): the student's failing step with the solution's other steps (note: describe()'s line; the whole file,
-    note "", when the check names no step or the markers cannot be read), in the scene choose() picks.
+    note "", when the check names no step, the markers cannot be read or the spliced file runs to the end in no
+    scene), in the scene choose() picks.
     run: Grader.run; reference_record(lab, scene): the solution's record (checker/pictures.py's)."""
     step = getattr(result, "step", None)
     spliced = None
@@ -197,4 +198,7 @@ def scene_for(run, path, text, lab, result, reference_record):
             spliced = None
     changed, taken = spliced or (None, [])
     name, record = choose(lab, runner(run, path, lab, changed if taken else None), reference_record)
+    if record is None and taken:   # the spliced file ran in no scene (the student's step reads a name of their
+        name, record = choose(lab, runner(run, path, lab), reference_record)   # own other step): the whole file
+        taken = []
     return name, record, describe(step, taken)

@@ -304,3 +304,20 @@ def test_ball_on_the_ramp_friction_case_draws_the_slip_and_both_friction_impulse
     contact = Vector2(show_cases.SIZE[0] / 2, 230)
     along = contact + Vector2(friction["lesson"]) * (60 / largest)   # two thirds along the lesson's arrow
     assert tuple(surface.get_at((round(along.x), round(along.y))))[:3] == show_cases.LESSON
+
+
+def test_a_splice_that_cannot_run_falls_back_to_the_whole_file(tmp_path):
+    """The student's step 5 reads a name their own step 4 made (kk): with the lesson's step 4 spliced in it
+    raises NameError in every scene, so the scene is the whole file's, and no splice is claimed."""
+    lab = lab_of("tumbling_crates")
+    corpus = importlib.import_module("corpus_tumbling_crates")
+    solution = open(lab.solution, encoding="utf-8").read()
+    codes = corpus.step_code(solution)
+    codes[4] = codes[4] + "\nkk = k"
+    codes[5] = "jt = max(-mu * j, min(mu * j, jt)) * 0.5 * kk / k"   # half the friction, and it needs kk
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(corpus.fill(open(lab.starter, encoding="utf-8").read(), codes), encoding="utf-8")
+    row = Grader(keep_records=True, seed=SEED).grade(str(path), lab)
+    first = next(r for r in row.results if r.status in ("fail", "error"))
+    assert first.id == "resolve_friction", [(r.id, r.status) for r in row.results]
+    assert row.preview and row.preview_note == ""
