@@ -69,6 +69,7 @@ class LabReport:
     seed: int | None = None   # the seed of the probe inputs drawn for this run (--seed N grades with the same)
     flags: list = field(default_factory=list)   # step_rules breaches as dicts (step, line, rule, what, text)
     notes: list = field(default_factory=list)   # limits this system refused and the runs went without (sandbox)
+    preview_note: str = ""   # what the preview ran, when not the whole file: "your step 5 with the lesson's steps ..."
 
     @property
     def score(self):
@@ -248,22 +249,23 @@ class Grader:
             records = {name: run.record for name, run in sub.scenarios.items()
                        if name in wanted and getattr(run, "record", None)
                        and not record_problem(run.record, settings_of.get(name) or {})}
-        preview = ""
+        preview, preview_note = "", ""
         if self.keep_records and not sub.scenarios and self._wants_preview(results):
-            # a function check failed, so no scene ran: run the lab's own scene anyway, for a picture only
-            # (not graded), so the file that needs a picture most gets one beside the solution's
-            name = lab.preview_scene   # (scene_settings, not settings: the report's seed is the probe's)
-            scene_settings = lab.scenarios().get(name) if name else None
-            run = self.run(runs, "scenario", dict(scene_settings, probes=lab.probes),
-                           lab.scene_seconds(name, scene_settings)) if scene_settings is not None else None
-            # checked as a graded scene's record is: the child wrote it ({"records": [1]} draws nothing)
-            if run is not None and getattr(run, "record", None) and not record_problem(run.record, scene_settings) \
-                    and run.record["records"]:
-                records[name], preview = run.record, name
+            # a function check failed, so no scene ran: run a scene anyway, for a picture only (not graded):
+            # the failing step with the solution's others, where it differs from the solution (checker/preview.py)
+            from . import preview as previews
+            self.preview_started()
+            name, record, note = previews.scene_for(self.run, path, sub.source, lab, previews.failing_step(results),
+                                                    previews.reference_record)
+            if record:
+                records[name], preview, preview_note = record, name, note
         runs = [sub.probe, *sub.scenarios.values()]
         notes = sorted({note for run in runs for note in getattr(run, "notes", ())})
         return LabReport(given, lab, results, time.monotonic() - start, records, preview, settings["seed"],
-                         [asdict(b) for b in sub.flags], notes)
+                         [asdict(b) for b in sub.flags], notes, preview_note)
+
+    def preview_started(self):
+        """Called as the ungraded scene of a failed function check starts (--show prints that it is recording)."""
 
     def _scenes(self, path, lab):
         """{scene name: its run} of every scene of the lab, run in parallel on `path` (a scene the whole run's time

@@ -28,7 +28,6 @@ import base64
 import io
 import os
 import re
-import threading
 from dataclasses import dataclass
 
 # the video driver the user's environment named (None: SDL picks the desktop's), before the pictures' own default:
@@ -39,7 +38,7 @@ os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 import pygame  # noqa: E402
 
-from .sandbox import Limits, run_child  # noqa: E402
+from .preview import recorded_colour, reference_record  # noqa: E402,F401 (reference_record: used here, and by callers)
 
 FRAMES = 6                 # frames per row
 TILE = (220, 150)          # px of one frame (the 900 × 600 scene drawn at about 1/4)
@@ -80,26 +79,7 @@ class Picture:
         return "data:image/png;base64," + self.base64
 
 
-# ---------------------------------------------------------------- the reference solution's runs (cached)
-
-_REFERENCE = {}
-_REFERENCE_LOCK = threading.Lock()
-
-
-def reference_record(lab, scene, limits=None):
-    """The record of the lab's SOLUTION running `scene` (one child run per process and scene), or None."""
-    key = (getattr(lab, "id", None), scene)
-    with _REFERENCE_LOCK:
-        if key in _REFERENCE:
-            return _REFERENCE[key]
-        record = None
-        solution = getattr(lab, "solution", None)
-        settings = lab.scenarios().get(scene) if solution and os.path.isfile(solution) else None
-        if settings is not None:
-            run = run_child(solution, "scenario", dict(settings, probes=lab.probes), limits or Limits())
-            record = getattr(run, "record", None)
-        _REFERENCE[key] = record
-        return record
+# the reference solution's runs: checker/preview.py reference_record (one child run per process and scene, cached)
 
 
 # ---------------------------------------------------------------- drawing
@@ -194,10 +174,11 @@ def _draw_frame(surface, rect, frame, view, marked):
         for body in frame.get("bodies", ()):
             if not all(abs(v) < 1e6 for v in body["pos"]):
                 continue
+            own = recorded_colour(body)   # the lab's own colour, when the record holds one
             if body.get("static"):
-                fill = STATIC
+                fill = own or STATIC
             else:
-                fill = PALETTE[moving % len(PALETTE)]
+                fill = own or PALETTE[moving % len(PALETTE)]
                 fill = tuple((c + 255) // 2 for c in fill) if body.get("asleep") else fill
                 moving += 1
             points = body.get("points") or []
@@ -246,15 +227,18 @@ def filmstrip(record, reference=None, marked=None, title="", count=FRAMES, focus
     view = _view(shown + [f for f in rows[-1][1] if f is not None], focus)
     label_w = 70
     width = label_w + len(shown) * (TILE[0] + GAP) + GAP
-    height = HEAD_H + len(rows) * (TILE[1] + LABEL_H + GAP) + GAP
+    small, big = _font(16), _font(19)
+    titles = _title_lines(big, title, max(width, 320) - 2 * GAP - 4)
+    head = HEAD_H + (len(titles) - 1) * (HEAD_H - 4)
+    height = head + len(rows) * (TILE[1] + LABEL_H + GAP) + GAP
     surface = pygame.Surface((max(width, 320), height))
     surface.fill(BACKGROUND)
-    small, big = _font(16), _font(19)
-    surface.blit(big.render(title, True, TEXT), (GAP + 2, 4))
+    for k, line in enumerate(titles):
+        surface.blit(big.render(line, True, TEXT), (GAP + 2, 4 + k * (HEAD_H - 4)))
     marked_at = min(shown, key=lambda f: abs(f.get("frame", 0) - marked)).get("frame") \
         if marked is not None and shown else None
     for r, (name, row) in enumerate(rows):
-        y = HEAD_H + r * (TILE[1] + LABEL_H + GAP)
+        y = head + r * (TILE[1] + LABEL_H + GAP)
         surface.blit(small.render(name, True, TEXT), (GAP + 2, y + LABEL_H + TILE[1] // 2 - 6))
         for k, frame in enumerate(row):
             x = label_w + k * (TILE[0] + GAP)
@@ -264,6 +248,19 @@ def filmstrip(record, reference=None, marked=None, title="", count=FRAMES, focus
             surface.blit(small.render(label, True, MARK if is_marked else TEXT), (x + 2, y + 3))
             _draw_frame(surface, pygame.Rect(x, y + LABEL_H, TILE[0], TILE[1]), frame, view, is_marked)
     return surface
+
+
+def _title_lines(font, title, width):
+    """The title broken after "; " where it is wider than `width` px (a piece wider alone stays whole)."""
+    lines, current = [], ""
+    for piece in re.split(r"(?<=;) ", title):
+        joined = f"{current} {piece}" if current else piece
+        if current and font.size(joined)[0] > width:
+            lines.append(current)
+            current = piece
+        else:
+            current = joined
+    return lines + [current]
 
 
 def png_bytes(surface):
@@ -305,9 +302,9 @@ def _scenes_of(report, check_id):
 
 
 def focus_bodies(frame, reference):
-    """Indices of the moving bodies a failure is about in a frame: those more than show.VISIBLE px from the
+    """Indices of the moving bodies a failure is about in a frame: those more than preview.VISIBLE_PX from the
     solution's body of the same index, else every moving body."""
-    from .show import VISIBLE
+    from .preview import VISIBLE_PX as VISIBLE
     moving = [i for i, b in enumerate((frame or {}).get("bodies", ())) if not b.get("static")]
     if reference is None or len(reference.get("bodies", ())) != len(frame.get("bodies", ())):
         return set(moving)
@@ -319,10 +316,11 @@ def _distance(a, b):
     return ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
 
 
-def caption(check_id, scene, title, ungraded, fail_frame, quantity, value):
-    """The filmstrip's title: the check, the scene, the failing frame and the check's quantity there."""
+def caption(check_id, scene, title, ungraded, fail_frame, quantity, value, spliced=""):
+    """The filmstrip's title: the check, the scene (and what ran, when the preview spliced the lesson's other
+    steps in: checker/preview.py), the failing frame and the check's quantity there."""
     head = (f"not graded, to show what {check_id} means: " if ungraded else f"{check_id}: ") + \
-        f"scene '{scene}' ({title})"
+        f"scene '{scene}' ({title})" + (f", {spliced}" if spliced else "")
     if fail_frame is not None:
         head += f"; frame {fail_frame} (t = {fail_frame / FPS:.2f} s)"
         if quantity is not None and value is not None:
@@ -355,7 +353,8 @@ def pictures_for(report, check_id, with_reference=True):
             if fail_frame is not None else None
         value = values[at] if at is not None and values else None
         focus = focus_bodies(frames[at], _nearest(theirs, fail_frame)) if at is not None else None
-        title = caption(check_id, scene, report.lab.title, ungraded, fail_frame, quantity, value)
+        title = caption(check_id, scene, report.lab.title, ungraded, fail_frame, quantity, value,
+                        getattr(report, "preview_note", "") if ungraded else "")
         surface = filmstrip(record, reference, fail_frame, title, focus=focus)
         pictures.append(Picture(check_id, scene, png_bytes(surface)))
     return pictures
