@@ -37,9 +37,11 @@ frame where they changed; a lab run without the panel records none.
 import atexit
 import json
 import os
+import sys
 
 import pygame
 
+from . import breakdown
 from .console import safe_output
 from .physics2d import Body, box_points
 
@@ -278,3 +280,5 @@ def write_record():
 
 
 _load_from_environment()
+if sys.excepthook is sys.__excepthook__:   # an error in the lab's own code pauses its window too (breakdown.py)
+    sys.excepthook = breakdown.excepthook
