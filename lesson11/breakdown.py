@@ -180,6 +180,9 @@ class _Tracer:
                 bodies = self.world.bodies if event == "return" else \
                     [value for value in frame.f_locals.values() if isinstance(value, Body)]
                 problem = mistakes.motion_problem(bodies)
+                if not problem and event == "return" and frame.f_back is not None \
+                        and not _is_lab(frame.f_back.f_code, self.path):
+                    problem = mistakes.return_problem(arg)   # a hook's answer to the World (sat's normal, depth)
                 if problem:
                     self.found = (frame, frame.f_lineno if event == "return" else last[0], problem)
                     raise _Found()
@@ -341,7 +344,8 @@ def terminal_text(finding, frame_number=None):
         previous_own = own
     if finding.chain and not _is_lab(finding.chain[-1][0].f_code, finding.file) and finding.kind != "value":
         inner = finding.chain[-1][0].f_code
-        lines.append(f"  ... inside {inner.co_name}() ({_shown_path(inner.co_filename)}), called by your line above")
+        owner = "physics2d's " if "physics2d" in inner.co_filename else ""
+        lines.append(f"  ... inside {owner}{inner.co_name}(), called by the line above")
     lines.append(finding.message if finding.kind != "value" else f"{finding.function}() {finding.message}")
     if finding.meaning:
         lines.append(f"What it means: {finding.meaning}.")

@@ -70,6 +70,21 @@ def motion_problem(bodies):
     return ""
 
 
+def return_problem(value):
+    """How a value a hook hands back to the World is not finite (a number or Vector2 that is NaN or infinite, alone
+    or in a tuple such as sat's (normal, depth)), or ""."""
+    for item in value if type(value) in (tuple, list) and len(value) <= 4 else (value,):
+        if isinstance(item, Vector2):
+            bad = not (math.isfinite(item.x) and math.isfinite(item.y))
+        elif isinstance(item, float):
+            bad = not math.isfinite(item)
+        else:
+            continue
+        if bad:
+            return f"returned {value_text(value)}: not finite"
+    return ""
+
+
 # ---------------------------------------------------------------- the meaning of a known mistake
 
 DIVIDED_BY_INERTIA = ("dividing by I is multiplying by inv_inertia (= 1 / I): write * inv_inertia where the lesson "
@@ -94,7 +109,7 @@ def meaning(message="", text="", problem=""):
             return SPIN_VECTOR
         if problem.startswith("left a body's vel as None"):
             return VEL_NONE
-        if problem.endswith(("not finite (px)", "not finite (px/s)")) or "not a finite number" in problem:
+        if "not finite" in problem or "not a finite number" in problem:
             return NOT_FINITE
         return ""
     divided = _DIVIDED.search(text or "")
