@@ -294,6 +294,7 @@ def describe_call(finding, world):
     name = caller.f_code.co_name
     phase = PHASES.get(name, f"physics2d's {name}()")
     pair = finding.bodies or [value for value in caller.f_locals.values() if isinstance(value, Body)][:2]
+    finding.bodies = pair   # sat(pa, pb) gets point lists: its bodies are the engine's pair, outlined and labelled
     detail = _contact_number(caller, top)
     if len(pair) == 2:
         detail += f"{', ' if detail else ''}between {body_name(pair[0], bodies)} and {body_name(pair[1], bodies)}"
@@ -381,8 +382,9 @@ def print_report(finding, frame_number=None):
 def screen_lines(finding, frame_number, seconds):
     """[(text, colour)] the pause draws, top to bottom."""
     where = f"line {finding.line}: {finding.text}" if finding.text else f"line {finding.line}"
-    lines = [(f"PAUSED on frame {frame_number} (t = {seconds:.2f} s): your {finding.function}() "
-              f"{'left a bad value' if finding.kind == 'value' else 'raised an error'}", ALARM),
+    did = ("returned a bad value" if finding.message.startswith("returned") else "left a bad value") \
+        if finding.kind == "value" else "raised an error"
+    lines = [(f"PAUSED on frame {frame_number} (t = {seconds:.2f} s): your {finding.function}() {did}", ALARM),
              (where, TEXT)]
     if finding.phase:
         lines.append((finding.phase, DIM))
@@ -405,28 +407,31 @@ def _wrap(font, text, width):
 
 def draw(surface, world, finding, frame_number, font):
     """The paused frame: every body, the call's bodies outlined (A yellow, B blue, with their numbers), its
-    contact point and normal, and the finding's lines in a box at the bottom. Returns the lines drawn."""
+    contact point and normal, and the finding's lines in a box at the top. Returns the lines drawn."""
     from .physics2d.draw import draw_body
     surface.fill(BACKGROUND)
     bodies = world.bodies if world is not None else []
-    for index, body in enumerate(bodies):
+    for body in bodies:
         with contextlib.suppress(Exception):   # a body whose state is bad is not drawn (the text names it)
             draw_body(surface, body)
-    for body, colour in zip(finding.bodies, (OUTLINE_A, OUTLINE_B)):
-        with contextlib.suppress(Exception):
-            _outline(surface, body, colour)
-            label = font.render(body_name(body, bodies), True, colour)
-            surface.blit(label, label.get_rect(center=(int(body.pos.x), int(body.pos.y))))
     for points, colour in zip(finding.polygons, (OUTLINE_A, OUTLINE_B)):
         with contextlib.suppress(Exception):
             pygame.draw.polygon(surface, colour, points, 3)
+    for body, colour in zip(finding.bodies, (OUTLINE_A, OUTLINE_B)):
+        with contextlib.suppress(Exception):
+            _outline(surface, body, colour)
+    taken = []   # where text already is: a body's name goes elsewhere
     with contextlib.suppress(Exception):
         if finding.point is not None:
             pygame.draw.circle(surface, ALARM, finding.point, 6)
             if finding.normal is not None:
                 pygame.draw.line(surface, ALARM, finding.point, finding.point + finding.normal * NORMAL_LENGTH, 3)
                 tip = font.render("normal", True, ALARM)
-                surface.blit(tip, finding.point + finding.normal * (NORMAL_LENGTH + 4))
+                at = finding.point + finding.normal * (NORMAL_LENGTH + 4)
+                taken.append(surface.blit(tip, (int(at.x), int(at.y))))
+    for body, colour in zip(finding.bodies, (OUTLINE_A, OUTLINE_B)):
+        with contextlib.suppress(Exception):
+            taken.append(_label(surface, font.render(body_name(body, bodies), True, colour), body, taken))
     seconds = getattr(world, "time", 0.0) if world is not None else 0.0
     width = surface.get_width() - 40
     rows = [(piece, colour) for text, colour in screen_lines(finding, frame_number, seconds)
@@ -441,9 +446,21 @@ def draw(surface, world, finding, frame_number, font):
     return rows
 
 
+def _label(surface, image, body, taken):
+    """Blit a body's name beside it: above, below, right or left, the first place clear of `taken`; its rect."""
+    reach = min(body.radius, 60) + 8
+    x, y = int(body.pos.x), int(body.pos.y)
+    places = [image.get_rect(midbottom=(x, y - reach)), image.get_rect(midtop=(x, y + reach)),
+              image.get_rect(midleft=(x + reach, y)), image.get_rect(midright=(x - reach, y))]
+    places = [rect.clamp(surface.get_rect()) for rect in places]
+    rect = next((rect for rect in places if rect.collidelist(taken) < 0), places[0])
+    surface.blit(image, rect)
+    return rect
+
+
 def _outline(surface, body, colour):
     if body.shape.kind == "circle":
-        pygame.draw.circle(surface, colour, body.pos, body.radius + 2, 3)
+        pygame.draw.circle(surface, colour, body.pos, max(body.radius + 2, 12), 3)   # a bullet gets a ring to see
     else:
         pygame.draw.polygon(surface, colour, body.world_points(), 3)
 

@@ -95,8 +95,8 @@ SPIN_VECTOR = ("the spin changes by cross(r, impulse) * inv_inertia, a number; a
                "is a Vector2 (the cross product forgotten)")
 VEL_NONE = ("update(), normalize_ip(), scale_to_length() and the other in-place methods change a vector and return "
             "None: give vel a new Vector2, not what they return")
-NOT_FINITE = ("a NaN or an infinity on one body spreads to every body it touches: look for a number that grew "
-              "without bound or a 0 × inf in this function")
+NOT_FINITE = ("a NaN or an infinity spreads into every number computed from it, and through contacts to other bodies: "
+              "it starts at a 0 × inf, an inf - inf or a value grown past a float's range")
 
 _DIVIDED = re.compile(r"/\s*\(?\s*[\w.]*inv_(inertia|mass)\b")
 

@@ -177,3 +177,14 @@ def test_no_pause_under_the_checker(tmp_path):
     path, _ = mutant("tumbling_crates", *CASES[0][3], tmp_path, "tumbling_crates_checker")
     code, output, shown, record = run(path, tmp_path, pause=False)
     assert code != 0 and "ZeroDivisionError" in output and "The lab paused" not in output
+
+
+if __name__ == "__main__":   # python tests/test_lab_pause.py: regenerates assets/lab_paused_on_error.png
+    import shutil
+    import tempfile
+    with tempfile.TemporaryDirectory() as folder:
+        lab_path, _ = mutant("tumbling_crates", *CASES[0][3], folder, "tumbling_crates")
+        run(lab_path, folder, pause=True)
+        shutil.copy(os.path.join(folder, "tumbling_crates.py.pause.png"),
+                    os.path.join(ROOT, "assets", "lab_paused_on_error.png"))
+    print("wrote assets/lab_paused_on_error.png")
