@@ -89,14 +89,29 @@ class Snapshot:
     def __init__(self, world):
         self.world = world
         self.world_vars = {name: _copied(value) for name, value in vars(world).items()}
-        self.bodies = [(body, {name: _copied(value) for name, value in vars(body).items()}) for body in world.bodies]
+        self.bodies = [(body, _body_vars(body)) for body in world.bodies]
 
     def restore(self):
         for body, saved in self.bodies:
             vars(body).clear()
-            vars(body).update({name: _copied(value) for name, value in saved.items()})
+            vars(body).update(_body_vars_of(saved))
         vars(self.world).clear()
         vars(self.world).update({name: _copied(value) for name, value in self.world_vars.items()})
+
+
+def _body_vars(body, _vector=pygame.Vector2):
+    """A body's attributes, its position and velocity copied (a step changes them in place; the rest it replaces)."""
+    saved = dict(vars(body))
+    try:
+        saved["_pos"], saved["vel"] = _vector(saved["_pos"]), _vector(saved["vel"])
+    except (KeyError, TypeError, ValueError):   # not a plain Body: copy whatever a step may change in place
+        saved = {name: _copied(value) for name, value in saved.items()}
+    return saved
+
+
+def _body_vars_of(saved):
+    """A copy of saved body attributes to restore (the snapshot stays as it was, for a second restore)."""
+    return {name: _copied(value) for name, value in saved.items()}
 
 
 def _copied(value):
