@@ -179,6 +179,21 @@ def test_no_pause_under_the_checker(tmp_path):
     assert code != 0 and "ZeroDivisionError" in output and "The lab paused" not in output
 
 
+@pytest.mark.parametrize("case", ["divide_by_inertia", "cross_forgotten", "omega_vector"])
+def test_the_checker_and_the_window_say_the_same_words(tmp_path, case):
+    """The meaning the paused window shows is, word for word, the one `python -m checker FILE` prints for the same
+    file (both take it from lesson11/mistakes.py)."""
+    lab, _, _, edit, function, _ = next(c for c in CASES if c[1] == case)[:6]
+    path, line = mutant(lab, *edit, tmp_path, lab)
+    _, _, shown, _ = run(path, tmp_path, pause=True)
+    env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYGAME_HIDE_SUPPORT_PROMPT="1")
+    checked = subprocess.run([sys.executable, "-m", "checker", path], cwd=ROOT, env=env, capture_output=True,
+                             text=True, timeout=300).stdout
+    said = shown["meaning"]
+    assert said and (said in checked or said[0].upper() + said[1:] in checked), checked
+    assert f"{function}() " in checked and (f"line {line}" in checked or shown["kind"] == "value")
+
+
 if __name__ == "__main__":   # python tests/test_lab_pause.py: regenerates assets/lab_paused_on_error.png
     import shutil
     import tempfile
