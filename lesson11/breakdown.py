@@ -67,10 +67,20 @@ def watch(panel):
     _panel = panel
 
 
+_checker_run = [lambda: False]   # runtime.active, once the runtime installs this module (install)
+
+
+def install(checker_run):
+    """Called by the lab runtime: `checker_run()` says whether the checker drives this run; an error in the lab's
+    own code pauses the window too (sys.excepthook, unless something else set its own)."""
+    _checker_run[0] = checker_run
+    if sys.excepthook is sys.__excepthook__:
+        sys.excepthook = excepthook
+
+
 def enabled():
     """True when an error pauses the window: a student's run (not the checker's), or a test's L11_PAUSE_REPORT."""
-    from . import runtime
-    return not runtime.active() or bool(os.environ.get(REPORT_VAR))
+    return not _checker_run[0]() or bool(os.environ.get(REPORT_VAR))
 
 
 def lab_file():
@@ -148,7 +158,7 @@ class Finding:
         self.file = lab_file()
         own = [(frame, line) for frame, line in chain if _is_lab(frame.f_code, self.file)]
         frame, self.line = own[-1] if own else (chain[-1] if chain else (None, 0))
-        self.function = frame.f_code.co_name if frame is not None else "?"
+        self.function = frame.f_code.co_name if frame is not None else "main"   # no frame: the lab's loop
         self.text = _source(frame, self.line)
         self.frame = frame
         self.meaning = (mistakes.meaning(problem=message) if kind == "value"
@@ -158,6 +168,8 @@ class Finding:
 
     def headline(self):
         """One line: what the function did."""
+        if self.kind == "main" and self.frame is None:   # a bad value found before the World's step ran
+            return f"the lab's own code {self.message}"
         if self.kind == "value":
             return f"{self.function}() {self.message}"
         return f"{self.function}() raised {self.message}"
@@ -213,7 +225,7 @@ def replay(world, snapshot, dt):
     snapshot.restore()
     before = mistakes.motion_problem(world.bodies)
     if before:   # bad before the World ran: the lab's own code between frames left it
-        return Finding("main", [], f"{before}, before the World's step"), None
+        return Finding("main", [], f"{before}, before the World's step (in the main loop)"), None
     tracer, raised = _Tracer(world, path), None
     with contextlib.redirect_stdout(io.StringIO()):
         sys.settrace(tracer.calls)
@@ -399,11 +411,14 @@ def screen_lines(finding, frame_number, seconds):
     where = f"line {finding.line}: {finding.text}" if finding.text else f"line {finding.line}"
     did = ("returned a bad value" if finding.message.startswith("returned") else "left a bad value") \
         if finding.kind == "value" else "raised an error"
-    lines = [(f"PAUSED on frame {frame_number} (t = {seconds:.2f} s): your {finding.function}() {did}", ALARM),
-             (where, TEXT)]
-    if finding.phase:
-        lines.append((finding.phase, DIM))
-    lines.append((finding.headline() if finding.kind == "value" else finding.message, TEXT))
+    if finding.frame is None:   # nothing of the student's file to point at: a bad value found between frames
+        lines = [(f"PAUSED on frame {frame_number} (t = {seconds:.2f} s): {finding.headline()}", ALARM)]
+    else:
+        lines = [(f"PAUSED on frame {frame_number} (t = {seconds:.2f} s): your {finding.function}() {did}", ALARM),
+                 (where, TEXT)]
+        if finding.phase:
+            lines.append((finding.phase, DIM))
+        lines.append((finding.headline() if finding.kind == "value" else finding.message, TEXT))
     if finding.meaning:
         lines.append((f"What it means: {finding.meaning}.", KEY))
     lines.append(("[R] restart the lab (after fixing your file)    [Esc] close    the terminal has the lines", DIM))

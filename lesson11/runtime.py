@@ -37,7 +37,6 @@ frame where they changed; a lab run without the panel records none.
 import atexit
 import json
 import os
-import sys
 
 import pygame
 
@@ -280,5 +279,4 @@ def write_record():
 
 
 _load_from_environment()
-if sys.excepthook is sys.__excepthook__:   # an error in the lab's own code pauses its window too (breakdown.py)
-    sys.excepthook = breakdown.excepthook
+breakdown.install(active)   # an error in the lab's own code pauses its window too (breakdown.py)
