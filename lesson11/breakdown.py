@@ -311,23 +311,36 @@ def describe_call(finding, world):
     if point is None and isinstance(values.get("ra"), pygame.Vector2) and finding.bodies:
         point = finding.bodies[0].pos + values["ra"]
     finding.point = pygame.Vector2(point) if point is not None else None
+    if finding.kind == "main":   # the main loop's locals are not a call's pair: nothing outlined
+        finding.bodies = []
     if not finding.bodies:
         finding.bodies = [value for value in top.values() if isinstance(value, Body)][:2]
         finding.polygons = [list(value) for value in top.values() if isinstance(value, list) and value
                             and all(isinstance(p, pygame.Vector2) for p in value)][:2]
+        if finding.polygons and not finding.bodies:   # sat(pa, pb): the bodies whose outlines these are
+            finding.bodies = [body for points in finding.polygons for body in bodies if _outlines(body, points)][:2]
     if caller is None or _is_lab(caller.f_code, finding.file):
         finding.phase = "" if finding.kind != "main" else "in your main loop"
         return
     name = caller.f_code.co_name
     phase = PHASES.get(name, f"physics2d's {name}()")
-    pair = finding.bodies or [value for value in caller.f_locals.values() if isinstance(value, Body)][:2]
-    finding.bodies = pair   # sat(pa, pb) gets point lists: its bodies are the engine's pair, outlined and labelled
+    pair = finding.bodies or [value for value in (caller.f_locals.get("a"), caller.f_locals.get("b"),
+                                                  caller.f_locals.get("body")) if isinstance(value, Body)][:2]
+    finding.bodies = pair
     detail = _contact_number(caller, top)
     if len(pair) == 2:
         detail += f"{', ' if detail else ''}between {body_name(pair[0], bodies)} and {body_name(pair[1], bodies)}"
     elif len(pair) == 1:
         detail += f"{', ' if detail else ''}for {body_name(pair[0], bodies)}"
     finding.phase = f"called by {phase}" + (f", {detail}" if detail else "")
+
+
+def _outlines(body, points):
+    """True if `points` are the body's world points (the polygon a hook such as sat was handed)."""
+    try:
+        return [tuple(p) for p in body.world_points()] == [tuple(p) for p in points]
+    except Exception:   # noqa: BLE001 - a body in a bad state matches nothing
+        return False
 
 
 def _contact_number(caller, call):
@@ -450,7 +463,12 @@ def draw(surface, world, finding, frame_number, font):
     for body, colour in zip(finding.bodies, (OUTLINE_A, OUTLINE_B)):
         with contextlib.suppress(Exception):
             _outline(surface, body, colour)
-    taken = []   # where text already is: a body's name goes elsewhere
+    taken = []   # where text already is, and the small bodies outlined: a body's name goes elsewhere
+    for body in finding.bodies:
+        with contextlib.suppress(Exception):
+            if body.radius < 60:
+                taken.append(pygame.Rect(0, 0, 2 * body.radius, 2 * body.radius))
+                taken[-1].center = (int(body.pos.x), int(body.pos.y))
     with contextlib.suppress(Exception):
         if finding.point is not None:
             pygame.draw.circle(surface, ALARM, finding.point, 6)
@@ -458,7 +476,9 @@ def draw(surface, world, finding, frame_number, font):
                 pygame.draw.line(surface, ALARM, finding.point, finding.point + finding.normal * NORMAL_LENGTH, 3)
                 tip = font.render("normal", True, ALARM)
                 at = finding.point + finding.normal * (NORMAL_LENGTH + 4)
-                taken.append(surface.blit(tip, (int(at.x), int(at.y))))
+                patch = tip.get_rect(topleft=(int(at.x), int(at.y)))
+                surface.fill(BACKGROUND, patch.inflate(4, 2))   # readable over a body
+                taken.append(surface.blit(tip, patch))
     for body, colour in zip(finding.bodies, (OUTLINE_A, OUTLINE_B)):
         with contextlib.suppress(Exception):
             taken.append(_label(surface, font.render(body_name(body, bodies), True, colour), body, taken))
