@@ -1,4 +1,4 @@
-"""The pieces of the pause on a student's error (lesson11/breakdown.py) and the shared words (lesson11/mistakes.py),
+"""The pieces of the pause on a student's error (lesson11/breakdown.py, pause_window.py) and the shared words (lesson11/mistakes.py),
 in-process: the copy before a frame, the keys of the paused window, the meanings. tests/test_lab_pause.py runs the
 labs themselves."""
 import os
@@ -9,7 +9,7 @@ os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 import pygame  # noqa: E402
 import pytest  # noqa: E402
 
-from lesson11 import breakdown, mistakes  # noqa: E402
+from lesson11 import breakdown, mistakes, pause_window  # noqa: E402
 from lesson11.physics2d import Body, World, box_points  # noqa: E402
 
 
@@ -77,12 +77,12 @@ def paused_window(monkeypatch, key):
         1 / world.bodies[0].inv_inertia
     except ZeroDivisionError as error:
         finding = breakdown.from_error(error)
-    monkeypatch.setattr(breakdown, "restart", lambda: (_ for _ in ()).throw(RuntimeError("restart")))
-    monkeypatch.delenv(breakdown.REPORT_VAR, raising=False)
+    monkeypatch.setattr(pause_window, "restart", lambda: (_ for _ in ()).throw(RuntimeError("restart")))
+    monkeypatch.delenv(pause_window.REPORT_VAR, raising=False)
     pygame.event.clear()
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=key, mod=0, unicode=""))
     try:
-        breakdown.pause(world, finding, 7)
+        pause_window.pause(world, finding, 7)
     except RuntimeError as done:
         return str(done)
     except SystemExit as done:
@@ -101,7 +101,7 @@ def test_restart_runs_the_same_command_again(monkeypatch):
     ran = []
     monkeypatch.setattr(os, "execv", lambda program, argv: ran.append((program, argv)))
     monkeypatch.setattr("sys.orig_argv", ["python3", "starters/tumbling_crates_starter.py"])
-    breakdown.restart()
+    pause_window.restart()
     import sys
     assert ran == [(sys.executable, [sys.executable, "starters/tumbling_crates_starter.py"])]
 
