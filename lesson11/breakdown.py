@@ -49,7 +49,8 @@ PHASES = {"resolve_calls": "the World's resolve pass", "resolve_pass": "the Worl
           "swept_move": "the World's swept move", "advance": "the World's step", "step": "the World's step"}
 
 _HERE = os.path.abspath(__file__)
-_PANEL = os.path.join(os.path.dirname(os.path.abspath(__file__)), "panel.py")
+_PANEL = os.path.join(os.path.dirname(_HERE), "panel.py")
+_CLOCK = os.path.join(os.path.dirname(_HERE), "hook_clock.py")   # the full panel's timers wrap the lab's hooks
 _panel = None          # the lab's solver panel (LabPanel registers itself): its world and frame count
 
 
@@ -293,7 +294,8 @@ def describe_call(finding, world):
     first = own[-1]
     while first - 1 in own:
         first -= 1
-    caller = finding.chain[first - 1][0] if first > 0 else None
+    before = [frame for frame, _ in finding.chain[:first] if not _is_lab(frame.f_code, _CLOCK)]   # the panel's
+    caller = before[-1] if before else None                                                   # timers aside
     top = finding.chain[first][0].f_locals
     for name in ("normal", "n"):
         if isinstance(top.get(name), pygame.Vector2):

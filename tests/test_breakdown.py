@@ -121,3 +121,46 @@ def test_the_terminal_without_a_window(tmp_path, capsys, monkeypatch):
     printed = capsys.readouterr().err
     assert 'lab.py", line 2, in resolve' in printed and "return 1 / body.inv_inertia" in printed
     assert mistakes.DIVIDED_BY_INERTIA in printed and "test_breakdown.py" not in printed
+
+
+LAB = """
+import pygame
+from lesson11 import runtime as lab
+from lesson11.panel import LabPanel
+from lesson11.physics2d import Body, World, box_points
+
+
+def resolve(a, b, normal, point):
+    return 1 / a.inv_inertia
+
+
+pygame.init()
+pygame.display.set_mode((400, 300))
+floor = Body(box_points(400, 40), (200, 280), 0)
+world = World([floor, Body(box_points(40, 40), (200, 230), 1.0)], resolve=resolve)
+panel = LabPanel()
+panel.mode = "{mode}"
+while lab.frame_budget():
+    panel.advance(world, 1 / 60)
+"""
+
+
+@pytest.mark.parametrize("mode", ["compact", "full"])
+def test_the_full_panels_timers_do_not_hide_the_phase(tmp_path, mode):
+    """In the full view the panel wraps the lab's hooks in timers (hook_clock): the pause still names the World's
+    resolve pass as the caller, and no timer frame is printed."""
+    import json
+    import subprocess
+    import sys
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    (tmp_path / "lab.py").write_text(LAB.format(mode=mode), encoding="utf-8")
+    report = tmp_path / "pause.json"
+    env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYTHONPATH=root,
+               L11_PAUSE_REPORT=str(report))
+    env.pop("LESSON11_LAB_SETTINGS", None)
+    done = subprocess.run([sys.executable, "lab.py"], cwd=tmp_path, env=env, capture_output=True, text=True,
+                          timeout=120)
+    shown = json.loads(report.read_text(encoding="utf-8"))
+    assert (shown["function"], shown["line"]) == ("resolve", 9)
+    assert shown["phase"].startswith("called by the World's resolve pass, contact 1 of ")
+    assert "hook_clock" not in done.stderr and "timed" not in done.stderr
