@@ -408,33 +408,36 @@ def print_report(finding, frame_number=None):
 
 def halt(world, error, snapshot, dt, frame_number):
     """An error out of world.advance(dt) on frame `frame_number`: diagnose it, print it, pause the window.
-    Returns only when pausing is off (the checker's run): the caller then raises the error as before."""
+    Returns when pausing is off (the checker's run), or if the diagnosis itself fails: the caller then raises
+    the error as before (never a second error of ours in its place)."""
     if not enabled() or isinstance(error, _Found):
         return
-    finding = diagnose(world, error, snapshot, dt)
-    print_report(finding, frame_number)
+    try:
+        finding = diagnose(world, error, snapshot, dt)
+        print_report(finding, frame_number)
+    except Exception:   # noqa: BLE001 - our own failure must not hide the student's error
+        return
     pause(world, finding, frame_number)
 
 
 def excepthook(kind, error, tb, _default=sys.excepthook):
     """sys.excepthook for a student's run: an error in the lab's own code (outside the World's step) pauses the
-    window the same way, on the last world the panel drew; anything else, or the checker's run, as Python does."""
-    if not enabled() or not isinstance(error, Exception) or not pygame.display.get_init() \
-            or pygame.display.get_surface() is None:
-        if isinstance(error, Exception) and enabled() and error.__traceback__ is not None:
-            finding = from_error(error, "main")
-            if any(_is_lab(frame.f_code, finding.file) for frame, _ in finding.chain):
-                print_report(finding)
-                return
+    window the same way, on the last world the panel drew; with no window yet, the student's lines are printed;
+    anything else, or the checker's run, as Python does."""
+    if not enabled() or not isinstance(error, Exception) or error.__traceback__ is None:
         return _default(kind, error, tb)
-    finding = from_error(error, "main")
-    world = getattr(_panel, "world", None)
-    describe_call(finding, world)
-    if not finding.phase and finding.kind == "main":
-        finding.phase = "in your main loop, outside the World's step"
-    frame_number = getattr(_panel, "advances", None)
-    print_report(finding, frame_number)
     try:
-        pause(world, finding, frame_number)
-    except SystemExit:
-        pass
+        finding = from_error(error, "main")
+        if not any(_is_lab(frame.f_code, finding.file) for frame, _ in finding.chain):
+            return _default(kind, error, tb)
+        world = getattr(_panel, "world", None)
+        describe_call(finding, world)
+        if not finding.phase:
+            finding.phase = "in your main loop, outside the World's step"
+        frame_number = getattr(_panel, "advances", None)
+        print_report(finding, frame_number)
+    except Exception:   # noqa: BLE001 - our own failure must not hide the student's error
+        return _default(kind, error, tb)
+    if pygame.display.get_init() and pygame.display.get_surface() is not None:
+        with contextlib.suppress(SystemExit):
+            pause(world, finding, frame_number)
