@@ -276,6 +276,8 @@ def diagnose(world, error, snapshot, dt):
             cut = max(mine)
             top = next((i for i, (frame, _) in enumerate(outer) if _is_lab(frame.f_code, _PANEL)), None)
             finding.chain = (outer[:top + 1] if top is not None else []) + finding.chain[cut + 1:]
+    if finding.error is None:   # a bad value: L11_TRACEBACK=1 prints where the engine met it
+        finding.error = error
     describe_call(finding, world)
     return finding
 
