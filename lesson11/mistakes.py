@@ -91,6 +91,10 @@ DIVIDED_BY_INERTIA = ("dividing by I is multiplying by inv_inertia (= 1 / I): wr
                       "writes / I; a static body's (the floor's) inv_inertia is 0")
 DIVIDED_BY_MASS = ("dividing by m is multiplying by inv_mass (= 1 / m): write * inv_mass where the lesson writes / m; "
                    "a static body's (the floor's) inv_mass is 0")
+BY_STATIC_INERTIA = ("a static body (the floor) has inertia 0, so / I fails on it: write * inv_inertia, which is 1 / I "
+                     "for a moving body and 0 for a static one")
+BY_STATIC_MASS = ("a static body (the floor) has mass 0, so / m fails on it: write * inv_mass, which is 1 / m for a "
+                  "moving body and 0 for a static one")
 SPIN_VECTOR = ("the spin changes by cross(r, impulse) * inv_inertia, a number; an impulse times inv_inertia alone "
                "is a Vector2 (the cross product forgotten)")
 VEL_NONE = ("update(), normalize_ip(), scale_to_length() and the other in-place methods change a vector and return "
@@ -98,7 +102,7 @@ VEL_NONE = ("update(), normalize_ip(), scale_to_length() and the other in-place 
 NOT_FINITE = ("a NaN or an infinity spreads into every number computed from it, and through contacts to other bodies: "
               "it starts at a 0 × inf, an inf - inf or a value grown past a float's range")
 
-_DIVIDED = re.compile(r"/\s*\(?\s*[\w.]*inv_(inertia|mass)\b")
+_DIVIDED = re.compile(r"/\s*\(?\s*(?:\w+\.)*(inv_)?(inertia|mass)\b")   # "/ a.inv_inertia", "/ (b.mass)"
 
 
 def meaning(message="", text="", problem=""):
@@ -114,7 +118,10 @@ def meaning(message="", text="", problem=""):
         return ""
     divided = _DIVIDED.search(text or "")
     if message.startswith("ZeroDivisionError") and divided:
-        return DIVIDED_BY_INERTIA if divided.group(1) == "inertia" else DIVIDED_BY_MASS
+        inverse, quantity = divided.group(1), divided.group(2)
+        if inverse:
+            return DIVIDED_BY_INERTIA if quantity == "inertia" else DIVIDED_BY_MASS
+        return BY_STATIC_INERTIA if quantity == "inertia" else BY_STATIC_MASS
     if message.startswith("TypeError") and "Vector2" in message and "omega" in (text or ""):
         return SPIN_VECTOR
     if message.startswith(("TypeError", "AttributeError")) and "NoneType" in message and "vel" in (text or ""):

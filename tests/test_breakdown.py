@@ -46,7 +46,10 @@ def test_a_snapshot_puts_the_frame_back_bit_for_bit():
     ("TypeError: unsupported operand type(s) for -=: 'float' and 'pygame.math.Vector2'",
      "a.omega -= impulse * a.inv_inertia", mistakes.SPIN_VECTOR),
     ("AttributeError: 'NoneType' object has no attribute 'x'", "rel = b.vel - a.vel", mistakes.VEL_NONE),
+    ("ZeroDivisionError: float division by zero", "k += ran * ran / a.inertia", mistakes.BY_STATIC_INERTIA),
+    ("ZeroDivisionError: float division by zero", "a.vel -= impulse / a.mass", mistakes.BY_STATIC_MASS),
     ("ZeroDivisionError: float division by zero", "t = d / speed", ""),   # not a known one: nothing said
+    ("ZeroDivisionError: float division by zero", "t = d / a.inertia_ratio", ""),
     ("ValueError: math domain error", "math.sqrt(disc)", ""),
 ])
 def test_the_meaning_of_a_raised_error(message, text, said):
