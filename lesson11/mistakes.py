@@ -99,6 +99,10 @@ SPIN_VECTOR = ("the spin changes by cross(r, impulse) * inv_inertia, a number; a
                "is a Vector2 (the cross product forgotten)")
 VEL_NONE = ("update(), normalize_ip(), scale_to_length() and the other in-place methods change a vector and return "
             "None: give vel a new Vector2, not what they return")
+SQRT_NEGATIVE = ("math.sqrt() was handed a negative number: a negative discriminant means there is no root (the paths "
+                 "miss), so test its sign before the square root")
+SUM_OF_VECTORS = ("sum() starts from the number 0, and 0 + a Vector2 fails: sum(points, Vector2()) starts from a "
+                  "vector (or use centre_of(points))")
 NOT_FINITE = ("a NaN or an infinity spreads into every number computed from it, and through contacts to other bodies: "
               "it starts at a 0 × inf, an inf - inf or a value grown past a float's range")
 
@@ -122,6 +126,10 @@ def meaning(message="", text="", problem=""):
         if inverse:
             return DIVIDED_BY_INERTIA if quantity == "inertia" else DIVIDED_BY_MASS
         return BY_STATIC_INERTIA if quantity == "inertia" else BY_STATIC_MASS
+    if message == "ValueError: math domain error" and "sqrt(" in (text or ""):
+        return SQRT_NEGATIVE
+    if message.startswith("TypeError") and "'int' and 'pygame.math.Vector2'" in message and "sum(" in (text or ""):
+        return SUM_OF_VECTORS
     if message.startswith("TypeError") and "Vector2" in message and "omega" in (text or ""):
         return SPIN_VECTOR
     if message.startswith(("TypeError", "AttributeError")) and "NoneType" in message and "vel" in (text or ""):

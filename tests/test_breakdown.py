@@ -50,7 +50,10 @@ def test_a_snapshot_puts_the_frame_back_bit_for_bit():
     ("ZeroDivisionError: float division by zero", "a.vel -= impulse / a.mass", mistakes.BY_STATIC_MASS),
     ("ZeroDivisionError: float division by zero", "t = d / speed", ""),   # not a known one: nothing said
     ("ZeroDivisionError: float division by zero", "t = d / a.inertia_ratio", ""),
-    ("ValueError: math domain error", "math.sqrt(disc)", ""),
+    ("ValueError: math domain error", "t = (-b - math.sqrt(disc)) / (2 * a)", mistakes.SQRT_NEGATIVE),
+    ("ValueError: math domain error", "math.acos(c)", ""),
+    ("TypeError: unsupported operand type(s) for +: 'int' and 'pygame.math.Vector2'", "c = sum(pb) / len(pb)",
+     mistakes.SUM_OF_VECTORS),
 ])
 def test_the_meaning_of_a_raised_error(message, text, said):
     assert mistakes.meaning(message, text) == said

@@ -38,7 +38,7 @@ CASES = [
      "apply_impulse", "the spin changes"),
     ("more_shapes", "centre_by_sum", "raised",
      ("if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:",
-      "if (sum(pb) / len(pb) - sum(pa) / len(pa)).dot(best_axis) < 0:"), "sat", None),
+      "if (sum(pb) / len(pb) - sum(pa) / len(pa)).dot(best_axis) < 0:"), "sat", "sum() starts"),
     ("more_shapes", "depth_infinite", "value",
      ("best_axis, best_depth = axis, overlap", "best_axis, best_depth = axis, overlap * math.inf"), "sat",
      "a NaN or an infinity", "return best_axis, best_depth"),   # a hook's answer is named where it is returned
@@ -53,7 +53,7 @@ CASES = [
      "sleep_timer", None),
     ("sleeping_crates", "timer_nan", "value", ("return timer + dt\n", "return timer + float(\"nan\") * dt\n"), "sleep_timer",
      "a NaN or an infinity"),
-    ("bullets", "no_miss_test", "raised", ("if a == 0 or disc < 0:", "if a == 0:"), "circle_toi", None,
+    ("bullets", "no_miss_test", "raised", ("if a == 0 or disc < 0:", "if a == 0:"), "circle_toi", "math.sqrt()",
      "t = (-b - math.sqrt(disc)) / (2 * a)  # the earlier root: first contact"),   # where it raises
     ("bullets", "reflect_ip", "value",
      ("world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)",
