@@ -52,15 +52,13 @@ _HERE = os.path.abspath(__file__)
 _PANEL = os.path.join(os.path.dirname(_HERE), "panel.py")
 _CLOCK = os.path.join(os.path.dirname(_HERE), "hook_clock.py")   # the full panel's timers wrap the lab's hooks
 _panel = None          # the lab's solver panel (LabPanel registers itself): its world and frame count
+_checker_run = [lambda: False]   # runtime.active, once the runtime installs this module (install)
 
 
 def watch(panel):
     """Remember the lab's solver panel: the excepthook draws its world and counts its frames."""
     global _panel
     _panel = panel
-
-
-_checker_run = [lambda: False]   # runtime.active, once the runtime installs this module (install)
 
 
 def install(checker_run):
