@@ -75,7 +75,7 @@ def describe_function_error(name, error, lab_name):
         return error["message"].rstrip(".") + "."
     if error.get("kind") == "exit":
         return f"{name}() ended the program: {error['message']} at {at}{text}."
-    said = meaning(error.get("message") or "", error.get("text") or "")   # the window's words too (lesson11/mistakes.py)
+    said = meaning(error.get("message") or "", error.get("text") or "")   # the window's words too (mistakes.py)
     return f"{name}() raised {error['message']} at {at}{text}." + (f" {said[0].upper()}{said[1:]}." if said else "")
 
 

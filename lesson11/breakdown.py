@@ -18,8 +18,8 @@ nothing runs per call while nothing breaks: the cost is the copy, once a frame
 (lesson11/bench/pause_cost.py measures it).
 
 The terminal gets the student's frames only, with one line naming the engine phase that called
-them; L11_TRACEBACK=1 prints the full traceback as well. Under the checker none of this runs: the
-error ends the run as before (the checker reports it), unless L11_PAUSE_REPORT names a file, where
+them; LESSON11_TRACEBACK=1 prints the full traceback as well. Under the checker none of this runs: the
+error ends the run as before (the checker reports it), unless LESSON11_PAUSE_REPORT names a file, where
 the tests have the pause write what it shows (JSON, and a PNG beside it) and then press Escape.
 """
 import contextlib
@@ -35,7 +35,7 @@ from . import mistakes
 from .pause_window import REPORT_VAR, body_name, pause
 from .physics2d.bodies import Body
 
-TRACEBACK_VAR = "L11_TRACEBACK"   # "1": print the full traceback too
+TRACEBACK_VAR = "LESSON11_TRACEBACK"   # "1": print the full traceback too
 
 
 # the World's methods (and the engine's functions) that call a lab's hooks, as the terminal and the window name them
@@ -70,7 +70,7 @@ def install(checker_run):
 
 
 def enabled():
-    """True when an error pauses the window: a student's run (not the checker's), or a test's L11_PAUSE_REPORT."""
+    """True when an error pauses the window: a student's run (not the checker's), or a test's LESSON11_PAUSE_REPORT."""
     return not _checker_run[0]() or bool(os.environ.get(REPORT_VAR))
 
 
@@ -274,7 +274,7 @@ def diagnose(world, error, snapshot, dt):
             cut = max(mine)
             top = next((i for i, (frame, _) in enumerate(outer) if _is_lab(frame.f_code, _PANEL)), None)
             finding.chain = (outer[:top + 1] if top is not None else []) + finding.chain[cut + 1:]
-    if finding.error is None:   # a bad value: L11_TRACEBACK=1 prints where the engine met it
+    if finding.error is None:   # a bad value: LESSON11_TRACEBACK=1 prints where the engine met it
         finding.error = error
     describe_call(finding, world)
     return finding
@@ -397,7 +397,7 @@ def _shown_path(path):
 
 
 def print_report(finding, frame_number=None):
-    """Print the finding to stderr; the full traceback first when L11_TRACEBACK=1."""
+    """Print the finding to stderr; the full traceback first when LESSON11_TRACEBACK=1."""
     if os.environ.get(TRACEBACK_VAR, "") not in ("", "0") and finding.error is not None:
         traceback.print_exception(type(finding.error), finding.error, finding.error.__traceback__)
     print(terminal_text(finding, frame_number), file=sys.stderr, flush=True)

@@ -4,7 +4,7 @@ The frame that broke: every body, the call's two bodies outlined (A yellow, B bl
 contact point and normal, and a box of lines at the top: the function, its line, the engine phase
 that called it, the error and, for a known mistake, what it means. R runs the lab again from its
 file (a fix made while paused is in), Escape or the window's close button ends it. For the tests,
-L11_PAUSE_REPORT names a JSON file the pause writes what it shows to (and a PNG beside it), then it
+LESSON11_PAUSE_REPORT names a JSON file the pause writes what it shows to (and a PNG beside it), then it
 presses Escape itself.
 """
 import contextlib
@@ -14,7 +14,7 @@ import sys
 
 import pygame
 
-REPORT_VAR = "L11_PAUSE_REPORT"   # tests: write what the pause shows to this JSON file (and a .png), then Escape
+REPORT_VAR = "LESSON11_PAUSE_REPORT"   # tests: write what the pause shows to this JSON file (and a .png), then Escape
 BACKGROUND = (24, 26, 34)
 PANEL = (12, 14, 20, 230)
 TEXT = (235, 235, 235)

@@ -1,6 +1,6 @@
-"""The pieces of the pause on a student's error (lesson11/breakdown.py, pause_window.py) and the shared words (lesson11/mistakes.py),
-in-process: the copy before a frame, the keys of the paused window, the meanings. tests/test_lab_pause.py runs the
-labs themselves."""
+"""The pieces of the pause on a student's error (lesson11/breakdown.py, pause_window.py) and the shared words
+(lesson11/mistakes.py), in-process: the copy before a frame, the keys of the paused window, the meanings.
+tests/test_lab_pause.py runs the labs themselves."""
 import os
 
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
@@ -162,7 +162,7 @@ def test_the_full_panels_timers_do_not_hide_the_phase(tmp_path, mode):
     (tmp_path / "lab.py").write_text(LAB.format(mode=mode), encoding="utf-8")
     report = tmp_path / "pause.json"
     env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYTHONPATH=root,
-               L11_PAUSE_REPORT=str(report))
+               LESSON11_PAUSE_REPORT=str(report))
     env.pop("LESSON11_LAB_SETTINGS", None)
     done = subprocess.run([sys.executable, "lab.py"], cwd=tmp_path, env=env, capture_output=True, text=True,
                           timeout=120)

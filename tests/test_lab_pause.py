@@ -3,8 +3,8 @@ the line and the meaning; the terminal shows the student's lines only.
 
 Each case is one line of solutions/<lab>.py changed as a student might change it, run as `python FILE` in a child
 process with SDL's dummy drivers. The run is the checker's fixed-frame run (LESSON11_LAB_SETTINGS: 60 fps, a fixed
-frame time, scripted keys and clicks), so a frame number means the same in two runs; L11_PAUSE_REPORT turns the pause
-on (the checker's run has it off) and has the paused window write what it shows (JSON and a PNG) and then press
+frame time, scripted keys and clicks), so a frame number means the same in two runs; LESSON11_PAUSE_REPORT turns the
+pause on (the checker's run has it off) and has the paused window write what it shows (JSON and a PNG) and then press
 Escape itself. What a real student's run does differently: frame times come from the clock, and the window waits for
 R or Escape.
 
@@ -51,8 +51,8 @@ CASES = [
     ("sleeping_crates", "spin_ratio", "raised",
      ("if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:", "if speed / abs(spin) < SLEEP_SPEED / SLEEP_SPIN:"),
      "sleep_timer", None),
-    ("sleeping_crates", "timer_nan", "value", ("return timer + dt\n", "return timer + float(\"nan\") * dt\n"), "sleep_timer",
-     "a NaN or an infinity"),
+    ("sleeping_crates", "timer_nan", "value", ("return timer + dt\n", 'return timer + float("nan") * dt\n'),
+     "sleep_timer", "a NaN or an infinity"),
     ("bullets", "no_miss_test", "raised", ("if a == 0 or disc < 0:", "if a == 0:"), "circle_toi", "math.sqrt()",
      "t = (-b - math.sqrt(disc)) / (2 * a)  # the earlier root: first contact"),   # where it raises
     ("bullets", "reflect_ip", "value",
@@ -85,12 +85,12 @@ def run(path, folder, pause, frames=240, extra_env=None):
     with open(settings_path, "w", encoding="utf-8") as handle:
         json.dump(settings, handle)
     report = os.path.join(str(folder), f"{lab}.pause.json")
-    env = {key: value for key, value in os.environ.items() if not key.startswith("L11_")}
+    env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
     env.update(LESSON11_LAB_SETTINGS=settings_path, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
                PYGAME_HIDE_SUPPORT_PROMPT="1", PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""),
                **(extra_env or {}))
     if pause:
-        env["L11_PAUSE_REPORT"] = report
+        env["LESSON11_PAUSE_REPORT"] = report
     done = subprocess.run([sys.executable, path], cwd=str(folder), env=env, capture_output=True, text=True,
                           timeout=300)
     shown = None
@@ -148,13 +148,13 @@ def test_the_window_pauses_on_the_frame_that_broke(tmp_path, lab, case, kind, ed
     # the terminal: the student's lines and the engine phase, no engine frame
     assert engine_lines(output, path) == [], "\n".join(engine_lines(output, path))
     assert f'line {line}, in {function}' in output and said in output
-    assert "called by " in output and "L11_TRACEBACK=1" in output
+    assert "called by " in output and "LESSON11_TRACEBACK=1" in output
 
 
 def test_the_full_traceback_on_request(tmp_path):
-    """L11_TRACEBACK=1: the engine's frames are printed too (the full traceback, then the student's lines)."""
+    """LESSON11_TRACEBACK=1: the engine's frames are printed too (the full traceback, then the student's lines)."""
     path, line = mutant("tumbling_crates", *CASES[0][3], tmp_path, "tumbling_crates_traceback")
-    code, output, shown, _ = run(path, tmp_path, pause=True, extra_env={"L11_TRACEBACK": "1"})
+    code, output, shown, _ = run(path, tmp_path, pause=True, extra_env={"LESSON11_TRACEBACK": "1"})
     assert shown is not None and shown["line"] == line
     assert "Traceback (most recent call last)" in output and "world.py" in output and "resolve_calls" in output
 
@@ -173,7 +173,7 @@ def test_an_error_in_the_main_loop_pauses_too(tmp_path):
 
 
 def test_no_pause_under_the_checker(tmp_path):
-    """The checker's run (no L11_PAUSE_REPORT) ends on the error as before: no pause, the error is raised."""
+    """The checker's run (no LESSON11_PAUSE_REPORT) ends on the error as before: no pause, the error is raised."""
     path, _ = mutant("tumbling_crates", *CASES[0][3], tmp_path, "tumbling_crates_checker")
     code, output, shown, record = run(path, tmp_path, pause=False)
     assert code != 0 and "ZeroDivisionError" in output and "The lab paused" not in output
@@ -192,6 +192,24 @@ def test_the_checker_and_the_window_say_the_same_words(tmp_path, case):
     said = shown["meaning"]
     assert said and (said in checked or said[0].upper() + said[1:] in checked), checked
     assert f"{function}() " in checked and (f"line {line}" in checked or shown["kind"] == "value")
+
+
+def test_the_checker_never_pauses_even_with_the_variables_set(tmp_path):
+    """LESSON11_PAUSE_REPORT and LESSON11_TRACEBACK left in the grader's shell do not reach the graded child (the
+    sandbox drops every LESSON11_ variable): no pause report is written, and the verdict and lines are the same."""
+    path, _ = mutant("tumbling_crates", *CASES[0][3], tmp_path, "tumbling_crates")
+    env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYGAME_HIDE_SUPPORT_PROMPT="1")
+
+    def grade(**extra):
+        return subprocess.run([sys.executable, "-m", "checker", path, "--seed", "7"], cwd=ROOT,
+                              env={**env, **extra}, capture_output=True, text=True, timeout=300).stdout
+
+    report = tmp_path / "report.json"
+    plain = grade()
+    with_variables = grade(LESSON11_PAUSE_REPORT=str(report), LESSON11_TRACEBACK="1")
+    assert not report.exists() and not (tmp_path / "report.png").exists()
+    assert [line for line in with_variables.splitlines() if "(error, " not in line] == \
+        [line for line in plain.splitlines() if "(error, " not in line]   # the first line holds the time taken
 
 
 if __name__ == "__main__":   # python tests/test_lab_pause.py: regenerates assets/lab_paused_on_error.png
