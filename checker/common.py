@@ -1,10 +1,9 @@
 """What the checks of every lab share: accounts of failed runs, numbers shown beside their bounds, and the kinds of
 the values a student's function returns (a number, a vector) told apart from what only looks like one."""
-import math
 import numbers
 import re
 
-from pygame import Vector2
+from lesson11.mistakes import VALUE_RULE, meaning, number_problem, value_text, vector_problem  # noqa: F401
 
 from . import source
 
@@ -117,12 +116,14 @@ def describe_function_error(name, error, lab_name):
     if error.get("kind") == "flood":
         return f"{name}() {error['message']} of output (printing at {at}{text}); remove the print."
     if error.get("kind") == "value":   # the grader's account: the function left a body's motion of the wrong kind
-        return f"{name}() {error['message']}: a body's pos and vel stay Vector2s, its angle and omega numbers."
+        said = meaning(problem=error["message"])   # the window's words too (lesson11/mistakes.py)
+        return f"{name}() {error['message']}: {said or VALUE_RULE}."
     if error.get("kind") == "report":   # the grader's account of the child's report, not something the function raised
         return error["message"].rstrip(".") + "."
     if error.get("kind") == "exit":
         return f"{name}() ended the program: {error['message']} at {at}{text}."
-    return f"{name}() raised {error['message']} at {at}{text}."
+    said = meaning(error.get("message") or "", error.get("text") or "")   # the window's words too (mistakes.py)
+    return f"{name}() raised {error['message']} at {at}{text}." + (f" {said[0].upper()}{said[1:]}." if said else "")
 
 
 def shown(value, bound, unit=""):
@@ -132,17 +133,6 @@ def shown(value, bound, unit=""):
         if text != limit or value == bound:
             return text.rstrip("0").rstrip(".") if "." in text and digits > 1 and text != limit else text
     return repr(value)
-
-
-def value_text(value, limit=60):
-    """repr(value) cut to `limit` characters for a one-line message, whatever the value (a 5000-digit int's repr
-    raises, a student's object's repr may too)."""
-    try:
-        text = repr(value)
-    except Exception:  # noqa: BLE001 - ValueError for a huge int, anything from a student's __repr__
-        text = f"<an int of {value.bit_length()} bits>" if isinstance(value, int) else f"<a {type(value).__name__}>"
-    text = " ".join(text.split())   # one line
-    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def real(value):
@@ -155,24 +145,3 @@ def real(value):
         return float(value)
     except OverflowError:
         raise ValueError(f"an int of {value.bit_length()} bits is too large for a float") from None
-
-
-def number_problem(value, unit=""):
-    """Why `value` is not a number a float can hold (a bool, a string, a Vector2, NaN, infinity, an int too big
-    for a float), or "". `unit` ends the message: "rad/s"."""
-    tail = f" ({unit})" if unit else ""
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        return f"{value_text(value)}, not a number{tail}"
-    try:
-        finite = math.isfinite(value)
-    except OverflowError:   # an int beyond a float's range
-        return f"an int of {value.bit_length()} bits, too large for a float{tail}"
-    return "" if finite else f"{value_text(value)}, not a finite number{tail}"
-
-
-def vector_problem(value, unit=""):
-    """Why `value` is not a pygame Vector2 of finite numbers (a tuple, a list, a number, NaN in it), or ""."""
-    tail = f" ({unit})" if unit else ""
-    if not isinstance(value, Vector2):
-        return f"{value_text(value)}, not a Vector2{tail}"
-    return "" if math.isfinite(value.x) and math.isfinite(value.y) else f"{value_text(value)}, not finite{tail}"

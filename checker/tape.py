@@ -43,7 +43,7 @@ from pygame import Vector2
 from lesson11.physics2d import Body, World
 from lesson11.physics2d import shapes as _shapes
 
-from .common import number_problem, vector_problem
+from lesson11.mistakes import MOTION, motion_problem  # noqa: F401 (the window names a wrong kind in the same words)
 
 # bound when the child imports this module, before any lab: a lab that replaces json.dumps or hashlib.sha256
 # does not change how the recorder tells a changed argument from an unchanged one
@@ -115,21 +115,6 @@ class StudentValue(Exception):
     """A replayed call left a body's pos, vel, angle or omega as something a body's motion cannot be (a Vector2
     omega, a tuple or None for vel, NaN): the student's mistake, named, where arithmetic on it would fail in the
     grader."""
-
-
-MOTION = (("pos", vector_problem, "px"), ("vel", vector_problem, "px/s"), ("angle", number_problem, "rad"),
-          ("omega", number_problem, "rad/s"))
-
-
-def motion_problem(bodies):
-    """How a body of `bodies` breaks its motion's kinds (pos and vel finite Vector2s in px and px/s, angle and omega
-    finite numbers in rad and rad/s), or ""."""
-    for body in bodies:
-        for field, problem_of, unit in MOTION:
-            problem = problem_of(getattr(body, field, None), unit)
-            if problem:
-                return f"left a body's {field} as {problem}"
-    return ""
 
 
 class StudentRaised(Exception):

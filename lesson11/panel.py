@@ -58,7 +58,7 @@ from collections import deque
 
 import pygame
 
-from . import hook_clock
+from . import breakdown, hook_clock
 from . import runtime
 from .physics2d.collision import circle_polygon as circle_polygon_of_physics2d
 from .physics2d.collision import sat as sat_of_physics2d
@@ -306,6 +306,9 @@ class LabPanel:
         self.tallies = {}       # full view: {hook name: [s, calls]} of the lab's functions this frame
         self.split = deque(maxlen=REFRESH_FRAMES)  # full view: (physics ms, {hook: ms}) of the last frames
         self.overhead = None    # (s added, s counted inside) per timed call: hook_clock.calibrate, once
+        self.advances = 0       # frames advanced: the frame an error pauses on (breakdown.py)
+        self.guard = breakdown.enabled()   # a student's run: an error pauses the window (not the checker's run)
+        breakdown.watch(self)
 
     # ---- settings -----------------------------------------------------------------------
 
@@ -397,19 +400,27 @@ class LabPanel:
         Paused: only the steps asked for with O run, each as world.advance(world.step_seconds),
         which is exactly one fixed step. The time spent is added to the graph (ms), and
         with the frame time and the time simulated to the rates (ms/step, share of real time).
+        In a student's run an error raised inside the step pauses the window on this frame and
+        names the student's function and line (breakdown.halt); under the checker it is raised.
         """
         self.adopt(world)
         self.watch(world)
         for tally in self.tallies.values():
             tally[0], tally[1] = 0.0, 0
+        self.advances += 1
+        kept = breakdown.Snapshot(world) if self.guard else None   # for naming a bad value's function (breakdown)
         start = time.perf_counter()
-        if not self.paused:
-            steps = world.advance(dt)
-        else:
-            steps = 0
-            for _ in range(self.pending_steps):
-                steps += world.advance(world.step_seconds)
-            self.pending_steps = 0
+        try:
+            if not self.paused:
+                steps = world.advance(dt)
+            else:
+                steps = 0
+                for _ in range(self.pending_steps):
+                    steps += world.advance(world.step_seconds)
+                self.pending_steps = 0
+        except Exception as error:   # a student's function broke the step: the window pauses on this frame
+            breakdown.halt(world, error, kept, dt if not self.paused else world.step_seconds, self.advances)
+            raise
         spent = (time.perf_counter() - start) * 1000
         if self.tallies:  # the full view's timers: their own cost comes off every figure
             added, inside = self.overhead

@@ -3,7 +3,9 @@
 When a student runs a lab, every hook is a pass-through: `tick` is
 clock.tick(fps), `events` is pygame.event.get(), `frame_budget` is always
 True, `seed(n)` is n, `scene(bodies)` returns bodies, `record` does nothing.
-The program behaves exactly as if the hooks were not there.
+The program behaves exactly as if the hooks were not there, but for an error: one raised
+in the lab's code (inside the World's step or in its own loop) pauses the window on that
+frame and names the function and line instead of closing it (breakdown.py, installed here).
 
 Under the checker (settings given by `configure`, or as a JSON file named by
 the LESSON11_LAB_SETTINGS environment variable), the same hooks run the lab
@@ -41,6 +43,7 @@ import os
 
 import pygame
 
+from . import breakdown
 from .console import safe_output
 from .physics2d import Body, box_points
 
@@ -286,3 +289,4 @@ def write_record():
 
 
 _load_from_environment()
+breakdown.install(active)   # an error in the lab's own code pauses its window too (breakdown.py)
