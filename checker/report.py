@@ -85,8 +85,8 @@ def text_report(report, stream, root=None, pictures=None):
                  f"({report.status}, {report.seconds:.1f} s)\n")
     for r in report.results:
         stream.write(f"  {SYMBOL[r.status]} {r.name}\n")
-        if r.message:
-            stream.write(f"      {r.message}\n")
+        if r.message:   # a message's second line (its evidence) is indented like its first
+            stream.write("      " + r.message.replace("\n", "\n      ") + "\n")
         if r.hint:
             stream.write(f"      hint {r.hint}\n")
         for picture in (pictures or {}).get(r.id, ()):

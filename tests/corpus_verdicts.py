@@ -15,7 +15,8 @@ The rules, one test per entry (test_corpus_<lab>.py calls these):
   and runtime_lines passing; every other function check passes (those in
   NEEDS_STEPS_2_TO_4 may be skipped); the entry's `also` checks are free; the
   named check's message (the file's first message) contains every word of the
-  entry's `says` (issue 33: it names the mistake, not only its step). The
+  entry's `says` (issue 33: it names the mistake, not only its step), and the check carries the mistake id the
+  corpus's MISTAKE_IDS gives the entry (issue 40). The
   scenes need every function check, so they are not constrained for a wrong
   entry (a wrong file stops after its probe run).
 """
@@ -94,6 +95,11 @@ def assert_verdict(entry, checks, corpus):
         f"{entry.name} ({entry.what}): expected {entry.check} {'/'.join(entry.status)} naming step {entry.step}; "
         f"got {named['status']} naming step {named['step']}: {named['message']}\nwhy: {entry.why}\n{show(checks)}")
     assert_names_the_mistake(entry, named)
+    expected = getattr(corpus, "MISTAKE_IDS", {}).get(entry.name)
+    if expected is not None:
+        assert (named.get("mistake") or {}).get("id") == expected, (
+            f"{entry.name} ({entry.what}): its check must carry the mistake {expected!r}; it carries "
+            f"{named.get('mistake')!r}: {named['message']}")
     if entry.step is not None:
         assert named["hint"].startswith(f"[step {entry.step}: "), named["hint"]
     may_skip = tuple(getattr(corpus, "NEEDS_STEPS_2_TO_4", ()))

@@ -23,7 +23,7 @@ import math
 
 from . import scenes
 from ... import lab_checks
-from ...causes import arguments_hint, consistent_mistake
+from ...causes import arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 from lesson11.records import finite
@@ -83,25 +83,24 @@ HINTS = {
                     "normal points out of the ball). At the center, friction has no lever arm: the ball never "
                     "turns, and friction holds it where it lands; on the far side it spins the wrong way."),
     "friction_missing": Hint(7, "friction makes it roll",
-                             "Without a friction impulse the ball slides down the ramp like an ice cube. Find kt "
-                             "along the tangent (with both spin terms), the impulse -(rel · t) / kt that would stop "
-                             "the slip, clamp it to [-μ j, μ j], and apply it along the tangent at the contact, with "
-                             "the same lever arms as the normal impulse."),
+                             "Lesson §5: one friction impulse t * jt at the contact, jt = -rel·t / kt, kt with both "
+                             "spin terms, clamped to [-mu j, mu j]."),
     "friction_sign": Hint(7, "the sign of the friction impulse",
-                          "Friction opposes the slip: jt = -rel·t / kt, and the clamp keeps its sign. With the sign "
-                          "flipped the ball spins up the wrong way and speeds up its slide."),
+                          "Lesson §5: friction opposes the slip, jt = -rel·t / kt, and the clamp keeps that sign."),
     "friction_clamp": Hint(7, "Coulomb's clamp on friction",
-                           "Friction may never be bigger than mu times the normal impulse j: keep jt between "
-                           "-mu * j and mu * j (and leave it alone inside that range). On a frictionless ramp "
-                           "(mu = 0) it is then 0, and the ball slides without turning."),
+                           "Lesson §5: keep jt within [-mu j, mu j], j the normal impulse; leave a smaller jt, and "
+                           "its sign, alone."),
     "friction_kt": Hint(7, "the spin terms of kt",
-                        "kt, the effective mass along t, has the same spin terms as k: (ra × t)² / I_A + "
-                        "(rb × t)² / I_B. Without them friction stops the slip three times too hard for a ball "
-                        "and the contact point overshoots back and forth."),
+                        "Lesson §5: kt is k along t: 1/m_A + 1/m_B + (ra × t)²/I_A + (rb × t)²/I_B, both spin terms."),
+    "friction_slip": Hint(7, "the slip along the tangent",
+                          "Lesson §5: friction stops the slip, the part of rel along t: jt = -rel·t / kt, not the "
+                          "whole relative speed."),
     "friction_centre": Hint(7, "friction acts at the contact point",
-                            "Apply the friction impulse at the contact, with the same lever arms ra and rb as the "
-                            "normal impulse. At the centres (zero lever arms) it cannot turn the ball, so it never "
-                            "rolls."),
+                            "Lesson §5: apply t * jt at the contact, with the normal impulse's lever arms ra and rb, "
+                            "to a then b."),
+    "friction_order": Hint(7, "the order of apply_impulse's arguments",
+                           "Lesson §5: apply_impulse(a, b, impulse, ra, rb) takes A first with its lever arm ra: "
+                           "the same order as the normal impulse."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
                     "everything else (the constants, the scene, make_ball, build, the World and its hooks, the "
@@ -367,21 +366,34 @@ def contact_on_surface(sub, functions):
 
 # ---------------------------------------------------------------- step 7: friction
 
+# step 7's known wrong forms, by the name the probe gives their outcomes (probes.FRICTION_VARIANTS): the mistake
+# (its id, and its sentence: causes.SHARED where Tumbling Crates names the same one) and the hint
 FRICTION_TEXT = {
-    "none": ("resolve() applied no friction: the ball would slide like an ice cube", "friction_missing"),
-    "sign": ("the friction impulse pushes along the slip instead of against it", "friction_sign"),
-    "unclamped": ("the friction impulse is not clamped to mu·j", "friction_clamp"),
-    "always_full": ("friction always takes its full mu·j, even where a smaller impulse stops the slip",
-                    "friction_clamp"),
-    "no_spin_kt": ("kt lacks the spin terms (ra × t)²/I_A + (rb × t)²/I_B", "friction_kt"),
-    "kt_is_k": ("kt = k: the normal's effective mass, with (ra × n)² and (rb × n)², where kt needs (ra × t)²/I_A "
-                "+ (rb × t)²/I_B", "friction_kt"),
-    "at_centre": ("the friction impulse changes no spin (applied at the centres, with zero lever arms, or the "
-                  "velocities changed without the spins), so it cannot turn the ball", "friction_centre"),
-    "bodies_swapped": ("the friction impulse is applied with the bodies swapped, apply_impulse(b, a, ...): B gets "
-                       "-t·jt at A's lever arm ra and A gets +t·jt at rb; the lesson's order is apply_impulse(a, b, "
-                       "t * jt, ra, rb)", "friction_centre"),
+    "none": (mistake("friction_missing", "resolve() applies no friction: the ball slides like an ice cube"),
+             "friction_missing"),
+    "sign": (mistake("friction_sign"), "friction_sign"),
+    "unclamped": (mistake("friction_unclamped"), "friction_clamp"),
+    "always_full": (mistake("friction_always_full"), "friction_clamp"),
+    "bound_mu": (mistake("friction_bound_mu"), "friction_clamp"),
+    "clamp_loses_sign": (mistake("friction_clamp_loses_sign"), "friction_clamp"),
+    "no_spin_kt": (mistake("kt_no_spin"), "friction_kt"),
+    "kt_is_k": (mistake("kt_is_k"), "friction_kt"),
+    "kt_no_a_spin": (mistake("kt_one_spin_term", "kt lacks A's spin term (ra × t)²/I_A: it needs both bodies' "
+                                                 "terms"), "friction_kt"),
+    "kt_no_b_spin": (mistake("kt_one_spin_term", "kt lacks B's spin term (rb × t)²/I_B: it needs both bodies' "
+                                                 "terms"), "friction_kt"),
+    "twice": (mistake("friction_twice"), "friction_missing"),
+    "whole_rel": (mistake("friction_whole_rel"), "friction_slip"),
+    "at_centre": (mistake("friction_at_centre", "the friction impulse changes no spin (applied at the centres, "
+                                                "or the velocities changed without the spins): it cannot turn "
+                                                "the ball"), "friction_centre"),
+    "bodies_swapped": (mistake("friction_bodies_swapped", "friction is applied with the bodies swapped, "
+                                                          "apply_impulse(b, a, t * jt, ra, rb)"), "friction_centre"),
 }
+# a flipped jt and apply_impulse(b, a, t * jt, rb, ra) give the same velocities: the recorded call tells them apart
+ARMS_SWAPPED = (mistake("friction_bodies_arms_swapped", "friction is applied as apply_impulse(b, a, t * jt, rb, ra): "
+                                                        "bodies and lever arms swapped, so it pushes along the slip"),
+                "friction_order")
 
 
 def _state_matches(got, want):
@@ -390,9 +402,19 @@ def _state_matches(got, want):
                for k in ("a", "b"))
 
 
-def _describe_state(state):
-    return f"A v {_vec(state['a']['vel'])} ω {state['a']['omega']:.3f}; B v {_vec(state['b']['vel'])} " \
-           f"ω {state['b']['omega']:.3f}"
+def _friction_calls(cases):
+    """"ba rb,ra" when every case that called apply_impulse twice made its second (the friction) call with B first
+    and the lever arms swapped, else "" (probes._calls_recorded)."""
+    seconds = [c["calls"][1] for c in cases if len(c.get("calls") or ()) == 2]
+    return "ba rb,ra" if seconds and all(call == "ba rb,ra" for call in seconds) else ""
+
+
+def _describe_state(state, want):
+    """The first body whose motion differs, as "B ends with v (x, y) px/s, ω w rad/s; the lesson's ..."."""
+    key = next((k for k in ("a", "b") if not _state_matches({"a": state[k], "b": state[k]},
+                                                              {"a": want[k], "b": want[k]})), "b")
+    return (f"{key.upper()} ends with v {_vec(state[key]['vel'])} px/s, ω {state[key]['omega']:.3f} rad/s; the "
+            f"lesson's {_vec(want[key]['vel'])} px/s, {want[key]['omega']:.3f} rad/s")
 
 
 @CHECKS.check(depends=["loads"])
@@ -409,13 +431,19 @@ def friction_rolls(sub, functions):
         got, variants = case["got"], case["variants"]
         if _state_matches(got, variants["right"]):
             continue
-        named = consistent_mistake(cases, lambda c, key: _state_matches(c["got"], c["variants"][key]),
+        fitting = fitting_mistakes(cases, lambda c, key: _state_matches(c["got"], c["variants"][key]),
                                    [key for key in FRICTION_TEXT
                                     if not _state_matches(variants[key], variants["right"])])
-        text, hint = FRICTION_TEXT.get(named, ("the velocities and spins after resolve() differ from the lesson's",
-                                               "friction_missing"))
-        raise Fail(f"in '{case['case']}' (mu = {case['mu']:.2g}), {text}. After your resolve(): "
-                   f"{_describe_state(got)}; expected: {_describe_state(variants['right'])}.", HINTS[hint])
+        named = fitting[0] if len(fitting) == 1 else None
+        found, hint = FRICTION_TEXT.get(named, (None, "friction_missing"))
+        if named == "sign" and _friction_calls(cases) == "ba rb,ra":
+            found, hint = ARMS_SWAPPED
+        where = f"in '{case['case']}' (mu = {case['mu']:.2g})"
+        if named == "clamp_loses_sign":
+            where += ", where |jt| > mu·j"
+        first = found.text if found else "the velocities and spins after resolve() differ from the lesson's"
+        raise Fail(f"{first}.\n{where}: {_describe_state(got, variants['right'])}.",
+                   HINTS[hint], found)
     return Passed(f"friction matches the lesson in all {len(cases)} contacts", value=cases)
 
 
