@@ -19,7 +19,7 @@ measures in the same scene, with the measured value noted next to it.
 """
 
 from ... import lab_checks
-from ...causes import consistent_mistake
+from ...causes import consistent_mistake, mistake
 from lesson11 import records as metrics
 from . import scenes
 from ...checks import Fail, Hint, Passed, Registry
@@ -49,22 +49,14 @@ THROW_HEIGHT = 60.0    # px the thrown crate must rise (it did leave the floor);
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
     "timer": Hint(2, "the sleep timer",
-                  "While the crate is calm, its speed below SLEEP_SPEED and the size of its spin below SLEEP_SPIN "
-                  "(spin has a sign), the timer grows by dt: the seconds it has been calm. As soon as either is at "
-                  "or above its "
-                  "threshold return 0.0: the timer starts again, so a crate that is slow for one instant (at the "
-                  "top of a throw) never reaches SLEEP_AFTER; otherwise a crate thrown up hangs in the air, asleep "
-                  "at the top of its throw. dt is in seconds, not frames."),
+                  "Going further, Sleeping: while speed < SLEEP_SPEED (px/s) and |spin| < SLEEP_SPIN (rad/s), the "
+                  "timer grows by dt (s); otherwise it starts again from 0."),
     "moves": Hint(3, "skip sleeping bodies",
-                  "moves(body) is True only for a body the World must integrate: dynamic (body.inv_mass != 0) and "
-                  "awake (not body.asleep). A static body and a sleeping body both return False, so a pair of them "
-                  "is never tested."),
+                  "Going further, Sleeping: moves(body) is True only for a dynamic (inv_mass != 0) and awake body; "
+                  "static and sleeping bodies give False."),
     "wake": Hint(4, "wake on contact",
-                 "Return a list of the bodies to wake: a sleeping body whose partner is dynamic (inv_mass != 0) and "
-                 "awake. Check both orders (a sleeping, b awake, and the other way round). The floor and walls "
-                 "never wake anything (a crate sleeps on the floor), two sleeping crates leave each other asleep, "
-                 "and an awake body is not 'woken'. Return [] when nothing wakes. A pile that is never woken is "
-                 "shoved down by a crate dropped on it: its crates sink into the floor."),
+                 "Going further, Sleeping: wake the sleeping body of a pair whose other body is dynamic and awake, "
+                 "in both orders; the floor wakes nothing. Return a list, [] for none."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
                     "else (the thresholds, build(), the scene, the World and its hooks, the `# lab runtime` lines, "
@@ -104,27 +96,31 @@ lab_checks.register_common(CHECKS, HINTS, ("sleep_timer", "moves", "wake_on_cont
 # the known wrong rules of step 2, by the name the probe gives their answers (probes.timer_mistakes)
 TIMER_MISTAKES = {
     "or": "calm when speed < SLEEP_SPEED `or` |spin| < SLEEP_SPIN; the rule needs both (`and`)",
-    "ignores_spin": "the timer looks at the speed only: a spinning crate must start again from 0 too "
-                    "(|spin| < SLEEP_SPIN as well)",
+    "ignores_spin": "the timer looks at the speed only: a spinning crate must start again from 0 too",
     "ignores_speed": "the timer looks at the spin only: a moving crate must start again from 0 too",
-    "signed_spin": "the spin is compared with its sign: a crate spinning backwards (negative spin) counts as calm; "
-                   "compare abs(spin) with SLEEP_SPIN",
-    "speed_dt": "speed * dt (px moved in one step) is compared with SLEEP_SPEED, which is in px/s: compare the "
-                "speed itself",
+    "signed_spin": "the spin is compared with its sign: a crate spinning backwards counts as calm; compare abs(spin)",
+    "speed_dt": "speed * dt (px per step) is compared with SLEEP_SPEED, which is in px/s",
+    "both_dt": "speed * dt and |spin| * dt (per step) are compared with SLEEP_SPEED and SLEEP_SPIN, which are per "
+               "second",
+    "thresholds_dt": "the thresholds are scaled to one step (SLEEP_SPEED * dt, SLEEP_SPIN * dt); they are per "
+                     "second, like speed and spin",
     "spin_vs_speed": "|spin| is compared with SLEEP_SPEED (5 px/s) where its own threshold is SLEEP_SPIN (0.1 rad/s)",
-    "never_resets": "the timer kept its value: a crate that moves must start again from 0, or a throw that is slow "
-                    "at its top adds up calm instants and sleeps in the air",
-    "counts_frames": "that adds 1 (a frame) per step; the timer counts seconds: add dt",
+    "squared": "speed² and spin² are compared with SLEEP_SPEED and SLEEP_SPIN: compare speed and |spin| themselves",
+    "speed_squared": "speed² is compared with SLEEP_SPEED: compare the speed itself",
+    "never_resets": "the timer keeps its value when the crate moves: it must start again from 0",
+    "counts_frames": "the timer adds 1 (a frame) per step; it counts seconds: add dt",
+    "fixed_step": "the timer adds 1/120 s per step, not dt: a World stepping at another rate counts wrong",
     "returns_dt": "you return dt, not timer + dt: the timer must grow from its value",
     "no_growth": "the timer does not grow while the crate is calm: return timer + dt",
 }
 
 
 def _timer_mistake(cases, case):
-    """' Sentence.' naming the known wrong rule that gives the student's answer in every case, or ''."""
+    """The Mistake of the known wrong rule that gives the student's answer in every case, or None."""
     named = consistent_mistake(cases, lambda c, name: abs(c["got"] - c["mistakes"][name]) <= ABS,
-                               [name for name, value in case["mistakes"].items() if abs(value - case["want"]) > ABS])
-    return f" {TIMER_MISTAKES[named][0].upper()}{TIMER_MISTAKES[named][1:]}." if named else ""
+                               [name for name, value in case["mistakes"].items() if abs(value - case["want"]) > ABS
+                                and name in TIMER_MISTAKES])
+    return mistake(f"timer_{named}", TIMER_MISTAKES[named]) if named else None
 
 
 @CHECKS.check(depends=["loads"])
@@ -136,12 +132,14 @@ def timer_rule(sub, functions):
         label = (f"sleep_timer({case['timer']:g}, {case['speed']:g}, {case['spin']:g}, {case['dt']:.4g}) "
                  f"({case['case']})")
         if isinstance(got, str):
-            raise Fail(f"{label} must return a number of seconds; it returned {got}.", HINTS["timer"])
+            raise Fail(f"sleep_timer() must return a number of seconds.\n{label} returned {got}.", HINTS["timer"])
         if abs(got - case["want"]) <= ABS:
             continue
         numbers = all(not isinstance(c["got"], str) for c in cases)
-        raise Fail(f"{label} returned {got:.6g} s; the timer should be {case['want']:.6g} s."
-                   + (_timer_mistake(cases, case) if numbers else ""), HINTS["timer"])
+        found = _timer_mistake(cases, case) if numbers else None
+        first = found.text if found else "the timer does not follow the rule"
+        raise Fail(f"{first}.\n{label} returned {got:.6g} s; the timer should be {case['want']:.6g} s.",
+                   HINTS["timer"], found)
     return f"all {len(cases)} cases (calm, fast, spinning either way) follow the rule"
 
 
