@@ -18,7 +18,6 @@ SHARED = {
                                  "(`if abs(jt) > mu * j: jt = mu * j`): clamp to the sign of jt",
     "friction_twice": "the friction impulse is applied twice",
     "friction_whole_rel": "jt uses the whole relative speed |rel|, not the slip along the tangent, rel·t",
-    "kt_one_spin_term": "kt has only one body's spin term: it needs (ra × t)²/I_A + (rb × t)²/I_B",
     "kt_no_spin": "kt lacks the spin terms (ra × t)²/I_A + (rb × t)²/I_B",
     "kt_is_k": "kt = k: it uses the normal's (ra × n)², (rb × n)² where kt needs (ra × t)², (rb × t)²",
 }

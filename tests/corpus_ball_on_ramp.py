@@ -424,7 +424,7 @@ MISTAKE_IDS = {
     "friction_kt_no_spin": "kt_no_spin", "friction_kt_is_k": "kt_is_k", "friction_at_centre": "friction_at_centre",
     "friction_bodies_swapped": "friction_bodies_swapped", "friction_applied_twice": "friction_twice",
     "friction_clamped_to_mu": "friction_bound_mu", "friction_whole_relative_speed": "friction_whole_rel",
-    "friction_kt_without_ball_spin": "kt_one_spin_term", "friction_kt_without_a_spin": "kt_one_spin_term",
+    "friction_kt_without_ball_spin": "kt_missing_b_spin", "friction_kt_without_a_spin": "kt_missing_a_spin",
     "friction_if_clamp_loses_sign": "friction_clamp_loses_sign",
     "friction_bodies_and_arms_swapped": "friction_bodies_arms_swapped",
 }

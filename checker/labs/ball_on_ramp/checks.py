@@ -378,9 +378,9 @@ FRICTION_TEXT = {
     "clamp_loses_sign": (mistake("friction_clamp_loses_sign"), "friction_clamp"),
     "no_spin_kt": (mistake("kt_no_spin"), "friction_kt"),
     "kt_is_k": (mistake("kt_is_k"), "friction_kt"),
-    "kt_no_a_spin": (mistake("kt_one_spin_term", "kt lacks A's spin term (ra × t)²/I_A: it needs both bodies' "
+    "kt_no_a_spin": (mistake("kt_missing_a_spin", "kt lacks A's spin term (ra × t)²/I_A: it needs both bodies' "
                                                  "terms"), "friction_kt"),
-    "kt_no_b_spin": (mistake("kt_one_spin_term", "kt lacks B's spin term (rb × t)²/I_B: it needs both bodies' "
+    "kt_no_b_spin": (mistake("kt_missing_b_spin", "kt lacks B's spin term (rb × t)²/I_B: it needs both bodies' "
                                                  "terms"), "friction_kt"),
     "twice": (mistake("friction_twice"), "friction_missing"),
     "whole_rel": (mistake("friction_whole_rel"), "friction_slip"),

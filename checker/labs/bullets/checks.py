@@ -25,7 +25,7 @@ import math
 
 from . import scenes
 from ... import lab_checks
-from ...causes import consistent_mistake
+from ...causes import consistent_mistake, mistake
 from ...checks import Fail, Hint, Passed, Registry
 from lesson11.records import finite
 
@@ -48,38 +48,29 @@ MOMENTUM = 0.05        # the issue: the crate's momentum within 5 %; solution: 0
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
     "toi": Hint(2, "the time of impact of two circles",
-                "Write the gap as dp + dv t (dp = p2 - p1, dv = v2 - v1) and square |dp + dv t| = r1 + r2: "
-                "a = dv·dv, b = 2 dp·dv, c = dp·dp - (r1 + r2)². Return 0.0 when c <= 0 (already touching), None "
-                "when a == 0 or b² - 4ac < 0, else the EARLIER root (-b - √(b² - 4ac)) / 2a if it lies in [0, dt]."),
+                "Lesson, CCD: with dp = p2 - p1, dv = v2 - v1: a = dv·dv, b = 2 dp·dv, c = dp·dp - (r1 + r2)²; "
+                "t = (-b - √(b² - 4ac)) / 2a, kept if 0 <= t <= dt."),
     "toi_later": Hint(2, "the earlier root is the first contact",
-                      "The quadratic has two roots: the moment the circles start to touch and the moment they "
-                      "would stop touching if they passed through each other. The first contact is the smaller "
-                      "one, (-b - √disc) / 2a."),
+                      "Lesson, CCD: the two roots are when the circles start and stop touching; the first contact "
+                      "is the earlier, (-b - √disc) / 2a."),
     "toi_apart": Hint(2, "no contact: apart, parallel, missing, too far",
-                      "Return None when there is no contact in [0, dt]: the paths miss (b² - 4ac < 0), the circles "
-                      "do not move relative to each other (a = 0), or the earlier root is negative (moving apart: "
-                      "the touching lies in the past) or later than dt."),
+                      "Lesson, CCD: return None when a == 0, the discriminant is negative, or t is outside "
+                      "[0, dt] (the dt you are given)."),
     "toi_touching": Hint(2, "already touching",
-                         "When c = |dp|² - (r1 + r2)² <= 0 the circles already overlap: return 0.0 (the impact is "
-                         "now) before solving the quadratic; its roots are then on both sides of 0. Without it, a "
-                         "bullet inside a crate's or the wall's bounding circle is never tested, and bullets tunnel."),
+                         "Lesson, CCD: when c <= 0 the circles already overlap: the impact is now, return 0.0 "
+                         "before solving anything."),
     "bounding": Hint(3, "the bounding circle holds every corner",
-                     "The bounding circle around the crate's centre must reach its farthest corner: the largest "
-                     "centre.distance_to(p) over the points. Half the width or the nearest corner leaves corners "
-                     "outside, and a bullet aimed at a corner is skipped by the broad test: it tunnels."),
+                     "Going further, Bullets: the radius is the largest distance from the centre to a point of the "
+                     "outline, centre.distance_to(p), the max over all points."),
     "broad": Hint(4, "the broad test before the exact test",
-                  "First test the bullet, with its own radius, against the crate's bounding circle (the crate "
-                  "held still) with circle_toi(). Only when that finds no contact this step (None; 0.0 is a hit "
-                  "that happens now) return None at once. Otherwise go on to the exact swept test."),
+                  "Going further, Bullets: call circle_toi() for the bullet (its radius) against the bounding "
+                  "circle; return None only when that gives None, else run the exact test."),
     "broad_missing": Hint(4, "skip what the bullet cannot reach",
-                          "Your time_of_impact() ran the exact swept test on a crate the bullet cannot reach this "
-                          "step. The broad test is the point of step 4: one circle_toi() against the bounding "
-                          "circle, and return None when it finds no contact."),
+                          "Going further, Bullets: the broad test returns None before the exact swept test when "
+                          "the bullet cannot reach the bounding circle this step."),
     "swept": Hint(5, "move to the impact, resolve, spend the rest",
-                  "Move the bullet along its velocity to where it is at the time of impact t; resolve there, at "
-                  "the point of the bullet's surface that touches the other body (one radius from its centre "
-                  "along the normal); then move it for the rest of the step, dt - t, with its NEW velocity. "
-                  "Without the resolve, or moved the whole step first, bullets tunnel through the wall."),
+                  "Lesson, CCD: move to t, resolve there at bullet.pos + normal * radius, then move dt - t with "
+                  "the new velocity."),
     "handout": Hint(None, "keep the handed-out code",
                     "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
                     "everything else (the constants, the wall, the modes, BulletWorld, the `# lab runtime` lines) "
@@ -155,21 +146,20 @@ def _toi_ok(got, want):
 
 # the known wrong roots of step 2, by the name the probe gives their times (probes._toi_reference)
 TOI_MISTAKES = {
-    "no_two": "that is what (-b - √disc) / a gives in every case, twice the first-contact time: the 2 "
-              "of 2a is missing",
-    "four": "that is what (-b - √disc) / (4a) gives in every case, half the first-contact time: divide by 2a",
-    "a_unsquared": "that is the root with a = |dv|; the quadratic's a is dv·dv = |dv|²",
-    "b_sign": "that is what b = -2 dp·dv gives in every case (as dp = p1 - p2 or dv = v1 - v2 do): it runs time "
-              "backwards, so circles closing in get negative roots (None) and circles moving apart a contact; with "
-              "dp = p2 - p1 and dv = v2 - v1, b = 2 dp·dv",
+    "no_two": "the root is divided by a, not 2a: (-b - √disc) / a is twice the first-contact time",
+    "four": "the root is divided by 4a, not 2a: half the first-contact time",
+    "a_unsquared": "a = |dv|, not dv·dv = |dv|²",
+    "b_sign": "b = -2 dp·dv (as dp = p1 - p2 or dv = v1 - v2 give): time runs backwards; with dp = p2 - p1 and "
+              "dv = v2 - v1, b = 2 dp·dv",
+    "b_no_two": "b = dp·dv without its factor 2: b = 2 dp·dv",
+    "fixed_dt": "t is kept only up to 1/120 s, not up to the dt you are given",
 }
-
-
 def _toi_mistake(cases, case):
-    """The sentence of the known wrong root that gives the student's time in every case, or ''."""
+    """The Mistake of the known wrong root that gives the student's time in every case, or None."""
     named = consistent_mistake(cases, lambda c, name: _toi_ok(c["got"], c["forms"][name]),
-                               [name for name, value in case["forms"].items() if not _toi_ok(value, case["want"])])
-    return TOI_MISTAKES.get(named, "")
+                               [name for name, value in case["forms"].items() if not _toi_ok(value, case["want"])
+                                and name in TOI_MISTAKES])
+    return mistake(f"toi_{named}", TOI_MISTAKES[named]) if named else None
 
 
 @CHECKS.check(depends=["loads"], max_score=2)
@@ -185,27 +175,29 @@ def toi_matches_root(sub, functions):
                 worst = max(worst, abs(got - want))
             continue
         where = f"for {case['case']} (dt = {case['dt']:.4g} s)"
-        text = f"{where}, circle_toi() returned {_time(got)}; expected {_time(want)}"
-        hint = HINTS["toi"]
+        evidence = f"{where}, circle_toi() returned {_time(got)}; expected {_time(want)}."
+        hint, first, found = HINTS["toi"], "circle_toi() does not give the first-contact time", None
         if _bad(got):
-            hint = HINTS["toi"]
+            first = "circle_toi() must return a time in seconds or None"
         elif want == 0.0 and case["c"] <= 0:
-            text += ": the circles already overlap, so the impact is now"
-            hint = HINTS["toi_touching"]
+            first, hint = "the circles already overlap, so the impact is now: return 0.0", HINTS["toi_touching"]
         elif got is not None and case["later"] is not None and abs(got - case["later"]) <= TOI_TOLERANCE:
-            text += ": that is the later root, when the circles would stop touching"
-            hint = HINTS["toi_later"]
+            first, hint = "that is the later root, when the circles stop touching", HINTS["toi_later"]
+            found = mistake("toi_later_root", first)
+        elif want is None and got is not None and got < 0:
+            first, hint = "a negative time is in the past: the circles are moving apart", HINTS["toi_apart"]
+        elif want is None and got is not None and got > case["dt"]:
+            first, hint = f"the time is later than this step's dt = {case['dt']:.4g} s", HINTS["toi_apart"]
         elif want is None and got is not None:
-            if got < 0:
-                text += ": a negative time is in the past (the circles are moving apart)"
-            elif got > case["dt"]:
-                text += f": later than this step's dt = {case['dt']:.4g} s"
             hint = HINTS["toi_apart"]
         elif _toi_mistake(cases, case):
-            text += f": {_toi_mistake(cases, case)}"
+            found = _toi_mistake(cases, case)
+            first = found.text
+            if found.id == "toi_fixed_dt":
+                hint = HINTS["toi_apart"]
         elif want is not None and got is None:
-            text += ": the circles do touch within the step"
-        raise Fail(text + ".", hint)
+            first = "the circles do touch within the step, but circle_toi() found no contact"
+        raise Fail(f"{first}.\n{evidence}", hint, found)
     return Passed(f"the time of impact matches the analytic root in all {len(cases)} cases (largest difference "
                   f"{worst:.1e} s; bound {TOI_TOLERANCE:g} s)", value=cases)
 
@@ -318,9 +310,12 @@ SWEPT_TEXT = {
     "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
     "far_side": "the impulse was applied on the far side of the bullet; the contact point is on the bullet's "
                 "surface towards the crate, bullet.pos + normal * radius, and its lever arm sets the crate's spin",
-    "resolve_first": "the hit was resolved where the bullet starts the step, then the bullet moved the whole dt "
-                     "with its new velocity, so it turned back before it reached the impact; move it to the impact "
-                     "first (bullet.pos += bullet.vel * t), resolve there, then spend dt - t",
+    "resolve_first": "the hit was resolved where the bullet starts the step, then it moved the whole dt: it turned "
+                     "back before it reached the impact",
+    "at_centre": "the hit was resolved at the bullet's centre; the contact point is on its surface, bullet.pos + "
+                 "normal * radius, and its lever arm sets the crate's spin",
+    "move_then_resolve": "the bullet moved the whole step, then resolved: move it to the impact first, resolve "
+                         "there, then spend dt - t",
 }
 
 
@@ -345,16 +340,17 @@ def swept_move_resolves(sub, functions):
                                    [key for key, outcome in case["variants"].items()
                                     if not _same_outcome(outcome, want)])
         where = f"in '{case['case']}'" + (f" (impact at t = {case['t'] * 1000:.3f} ms)" if case["t"] is not None else "")
-        text = (f"{where}, after swept_move() the bullet is at {_vec(got['bullet']['pos'])} moving "
-                f"{_vec(got['bullet']['vel'])} px/s; expected {_vec(want['bullet']['pos'])} moving "
-                f"{_vec(want['bullet']['vel'])} px/s")
         spins = [(g.get("omega", 0.0), w.get("omega", 0.0)) for g, w in zip(got["others"], want["others"])
                  if not _close(g.get("omega", 0.0), w.get("omega", 0.0))]
-        if spins:
-            text += f"; the crate spins at {spins[0][0]:.3f} rad/s, expected {spins[0][1]:.3f}"
-        if named:
-            text += f": {SWEPT_TEXT[named]}"
-        raise Fail(text + ".", HINTS["swept"])
+        if spins and _same_point(got["bullet"]["pos"], want["bullet"]["pos"]):
+            evidence = f"{where}, the crate spins at {spins[0][0]:.3f} rad/s; expected {spins[0][1]:.3f}"
+        else:
+            evidence = (f"{where}, the bullet ends at {_vec(got['bullet']['pos'])} moving "
+                        f"{_vec(got['bullet']['vel'])} px/s; expected {_vec(want['bullet']['pos'])}, "
+                        f"{_vec(want['bullet']['vel'])}")
+        found = mistake(f"swept_{named}", SWEPT_TEXT[named]) if named else None
+        first = found.text if found else "after swept_move() the bullet or the crate is not where the lesson's is"
+        raise Fail(f"{first}.\n{evidence}.", HINTS["swept"], found)
     return Passed(f"the swept move matches the lesson in all {len(cases)} cases", value=cases)
 
 
