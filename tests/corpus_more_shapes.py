@@ -142,6 +142,12 @@ WRONG = [
     wrong("inertia_ignores_mass", "leaves out the mass: returns the inertia per unit mass", "inertia_sum", {4: INERTIA_SUMS + """
         return num / (6 * den)
     """}, why="right only for a mass of 1; the probe's masses run from 0.4 to 4.2"),
+    # issue 40: the mass argument ignored, recomputed from the area as build() does
+    wrong("inertia_mass_from_area", "ignores the mass argument and recomputes it from the area (area / 1000)",
+          "inertia_sum", {4: INERTIA_SUMS + """
+        mass = den / 2 / 1000
+        return mass * num / (6 * den)
+    """}, why="the probe's masses are near area / 1000 except the heavy 40 × 30 box (mass 9, area / 1000 = 1.2)"),
     wrong("inertia_dot_weight", "wrong operand: weighs each triangle by |a · b| instead of |a × b|", "inertia_sum", {4: """
         num = den = 0.0
         for i, a in enumerate(points):
@@ -365,6 +371,7 @@ SAYS = {
     "centroid_xy_swapped": ("x and y swapped",),
     "inertia_missing_six": ("not divided by 6",),
     "inertia_ignores_mass": ("mass factor is missing",),
+    "inertia_mass_from_area": ("mass argument is ignored",),
     "inertia_dot_weight": ("weighted by |a · b|",),
     "inertia_unweighted": ("not weighted by |a × b|",),
     "inertia_precedence": ("brackets",),
@@ -382,6 +389,14 @@ SAYS = {
     "outside_parallel_tolerance": ("PARALLEL = 0.1",),
 }
 WRONG = with_says(WRONG, SAYS)
+
+# the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
+MISTAKE_IDS = {
+    "inertia_missing_six": "polygon_inertia_no_six", "inertia_ignores_mass": "polygon_inertia_no_mass",
+    "inertia_dot_weight": "polygon_inertia_dot_weight", "inertia_unweighted": "polygon_inertia_unweighted",
+    "inertia_precedence": "polygon_inertia_precedence", "inertia_wrong_sign": "polygon_inertia_minus_cross_term",
+    "inertia_returns_inverse": "polygon_inertia_inverse", "inertia_mass_from_area": "polygon_inertia_mass_from_area",
+}
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

@@ -21,7 +21,7 @@ measures in the same scene, with the measured value noted next to it.
 import math
 
 from ... import lab_checks
-from ...causes import consistent_mistake
+from ...causes import consistent_mistake, mistake
 from lesson11 import records as metrics
 from . import scenes
 from ...checks import Fail, Hint, Passed, Registry
@@ -276,6 +276,8 @@ INERTIA_MISTAKES = {
     "no_abs": "the weights are the signed a × b; use abs(cross(a, b)) so that either winding works",
     "precedence": "mass * num / 6 * den multiplies by the weights' sum: divide by (6 * den), brackets included",
     "minus_cross_term": "the a·b term is subtracted; each triangle adds a·a + a·b + b·b",
+    "mass_from_area": "the mass argument is ignored: the mass is recomputed from the area (area / 1000); use the "
+                      "`mass` you are given",
 }
 
 
@@ -290,13 +292,16 @@ def inertia_sum(sub, functions):
                        HINTS["inertia"])
         if _close(got, want):
             continue
-        named = INERTIA_MISTAKES.get(consistent_mistake(
+        named = consistent_mistake(
             cases, lambda c, key: not isinstance(c["got"], str) and c["forms"].get(key) is not None
             and _close(c["got"], c["forms"][key]),
-            [key for key, value in case["forms"].items() if value is not None and not _close(want, value)]))
-        analytic = f" (the analytic value is {case['analytic']:.6g})" if case["analytic"] is not None else ""
-        raise Fail(f"for {case['case']}, polygon_inertia gives {got:.6g}; the triangle-fan sum gives {want:.6g}"
-                   f"{analytic}" + (f": {named}." if named else "."), HINTS["inertia"])
+            [key for key, value in case["forms"].items() if value is not None and not _close(want, value)
+             and key in INERTIA_MISTAKES])
+        found = mistake(f"polygon_inertia_{named}", INERTIA_MISTAKES[named]) if named else None
+        first = found.text if found else "polygon_inertia() is not the triangle-fan sum"
+        analytic = f" (analytic {case['analytic']:.6g})" if case["analytic"] is not None else ""
+        raise Fail(f"{first}.\nfor {case['case']}, yours gives {got:.6g}; the triangle-fan sum {want:.6g}{analytic}.",
+                   HINTS["inertia"], found)
     regular = sum(1 for c in cases if c["analytic"] is not None)
     return f"all {len(cases)} inertias match the lesson ({regular} of them the analytic value of a box or regular polygon)"
 
@@ -333,7 +338,7 @@ def _axes_mistake(cases, case):
     named = consistent_mistake(cases, lambda c, name: not isinstance(c["got"], str)
                                and _same_axes(c["got"], c["forms"][name]),
                                [name for name, form in case["forms"].items() if not _same_axes(form, case["want"])])
-    return f" That is the rule in every pair: {AXES_MISTAKES[named]}." if named else ""
+    return f" Your skip rule, in every pair: {AXES_MISTAKES[named]}." if named else ""
 
 
 def _label(case):
