@@ -32,11 +32,11 @@ def describe_run_failure(run, lab_name, what):
     if run.status == "flood":
         return f"{what} printed more than {run.max_output // 1024} KB of output and was stopped."
     if error.get("kind") == "exit":
-        return f"{what} ended the program: {error['message']} at {at}{text}."
+        return f"{what} ended the program: {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
     if error.get("kind") == "memory" or (run.returncode or 0) in (-9,) and not error:
-        return f"{what} ran out of memory (limit {run.memory_mb} MB) at {at}{text}."
+        return f"{what} ran out of memory (limit {run.memory_mb} MB).\nat {_cut(at + text, 190)}."
     if error:
-        return f"{what} raised {error['message']} at {at}{text}."
+        return f"{what} raised {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
     return (f"{what} ended the process unexpectedly (exit code {run.returncode}) before the checker could "
             f"record a result. Last output: {(run.stderr or run.stdout).strip()[-300:] or 'none'}")
 
@@ -74,8 +74,14 @@ def describe_function_error(name, error, lab_name):
     if error.get("kind") == "report":   # the grader's account of the child's report, not something the function raised
         return error["message"].rstrip(".") + "."
     if error.get("kind") == "exit":
-        return f"{name}() ended the program: {error['message']} at {at}{text}."
-    return f"{name}() raised {error['message']} at {at}{text}."
+        return f"{name}() ended the program: {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
+    return f"{name}() raised {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
+
+
+def _cut(text, limit=130):
+    """text cut to `limit` characters ("..." at the end), so a message's line stays short whatever was raised."""
+    text = str(text).rstrip(".")
+    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def shown(value, bound, unit=""):
