@@ -31,7 +31,7 @@ td.num{text-align:right;font-variant-numeric:tabular-nums}
 details{margin:.4em 0;border:1px solid #ddd;background:#fff;padding:.3em .6em}summary{cursor:pointer;font-weight:600}
 .check{margin:.35em 0 .35em .4em}.msg{margin-left:1.8em;white-space:pre-wrap}.hint{margin-left:1.8em;color:#5a4a00}
 .pic{margin:.3em 0 .3em 1.8em}.pic img{max-width:100%;border:1px solid #ccc}
-#mistakes td.files{font-size:.9em;color:#555}#mistakes tr.check td{border-top:2px solid #bbb;font-weight:600}
+#mistakes td.files{font-size:.9em;color:#555}#mistakes td.num{white-space:nowrap}#mistakes tr.check td{border-top:2px solid #bbb;font-weight:600}
 """
 
 JS = """

@@ -24,8 +24,8 @@ RUNTIME_HINT = Hint(None, "the lines marked # lab runtime",
 def handout_hint(rest):
     """The hint of a lab's handout_unchanged, the same words in every lab; `rest`: what stays as handed out."""
     return Hint(None, "keep the handed-out code",
-                f"Write only between `# --- step N` and `# --- end of step N ---`; the rest ({rest}) stays as "
-                "handed out. Unsure? Start again from the starter.")
+                f"Write only inside the `# --- step N` regions; the rest ({rest}) stays as handed out. Unsure? "
+                "Start again from the starter.")
 
 
 def number_text(value, digits=2):
