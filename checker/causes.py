@@ -10,7 +10,8 @@ from .checks import Hint, Mistake
 # The mistakes more than one lab names, in the same words everywhere (the Coulomb clamp of Tumbling Crates step 5
 # is Ball on the Ramp step 7's): id -> the sentence in the student's terms. A lab's own mistakes live in its checks.
 SHARED = {
-    "friction_unclamped": "the friction impulse is not clamped to [-mu·j, mu·j]",
+    "friction_missing": "resolve() applies no friction impulse",
+    "friction_unclamped": "the friction impulse is never clamped to [-mu·j, mu·j]",
     "friction_sign": "the friction impulse pushes along the slip, not against it",
     "friction_always_full": "friction always takes its full mu·j, even where a smaller impulse stops the slip",
     "friction_bound_mu": "jt is clamped to ±mu, not ±mu·j: the bound is mu times the normal impulse j",

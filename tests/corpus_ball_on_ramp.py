@@ -395,7 +395,7 @@ SAYS = {
     "contact_halfway": ("halfway",),
     "contact_far_side": ("far side",),
     "friction_sign_flipped": ("along the slip",),
-    "friction_not_clamped": ("not clamped",),
+    "friction_not_clamped": ("never clamped",),
     "friction_kt_no_spin": ("lacks the spin terms",),
     "friction_at_centre": ("changes no spin",),
     "friction_velocity_only": ("changes no spin",),

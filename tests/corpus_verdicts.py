@@ -95,13 +95,7 @@ def assert_verdict(entry, checks, corpus):
     assert named["status"] in entry.status and named["step"] == entry.step, (
         f"{entry.name} ({entry.what}): expected {entry.check} {'/'.join(entry.status)} naming step {entry.step}; "
         f"got {named['status']} naming step {named['step']}: {named['message']}\nwhy: {entry.why}\n{show(checks)}")
-    assert_names_the_mistake(entry, named)
-    assert_short(named, entry.name)
-    expected = getattr(corpus, "MISTAKE_IDS", {}).get(entry.name)
-    if expected is not None:
-        assert (named.get("mistake") or {}).get("id") == expected, (
-            f"{entry.name} ({entry.what}): its check must carry the mistake {expected!r}; it carries "
-            f"{named.get('mistake')!r}: {named['message']}")
+    assert_first_message(entry, named, corpus)
     if entry.step is not None:
         assert named["hint"].startswith(f"[step {entry.step}: "), named["hint"]
     may_skip = tuple(getattr(corpus, "NEEDS_STEPS_2_TO_4", ()))
@@ -111,6 +105,18 @@ def assert_verdict(entry, checks, corpus):
         allowed = ("pass", "skip") if cid in may_skip else ("pass",)
         assert checks[cid]["status"] in allowed, (f"{entry.name} ({entry.what}) is a mistake for {entry.check}, but "
                                                   f"{cid} is {checks[cid]['status']}:\n{show(checks)}")
+
+
+def assert_first_message(entry, named, corpus):
+    """A wrong entry's failing check (its first message): it names the mistake (entry.says), is two short lines
+    with a short hint (message_problem), and carries the mistake id corpus.MISTAKE_IDS gives the entry."""
+    assert_names_the_mistake(entry, named)
+    assert_short(named, entry.name)
+    expected = getattr(corpus, "MISTAKE_IDS", {}).get(entry.name)
+    if expected is not None:
+        assert (named.get("mistake") or {}).get("id") == expected, (
+            f"{entry.name} ({entry.what}): its check must carry the mistake {expected!r}; it carries "
+            f"{named.get('mistake')!r}: {named['message']}")
 
 
 FIRST_LINE, EVIDENCE_LINE, HINT = 160, 200, 250   # characters (issue 40): a message is two short lines

@@ -362,8 +362,7 @@ def contact_on_surface(sub, functions):
 # step 7's known wrong forms, by the name the probe gives their outcomes (probes.FRICTION_VARIANTS): the mistake
 # (its id, and its sentence: causes.SHARED where Tumbling Crates names the same one) and the hint
 FRICTION_TEXT = {
-    "none": (mistake("friction_missing", "resolve() applies no friction: the ball slides like an ice cube"),
-             "friction_missing"),
+    "none": (mistake("friction_missing"), "friction_missing"),
     "sign": (mistake("friction_sign"), "friction_sign"),
     "unclamped": (mistake("friction_unclamped"), "friction_clamp"),
     "always_full": (mistake("friction_always_full"), "friction_clamp"),
