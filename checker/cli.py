@@ -39,8 +39,8 @@ def parse_args(argv):
         prog="python -m checker", allow_abbrev=False,
         description="Grade Lesson 11 lab files headless: each file runs in its own limited process.",
         epilog="Exit status: 0 every entry graded and passing; 1 an entry fails or could not be graded; 2 a wrong "
-               "command line (nothing graded, nothing written). No file is written unless --csv, --gradescope, "
-               "--gradescope-dir, --pictures or --html asks. See checker/README.md.")
+               "command line (nothing graded, nothing written). No file is written unless --csv, --mistakes-csv, "
+               "--gradescope, --gradescope-dir, --pictures or --html asks. See checker/README.md.")
     parser.add_argument("paths", nargs="*", metavar="PATH",
                         help="lab files, folders of lab files, or folders of submission folders")
     parser.add_argument("--list", action="store_true",

@@ -70,7 +70,7 @@ def describe_function_error(name, error, lab_name):
     if error.get("kind") == "flood":
         return f"{name}() {error['message']} of output (printing at {at}{text}); remove the print."
     if error.get("kind") == "value":   # the grader's account: the function left a body's motion of the wrong kind
-        return f"{name}() {error['message']}: a body's pos and vel stay Vector2s, its angle and omega numbers."
+        return f"{name}() {_cut(error['message'], 140)}.\nA body's pos and vel stay Vector2s, its angle and omega numbers."
     if error.get("kind") == "report":   # the grader's account of the child's report, not something the function raised
         return error["message"].rstrip(".") + "."
     if error.get("kind") == "exit":

@@ -175,7 +175,8 @@ def function_data(sub, functions, probe, function, step, crash_hint):
                    Hint(step, f"the arguments of {function}()", "A function that answers a question must not "
                         "change what it was asked about: build new vectors and lists, leave the arguments alone."))
     if isinstance(entry["data"], list) and not entry["data"]:   # the grader's probe always has cases: never a pass
-        raise Error(f"the checker's probe of {function}() holds no case.\nNothing was graded.", crash_hint)
+        raise Error(f"the checker's probe of {function}() holds no case: nothing was graded.\nThe checker, not your "
+                    "file, is at fault: tell your instructor.", crash_hint)
     for changer, fields in sorted((entry.get("changed_fields") or {}).items()):
         raise Fail(f"{changer}() changes the {', '.join(fields)} of a body it is given.\nA step may change a "
                    "body's motion (position, velocity, spin), never its mass, inertia, material or shape.",

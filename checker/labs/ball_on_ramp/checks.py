@@ -216,7 +216,7 @@ def inside_case(sub, functions):
         got, want = case["got"], case["want"]
         if _hit_matches(got, want):
             continue
-        where = f"for {case['case']} (center {_vec(case['center'])}, {case['dist']:.2f} px from the nearest edge)"
+        where = f"for {case['case']} (center {_vec(case['center'])}, {case['dist']:.2f} px in from the edge)"
         if got is None:
             raise Fail(f"circle_polygon() says apart for a center inside the polygon, the deepest overlap of all.\n"
                        f"{where}: None; expected {_show_hit(want)}.", HINTS["inside"])

@@ -444,7 +444,7 @@ def resolve_friction(sub, functions):
     graded = [case for case in cases if case["friction"] is not None and case["j"] is not None]
     if not graded:   # nothing to compare is no pass: a resolve() that returns before step 4 applies no impulse
         said = "applied no impulse" if all(case["calls"] == 0 for case in cases) else "left no slip to stop"
-        raise Fail(f"resolve() {said} in any of the {len(cases)} contacts, so its friction could not be graded.\n"
+        raise Fail(f"resolve() {said} in any of the {len(cases)} contacts: nothing was graded.\n"
                    "Write step 4 (the normal impulse) first, then step 5's friction after it.",
                    HINTS["friction_clamp"])
     for case in graded:
