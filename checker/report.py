@@ -270,13 +270,6 @@ def class_mistakes(rows):
     return out
 
 
-def class_mistakes_line(item):
-    """One check of class_mistakes as a line: "Step 2 (sat_axes): 14 of 40 - shadows_union 9, not named 2"."""
-    _, label, failing, graded, named, unnamed = item
-    parts = [f"{mid} {len(paths)}" for mid, _, paths in named] + ([f"not named {len(unnamed)}"] if unnamed else [])
-    return f"{label}: {failing} of {graded} - " + ", ".join(parts)
-
-
 def mistakes_csv_text(reports, root=None):
     """The class's mistakes (--mistakes-csv): one row per named mistake of a check some file failed, then one
     "(not named)" row for the files failing it with no mistake named: lab, check, step, failing (files failing
