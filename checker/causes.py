@@ -10,6 +10,7 @@ from .checks import Hint, Mistake
 # The mistakes more than one lab names, in the same words everywhere (the Coulomb clamp of Tumbling Crates step 5
 # is Ball on the Ramp step 7's): id -> the sentence in the student's terms. A lab's own mistakes live in its checks.
 SHARED = {
+    "argument_changed": "a step function changes an argument it is given in place: make new vectors",
     "friction_missing": "resolve() applies no friction impulse",
     "friction_unclamped": "the friction impulse is never clamped to [-mu·j, mu·j]",
     "friction_sign": "the friction impulse pushes along the slip, not against it",

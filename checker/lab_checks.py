@@ -11,7 +11,8 @@ import math
 from . import handout, source
 from lesson11.physics2d.world import CONTACT_RULES, EFFECTS, ORDERS, SOLVERS
 
-from .checks import Error, Fail, Hint
+from .causes import mistake
+from .checks import Error, Fail, Hint, Mistake
 from .common import describe_function_error, describe_run_failure
 
 RUNTIME_HOOKS = ("seed", "scene", "frame_budget", "tick", "events", "record")
@@ -111,7 +112,7 @@ def handout_note(sub, hint):
     first = comparison.problems[0]
     others = len(comparison.problems) - 1
     raise Fail(f"code outside the steps differs from the handout.\n{first}" + (f"; and {others} more" if others else "")
-               + ".", hint)
+               + ".", hint, Mistake("handout_changed", "code outside the steps differs from the handout"))
 
 
 def missing_hooks(sub, crash_hint, hint=RUNTIME_HINT, hooks=RUNTIME_HOOKS):
@@ -132,7 +133,8 @@ def missing_hooks(sub, crash_hint, hint=RUNTIME_HINT, hooks=RUNTIME_HOOKS):
     if missing:
         raise Fail("the lab-runtime call" + ("s " if len(missing) > 1 else " ")
                    + ", ".join(f"lab.{m}()" for m in missing) + " " + ("are" if len(missing) > 1 else "is")
-                   + " missing.\nWithout them the checker cannot run the file headless.", hint)
+                   + " missing.\nWithout them the checker cannot run the file headless.", hint,
+                   Mistake("runtime_lines_missing", "a line marked # lab runtime is missing"))
 
 
 def function_data(sub, functions, probe, function, step, crash_hint):
@@ -171,8 +173,8 @@ def function_data(sub, functions, probe, function, step, crash_hint):
     if function in (entry.get("changed_arguments") or ()):
         raise Fail(f"{function}() changes the arguments it is given in place (a corner, a Vector2 or a list).\n"
                    "Its caller sees its own shapes or vectors change: a + ab * t makes a new vector; a += ... "
-                   "changes a.",
-                   Hint(step, f"the arguments of {function}()", "A function that answers a question must not "
+                   "changes a.", mistake=mistake("argument_changed"),
+                   hint=Hint(step, f"the arguments of {function}()", "A function that answers a question must not "
                         "change what it was asked about: build new vectors and lists, leave the arguments alone."))
     if isinstance(entry["data"], list) and not entry["data"]:   # the grader's probe always has cases: never a pass
         raise Error(f"the checker's probe of {function}() holds no case: nothing was graded.\nThe checker, not your "

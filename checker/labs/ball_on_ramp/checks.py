@@ -63,8 +63,8 @@ HINTS = {
                     "A ball against a polygon: t = (p - a)·ab / (ab·ab) runs from 0 at a to 1 at b; clamp it to "
                     "[0, 1]; the point is a + ab t."),
     "inside": Hint(3, "the center inside: push out the other way",
-                   "A ball against a polygon: a center inside leaves by the nearest edge: normal -offset / dist "
-                   "(flipped), depth radius + dist."),
+                   "A ball against a polygon: a ball's center inside leaves by the nearest edge: normal "
+                   "-offset / dist (flipped), depth radius + dist."),
     "split": Hint(4, "split the push-out by inverse mass",
                   "Lesson §5, the push-out: each body's share is its 1/m over 1/m_A + 1/m_B, A back along the "
                   "normal, B forward; a static body (1/m = 0) never moves."),
@@ -257,7 +257,7 @@ def push_out_split(sub, functions):
             text = "separate() changed its argument normal in place: scale a new vector, normal * share"
             raise Fail(f"{text}.\nin '{case['case']}', the normal went from {_vec(case['normal'])} to "
                        f"{_vec(case['normal_after'])}; the World goes on using it.", HINTS["split"],
-                       mistake("argument_changed", text))
+                       mistake("argument_changed"))
         for body in ("a", "b"):
             got, want, before = case["after"][body], case["want"][body], case["before"][body]
             if _same_point(got, want):
@@ -418,7 +418,7 @@ def friction_rolls(sub, functions):
             text = f"resolve() changed its argument {name} in place: make new vectors (normal.rotate(90), not " \
                    "t = normal then t.rotate_ip(90))"
             raise Fail(f"{text}.\nin '{case['case']}', {name} became {_vec(now)}; the World goes on using it for "
-                       "its other contact points.", arguments_hint(7, "resolve"), mistake("argument_changed", text))
+                       "its other contact points.", arguments_hint(7, "resolve"), mistake("argument_changed"))
     for case in cases:
         got, variants = case["got"], case["variants"]
         if _state_matches(got, variants["right"]):

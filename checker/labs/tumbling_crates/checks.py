@@ -387,7 +387,7 @@ def _unchanged_arguments(cases, function, why, hint):
             text = f"{function}() changed its argument {name} in place: make new vectors (v * s, v.rotate(90)), " \
                    "not v *= s or v.rotate_ip(90)"
             raise Fail(f"{text}.\nin '{case['case']}', {name} became {_vec(now)}: {why.format(name=name)}.", hint,
-                       mistake("argument_changed", text))
+                       mistake("argument_changed"))
 
 
 # the known wrong clamps of step 5, by name (_clamp_forms): the sentence and the hint
