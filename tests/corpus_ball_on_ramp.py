@@ -358,6 +358,15 @@ CORRECT = [
             jt = math.copysign(mu * j, jt)
         apply_impulse(a, b, t * jt, ra, rb)
     """}, why="the same Coulomb clamp written as an if"),
+    correct("correct_reaction_on_b_first", "the same friction impulse written from B's side: "
+            "apply_impulse(b, a, -(t * jt), rb, ra)", {7: """
+                rat, rbt = cross(ra, t), cross(rb, t)
+                kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+                jt = -rel.dot(t) / kt
+                jt = max(-mu * j, min(mu * j, jt))
+                apply_impulse(b, a, -(t * jt), rb, ra)
+            """}, why="B first with its own lever arm and the impulse turned round is the same pair of impulses: the "
+                      "recorded call order names a swap only when the outcome is wrong"),
     correct("correct_tangent_from_normal", "its own tangent: a turned copy of the normal (normal.rotate(90)), "
             "pointing against the slip", {7: """
                 tangent = normal.rotate(90)

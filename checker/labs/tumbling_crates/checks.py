@@ -228,7 +228,7 @@ def sat_axes(sub, functions):
     if all(case["got"] is None for case in hits):
         line = _placeholder_line(sub.source)
         if line:
-            text = f"line {line} is the handout's placeholder `return None`, still there at the end of step 2"
+            text = f"line {line} of {sub.name} is the handout's placeholder `return None`, still there after step 2"
             found = mistake("sat_placeholder", text)
         else:
             text, found = "sat() returned None for every pair, even those that overlap", None
