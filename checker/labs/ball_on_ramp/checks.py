@@ -168,7 +168,9 @@ def closest_point(sub, functions):
         if _bad(got) and "number" in got:
             t_too = ": that is t; return the point a + ab t" if _close(got["number"], case["t"]) else ""
             raise Fail(f"closest_on_segment() returned the number {got['number']:.4g}{t_too}.\n{where}, expected "
-                       f"the point {_vec(want)}.", HINTS["closest"])
+                       f"the point {_vec(want)}.", HINTS["closest"],
+                       mistake("closest_returns_t", "closest_on_segment() returns t, not the point a + ab t")
+                       if t_too else None)
         if _bad(got):
             placeholder = " (the handout's placeholder: write step 2)" if "inf" in got["bad"] else ""
             raise Fail(f"closest_on_segment() returned {got['bad']}{placeholder}.\n{where}, expected the point "

@@ -177,13 +177,16 @@ def toi_matches_root(sub, functions):
             first = "circle_toi() must return a time in seconds or None"
         elif want == 0.0 and case["c"] <= 0:
             first, hint = "the circles already overlap, so the impact is now: return 0.0", HINTS["toi_touching"]
+            found = mistake("toi_touching_missed", first)
         elif got is not None and case["later"] is not None and abs(got - case["later"]) <= TOI_TOLERANCE:
             first, hint = "that is the later root, when the circles stop touching", HINTS["toi_later"]
             found = mistake("toi_later_root", first)
         elif want is None and got is not None and got < 0:
             first, hint = "a negative time is in the past: the circles are moving apart", HINTS["toi_apart"]
+            found = mistake("toi_negative_time", first)
         elif want is None and got is not None and got > case["dt"]:
             first, hint = f"the time is later than this step's dt = {case['dt']:.4g} s", HINTS["toi_apart"]
+            found = mistake("toi_after_dt", "the time is later than this step's dt")
         elif want is None and got is not None:
             hint = HINTS["toi_apart"]
         elif _toi_mistake(cases, case):

@@ -242,9 +242,10 @@ def sat_axes(sub, functions):
                 overlaps, count_a = _overlaps(case)
                 gap_a = any(o <= 0 for _, o, _ in overlaps[:count_a])
                 where = "A's" if gap_a else "B's"
-                found = _sat_mistake(cases, case)
-                first = found.text if found else f"sat() misses a gap: one of {where} edge normals shows a gap " \
-                                                 "between the shadows"
+                found = _sat_mistake(cases, case) or mistake("sat_misses_gap", "sat() says overlap where one "
+                                                                               "edge normal shows a gap")
+                first = found.text if found.id != "sat_misses_gap" else \
+                    f"sat() misses a gap: one of {where} edge normals shows a gap between the shadows"
                 raise Fail(f"{first}.\nfor {label}, sat() says they overlap by {got['depth']:.2f} px; one of "
                            f"{where} edge normals shows a gap.", HINTS["sat_apart"], found)
             continue
