@@ -57,13 +57,30 @@ class Hint:
 RUN_COMMAND = re.compile(r"python [a-z][a-z0-9_]*\.py\b")   # how a hint tells the student to run their file
 
 
-class Fail(Exception):
-    """The lab ran but does not do what the check asks."""
+@dataclass(frozen=True)
+class Mistake:
+    """A known mistake a failing check named: a stable id (the same words in every lab, e.g. "clamp_to_mu") and
+    its sentence in the student's terms. Reported as "mistake": {"id", "text"} in --json, the CSV and the
+    platforms' results, and counted per step in the class report."""
+    id: str
+    text: str
 
-    def __init__(self, rationale, hint=None):
+    def to_json(self):
+        return {"id": self.id, "text": self.text}
+
+
+class Fail(Exception):
+    """The lab ran but does not do what the check asks.
+
+    rationale: the message, two short lines (what is wrong in the student's terms; the evidence, one case);
+    hint: a Hint; mistake: the Mistake it names, when one known wrong form fits the student's answers.
+    """
+
+    def __init__(self, rationale, hint=None, mistake=None):
         super().__init__(rationale)
         self.rationale = rationale
         self.hint = hint
+        self.mistake = mistake
 
 
 class Error(Fail):
@@ -111,10 +128,12 @@ class Result:
     score: float = 0.0
     max_score: float = 1.0
     data: dict = field(default_factory=dict)
+    mistake: Mistake | None = None   # the known mistake a failing check named, else None
 
     def to_json(self):
         return {"id": self.id, "name": self.name, "status": self.status, "message": self.message,
-                "hint": self.hint, "step": self.step, "score": self.score, "max_score": self.max_score}
+                "hint": self.hint, "step": self.step, "score": self.score, "max_score": self.max_score,
+                "mistake": self.mistake.to_json() if self.mistake else None}
 
 
 class Registry:
@@ -227,7 +246,8 @@ class RunState:
         elif hint is not None:
             self.hints_shown[hint] = chk.id
         return Result(chk.id, chk.description, status, message=exc.rationale, hint=text,
-                      step=hint.step if hint else None, score=0.0, max_score=chk.max_score)
+                      step=hint.step if hint else None, score=0.0, max_score=chk.max_score,
+                      mistake=getattr(exc, "mistake", None))
 
     def ordered(self, registry):
         """The results in the registry's order."""

@@ -39,8 +39,8 @@ def parse_args(argv):
         prog="python -m checker", allow_abbrev=False,
         description="Grade Lesson 11 lab files headless: each file runs in its own limited process.",
         epilog="Exit status: 0 every entry graded and passing; 1 an entry fails or could not be graded; 2 a wrong "
-               "command line (nothing graded, nothing written). No file is written unless --csv, --gradescope, "
-               "--gradescope-dir, --pictures or --html asks. See checker/README.md.")
+               "command line (nothing graded, nothing written). No file is written unless --csv, --mistakes-csv, "
+               "--gradescope, --gradescope-dir, --pictures or --html asks. See checker/README.md.")
     parser.add_argument("paths", nargs="*", metavar="PATH",
                         help="lab files, folders of lab files, or folders of submission folders")
     parser.add_argument("--list", action="store_true",
@@ -48,6 +48,9 @@ def parse_args(argv):
     parser.add_argument("--json", action="store_true", help="print the results as JSON (schema in checker/README.md)")
     parser.add_argument("--csv", metavar="FILE",
                         help="write one CSV row per entry to FILE (only when asked; an existing FILE is replaced)")
+    parser.add_argument("--mistakes-csv", metavar="FILE",
+                        help="write the class's mistakes to FILE: per check, the files failing it and each named "
+                             "mistake with its count and files (only when asked; an existing FILE is replaced)")
     parser.add_argument("--gradescope", metavar="FILE",
                         help="write Gradescope's results.json for the one submission being graded to FILE")
     parser.add_argument("--gradescope-dir", metavar="DIR",
@@ -100,11 +103,12 @@ def parse_args(argv):
         parser.error(problem)
     if args.csv is not None and args.csv.lower() == "none":
         args.csv = None  # `--csv none` from older scripts: no CSV (which is now the default)
-    for option in ("csv", "gradescope", "gradescope_dir", "pictures", "html"):
+    for option in ("csv", "mistakes_csv", "gradescope", "gradescope_dir", "pictures", "html"):
         if getattr(args, option) == "":
             parser.error(f"--{option.replace('_', '-')} needs a path, got an empty one")
     if args.show is not None:
-        extra = [f"--{o.replace('_', '-')}" for o in ("json", "csv", "gradescope", "gradescope_dir", "pictures", "html")
+        extra = [f"--{o.replace('_', '-')}" for o in ("json", "csv", "mistakes_csv", "gradescope", "gradescope_dir",
+                                                      "pictures", "html")
                  if getattr(args, o)]
         if extra:
             parser.error(f"--show opens a window for one file; it does not write {', '.join(extra)}")
@@ -115,7 +119,8 @@ def plan(args):
     """(entries, the outputs to write) for the command line; raises UsageError naming every problem."""
     entries, problems = discover(args.paths)
     wanted = [(f"--{name.replace('_', '-')}", getattr(args, name), kind)
-              for name, kind in (("csv", "file"), ("gradescope", "file"), ("gradescope_dir", "folder"),
+              for name, kind in (("csv", "file"), ("mistakes_csv", "file"), ("gradescope", "file"),
+                                 ("gradescope_dir", "folder"),
                                  ("pictures", "folder"), ("html", "file"))
               if getattr(args, name)]
     problems += outputs.check(wanted, args.paths, entries, graded_folders(args.paths))
@@ -189,6 +194,8 @@ def write_outputs(args, rows):
     jobs = []
     if args.csv:
         jobs.append(("--csv", args.csv, lambda: report.csv_text(rows), "CSV"))
+    if args.mistakes_csv:
+        jobs.append(("--mistakes-csv", args.mistakes_csv, lambda: report.mistakes_csv_text(rows), "The class's mistakes"))
     if args.gradescope:
         jobs.append(("--gradescope", args.gradescope, lambda: report.gradescope_text(rows, pictures=shown),
                      "Gradescope"))

@@ -78,11 +78,11 @@ def describe_run_failure(run, lab_name, what):
     if run.status == "flood":
         return f"{what} printed more than {run.max_output // 1024} KB of output and was stopped."
     if error.get("kind") == "exit":
-        return f"{what} ended the program: {error['message']} at {at}{text}."
+        return f"{what} ended the program: {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
     if error.get("kind") == "memory" or (run.returncode or 0) in (-9,) and not error:
-        return f"{what} ran out of memory (limit {run.memory_mb} MB) at {at}{text}."
+        return f"{what} ran out of memory (limit {run.memory_mb} MB).\nat {_cut(at + text, 190)}."
     if error:
-        return f"{what} raised {error['message']} at {at}{text}."
+        return f"{what} raised {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
     return (f"{what} ended the process unexpectedly (exit code {run.returncode}) before the checker could "
             f"record a result. Last output: {(run.stderr or run.stdout).strip()[-300:] or 'none'}")
 
@@ -117,13 +117,27 @@ def describe_function_error(name, error, lab_name):
         return f"{name}() {error['message']} of output (printing at {at}{text}); remove the print."
     if error.get("kind") == "value":   # the grader's account: the function left a body's motion of the wrong kind
         said = meaning(problem=error["message"])   # the window's words too (lesson11/mistakes.py)
-        return f"{name}() {error['message']}: {said or VALUE_RULE}."
+        return f"{name}() {_cut(error['message'], 140)}.\n{_cut(_capital(said or VALUE_RULE), 196)}."
     if error.get("kind") == "report":   # the grader's account of the child's report, not something the function raised
         return error["message"].rstrip(".") + "."
     if error.get("kind") == "exit":
-        return f"{name}() ended the program: {error['message']} at {at}{text}."
-    said = meaning(error.get("message") or "", error.get("text") or "")   # the window's words too (mistakes.py)
-    return f"{name}() raised {error['message']} at {at}{text}." + (f" {said[0].upper()}{said[1:]}." if said else "")
+        return f"{name}() ended the program: {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
+    # a known mistake's meaning (the window's words too, lesson11/mistakes.py) is the evidence line; else the line
+    said = meaning(error.get("message") or "", error.get("text") or "")
+    second = _capital(said) if said else f"at {at + text}"
+    return f"{name}() raised {_cut(error['message'], 90)} at line {error.get('line') or '?'}.\n{_cut(second, 196)}." \
+        if said else f"{name}() raised {_cut(error['message'])}.\n{_cut(second, 190)}."
+
+
+def _capital(text):
+    """text with its first letter a capital (a sentence of its own on the message's second line)."""
+    return text[:1].upper() + text[1:]
+
+
+def _cut(text, limit=130):
+    """text cut to `limit` characters ("..." at the end), so a message's line stays short whatever was raised."""
+    text = str(text).rstrip(".")
+    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def shown(value, bound, unit=""):

@@ -3,14 +3,16 @@
 One self-contained HTML file (inline CSS and a few lines of vanilla JS, the
 pictures inlined as data: URIs; no network): a histogram per check (how many
 files passed, failed, erred or were skipped there, so the step the class
-struggled with stands out), the summary table (click a heading to sort by
+struggled with stands out), the mistakes named per check (how many files fail it, each named mistake with its
+count and the files that made it, so an instructor knows what to reteach), the summary table (click a heading to sort by
 file, lab, score, status or first problem), and each file's checks with their
 messages, hints and pictures (checker/pictures.py).
 """
 import html
 
 from .outputs import submission_names
-from .report import SYMBOL, NotGraded, _summary_line, check_label, lab_means, message_of, reason, write_atomic
+from .report import (SYMBOL, NotGraded, _summary_line, check_label, class_mistakes, lab_means, message_of, reason,
+                     write_atomic)
 
 STATUS_ORDER = ("pass", "fail", "error", "skip")
 COLOURS = {"pass": "#3a9a5b", "fail": "#d0453a", "error": "#7d1d17", "skip": "#b9bcc4"}
@@ -29,6 +31,7 @@ td.num{text-align:right;font-variant-numeric:tabular-nums}
 details{margin:.4em 0;border:1px solid #ddd;background:#fff;padding:.3em .6em}summary{cursor:pointer;font-weight:600}
 .check{margin:.35em 0 .35em .4em}.msg{margin-left:1.8em;white-space:pre-wrap}.hint{margin-left:1.8em;color:#5a4a00}
 .pic{margin:.3em 0 .3em 1.8em}.pic img{max-width:100%;border:1px solid #ccc}
+#mistakes td.files{font-size:.9em;color:#555}#mistakes td.num{white-space:nowrap}#mistakes tr.check td{border-top:2px solid #bbb;font-weight:600}
 """
 
 JS = """
@@ -104,6 +107,28 @@ def histogram(rows):
         label = f"{labs.get(lab_id, lab_id)}: {shown}" if several else shown
         out.append(f'<tr data-check="{_e(check_id)}"><td>{_e(label)}</td><td><div class="bar">{bar}</div></td>'
                    f'<td class="num">{counts["pass"]}/{len(results)}</td><td class="num">{mean:.2g}/{top:g}</td></tr>')
+    out.append("</tbody></table>")
+    return "\n".join(out)
+
+
+def mistakes_table(rows, names):
+    """HTML: per check some file failed, how many files fail it of how many graded, then each named mistake with
+    its count and the files that made it (most made first), then those failing it with no mistake named."""
+    found = class_mistakes(rows)
+    if not found:
+        return "<p>No file fails a check.</p>"
+    several = len({title for title, *_ in found}) > 1
+    index = {row.path: k for k, row in enumerate(rows)}
+    out = ['<table id="mistakes"><thead><tr><th>check / mistake</th><th>files</th><th>who</th></tr></thead><tbody>']
+    for title, label, failing, graded, named, unnamed in found:
+        shown = f"{title}: {label}" if several else label
+        out.append(f'<tr class="check"><td>{_e(shown)}</td><td class="num">{failing} of {graded}</td><td></td></tr>')
+        lines = [(text, mid, paths) for mid, text, paths in named] + ([("not named", "", unnamed)] if unnamed else [])
+        for text, mid, paths in lines:
+            who = ", ".join(f'<a href="#file-{index[p]}">{_e(names[p])}</a>' for p in paths)
+            tag = f' <code>{_e(mid)}</code>' if mid else ""
+            out.append(f'<tr data-mistake="{_e(mid)}"><td>{_e(text)}{tag}</td><td class="num">{len(paths)}</td>'
+                       f'<td class="files">{who}</td></tr>')
     out.append("</tbody></table>")
     return "\n".join(out)
 
@@ -184,6 +209,7 @@ def html_text(rows, pictures=None, title="Lesson 11 lab checker: class report"):
         f"<p>{len(rows)} file(s), {len(graded)} graded. {_e(_summary_line(rows))}</p>",
         f"<p>{_e(means or 'No lab files.')}</p>",
         "<h2>Where the class struggled: results per check</h2>", histogram(rows),
+        "<h2>What the class got wrong: the mistakes named per check</h2>", mistakes_table(rows, names),
         "<h2>Files</h2><p>Click a heading to sort; click a file to see its checks, a check under pictures to see "
         "its picture.</p>", summary_table(rows, names, pictures),
         "<h2>Checks of each file</h2>",

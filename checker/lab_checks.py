@@ -11,15 +11,22 @@ import math
 from . import handout, source
 from lesson11.physics2d.world import CONTACT_RULES, EFFECTS, ORDERS, SOLVERS
 
-from .checks import Error, Fail, Hint
+from .causes import mistake
+from .checks import Error, Fail, Hint, Mistake
 from .common import describe_function_error, describe_run_failure
 
 RUNTIME_HOOKS = ("seed", "scene", "frame_budget", "tick", "events", "record")
 
 RUNTIME_HINT = Hint(None, "the lines marked # lab runtime",
-                    "Keep the lines marked `# lab runtime` from the handout (lab.seed, lab.scene, lab.frame_budget, "
-                    "lab.tick, lab.events, lab.record): they do nothing when you run the file yourself, and the "
-                    "checker needs them to run it headless.")
+                    "Keep the handout's `# lab runtime` lines (lab.seed, scene, frame_budget, tick, events, "
+                    "record): they do nothing when you run the file; the checker needs them.")
+
+
+def handout_hint(rest):
+    """The hint of a lab's handout_unchanged, the same words in every lab; `rest`: what stays as handed out."""
+    return Hint(None, "keep the handed-out code",
+                f"Write only inside the `# --- step N` regions; the rest ({rest}) stays as handed out. Unsure? "
+                "Start again from the starter.")
 
 
 def number_text(value, digits=2):
@@ -43,7 +50,7 @@ def loaded(sub, crash_hint, names_hint):
         raise Error(describe_run_failure(run, sub.name, "The file"), crash_hint)
     missing = run.result["probe"]["missing"]
     if missing:
-        raise Error(f"{sub.name} defines no function {missing[0]}() (missing: {', '.join(missing)}).", names_hint)
+        raise Error(f"{sub.name} defines no function {missing[0]}().\nmissing: {', '.join(missing)}.", names_hint)
     return run.result["probe"]["functions"]
 
 
@@ -105,7 +112,10 @@ def handout_note(sub, hint):
     if getattr(sub, "edits_not_run", None) and len(sub.edits_not_run) == len(comparison.problems):
         return (f"warning: {'; '.join(sub.edits_not_run[:handout.MAX_PROBLEMS])}: a constant no check reads, so "
                 "the checker graded your steps with the handout's line there; put it back before you hand in.")
-    raise Fail(text + ".", hint)
+    first = comparison.problems[0]
+    others = len(comparison.problems) - 1
+    raise Fail(f"code outside the steps differs from the handout.\n{first}" + (f"; and {others} more" if others else "")
+               + ".", hint, Mistake("handout_changed", "code outside the steps differs from the handout"))
 
 
 def missing_hooks(sub, crash_hint, hint=RUNTIME_HINT, hooks=RUNTIME_HOOKS):
@@ -126,7 +136,8 @@ def missing_hooks(sub, crash_hint, hint=RUNTIME_HINT, hooks=RUNTIME_HOOKS):
     if missing:
         raise Fail("the lab-runtime call" + ("s " if len(missing) > 1 else " ")
                    + ", ".join(f"lab.{m}()" for m in missing) + " " + ("are" if len(missing) > 1 else "is")
-                   + " missing, so the checker cannot run the file headless.", hint)
+                   + " missing.\nWithout them the checker cannot run the file headless.", hint,
+                   Mistake("runtime_lines_missing", "a line marked # lab runtime is missing"))
 
 
 def function_data(sub, functions, probe, function, step, crash_hint):
@@ -142,40 +153,38 @@ def function_data(sub, functions, probe, function, step, crash_hint):
         next((b for b in getattr(sub, "flags", ()) or () if b.step in steps), None)
     if breach is not None and breach.rule == "outside":
         raise Fail(breach.message, Hint(step, "keep the code around the steps",
-                                        "Your functions are graded as you write them inside their step markers. "
-                                        "Code outside the steps that imports the library, the checker or the "
-                                        "interpreter's machinery, or that binds a step's function again, replaces "
-                                        "that work: take it out and start from the starter if unsure."))
+                                        "Functions are graded as written inside their steps; code outside that "
+                                        "imports the library or the checker, or binds a step's function again, "
+                                        "replaces that work: take it out."))
     if breach is not None:
         raise Fail(breach.message, Hint(step, f"write step {step} yourself",
-                                        "Inside a step use only the lesson's own tools: the names the handout "
-                                        "gives you, math, and the functions you write. No import, no dunder "
-                                        "names, nothing reached through World, the runtime or a module, and "
-                                        "not the library's own version of the function the step asks for."))
+                                        "Inside a step use the handout's names, math and your own functions: no "
+                                        "import, no dunder names, nothing through World or a module, not the "
+                                        "library's version of the step."))
     entry = functions.get(probe)
     if entry is None:
         raise Error(f"{sub.name} defines no {function}().", crash_hint)
     if not entry["ok"] and entry["error"].get("kind") == "value":   # tape.StudentValue: a body's motion's kind
         raise Error(describe_function_error(function, entry["error"], sub.name),
-                    Hint(step, f"what {function}() leaves in a body", "A body's pos and vel are Vector2s (px, "
-                         "px/s), its angle and omega numbers (rad, rad/s), all finite: change them with values of "
-                         "the same kind (cross() gives a number, impulse * inv_mass a Vector2)."))
+                    Hint(step, f"what {function}() leaves in a body", "A body's pos and vel are Vector2s, its "
+                         "angle and omega finite numbers: change them with the same kind (cross() gives a number, "
+                         "impulse * inv_mass a Vector2)."))
     if not entry["ok"]:
         hint = Hint(step, f"the error in {function}()", f"Your code in {function}() stopped with the error above; "
                     "fix it at the line shown, then run the checker again.")
         raise Error(describe_function_error(function, entry["error"], sub.name), hint)
     if function in (entry.get("changed_arguments") or ()):
-        raise Fail(f"{function}() changes the arguments it is given in place (a corner, a Vector2 or a list of "
-                   "them): whoever called it sees its own shapes or vectors change. Work on new values instead "
-                   "(a + ab * t makes a new vector; a += ... changes a).",
-                   Hint(step, f"the arguments of {function}()", "A function that answers a question must not "
+        raise Fail(f"{function}() changes the arguments it is given in place (a corner, a Vector2 or a list).\n"
+                   "Its caller sees its own shapes or vectors change: a + ab * t makes a new vector; a += ... "
+                   "changes a.", mistake=mistake("argument_changed"),
+                   hint=Hint(step, f"the arguments of {function}()", "A function that answers a question must not "
                         "change what it was asked about: build new vectors and lists, leave the arguments alone."))
     if isinstance(entry["data"], list) and not entry["data"]:   # the grader's probe always has cases: never a pass
-        raise Error(f"the checker's probe of {function}() holds no case, so nothing was graded.", crash_hint)
+        raise Error(f"the checker's probe of {function}() holds no case: nothing was graded.\nThe checker, not your "
+                    "file, is at fault: tell your instructor.", crash_hint)
     for changer, fields in sorted((entry.get("changed_fields") or {}).items()):
-        raise Fail(f"{changer}() changes the {', '.join(fields)} of a body it is given: a step may change a body's "
-                   "motion (position, velocity, spin), never its mass, inertia, material or shape, which the "
-                   "lesson's formulas read. Read those fields, don't set them.",
+        raise Fail(f"{changer}() changes the {', '.join(fields)} of a body it is given.\nA step may change a "
+                   "body's motion (position, velocity, spin), never its mass, inertia, material or shape.",
                    Hint(step, f"the bodies given to {changer}()", "Use a body's mass, inv_mass, inertia, "
                         "inv_inertia, friction, restitution and shape as they are: they describe the body, "
                         "and every other contact reads them too."))
@@ -320,17 +329,17 @@ def scene_records(sub, names, crash_hint, runtime_hint=RUNTIME_HINT):
     for name in names:
         run = sub.scenarios.get(name)
         if run is None:
-            raise Error(f"the '{name}' scene was not run (the time limit for the whole run ran out).")
+            raise Error(f"the '{name}' scene was not run.\nThe time limit for the whole run ran out.")
         if run.status != "done":
             raise Error(describe_run_failure(run, sub.name, f"main() in the '{name}' scene"), crash_hint)
         frames = (run.record or {}).get("records") or []
         if not frames:
-            raise Fail(f"the '{name}' scene recorded no frames: main() returned before its loop ran, or the loop "
+            raise Fail(f"the '{name}' scene recorded no frames.\nmain() returned before its loop ran, or the loop "
                        "does not call lab.record(...).", runtime_hint)
         build = names.get(name) if isinstance(names, dict) else None
         problem = record_problem(run.record, build() if callable(build) else {})
         if problem:
-            raise Error(f"the '{name}' scene's record cannot be what the lab runtime wrote: {problem}. The checker "
-                        "does not grade it.", runtime_hint)
+            raise Error(f"the '{name}' scene's record cannot be what the lab runtime wrote; it is not graded.\n"
+                        f"{problem}.", runtime_hint)
         records[name] = run
     return records

@@ -25,7 +25,8 @@ JSON schema (`--json`, version 1):
           "message": str,                # what was measured / what went wrong ("" when silent)
           "hint": str,                   # what to revisit: "[step N: title] advice" ("" on pass/skip)
           "step": int | null,            # the lesson step (1-7) the hint names
-          "score": float, "max_score": float}]}],
+          "score": float, "max_score": float,
+          "mistake": {"id": str, "text": str} | null}]}],   # the known mistake a failing check named
   "errors": [{"path": str, "message": str}]   # the rows that could not be graded, again
 }
 """
@@ -175,6 +176,8 @@ def gradescope(reports, root=None, pictures=None):
             test = {"name": prefix + r.name, "score": r.score, "max_score": r.max_score,
                     "status": "passed" if r.status == "pass" else "failed",
                     "output": output or ("skipped" if r.status == "skip" else ""), "visibility": "visible"}
+            if getattr(r, "mistake", None) is not None:   # Gradescope keeps a test's extra_data as given
+                test["extra_data"] = {"mistake": r.mistake.to_json()}
             shown = ((pictures or {}).get(report.path) or {}).get(r.id)
             if shown:
                 test["output_format"] = "html"
@@ -239,8 +242,8 @@ def summary_table(reports, stream, root=None):
 def csv_text(reports, root=None):
     """One row per entry: student (the submission's folder), path, lab, status, score, max_score, fraction (of
     its own lab's points; 0 for a file that scores 0 of no lab's points, such as an empty one), each check's
-    status, then message: the row's reason (reason()). With several labs a check's column is "lab:check", so no
-    column mixes two labs' checks."""
+    status, mistakes (mistakes_text), then message: the row's reason (reason()). With several labs a check's
+    column is "lab:check", so no column mixes two labs' checks."""
     several = len({r.lab.id for r in reports if r.lab is not None}) > 1
     columns = []
     for r in reports:
@@ -252,13 +255,68 @@ def csv_text(reports, root=None):
     out = io.StringIO(newline="")
     writer = csv.writer(out)
     writer.writerow(["student", "path", "lab", "status", "score", "max_score", "fraction",
-                     *[f"{lab}:{check}" if several else check for lab, check in columns], "message"])
+                     *[f"{lab}:{check}" if several else check for lab, check in columns], "mistakes", "message"])
     for r in reports:
         lab = r.lab.id if r.lab is not None else ""
         by_id = {(lab, c.id): c.status for c in r.results}
         fraction = f"{r.score / r.max_score:.3f}" if r.max_score else ("0.000" if getattr(r, "counted", False) else "")
         writer.writerow([student_of(names[r.path]), _rel(r.path, root), lab, r.status, f"{r.score:g}",
-                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns], reason(r)])
+                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns], mistakes_text(r),
+                         reason(r)])
+    return out.getvalue()
+
+
+def mistakes_text(row):
+    """The CSV's `mistakes` cell: "check=mistake id" for each failing check that named one, "; " between."""
+    return "; ".join(f"{r.id}={r.mistake.id}" for r in row.results if getattr(r, "mistake", None) is not None)
+
+
+def class_mistakes(rows):
+    """What the class got wrong, per check: [(lab title, check label, files failing it, files graded, [(mistake id,
+    sentence, [file paths])] most made first, [paths failing it with no mistake named])], in the labs' check
+    order, for the checks some file failed (fail or error, not skip)."""
+    order, by_check = [], {}
+    for row in rows:
+        for r in row.results:
+            key = (row.lab.id if row.lab is not None else "", r.id)
+            if key not in by_check:
+                order.append(key)
+                by_check[key] = {"title": row.lab.title if row.lab is not None else "", "label": check_label(r),
+                                 "graded": 0, "failing": [], "named": {}, "unnamed": []}
+            entry = by_check[key]
+            entry["graded"] += 1
+            if r.status not in ("fail", "error"):
+                continue
+            entry["failing"].append(row.path)
+            mistake = getattr(r, "mistake", None)
+            if mistake is None:
+                entry["unnamed"].append(row.path)
+            else:
+                entry["named"].setdefault(mistake.id, (mistake.text, []))[1].append(row.path)
+    out = []
+    for key in order:
+        entry = by_check[key]
+        if entry["failing"]:
+            named = sorted(((mid, text, paths) for mid, (text, paths) in entry["named"].items()),
+                           key=lambda item: -len(item[2]))
+            out.append((entry["title"], entry["label"], len(entry["failing"]), entry["graded"], named,
+                        entry["unnamed"]))
+    return out
+
+
+def mistakes_csv_text(reports, root=None):
+    """The class's mistakes (--mistakes-csv): one row per named mistake of a check some file failed, then one
+    "(not named)" row for the files failing it with no mistake named: lab, check, step, failing (files failing
+    the check), graded (files graded by it), mistake (id), sentence, files (how many made it), paths."""
+    out = io.StringIO(newline="")
+    writer = csv.writer(out)
+    writer.writerow(["lab", "check", "step", "failing", "graded", "mistake", "sentence", "files", "paths"])
+    for title, label, failing, graded, named, unnamed in class_mistakes(reports):
+        step = step_of(label)
+        rows = [(mid, text, paths) for mid, text, paths in named] + ([("(not named)", "", unnamed)] if unnamed else [])
+        for mid, text, paths in rows:
+            writer.writerow([title, label, step if step is not None else "", failing, graded, mid, text, len(paths),
+                             "; ".join(_rel(p, root) for p in paths)])
     return out.getvalue()
 
 

@@ -233,6 +233,64 @@ WRONG = [
         jt = max(-mu * j, min(mu * j, jt))
         apply_impulse(b, a, t * jt, ra, rb)
     """}, why="the ball gets -t jt (it was told about the sign of jt), and at the other body's lever arm"),
+    # issue 40: the step-7 mistakes that were only numbered, each told apart by the probe's cases
+    wrong("friction_applied_twice", "applies the friction impulse twice (a second apply_impulse line)",
+          "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="a ball slipping a little gets twice the impulse that stops its slip"),
+    wrong("friction_clamped_to_mu", "clamps jt to [-mu, mu], not [-mu·j, mu·j]", "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu, min(mu, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="j is far above 1 in these contacts, so ±mu clamps every impulse that should stop the slip"),
+    wrong("friction_whole_relative_speed", "jt from the whole relative speed |rel|, not the slip rel·t",
+          "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.length() / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="after a bouncing impact rel still has a normal part: |rel| is more than the slip"),
+    wrong("friction_kt_without_ball_spin", "kt with A's spin term only (B's, the ball's on the ramp, left out)",
+          "friction_rolls", {7: """
+        rat = cross(ra, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="on the ramp A is static, so kt loses the ball's spin term: 3x the impulse that stops the slip"),
+    wrong("friction_kt_without_a_spin", "kt with B's spin term only (A's left out)", "friction_rolls", {7: """
+        rbt = cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="only the ball hitting the spinning crate (A the ball) shows it: on the ramp A is static"),
+    wrong("friction_if_clamp_loses_sign", "`if abs(jt) > mu * j: jt = mu * j`: the clamp drops jt's sign",
+          "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        if abs(jt) > mu * j:
+            jt = mu * j
+        apply_impulse(a, b, t * jt, ra, rb)
+    """}, why="jt < 0 here: where the clamp binds (the fast slide, the backspin) friction pushes along the slip; "
+              "elsewhere it is right"),
+    wrong("friction_bodies_and_arms_swapped", "apply_impulse(b, a, t * jt, rb, ra): bodies and lever arms swapped",
+          "friction_rolls", {7: """
+        rat, rbt = cross(ra, t), cross(rb, t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        jt = -rel.dot(t) / kt
+        jt = max(-mu * j, min(mu * j, jt))
+        apply_impulse(b, a, t * jt, rb, ra)
+    """}, why="the same velocities as a flipped jt, but jt is right: the recorded call names the swap, not the sign"),
     wrong("friction_tangent_rotates_normal", "makes its own tangent by rotating the contact's normal in place",
           "friction_rolls", {7: """
         t = normal
@@ -300,6 +358,15 @@ CORRECT = [
             jt = math.copysign(mu * j, jt)
         apply_impulse(a, b, t * jt, ra, rb)
     """}, why="the same Coulomb clamp written as an if"),
+    correct("correct_reaction_on_b_first", "the same friction impulse written from B's side: "
+            "apply_impulse(b, a, -(t * jt), rb, ra)", {7: """
+                rat, rbt = cross(ra, t), cross(rb, t)
+                kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+                jt = -rel.dot(t) / kt
+                jt = max(-mu * j, min(mu * j, jt))
+                apply_impulse(b, a, -(t * jt), rb, ra)
+            """}, why="B first with its own lever arm and the impulse turned round is the same pair of impulses: the "
+                      "recorded call order names a swap only when the outcome is wrong"),
     correct("correct_tangent_from_normal", "its own tangent: a turned copy of the normal (normal.rotate(90)), "
             "pointing against the slip", {7: """
                 tangent = normal.rotate(90)
@@ -337,7 +404,7 @@ SAYS = {
     "contact_halfway": ("halfway",),
     "contact_far_side": ("far side",),
     "friction_sign_flipped": ("along the slip",),
-    "friction_not_clamped": ("not clamped",),
+    "friction_not_clamped": ("never clamped",),
     "friction_kt_no_spin": ("lacks the spin terms",),
     "friction_at_centre": ("changes no spin",),
     "friction_velocity_only": ("changes no spin",),
@@ -346,11 +413,30 @@ SAYS = {
     "friction_kt_is_k": ("kt = k",),
     "friction_bodies_swapped": ("apply_impulse(b, a",),
     "friction_tangent_rotates_normal": ("changed its argument normal",),
+    "friction_applied_twice": ("applied twice",),
+    "friction_clamped_to_mu": ("±mu, not ±mu·j",),
+    "friction_whole_relative_speed": ("whole relative speed",),
+    "friction_kt_without_ball_spin": ("lacks B's spin term",),
+    "friction_kt_without_a_spin": ("lacks A's spin term",),
+    "friction_if_clamp_loses_sign": ("where |jt| > mu·j", "loses jt's sign"),
+    "friction_bodies_and_arms_swapped": ("apply_impulse(b, a, t * jt, rb, ra)", "lever arms swapped"),
     "world_hook_removed": ("circle_polygon=circle_polygon",),
     "inertia_bypassed": ("disc_inertia(mass, radius)",),
     "slop_zeroed": ("SLOP = 0.0",),
 }
 WRONG = with_says(WRONG, SAYS)
+
+# the mistake id each entry's failing check must carry (issue 40: --json's "mistake"); an entry not listed may
+# carry none
+MISTAKE_IDS = {
+    "friction_sign_flipped": "friction_sign", "friction_not_clamped": "friction_unclamped",
+    "friction_kt_no_spin": "kt_no_spin", "friction_kt_is_k": "kt_is_k", "friction_at_centre": "friction_at_centre",
+    "friction_bodies_swapped": "friction_bodies_swapped", "friction_applied_twice": "friction_twice",
+    "friction_clamped_to_mu": "friction_bound_mu", "friction_whole_relative_speed": "friction_whole_rel",
+    "friction_kt_without_ball_spin": "kt_missing_b_spin", "friction_kt_without_a_spin": "kt_missing_a_spin",
+    "friction_if_clamp_loses_sign": "friction_clamp_loses_sign",
+    "friction_bodies_and_arms_swapped": "friction_bodies_arms_swapped",
+}
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

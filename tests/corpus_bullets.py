@@ -156,6 +156,26 @@ WRONG = [
         t = (-b - math.sqrt(disc)) / (2 * a)
         return t if 0 <= t <= dt else None
     """}, status=("error", "fail"), why="ZeroDivisionError for two circles moving together"),
+    # issue 40: b without its factor 2; the bound hard-coded to 1/120 s
+    wrong("toi_b_without_two", "b = dp·dv, without its factor 2", "toi_matches_root", {2: """
+        c = dp.dot(dp) - reach * reach
+        if c <= 0:
+            return 0.0
+        a = dv.dot(dv)
+        b = dp.dot(dv)
+        disc = b * b - 4 * a * c
+        if a == 0 or disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if 0 <= t <= dt else None
+    """}, why="head-on, b² - 4ac is negative: no contact where the circles do meet"),
+    wrong("toi_bound_fixed_step", "keeps t only up to 1/120 s, the course's step, not the dt given",
+          "toi_matches_root", {2: TOI_HEAD + """
+        if a == 0 or disc < 0:
+            return None
+        t = (-b - math.sqrt(disc)) / (2 * a)
+        return t if 0 <= t <= 1 / 120 else None
+    """}, why="head-on at 3000 px/s with dt = 1/30 s: the contact at 17.7 ms is dropped"),
     # ---- step 3: bounding_radius
     # issue 33: values that name their formula
     wrong("bounding_squared", "the farthest corner's squared distance (no square root)", "bounding_circle", {3: """
@@ -233,6 +253,18 @@ WRONG = [
         world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
         bullet.pos += bullet.vel * dt
     """}, why="the bullet turns back before it reaches the wall: it never touches it"),
+    # issue 40: the contact at the bullet's centre; the whole step, then resolve
+    wrong("swept_contact_at_centre", "resolves at the bullet's centre, world.resolve(..., bullet.pos)",
+          "swept_move_resolves", {5: """
+        bullet.pos += bullet.vel * t
+        world.resolve(bullet, other, normal, bullet.pos)
+        bullet.pos += bullet.vel * (dt - t)
+    """}, why="the off-centre, slanted hit: the lever arm ends 3 px short, so the crate spins differently"),
+    wrong("swept_move_then_resolve", "moves the whole step, then resolves where it ended", "swept_move_resolves",
+          {5: """
+        bullet.pos += bullet.vel * dt
+        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
+    """}, why="the bullet is already past the impact (through the wall at 12000 px/s) when it resolves"),
     # ---- outside the steps
     wrong("wall_thickened", "makes the wall 20 px thick so nothing tunnels", "handout_unchanged",
           edits=[("WALL_WIDTH = 4.0 ", "WALL_WIDTH = 20.0 ")], why="a handed-out constant changed"),
@@ -307,10 +339,24 @@ SAYS = {
     "swept_normal_reversed": ("normal reversed",),
     "swept_whole_step_after": ("whole dt more",),
     "swept_resolve_before_move": ("resolved where the bullet starts the step",),
+    "swept_contact_at_centre": ("bullet's centre",),
+    "swept_move_then_resolve": ("moved the whole step, then resolved",),
+    "toi_b_without_two": ("without its factor 2",),
+    "toi_bound_fixed_step": ("only up to 1/120 s",),
     "wall_thickened": ("WALL_WIDTH = 20.0",),
     "world_not_hooked": ("swept_move",),
 }
 WRONG = with_says(WRONG, SAYS)
+
+# the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
+MISTAKE_IDS = {
+    "toi_twice": "toi_no_two", "toi_a_not_squared": "toi_a_unsquared", "toi_b_sign": "toi_b_sign",
+    "toi_later_root": "toi_later_root", "toi_b_without_two": "toi_b_no_two", "toi_bound_fixed_step": "toi_fixed_dt",
+    "swept_contact_far_side": "swept_far_side", "swept_stops_at_impact": "swept_stops",
+    "swept_old_velocity": "swept_old_velocity", "swept_whole_step_after": "swept_whole_step",
+    "swept_resolve_before_move": "swept_resolve_first", "swept_contact_at_centre": "swept_at_centre",
+    "swept_move_then_resolve": "swept_move_then_resolve",
+}
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

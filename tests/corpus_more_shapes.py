@@ -142,6 +142,12 @@ WRONG = [
     wrong("inertia_ignores_mass", "leaves out the mass: returns the inertia per unit mass", "inertia_sum", {4: INERTIA_SUMS + """
         return num / (6 * den)
     """}, why="right only for a mass of 1; the probe's masses run from 0.4 to 4.2"),
+    # issue 40: the mass argument ignored, recomputed from the area as build() does
+    wrong("inertia_mass_from_area", "ignores the mass argument and recomputes it from the area (area / 1000)",
+          "inertia_sum", {4: INERTIA_SUMS + """
+        mass = den / 2 / 1000
+        return mass * num / (6 * den)
+    """}, why="the probe's masses are near area / 1000 except the heavy 40 × 30 box (mass 9, area / 1000 = 1.2)"),
     wrong("inertia_dot_weight", "wrong operand: weighs each triangle by |a · b| instead of |a × b|", "inertia_sum", {4: """
         num = den = 0.0
         for i, a in enumerate(points):
@@ -352,36 +358,45 @@ CORRECT = [
 
 # the words each wrong entry's first message must contain: it names the mistake, not only the step (issue 33)
 SAYS = {
-    "corners_in_degrees": ("360k / sides taken as radians",),
+    "corners_in_degrees": ("in degrees",),
     "corners_one_too_many": ("4 corners",),
     "corners_sin_cos_swapped": ("x and y are swapped",),
     "corners_diameter": ("0.5 × radius",),
-    "corners_half_turn": ("π instead of 2π",),
-    "centroid_average_of_corners": ("average of the corners",),
-    "centroid_abs_area": ("lost its sign",),
-    "centroid_abs_cross": ("lost its sign",),
-    "centroid_missing_factor": ("2A instead of 6A",),
+    "corners_half_turn": ("half a turn",),
+    "centroid_average_of_corners": ("corners' average",),
+    "centroid_abs_area": ("sign flipped",),
+    "centroid_abs_cross": ("sign flipped",),
+    "centroid_missing_factor": ("divided by 2A, not 6A",),
     "centroid_no_closing_edge": ("last point back to the first",),
     "centroid_xy_swapped": ("x and y swapped",),
     "inertia_missing_six": ("not divided by 6",),
     "inertia_ignores_mass": ("mass factor is missing",),
+    "inertia_mass_from_area": ("mass argument is ignored",),
     "inertia_dot_weight": ("weighted by |a · b|",),
     "inertia_unweighted": ("not weighted by |a × b|",),
     "inertia_precedence": ("brackets",),
     "inertia_wrong_sign": ("a·b term is subtracted",),
     "inertia_returns_inverse": ("1 / I",),
-    "axes_dot_not_cross": ("perpendicular to a kept one",),
+    "axes_dot_not_cross": ("|axis · kept| is small",),
     "axes_same_way_only": ("the opposite way is parallel too",),
     "axes_cross_without_abs": ("has no abs()",),
     "axes_only_a": ("only A's edge normals",),
-    "axes_dot_threshold": ("1 - |a · b|",),
+    "axes_dot_threshold": ("1 - |axis · kept|",),
     "axes_last_kept_only": ("last kept axis only",),
-    "axes_not_unit": ("of length",),
+    "axes_not_unit": ("not a unit vector",),
     "outside_library_inertia": ("inertia=polygon_inertia(local, mass)",),
     "outside_sat_no_flip": ("best_axis) < 0",),
     "outside_parallel_tolerance": ("PARALLEL = 0.1",),
 }
 WRONG = with_says(WRONG, SAYS)
+
+# the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
+MISTAKE_IDS = {
+    "inertia_missing_six": "polygon_inertia_no_six", "inertia_ignores_mass": "polygon_inertia_no_mass",
+    "inertia_dot_weight": "polygon_inertia_dot_weight", "inertia_unweighted": "polygon_inertia_unweighted",
+    "inertia_precedence": "polygon_inertia_precedence", "inertia_wrong_sign": "polygon_inertia_minus_cross_term",
+    "inertia_returns_inverse": "polygon_inertia_inverse", "inertia_mass_from_area": "polygon_inertia_mass_from_area",
+}
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

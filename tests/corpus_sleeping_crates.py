@@ -110,6 +110,33 @@ WRONG = [
             return dt
         return 0.0
     """}, why="a calm crate 0.25 s into its timer goes back to one step's 0.0083 s: it never sleeps"),
+    # issue 40: per-step thresholds, a step fixed at 1/120 s, squared speeds
+    wrong("timer_thresholds_per_step", "scales the thresholds to one step (SLEEP_SPEED * dt)", "timer_rule", {2: """
+        if speed < SLEEP_SPEED * dt and abs(spin) < SLEEP_SPIN * dt:
+            return timer + dt
+        return 0.0
+    """}, why="a calm crate at 2 px/s is over 5/120 px/s: it never sleeps"),
+    wrong("timer_both_per_step", "compares speed * dt and |spin| * dt with the per-second thresholds", "timer_rule",
+          {2: """
+        if speed * dt < SLEEP_SPEED and abs(spin) * dt < SLEEP_SPIN:
+            return timer + dt
+        return 0.0
+    """}, why="a crate moving at 6 px/s moves 0.05 px per step: counted calm"),
+    wrong("timer_fixed_step", "adds 1/120 s instead of dt", "timer_rule", {2: """
+        if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
+            return timer + 1 / 120
+        return 0.0
+    """}, why="right at 120 Hz; the case stepped at 1/60 s shows it"),
+    wrong("timer_squared_speeds", "compares speed² and spin² with the thresholds", "timer_rule", {2: """
+        if speed * speed < SLEEP_SPEED and spin * spin < SLEEP_SPIN:
+            return timer + dt
+        return 0.0
+    """}, why="a crate spinning at 0.2 rad/s has spin² = 0.04 < 0.1: counted calm"),
+    wrong("timer_speed_squared", "compares vel.length_squared()-style speed² with SLEEP_SPEED", "timer_rule", {2: """
+        if speed ** 2 < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
+            return timer + dt
+        return 0.0
+    """}, why="a crate just under the threshold, 4.9 px/s, has speed² = 24 > 5: it never sleeps"),
     wrong("timer_returns_none", "sets a local timer but returns nothing", "timer_rule", {2: """
         if speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN:
             timer += dt
@@ -196,7 +223,12 @@ CORRECT = [
 
 # the words each wrong entry's first message must contain: it names the mistake, not only the step (issue 33)
 SAYS = {
-    "timer_never_resets": ("kept its value",),
+    "timer_never_resets": ("keeps its value",),
+    "timer_thresholds_per_step": ("scaled to one step",),
+    "timer_both_per_step": ("speed * dt and |spin| * dt",),
+    "timer_fixed_step": ("1/120 s per step, not dt",),
+    "timer_squared_speeds": ("speed² and spin²",),
+    "timer_speed_squared": ("speed² is compared",),
     "timer_counts_frames": ("adds 1",),
     "timer_signed_spin": ("abs(spin)",),
     "timer_or": ("`or`",),
@@ -217,6 +249,16 @@ SAYS = {
     "outside_no_sleep_effect": ('{"sleep"}',),
 }
 WRONG = with_says(WRONG, SAYS)
+
+# the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
+MISTAKE_IDS = {
+    "timer_never_resets": "timer_never_resets", "timer_counts_frames": "timer_counts_frames",
+    "timer_signed_spin": "timer_signed_spin", "timer_or": "timer_or", "timer_ignores_spin": "timer_ignores_spin",
+    "timer_speed_times_dt": "timer_speed_dt", "timer_spin_vs_sleep_speed": "timer_spin_vs_speed",
+    "timer_returns_dt": "timer_returns_dt", "timer_thresholds_per_step": "timer_thresholds_dt",
+    "timer_both_per_step": "timer_both_dt", "timer_fixed_step": "timer_fixed_step",
+    "timer_squared_speeds": "timer_squared", "timer_speed_squared": "timer_speed_squared",
+}
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

@@ -344,6 +344,12 @@ STEP5_WRONG = [
           {5: """
         jt = min(abs(jt), mu * j)
     """}, why="every slide: friction pushes along the slip instead of against it"),
+    # issue 40: the clamp written as an if that drops jt's sign where it binds (named with that condition)
+    wrong("friction_if_clamp_loses_sign", "`if abs(jt) > mu * j: jt = mu * j`: the clamp drops jt's sign",
+          "resolve_friction", {5: """
+        if abs(jt) > mu * j:
+            jt = mu * j
+    """}, why="jt <= 0 here: where the clamp binds friction pushes along the slip; where it does not, jt is right"),
 ]
 
 # ================================================================ step 6: the spin updates (apply_impulse_spin)
@@ -667,12 +673,13 @@ SAYS = {
     "friction_bound_normal_speed": ("closing speed |vn|",),
     "friction_bound_slip_speed": ("relative speed |rel|",),
     "friction_bound_k": ("mu × k",),
-    "friction_bound_mu": ("mu alone",),
+    "friction_bound_mu": ("±mu, not ±mu·j",),
     "friction_half_bound": ("mu·j / 2",),
     "friction_always_full": ("full mu·j",),
-    "friction_upper_only": ("clamp from above alone",),
+    "friction_upper_only": ("min(mu·j, jt) alone clamps nothing",),
     "friction_bound_signed_vn": ("closing speed with its sign",),
-    "friction_abs_loses_sign": ("sign flipped", "min(|jt|, mu·j)"),
+    "friction_abs_loses_sign": ("along the slip", "min(|jt|, mu·j)"),
+    "friction_if_clamp_loses_sign": ("where |jt| > mu·j", "loses jt's sign"),
     "spin_missing": ("spin update is missing",),
     "spin_swapped": ("changed the wrong way",),
     "spin_only_a": ("B's spin did not change",),
@@ -702,6 +709,21 @@ SAYS = {
 ENTRIES = with_says(ENTRIES, SAYS)
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 WRONG = [entry for entry in ENTRIES if entry.check != "pass"]
+
+# the mistake id each entry's failing check must carry (issue 40: --json's "mistake"); the friction ones are
+# Ball on the Ramp's (the same mistake, the same id and words: checker/causes.SHARED)
+MISTAKE_IDS = {
+    "sat_gap_continue": "sat_gap_continue", "sat_one_sided_overlap": "sat_one_sided", "sat_union_extent": "sat_union",
+    "sat_projects_pa_twice": "sat_a_twice", "sat_unnormalised_axes": "sat_unnormalised",
+    "sat_largest_overlap": "sat_largest", "sat_skips_closing_edge": "sat_closing_edge",
+    "normal_not_flipped": "normal_not_flipped", "normal_flip_reversed": "normal_reversed",
+    "normal_always_flipped": "normal_always_flipped", "normal_first_vertices": "normal_first_vertices",
+    "normal_negates_depth": "normal_depth_negated", "k_missing": "k_no_spin", "k_only_a": "k_no_b_spin",
+    "k_only_b": "k_no_a_spin", "friction_missing": "friction_unclamped", "friction_bound_mu": "friction_bound_mu",
+    "friction_always_full": "friction_always_full", "friction_abs_loses_sign": "friction_sign",
+    "friction_if_clamp_loses_sign": "friction_clamp_loses_sign", "spin_missing": "spin_missing",
+    "spin_assigned": "spin_assigned",
+}
 
 
 # ================================================================ building the files

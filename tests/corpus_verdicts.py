@@ -15,7 +15,9 @@ The rules, one test per entry (test_corpus_<lab>.py calls these):
   and runtime_lines passing; every other function check passes (those in
   NEEDS_STEPS_2_TO_4 may be skipped); the entry's `also` checks are free; the
   named check's message (the file's first message) contains every word of the
-  entry's `says` (issue 33: it names the mistake, not only its step). The
+  entry's `says` (issue 33: it names the mistake, not only its step), and the check carries the mistake id the
+  corpus's MISTAKE_IDS gives the entry, and the message is two short lines and the hint short (issue 40,
+  message_problem). The
   scenes need every function check, so they are not constrained for a wrong
   entry (a wrong file stops after its probe run).
 """
@@ -93,7 +95,7 @@ def assert_verdict(entry, checks, corpus):
     assert named["status"] in entry.status and named["step"] == entry.step, (
         f"{entry.name} ({entry.what}): expected {entry.check} {'/'.join(entry.status)} naming step {entry.step}; "
         f"got {named['status']} naming step {named['step']}: {named['message']}\nwhy: {entry.why}\n{show(checks)}")
-    assert_names_the_mistake(entry, named)
+    assert_first_message(entry, named, corpus)
     if entry.step is not None:
         assert named["hint"].startswith(f"[step {entry.step}: "), named["hint"]
     may_skip = tuple(getattr(corpus, "NEEDS_STEPS_2_TO_4", ()))
@@ -103,6 +105,42 @@ def assert_verdict(entry, checks, corpus):
         allowed = ("pass", "skip") if cid in may_skip else ("pass",)
         assert checks[cid]["status"] in allowed, (f"{entry.name} ({entry.what}) is a mistake for {entry.check}, but "
                                                   f"{cid} is {checks[cid]['status']}:\n{show(checks)}")
+
+
+def assert_first_message(entry, named, corpus):
+    """A wrong entry's failing check (its first message): it names the mistake (entry.says), is two short lines
+    with a short hint (message_problem), and carries the mistake id corpus.MISTAKE_IDS gives the entry."""
+    assert_names_the_mistake(entry, named)
+    assert_short(named, entry.name)
+    expected = getattr(corpus, "MISTAKE_IDS", {}).get(entry.name)
+    if expected is not None:
+        assert (named.get("mistake") or {}).get("id") == expected, (
+            f"{entry.name} ({entry.what}): its check must carry the mistake {expected!r}; it carries "
+            f"{named.get('mistake')!r}: {named['message']}")
+
+
+FIRST_LINE, EVIDENCE_LINE, HINT = 160, 200, 250   # characters (issue 40): a message is two short lines
+
+
+def message_problem(check):
+    """Why a failing check's message or hint is too long, or "": at most two lines, the first (what is wrong)
+    <= FIRST_LINE characters, the second (the evidence) <= EVIDENCE_LINE, the hint as shown <= HINT."""
+    lines = check["message"].split("\n")
+    if len(lines) > 2:
+        return f"{len(lines)} lines (two at most)"
+    if len(lines[0]) > FIRST_LINE:
+        return f"its first line has {len(lines[0])} characters (at most {FIRST_LINE}): {lines[0]}"
+    if len(lines) == 2 and len(lines[1]) > EVIDENCE_LINE:
+        return f"its second line has {len(lines[1])} characters (at most {EVIDENCE_LINE}): {lines[1]}"
+    if len(check["hint"]) > HINT:
+        return f"its hint has {len(check['hint'])} characters (at most {HINT}): {check['hint']}"
+    return ""
+
+
+def assert_short(check, name):
+    """The failing check's message is two short lines and its hint short (message_problem)."""
+    problem = message_problem(check)
+    assert not problem, f"{name}: the message of {check['id']} is too long: {problem}"
 
 
 def assert_says_words(entry):

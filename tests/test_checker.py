@@ -125,7 +125,7 @@ def test_every_schema_field_is_present(graded):
     for lab in doc["labs"]:
         assert {"path", "lab", "title", "status", "score", "max_score", "seconds", "criteria"} <= set(lab)
         for c in lab["criteria"]:
-            assert set(c) == {"id", "name", "status", "message", "hint", "step", "score", "max_score"}
+            assert set(c) == {"id", "name", "status", "message", "hint", "step", "score", "max_score", "mistake"}
             assert c["status"] in ("pass", "fail", "skip", "error")
             assert c["score"] == (c["max_score"] if c["status"] == "pass" else 0)
             assert bool(c["hint"]) == (c["status"] in ("fail", "error")) or c["id"] == "runs"
@@ -170,20 +170,21 @@ def test_csv_has_one_row_per_file(graded):
 
 # ---------------------------------------------------------------- one mutant per Hint diagnosis
 
-# mutant -> (check that must fail, lesson step named, words the hint must contain, checks that must pass)
+# mutant -> (check that must fail, lesson step named, words the hint must contain, checks that must pass); the
+# hint names the step's one idea, the symptom is the lesson's table's (issue 40)
 EXPECTED = {
-    "mutant_sat_never_overlaps": ("sat_axes", 2, "fall through", ["loads", "handout_unchanged", "resolve_k",
+    "mutant_sat_never_overlaps": ("sat_axes", 2, "None only when one axis shows a gap", ["loads", "handout_unchanged", "resolve_k",
                                                                    "resolve_friction", "apply_impulse_spin"]),
     "mutant_normal_not_flipped": ("sat_normal", 3, "from A to B", ["sat_axes", "resolve_k", "apply_impulse_spin"]),
     "mutant_spin_terms_missing": ("resolve_k", 4, "spin terms", ["sat_normal", "resolve_friction",
                                                                 "apply_impulse_spin"]),
-    "mutant_friction_unclamped": ("resolve_friction", 5, "isn't clamped", ["sat_normal", "resolve_k",
+    "mutant_friction_unclamped": ("resolve_friction", 5, "keep jt within [-μ j, μ j]", ["sat_normal", "resolve_k",
                                                                          "apply_impulse_spin"]),
-    "mutant_friction_flipped": ("resolve_friction", 5, "the friction impulse has the wrong sign",
+    "mutant_friction_flipped": ("resolve_friction", 5, "friction opposes the slip",
                                 ["sat_normal", "resolve_k", "apply_impulse_spin"]),
-    "mutant_spin_missing": ("apply_impulse_spin", 6, "freeze on their corners", ["sat_normal", "resolve_k",
+    "mutant_spin_missing": ("apply_impulse_spin", 6, "each body's spin changes by r × P", ["sat_normal", "resolve_k",
                                                                        "resolve_friction"]),
-    "mutant_spin_swapped": ("apply_impulse_spin", 6, "swapped signs", ["sat_normal", "resolve_k",
+    "mutant_spin_swapped": ("apply_impulse_spin", 6, "A's spin uses -=, B's +=", ["sat_normal", "resolve_k",
                                                                        "resolve_friction"]),
 }
 
@@ -235,7 +236,7 @@ def test_starter_fails_with_the_step_2_message(graded):
     # the handout's placeholder is named with its line
     line = next(i for i, text in enumerate(open(STARTER, encoding="utf-8").read().splitlines(), 1)
                 if text.strip().startswith("return None  # until you write step 2"))
-    assert f"Line {line} of tumbling_crates_starter.py is the handout's placeholder" in lab["sat_axes"]["message"]
+    assert f"line {line} of tumbling_crates_starter.py is the handout's placeholder" in lab["sat_axes"]["message"]
     assert lab["_lab"]["score"] == 3
 
 

@@ -354,7 +354,7 @@ def test_the_shared_checks_name_a_missing_function_with_the_labs_own_words():
     probe = SimpleNamespace(status="done", result={"probe": {"missing": ["main"], "functions": {}}})
     results = registry.run(SimpleNamespace(probe=probe, name="lab.py")).ordered(registry)
     assert [r.status for r in results] == [ERROR, SKIP, SKIP]
-    assert results[0].message == "lab.py defines no function main() (missing: main)."
+    assert results[0].message == "lab.py defines no function main().\nmissing: main."   # two lines (issue 40)
     assert results[0].hint == ("[lesson: the handout's functions] Keep the handout's names: Wall and main; the "
                                "checker calls them.")
     single = Registry()

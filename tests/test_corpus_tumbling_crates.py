@@ -142,7 +142,7 @@ def test_the_checker_gives_each_entry_its_verdict(entry, graded):
     assert named["status"] in entry.status and named["step"] == entry.step, (
         f"{entry.name} ({entry.what}): expected {entry.check} {'/'.join(entry.status)} naming step {entry.step}; "
         f"got {named['status']} naming step {named['step']}: {named['message']}\nwhy: {entry.why}\n{_show(checks)}")
-    verdicts.assert_names_the_mistake(entry, named)   # the first message names the mistake (issue 33)
+    verdicts.assert_first_message(entry, named, corpus)   # names the mistake (issue 33), two short lines (40)
 
     crash = "error" in entry.status
     for cid in NON_FUNCTION + corpus.FUNCTION_CHECKS:

@@ -235,7 +235,7 @@ def test_a_cosine_parallel_test_fails_and_is_named(tmp_path):
         ("        if all(abs(cross(axis, kept)) > PARALLEL for kept in axes):\n",
          "        if all(1 - abs(axis.dot(kept)) > PARALLEL for kept in axes):\n")])
     status, message = _statuses("more_shapes", path, tmp_path)["parallel_axes"]
-    assert status == FAIL and "1 - |a · b| <= PARALLEL" in message and "0.01°" in message, message
+    assert status == FAIL and "1 - |axis · kept| <= PARALLEL" in message and "0.01°" in message, message
 
 
 def test_a_contact_point_halfway_into_the_overlap_fails_and_is_named(tmp_path):

@@ -5,8 +5,8 @@ returns a wrong-kind value (a tuple where a Vector2 belongs, a Vector2 where a n
 3-tuple, NaN, a bool, an int too big for a float, a dict, ...) or, for a function that changes its arguments,
 leaves a body's field of the wrong kind. The other steps hold the solution's code. Each lab's files are graded in
 ONE run of `python -m checker --json`, as a teacher runs it, and every file must get: a graded row (no "not
-graded" / internal error), the function's check failing or erroring, and that check's message one line that
-does not blame the checker. Before these tests such values raised inside the checks' own arithmetic (TypeError,
+graded" / internal error), the function's check failing or erroring, and that check's message two short lines
+(issue 40: tests/corpus_verdicts.message_problem) that do not blame the checker. Before these tests such values raised inside the checks' own arithmetic (TypeError,
 OverflowError) and the file got "this is a bug in the checker".
 
 The plausible mistakes among these are in the lab corpora too (tests/corpus_<lab>.py, with their SAYS words).
@@ -175,8 +175,10 @@ def test_a_wrong_kind_is_the_files_failure_never_the_checkers(graded):
             problems.append(f"{what}: its step's checks " + "; ".join(f"{c['id']} {c['status']}" for c in mine))
         for check in checks.values():
             message = check.get("message") or ""
-            if "bug in the checker" in message or "\n" in message.strip() or len(message) > 600:
+            if "bug in the checker" in message or message.strip().count("\n") > 1 or len(message) > 600:
                 problems.append(f"{what}: {check['id']}: {message[:300]!r}")
+            elif check["status"] in ("fail", "error") and verdicts.message_problem(check):
+                problems.append(f"{what}: {check['id']}: {verdicts.message_problem(check)}")
     assert not problems, "\n".join(problems)
 
 

@@ -270,6 +270,8 @@ def gradescope_test(check, hidden):
     test = {"name": f"{check['id']}: {check['name']}", "score": check["score"], "max_score": check["max_score"],
             "status": "passed" if check["status"] == "pass" else "failed", "output": check_output(check),
             "visibility": "hidden" if check["id"] in hidden else "visible"}
+    if isinstance(check.get("mistake"), dict):   # the named mistake, for the instructor's exports (not shown)
+        test["extra_data"] = {"mistake": check["mistake"]}
     images = check.get("images") or []
     if images and test["status"] == "failed":
         test["output_format"] = "html"
@@ -309,7 +311,8 @@ def prairielearn_results(row, note, max_score, config):
                 "tests": [{"name": "Submission graded", "points": 0.0, "max_points": max_score,
                            "output": reason, "message": reason}]}
     tests = [{"name": f"{c['id']}: {c['name']}", "points": c["score"], "max_points": c["max_score"],
-              "message": c["status"], "output": "\n".join(p for p in (check_output(c), left_out_note(c)) if p)}
+              "message": c["status"], "output": "\n".join(p for p in (check_output(c), left_out_note(c)) if p),
+              **({"mistake": c["mistake"]} if isinstance(c.get("mistake"), dict) else {})}
              for c in row["criteria"] if c["id"] not in hidden]
     total = row["max_score"] or 1.0
     return {"gradable": True, "score": round(row["score"] / total, 6), "message": summary(row, note, hidden),

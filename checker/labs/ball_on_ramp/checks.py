@@ -23,7 +23,7 @@ import math
 
 from . import scenes
 from ... import lab_checks
-from ...causes import arguments_hint, consistent_mistake
+from ...causes import arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from ...checks import Fail, Hint, Passed, Registry
 from ...common import shown
 from lesson11.records import finite
@@ -57,64 +57,48 @@ INSIDE_DEPTH = 1.0     # px of overlap left after 0.5 s; solution: 0.41 (the pus
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
     "clamp": Hint(2, "clamp t to the segment",
-                  "The closest point of an EDGE is not the closest point of its infinite line: compute "
-                  "t = (p - a)·ab / (ab·ab), then keep t within [0, 1] before you build the point a + ab t. "
-                  "Without the clamp a ball near a corner touches the edge's line far beyond the polygon: a ball "
-                  "rolling off the ramp's end stops in mid-air there."),
+                  "A ball against a polygon: the closest point of an EDGE, not of its line: t = (p - a)·ab / (ab·ab), "
+                  "kept within [0, 1] before the point a + ab t."),
     "closest": Hint(2, "the closest point on one edge",
-                    "Project p onto the edge: t = (p - a)·ab / (ab·ab) (divide by the squared length, so t runs "
-                    "from 0 at a to 1 at b), clamp t to [0, 1]; the point is a + ab t."),
+                    "A ball against a polygon: t = (p - a)·ab / (ab·ab) runs from 0 at a to 1 at b; clamp it to "
+                    "[0, 1]; the point is a + ab t."),
     "inside": Hint(3, "the center inside: push out the other way",
-                   "When the ball's center is already inside the polygon, the nearest edge is its way out, and "
-                   "the normal (from the ball into the polygon) must point away from that edge: return "
-                   "-offset / dist (flipped) and the depth radius + dist. Unflipped, the push drives the ball "
-                   "further in, and a ball started inside a crate stays inside the crate."),
+                   "A ball against a polygon: a ball's center inside leaves by the nearest edge: normal "
+                   "-offset / dist (flipped), depth radius + dist."),
     "split": Hint(4, "split the push-out by inverse mass",
-                  "The push is shared by inverse mass: each body's share is its own 1/m over the total "
-                  "1/m_A + 1/m_B, A moving back along the normal and B forward, so the shares add up to the "
-                  "push. A static floor (1/m = 0) never moves, and a light ball moves more than a heavy crate; "
-                  "with the shares swapped the heavy crate is shoved and the light ball hardly moves."),
+                  "Lesson §5, the push-out: each body's share is its 1/m over 1/m_A + 1/m_B, A back along the "
+                  "normal, B forward; a static body (1/m = 0) never moves."),
     "inertia": Hint(5, "a solid disc's moment of inertia",
-                    "A solid disc (the ball) has I = ½ m r², half of a ring's m r²: mass near the center is easy "
-                    "to spin. The wrong I changes how fast the ball rolls down the ramp (a = g sin θ / (1 + I / m r²)): "
-                    "with a ring's m r² it rolls a quarter slower."),
+                    "Lesson §4: a solid disc has I = ½ m r², half a ring's m r²: mass near the center is easy to "
+                    "spin."),
     "contact": Hint(6, "the contact point on the ball's surface",
-                    "A contact pushes on the ball where it touches: on its surface, center + normal * radius (the "
-                    "normal points out of the ball). At the center, friction has no lever arm: the ball never "
-                    "turns, and friction holds it where it lands; on the far side it spins the wrong way."),
+                    "Lesson §3: the contact is on the ball's surface, center + normal * radius (the normal points "
+                    "out of the ball), where friction has a lever arm."),
     "friction_missing": Hint(7, "friction makes it roll",
-                             "Without a friction impulse the ball slides down the ramp like an ice cube. Find kt "
-                             "along the tangent (with both spin terms), the impulse -(rel · t) / kt that would stop "
-                             "the slip, clamp it to [-μ j, μ j], and apply it along the tangent at the contact, with "
-                             "the same lever arms as the normal impulse."),
+                             "Lesson §5: one friction impulse t * jt at the contact, jt = -rel·t / kt, kt with both "
+                             "spin terms, clamped to [-mu j, mu j]."),
     "friction_sign": Hint(7, "the sign of the friction impulse",
-                          "Friction opposes the slip: jt = -rel·t / kt, and the clamp keeps its sign. With the sign "
-                          "flipped the ball spins up the wrong way and speeds up its slide."),
+                          "Lesson §5: friction opposes the slip, jt = -rel·t / kt, and the clamp keeps that sign."),
     "friction_clamp": Hint(7, "Coulomb's clamp on friction",
-                           "Friction may never be bigger than mu times the normal impulse j: keep jt between "
-                           "-mu * j and mu * j (and leave it alone inside that range). On a frictionless ramp "
-                           "(mu = 0) it is then 0, and the ball slides without turning."),
+                           "Lesson §5: keep jt within [-mu j, mu j], j the normal impulse; leave a smaller jt, and "
+                           "its sign, alone."),
     "friction_kt": Hint(7, "the spin terms of kt",
-                        "kt, the effective mass along t, has the same spin terms as k: (ra × t)² / I_A + "
-                        "(rb × t)² / I_B. Without them friction stops the slip three times too hard for a ball "
-                        "and the contact point overshoots back and forth."),
+                        "Lesson §5: kt is k along t: 1/m_A + 1/m_B + (ra × t)²/I_A + (rb × t)²/I_B, both spin terms."),
+    "friction_slip": Hint(7, "the slip along the tangent",
+                          "Lesson §5: friction stops the slip, the part of rel along t: jt = -rel·t / kt, not the "
+                          "whole relative speed."),
     "friction_centre": Hint(7, "friction acts at the contact point",
-                            "Apply the friction impulse at the contact, with the same lever arms ra and rb as the "
-                            "normal impulse. At the centres (zero lever arms) it cannot turn the ball, so it never "
-                            "rolls."),
-    "handout": Hint(None, "keep the handed-out code",
-                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
-                    "everything else (the constants, the scene, make_ball, build, the World and its hooks, the "
-                    "`# lab runtime` lines) stays as handed out, so the checker measures the lab the lesson "
-                    "describes. Start again from the starter if you are unsure what changed."),
-    "runtime": Hint(None, "the lines marked # lab runtime",
-                    "Keep the lines marked `# lab runtime` from the handout (lab.seed, lab.scene, lab.frame_budget, "
-                    "lab.tick, lab.events, lab.record): they do nothing when you run the file yourself, and the "
-                    "checker needs them to run it headless."),
+                            "Lesson §5: apply t * jt at the contact, with the normal impulse's lever arms ra and rb, "
+                            "to a then b."),
+    "friction_order": Hint(7, "the order of apply_impulse's arguments",
+                           "Lesson §5: apply_impulse(a, b, impulse, ra, rb) takes A first with its lever arm ra: "
+                           "the same order as the normal impulse."),
+    "handout": lab_checks.handout_hint("the constants, the scene, make_ball, build, the World, the `# lab "
+                                       "runtime` lines"),
+    "runtime": lab_checks.RUNTIME_HINT,
     "settle": Hint(8, "watch it roll",
-                   "The function checks above all pass, yet the ball does not behave as the lesson says. Press D "
-                   "and watch the contact points and normals while it rolls; compare your file with the handout "
-                   "around the steps."),
+                   "The function checks pass, yet the ball misbehaves: press D and watch the contacts while it "
+                   "rolls; compare your file with the handout around the steps."),
     "crash": Hint(1, "run the file",
                   "Run the file yourself (python ball_on_ramp.py) and fix the error at the line shown."),
 }
@@ -165,7 +149,7 @@ CLOSEST_MISTAKES = {
     "line": ("your point lies on the edge's line beyond the edge: t is not clamped to [0, 1]", "clamp"),
     "unsquared": ("t is divided by |ab|, not by ab·ab = |ab|²", "closest"),
     "undivided": ("t = (p - a)·ab is not divided by ab·ab = |ab|²", "closest"),
-    "from_b": ("t is measured from b, (p - b)·ab, where the lesson measures from a, (p - a)·ab", "closest"),
+    "from_b": ("t is measured from b, (p - b)·ab; the lesson measures from a, (p - a)·ab", "closest"),
 }
 
 
@@ -177,33 +161,34 @@ def closest_point(sub, functions):
         got, want = case["got"], case["want"]
         where = f"for {case['case']} (p = {_vec(case['p'])}, edge {_vec(case['a'])} to {_vec(case['b'])})"
         for name, now in (case.get("changed") or {}).items():
-            raise Fail(f"{where}, closest_on_segment() changed its argument {name} from {_vec(case[name])} to "
-                       f"{_vec(now)}. It must leave p, a and b as they are and return a new point (a + ab t): "
-                       "`a += ...` moves the caller's own corner, so circle_polygon()'s later edges and inside() "
-                       "see a different polygon.", HINTS["closest"])
+            raise Fail(f"closest_on_segment() changed its argument {name} in place: return a new point, a + ab t.\n"
+                       f"{where}, {name} went from {_vec(case[name])} to {_vec(now)}.", HINTS["closest"])
         if _same_point(got, want):
             continue
         if _bad(got) and "number" in got:
-            t_too = " (that is t: return the point a + ab t)" if _close(got["number"], case["t"]) else ""
-            raise Fail(f"{where}, closest_on_segment() returned the number {got['number']:.4g}{t_too}; expected "
-                       f"the point {_vec(want)}.", HINTS["closest"])
+            t_too = ": that is t; return the point a + ab t" if _close(got["number"], case["t"]) else ""
+            raise Fail(f"closest_on_segment() returned the number {got['number']:.4g}{t_too}.\n{where}, expected "
+                       f"the point {_vec(want)}.", HINTS["closest"],
+                       mistake("closest_returns_t", "closest_on_segment() returns t, not the point a + ab t")
+                       if t_too else None)
         if _bad(got):
             placeholder = " (the handout's placeholder: write step 2)" if "inf" in got["bad"] else ""
-            raise Fail(f"{where}, closest_on_segment() returned {got['bad']}{placeholder}; expected the point "
+            raise Fail(f"closest_on_segment() returned {got['bad']}{placeholder}.\n{where}, expected the point "
                        f"{_vec(want)}.", HINTS["closest"])
         named = consistent_mistake(cases, lambda c, name: _same_point(c["got"], c["mistakes"][name]),
                                    [name for name in CLOSEST_MISTAKES if not _same_point(case["mistakes"][name], want)])
-        text, hint = CLOSEST_MISTAKES.get(named, ("", "closest"))
-        raise Fail(f"{where}, your point is {_vec(got)}; expected {_vec(want)}" + (f": {text}." if text else "."),
-                   HINTS[hint])
+        text, hint = CLOSEST_MISTAKES.get(named, ("closest_on_segment() does not give the edge's nearest point",
+                                                  "closest"))
+        raise Fail(f"{text}.\n{where}, yours is {_vec(got)}; expected {_vec(want)}.", HINTS[hint],
+                   mistake(f"closest_{named}", text) if named else None)
     outside = _function(sub, functions, "circle_outside", "circle_polygon", 2)
     for case in outside:
         got, want = case["got"], case["want"]
         if _hit_matches(got, want):
             continue
-        raise Fail(f"for {case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}), circle_polygon() "
-                   f"with your closest_on_segment() returned {_show_hit(got)}; expected {_show_hit(want)}.",
-                   HINTS["closest"])
+        raise Fail(f"circle_polygon() with your closest_on_segment() misses a ball outside the polygon.\nfor "
+                   f"{case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}): {_show_hit(got)}; "
+                   f"expected {_show_hit(want)}.", HINTS["closest"])
     return Passed(f"the closest point matches the lesson in all {len(cases)} edges and {len(outside)} circles "
                   "outside a polygon", value=cases)
 
@@ -233,29 +218,33 @@ def inside_case(sub, functions):
         got, want = case["got"], case["want"]
         if _hit_matches(got, want):
             continue
-        where = f"for {case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}, {case['dist']:.2f} px " \
-                "from the nearest edge)"
+        where = f"for {case['case']} (center {_vec(case['center'])}, {case['dist']:.2f} px in from the edge)"
         if got is None:
-            raise Fail(f"{where}, circle_polygon() returned None (apart); expected {_show_hit(want)}: a center "
-                       "inside the polygon is the deepest overlap of all.", HINTS["inside"])
+            raise Fail(f"circle_polygon() says apart for a center inside the polygon, the deepest overlap of all.\n"
+                       f"{where}: None; expected {_show_hit(want)}.", HINTS["inside"])
         if _bad(got):
-            raise Fail(f"{where}, circle_polygon() returned {got['bad']}; expected (normal, depth).", HINTS["inside"])
+            raise Fail(f"circle_polygon() must return (normal, depth) or None.\n{where}: {got['bad']}.",
+                       HINTS["inside"])
         flipped = _same_point(got["normal"], case["toward"])
         deep = _close(got["depth"], want["depth"])
         if flipped and deep:
-            raise Fail(f"{where}, your normal {_vec(got['normal'])} points from the center towards the nearest edge; "
-                       f"it must point the other way, {_vec(want['normal'])}, or the push drives the ball on through "
-                       "the polygon.", HINTS["inside"])
+            text = "your normal points from the center towards the nearest edge: flip it, or the push drives " \
+                   "the ball through"
+            raise Fail(f"{text}.\n{where}: normal {_vec(got['normal'])}; expected {_vec(want['normal'])}.",
+                       HINTS["inside"], mistake("inside_not_flipped", text))
         if flipped and _close(got["depth"], case["radius"] - case["dist"]):
-            raise Fail(f"{where}, circle_polygon() returned {_show_hit(got)}, the outside case's answer (normal towards "
-                       f"the nearest edge, depth radius - dist); expected {_show_hit(want)}: there is no inside case.",
-                       HINTS["inside"])
+            text = "there is no inside case: a center inside gets the outside answer (normal towards the edge, " \
+                   "depth radius - dist)"
+            raise Fail(f"{text}.\n{where}: {_show_hit(got)}; expected {_show_hit(want)}.", HINTS["inside"],
+                       mistake("inside_missing", text))
         if _same_point(got["normal"], want["normal"]):
             shallow = _close(got["depth"], case["radius"] - case["dist"])
-            raise Fail(f"{where}, the normal is right but the depth is {got['depth']:.3f} px; expected "
-                       f"radius + dist = {want['depth']:.3f} px" + (" (you used radius - dist, the outside case's)"
-                                                                  if shallow else "") + ".", HINTS["inside"])
-        raise Fail(f"{where}, circle_polygon() returned {_show_hit(got)}; expected {_show_hit(want)}.", HINTS["inside"])
+            text = "the depth is radius - dist, the outside case's; inside it is radius + dist" if shallow else \
+                "the normal is right but not the depth: inside it is radius + dist"
+            raise Fail(f"{text}.\n{where}: depth {got['depth']:.3f} px; expected {want['depth']:.3f} px.",
+                       HINTS["inside"], mistake("inside_shallow_depth", text) if shallow else None)
+        raise Fail(f"circle_polygon() does not push a center inside out of the nearest side.\n{where}: "
+                   f"{_show_hit(got)}; expected {_show_hit(want)}.", HINTS["inside"])
     return Passed(f"the inside case matches the lesson in all {len(cases)} circles", value=cases)
 
 
@@ -267,46 +256,49 @@ def push_out_split(sub, functions):
     cases = _function(sub, functions, "separate", "separate", 4)
     for case in cases:
         if case.get("normal_after") is not None:
-            raise Fail(f"in '{case['case']}', separate() changed its argument normal from {_vec(case['normal'])} to "
-                       f"{_vec(case['normal_after'])}. Scale a new vector (normal * share) instead of the caller's "
-                       "normal (normal *= ...): the World goes on using that normal for the contact's impulses.",
-                       HINTS["split"])
+            text = "separate() changed its argument normal in place: scale a new vector, normal * share"
+            raise Fail(f"{text}.\nin '{case['case']}', the normal went from {_vec(case['normal'])} to "
+                       f"{_vec(case['normal_after'])}; the World goes on using it.", HINTS["split"],
+                       mistake("argument_changed"))
         for body in ("a", "b"):
             got, want, before = case["after"][body], case["want"][body], case["before"][body]
             if _same_point(got, want):
                 continue
             letter = body.upper()
-            where = f"in '{case['case']}' (push {case['push']:.3f} px, inverse masses {case['inv']['a']:.3g} and " \
+            where = f"in '{case['case']}' (push {case['push']:.3f} px, 1/m {case['inv']['a']:.3g} and " \
                     f"{case['inv']['b']:.3g})"
             if _bad(got):
-                raise Fail(f"{where}, {letter}'s position became {got['bad']}.", HINTS["split"])
+                raise Fail(f"separate() left {letter}'s position {got['bad']}.\n{where}.", HINTS["split"])
             moved = math.dist(got, before)
             should = math.dist(want, before)
-            text = f"{where}, {letter} moved {moved:.3f} px; expected {should:.3f} px"
+            evidence = f"{where}, {letter} moved {moved:.3f} px; expected {should:.3f} px."
+            other = "b" if body == "a" else "a"
+            total = case["inv"]["a"] + case["inv"]["b"]
             if case["inv"][body] == 0 and moved > 0:
-                text += f": {letter} is static (inverse mass 0) and must never move"
+                name, text = "static_moved", f"{letter} is static (1/m = 0) and must never move"
             elif _close(moved, case["push"]) and not _close(should, case["push"]):
-                text += ": each body got the whole push instead of its share by inverse mass"
+                name, text = "push_not_split", "each body got the whole push instead of its share by inverse mass"
             elif _close(moved, case["push"] / 2) and not _close(should, case["push"] / 2):
-                text += ": the push was halved, not split by inverse mass"
+                name, text = "push_halved", "the push was halved, not split by inverse mass"
+            elif total and _close(moved, case["push"] * case["inv"][other] / total):
+                name, text = "push_shares_swapped", "the shares are swapped: each body got the other's"
+            elif total and not _close(total, 1.0) and _close(moved, case["push"] * case["inv"][body]):
+                name, text = "push_missing_total", ("each share is push × 1/m without dividing by the total "
+                                                    f"1/m_A + 1/m_B = {total:.3g}")
+            elif should and _close(moved, should):
+                name, text = "push_wrong_way", "the right distance but the wrong way: A moves back along the " \
+                                               "normal, B forward"
             else:
-                other = "b" if body == "a" else "a"
-                total = case["inv"]["a"] + case["inv"]["b"]
-                if total and _close(moved, case["push"] * case["inv"][other] / total):
-                    text += f": {letter} got {other.upper()}'s share (the shares are swapped)"
-                elif total and not _close(total, 1.0) and _close(moved, case["push"] * case["inv"][body]):
-                    text += (f": that is push × 1/m without dividing by the total 1/mA + 1/mB = {total:.3g}, "
-                             "so the two shares do not add up to the push")
-                elif should and _close(moved, should):
-                    text += ": the right distance but the wrong way (A moves back along the normal, B forward)"
-            raise Fail(text + ".", HINTS["split"])
+                name, text = None, "separate() does not split the push by inverse mass"
+            raise Fail(f"{text}.\n{evidence}", HINTS["split"], mistake(name, text) if name else None)
     return Passed(f"the push-out is split by inverse mass in all {len(cases)} cases", value=cases)
 
 
 # ---------------------------------------------------------------- step 5: the ball's inertia
 
-INERTIA_MISTAKES = {1.0: "m r², a thin ring's (all the mass at the rim)", 0.4: "2/5 m r², a solid sphere's",
-                    1 / 12: "m r² / 12, a thin rod's", 0.25: "m r² / 4"}
+INERTIA_MISTAKES = {1.0: ("disc_ring", "m r², a thin ring's (all the mass at the rim)"),
+                    0.4: ("disc_sphere", "2/5 m r², a solid sphere's"),
+                    1 / 12: ("disc_rod", "m r² / 12, a thin rod's"), 0.25: ("disc_quarter", "m r² / 4")}
 
 
 @CHECKS.check(depends=["loads"])
@@ -319,16 +311,17 @@ def ball_inertia(sub, functions):
             continue
         where = f"for mass {case['mass']:.4g} and radius {case['radius']:g} px"
         if _bad(got):
-            raise Fail(f"{where}, disc_inertia() returned {got['bad']}; expected the number {want:.4g}.",
-                       HINTS["inertia"])
+            raise Fail(f"disc_inertia() must return a number.\n{where}, it returned {got['bad']}; expected "
+                       f"the number {want:.4g}.", HINTS["inertia"])
         factor = got / (case["mass"] * case["radius"] ** 2) if case["mass"] and case["radius"] else math.nan
-        named = next((text for f, text in INERTIA_MISTAKES.items() if _close(factor, f)), None)
+        named = next(((key, text) for f, (key, text) in INERTIA_MISTAKES.items() if _close(factor, f)), None)
         if named is None and _close(got, 0.5 * case["mass"] * case["radius"]):
-            named = "½ m r: the radius is not squared"
+            named = ("disc_radius_unsquared", "½ m r: the radius is not squared")
         if named is None and not _close(case["mass"], 1.0) and _close(got, 0.5 * case["radius"] ** 2):
-            named = "½ r²: the mass is left out"
-        raise Fail(f"{where}, disc_inertia() returned {got:.4g}; expected ½ m r² = {want:.4g}"
-                   + (f" (yours is {named})" if named else "") + ".", HINTS["inertia"])
+            named = ("disc_no_mass", "½ r²: the mass is left out")
+        first = f"yours is {named[1]}; a solid disc has ½ m r²" if named else "disc_inertia() is not ½ m r²"
+        raise Fail(f"{first}.\n{where}, yours gives {got:.4g}; ½ m r² = {want:.4g}.", HINTS["inertia"],
+                   mistake(named[0], first) if named else None)
     return Passed(f"I = ½ m r² in all {len(cases)} cases", value=cases)
 
 
@@ -345,43 +338,56 @@ def contact_on_surface(sub, functions):
         where = f"for {case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}, normal " \
                 f"{_vec(case['normal'])}, depth {case['depth']:g})"
         if _bad(got):
-            raise Fail(f"{where}, contact_point() returned {got['bad']}; expected the point {_vec(want)}.",
-                       HINTS["contact"])
+            raise Fail(f"contact_point() must return a point.\n{where}, it returned {got['bad']}; expected "
+                       f"{_vec(want)}.", HINTS["contact"])
         centre, radius = case["center"], case["radius"]
         normal = case["normal"]
         if _same_point(got, case["halfway"]):
-            what = (": that is halfway into the overlap, center + normal * (radius - depth / 2), "
-                    f"{case['depth'] / 2:g} px inside the ball; the step asks for the point on the ball's surface")
+            name, text = "contact_halfway", ("your point is halfway into the overlap, radius - depth / 2 from the "
+                                             "center; the step asks for the ball's surface")
         elif _same_point(got, centre):
-            what = ": that is the ball's center, where friction cannot turn it"
+            name, text = "contact_at_centre", "your point is the ball's center, where friction cannot turn it"
         elif _same_point(got, [centre[0] - normal[0] * radius, centre[1] - normal[1] * radius]):
-            what = ": that is the far side of the ball (the normal points out of the ball, into the other body)"
+            name, text = "contact_far_side", ("your point is on the far side of the ball: the normal points out of "
+                                              "the ball, into the other body")
         elif _same_point(got, [centre[0] + normal[0] * case["depth"], centre[1] + normal[1] * case["depth"]]):
-            what = ": that is center + normal * depth; the surface is radius px from the center"
+            name, text = "contact_depth", "your point is center + normal * depth; the surface is radius px out"
         else:
-            what = ""
-        raise Fail(f"{where}, contact_point() returned {_vec(got)}; expected center + normal * radius = "
-                   f"{_vec(want)}{what}.", HINTS["contact"])
+            name, text = None, "contact_point() is not on the ball's surface, center + normal * radius"
+        raise Fail(f"{text}.\n{where}: yours {_vec(got)}; expected {_vec(want)}.", HINTS["contact"],
+                   mistake(name, text) if name else None)
     return Passed(f"the contact point is on the ball's surface in all {len(cases)} cases", value=cases)
 
 
 # ---------------------------------------------------------------- step 7: friction
 
+# step 7's known wrong forms, by the name the probe gives their outcomes (probes.FRICTION_VARIANTS): the mistake
+# (its id, and its sentence: causes.SHARED where Tumbling Crates names the same one) and the hint
 FRICTION_TEXT = {
-    "none": ("resolve() applied no friction: the ball would slide like an ice cube", "friction_missing"),
-    "sign": ("the friction impulse pushes along the slip instead of against it", "friction_sign"),
-    "unclamped": ("the friction impulse is not clamped to mu·j", "friction_clamp"),
-    "always_full": ("friction always takes its full mu·j, even where a smaller impulse stops the slip",
-                    "friction_clamp"),
-    "no_spin_kt": ("kt lacks the spin terms (ra × t)²/I_A + (rb × t)²/I_B", "friction_kt"),
-    "kt_is_k": ("kt = k: the normal's effective mass, with (ra × n)² and (rb × n)², where kt needs (ra × t)²/I_A "
-                "+ (rb × t)²/I_B", "friction_kt"),
-    "at_centre": ("the friction impulse changes no spin (applied at the centres, with zero lever arms, or the "
-                  "velocities changed without the spins), so it cannot turn the ball", "friction_centre"),
-    "bodies_swapped": ("the friction impulse is applied with the bodies swapped, apply_impulse(b, a, ...): B gets "
-                       "-t·jt at A's lever arm ra and A gets +t·jt at rb; the lesson's order is apply_impulse(a, b, "
-                       "t * jt, ra, rb)", "friction_centre"),
+    "none": (mistake("friction_missing"), "friction_missing"),
+    "sign": (mistake("friction_sign"), "friction_sign"),
+    "unclamped": (mistake("friction_unclamped"), "friction_clamp"),
+    "always_full": (mistake("friction_always_full"), "friction_clamp"),
+    "bound_mu": (mistake("friction_bound_mu"), "friction_clamp"),
+    "clamp_loses_sign": (mistake("friction_clamp_loses_sign"), "friction_clamp"),
+    "no_spin_kt": (mistake("kt_no_spin"), "friction_kt"),
+    "kt_is_k": (mistake("kt_is_k"), "friction_kt"),
+    "kt_no_a_spin": (mistake("kt_missing_a_spin", "kt lacks A's spin term (ra × t)²/I_A: it needs both bodies' "
+                                                 "terms"), "friction_kt"),
+    "kt_no_b_spin": (mistake("kt_missing_b_spin", "kt lacks B's spin term (rb × t)²/I_B: it needs both bodies' "
+                                                 "terms"), "friction_kt"),
+    "twice": (mistake("friction_twice"), "friction_missing"),
+    "whole_rel": (mistake("friction_whole_rel"), "friction_slip"),
+    "at_centre": (mistake("friction_at_centre", "the friction impulse changes no spin (applied at the centres, "
+                                                "or the velocities changed without the spins): it cannot turn "
+                                                "the ball"), "friction_centre"),
+    "bodies_swapped": (mistake("friction_bodies_swapped", "friction is applied with the bodies swapped, "
+                                                          "apply_impulse(b, a, t * jt, ra, rb)"), "friction_centre"),
 }
+# a flipped jt and apply_impulse(b, a, t * jt, rb, ra) give the same velocities: the recorded call tells them apart
+ARMS_SWAPPED = (mistake("friction_bodies_arms_swapped", "friction is applied as apply_impulse(b, a, t * jt, rb, ra): "
+                                                        "bodies and lever arms swapped, so it pushes along the slip"),
+                "friction_order")
 
 
 def _state_matches(got, want):
@@ -390,9 +396,19 @@ def _state_matches(got, want):
                for k in ("a", "b"))
 
 
-def _describe_state(state):
-    return f"A v {_vec(state['a']['vel'])} ω {state['a']['omega']:.3f}; B v {_vec(state['b']['vel'])} " \
-           f"ω {state['b']['omega']:.3f}"
+def _friction_calls(cases):
+    """"ba rb,ra" when every case that called apply_impulse twice made its second (the friction) call with B first
+    and the lever arms swapped, else "" (probes._calls_recorded)."""
+    seconds = [c["calls"][1] for c in cases if len(c.get("calls") or ()) == 2]
+    return "ba rb,ra" if seconds and all(call == "ba rb,ra" for call in seconds) else ""
+
+
+def _describe_state(state, want):
+    """The first body whose motion differs, as "B ends with v (x, y) px/s, ω w rad/s; the lesson's ..."."""
+    key = next((k for k in ("a", "b") if not _state_matches({"a": state[k], "b": state[k]},
+                                                              {"a": want[k], "b": want[k]})), "b")
+    return (f"{key.upper()} ends with v {_vec(state[key]['vel'])} px/s, ω {state[key]['omega']:.3f} rad/s; the "
+            f"lesson's {_vec(want[key]['vel'])} px/s, {want[key]['omega']:.3f} rad/s")
 
 
 @CHECKS.check(depends=["loads"])
@@ -401,21 +417,27 @@ def friction_rolls(sub, functions):
     cases = _function(sub, functions, "resolve", "resolve", 7)
     for case in cases:
         for name, now in (case.get("changed") or {}).items():
-            raise Fail(f"in '{case['case']}', resolve() changed its argument {name} in place (to {_vec(now)}): the "
-                       f"World goes on using the contact's {name} for its other contact points and the push-out. Make "
-                       f"new vectors (normal.rotate(90) is a new vector; t = normal then t.rotate_ip(...) turns the "
-                       f"caller's).", arguments_hint(7, "resolve"))
+            text = f"resolve() changed its argument {name} in place: make new vectors (normal.rotate(90), not " \
+                   "t = normal then t.rotate_ip(90))"
+            raise Fail(f"{text}.\nin '{case['case']}', {name} became {_vec(now)}; the World goes on using it for "
+                       "its other contact points.", arguments_hint(7, "resolve"), mistake("argument_changed"))
     for case in cases:
         got, variants = case["got"], case["variants"]
         if _state_matches(got, variants["right"]):
             continue
-        named = consistent_mistake(cases, lambda c, key: _state_matches(c["got"], c["variants"][key]),
+        fitting = fitting_mistakes(cases, lambda c, key: _state_matches(c["got"], c["variants"][key]),
                                    [key for key in FRICTION_TEXT
                                     if not _state_matches(variants[key], variants["right"])])
-        text, hint = FRICTION_TEXT.get(named, ("the velocities and spins after resolve() differ from the lesson's",
-                                               "friction_missing"))
-        raise Fail(f"in '{case['case']}' (mu = {case['mu']:.2g}), {text}. After your resolve(): "
-                   f"{_describe_state(got)}; expected: {_describe_state(variants['right'])}.", HINTS[hint])
+        named = fitting[0] if len(fitting) == 1 else None
+        found, hint = FRICTION_TEXT.get(named, (None, "friction_missing"))
+        if named == "sign" and _friction_calls(cases) == "ba rb,ra":
+            found, hint = ARMS_SWAPPED
+        where = f"in '{case['case']}' (mu = {case['mu']:.2g})"
+        if named == "clamp_loses_sign":
+            where += ", where |jt| > mu·j"
+        first = found.text if found else "the velocities and spins after resolve() differ from the lesson's"
+        raise Fail(f"{first}.\n{where}: {_describe_state(got, variants['right'])}.",
+                   HINTS[hint], found)
     return Passed(f"friction matches the lesson in all {len(cases)} contacts", value=cases)
 
 
@@ -428,13 +450,13 @@ def runs(sub):
     runs = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in runs.items():
         if not finite(run.record["records"]):
-            raise Fail(f"in the '{name}' scene a body's position or speed became infinite or NaN.", HINTS["settle"])
+            raise Fail(f"a body's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
     return {name: run.record for name, run in runs.items()}
 
 
 def _sunk(depth, where, frame):
     if depth > SINK:
-        raise Fail(f"the ball sank {shown(depth, SINK)} px into {where} (at frame {frame}; bound {SINK:g} px).",
+        raise Fail(f"the ball sank into {where}.\n{shown(depth, SINK)} px deep at frame {frame} (bound {SINK:g} px).",
                    HINTS["settle"])
 
 
@@ -443,15 +465,16 @@ def rolls_without_slipping(records):
     """On the 22° ramp (mu 0.6) the ball rolls without slipping, |ω r - v| <= 2 % of v, at a = ⅔ g sin θ (criterion 1)."""
     roll = scenes.measure_roll(records["ramp"], 0)
     if roll["left_ramp"]:
-        raise Fail("the ball let go on the ramp did not stay on it (it bounced or flew off).", HINTS["settle"])
+        raise Fail("the ball let go on the ramp did not stay on it.\nIt bounced or flew off.", HINTS["settle"])
     _sunk(roll["depth"], "the ramp", roll["depth_frame"])
     off = abs(roll["accel"] - scenes.ROLLING) / scenes.ROLLING
     if not off <= ROLL_ACCEL:
-        raise Fail(f"the ball speeds up at {roll['accel']:.1f} px/s² down the ramp; a rolling disc gets ⅔ g sin θ = "
-                   f"{scenes.ROLLING:.1f} px/s² (off by {off:.1%}; bound {ROLL_ACCEL:.0%}).", HINTS["settle"])
+        raise Fail(f"the ball does not roll down the ramp at ⅔ g sin θ, a rolling disc's acceleration.\n"
+                   f"{roll['accel']:.1f} px/s² against {scenes.ROLLING:.1f} (off by {off:.1%}; bound "
+                   f"{ROLL_ACCEL:.0%}).", HINTS["settle"])
     if not roll["slip"] <= ROLL_SLIP:
-        raise Fail(f"the ball slips: its rim moves {roll['slip']:.1%} faster or slower than its center "
-                   f"(|ω r - v| / v; bound {ROLL_SLIP:.0%}).", HINTS["settle"])
+        raise Fail(f"the ball slips on the ramp instead of rolling.\nits rim moves {roll['slip']:.1%} faster or "
+                   f"slower than its center (|ω r - v| / v; bound {ROLL_SLIP:.0%}).", HINTS["settle"])
     return (f"a = {roll['accel']:.2f} px/s² (⅔ g sin θ = {scenes.ROLLING:.2f}), slip {roll['slip']:.2%}, "
             f"deepest {roll['depth']:.2f} px")
 
@@ -461,17 +484,16 @@ def slides_without_friction(records):
     """On a frictionless ramp the ball slides at a = g sin θ (within 1 %) and does not spin (criterion 2)."""
     slide = scenes.measure_roll(records["ramp"], 1)
     if slide["left_ramp"]:
-        raise Fail("the frictionless ball let go on the ramp did not stay on it (it bounced or flew off).",
+        raise Fail("the frictionless ball let go on the ramp did not stay on it.\nIt bounced or flew off.",
                    HINTS["settle"])
     _sunk(slide["depth"], "the ramp", slide["depth_frame"])
     off = abs(slide["accel"] - scenes.SLIDING) / scenes.SLIDING
     if not off <= SLIDE_ACCEL:
-        raise Fail(f"the frictionless ball speeds up at {slide['accel']:.1f} px/s²; without friction it slides at "
-                   f"g sin θ = {scenes.SLIDING:.1f} px/s² (off by {off:.1%}; bound {SLIDE_ACCEL:.0%}).",
-                   HINTS["friction_clamp"])
+        raise Fail(f"the frictionless ball does not slide at g sin θ.\n{slide['accel']:.1f} px/s² against "
+                   f"{scenes.SLIDING:.1f} (off by {off:.1%}; bound {SLIDE_ACCEL:.0%}).", HINTS["friction_clamp"])
     if slide["omega"] > SLIDE_SPIN:
-        raise Fail(f"the frictionless ball spins at up to {shown(slide['omega'], SLIDE_SPIN)} rad/s (bound "
-                   f"{SLIDE_SPIN:g}): with mu = 0 nothing can turn it.", HINTS["friction_clamp"])
+        raise Fail(f"the frictionless ball spins: with mu = 0 nothing can turn it.\nup to "
+                   f"{shown(slide['omega'], SLIDE_SPIN)} rad/s (bound {SLIDE_SPIN:g}).", HINTS["friction_clamp"])
     return f"a = {slide['accel']:.2f} px/s² (g sin θ = {scenes.SLIDING:.2f}), spin {slide['omega']:.2g} rad/s"
 
 
@@ -481,9 +503,9 @@ def knocks_crate_over(records):
     knock = scenes.measure_knock(records["knock"])
     _sunk(knock["depth"], knock["depth_into"], knock["depth_frame"])
     if knock["moved"] < KNOCK_MOVE or knock["turned"] < KNOCK_TURN:
-        raise Fail(f"the ball rolled off the ramp but the tall crate only turned {math.degrees(knock['turned']):.0f}° "
-                   f"and moved {knock['moved']:.1f} px (bounds: {math.degrees(KNOCK_TURN):.0f}° and "
-                   f"{KNOCK_MOVE:g} px).", HINTS["settle"])
+        raise Fail(f"the ball rolled off the ramp but did not knock the tall crate over.\nit turned "
+                   f"{math.degrees(knock['turned']):.0f}° and moved {knock['moved']:.1f} px (bounds: "
+                   f"{math.degrees(KNOCK_TURN):.0f}° and {KNOCK_MOVE:g} px).", HINTS["settle"])
     return (f"the crate turned {math.degrees(knock['turned']):.0f}° and moved {knock['moved']:.0f} px; deepest "
             f"overlap {knock['depth']:.2f} px")
 
@@ -493,9 +515,9 @@ def pushed_out_of_crate(records):
     """A ball started with its center inside a crate is pushed out of the crate, not through it (criterion 4)."""
     inside = scenes.measure_inside(records["inside"])
     if inside["side"] == "far":
-        raise Fail("a ball started with its center inside a crate, 15 px from its left side, came out on the "
-                   "crate's right: it was pushed through the crate, not out.", HINTS["inside"])
+        raise Fail("a ball with its center inside a crate was pushed through the crate, not out.\nstarted 15 px "
+                   "from the crate's left side, it came out on the right.", HINTS["inside"])
     if inside["depth"] > INSIDE_DEPTH or inside["side"] != "near":
-        raise Fail(f"a ball started with its center inside a crate is still {inside['depth']:.1f} px into it after "
-                   f"0.5 s (bound {INSIDE_DEPTH:g} px).", HINTS["inside"])
+        raise Fail(f"a ball started with its center inside a crate is not pushed out.\nstill "
+                   f"{inside['depth']:.1f} px into it after 0.5 s (bound {INSIDE_DEPTH:g} px).", HINTS["inside"])
     return f"out on the near side after 0.5 s, {inside['depth']:.2f} px of overlap left"

@@ -412,7 +412,8 @@ def resolve_cases():
 
 
 FRICTION_VARIANTS = ("right", "none", "sign", "unclamped", "no_spin_kt", "kt_is_k", "at_centre", "always_full",
-                     "bodies_swapped")
+                     "bodies_swapped", "twice", "bound_mu", "whole_rel", "kt_no_a_spin", "kt_no_b_spin",
+                     "clamp_loses_sign")
 
 
 @reference
@@ -422,7 +423,10 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     Variants: "none" no friction; "sign" the clamped impulse pushed along the slip; "unclamped"
     no Coulomb clamp; "no_spin_kt" kt without the spin terms; "kt_is_k" the normal's k used as kt;
     "at_centre" the friction impulse applied at the centres (ra = rb = 0); "always_full" friction
-    always mu j, against the slip; "bodies_swapped" apply_impulse(b, a, t jt, ra, rb).
+    always mu j, against the slip; "bodies_swapped" apply_impulse(b, a, t jt, ra, rb); "twice" the friction
+    impulse applied twice; "bound_mu" clamped to ±mu; "whole_rel" -|rel| / kt (the whole relative speed, not
+    the slip rel·t); "kt_no_a_spin" / "kt_no_b_spin" kt without A's / B's spin term; "clamp_loses_sign"
+    `if abs(jt) > mu * j: jt = mu * j`.
     """
     ra, rb = point - a.pos, point - b.pos
     rel = relative_velocity(a, b, ra, rb)
@@ -446,9 +450,17 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
         kt = a.inv_mass + b.inv_mass
     elif variant == "kt_is_k":
         kt = k
-    jt = -rel.dot(t) / kt
+    elif variant == "kt_no_a_spin":
+        kt = a.inv_mass + b.inv_mass + rbt * rbt * b.inv_inertia
+    elif variant == "kt_no_b_spin":
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia
+    jt = -(rel.length() if variant == "whole_rel" else rel.dot(t)) / kt
     if variant == "always_full":
         jt = math.copysign(mu * j, jt)
+    elif variant == "bound_mu":
+        jt = max(-mu, min(mu, jt))
+    elif variant == "clamp_loses_sign":
+        jt = mu * j if abs(jt) > mu * j else jt
     elif variant != "unclamped":
         jt = max(-mu * j, min(mu * j, jt))
     if variant == "sign":
@@ -458,6 +470,8 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     if variant == "bodies_swapped":
         a, b = b, a
     lesson_apply_impulse(a, b, t * jt, ra, rb)
+    if variant == "twice":
+        lesson_apply_impulse(a, b, t * jt, ra, rb)
 
 
 def _outcome(a, b):
@@ -477,12 +491,52 @@ def probe_resolve(module, lab_path):
     for name, a, b, normal, point in resolve_cases():
         given = (twin(a), twin(b))   # the bodies as resolve() gets them
         vectors = {"normal": Vector2(normal), "point": Vector2(point)}   # copies: a change in place shows
-        module.resolve(a, b, vectors["normal"], vectors["point"])
-        case = {"case": name, "got": _outcome(a, b), "changed": changed_vectors(vectors, normal=normal, point=point)}
+        calls = []
+        with _calls_recorded(module, a, b, point, calls):
+            module.resolve(a, b, vectors["normal"], vectors["point"])
+        case = {"case": name, "got": _outcome(a, b), "changed": changed_vectors(vectors, normal=normal, point=point),
+                "calls": calls}
         if judging(module):
             case.update(_resolve_reference(*given, normal, point, resting))
         cases.append(case)
     return cases
+
+
+class _calls_recorded:
+    """While resolve() runs, the module's apply_impulse also notes each call's order of bodies and lever arms in
+    `calls`: "ab" / "ba" (A first / B first) and "ra,rb" / "rb,ra" / "other". Swapped bodies with swapped lever
+    arms give the same velocities as a flipped jt: only the call tells them apart."""
+
+    def __init__(self, module, a, b, point, calls):
+        self.module, self.original = module, getattr(module, "apply_impulse", None)
+        self.a, self.b, self.calls = a, b, calls
+        self.ra, self.rb = point - a.pos, point - b.pos
+
+    def __enter__(self):
+        if callable(self.original):
+            def recorder(*args, **named):
+                given = dict(zip(("a", "b", "impulse", "ra", "rb"), args), **named)
+                first, second, r1, r2 = (given.get(key) for key in ("a", "b", "ra", "rb"))
+                order = "ab" if first is self.a and second is self.b else \
+                    "ba" if first is self.b and second is self.a else "other"
+                arms = "ra,rb" if _near(r1, self.ra) and _near(r2, self.rb) else \
+                    "rb,ra" if _near(r1, self.rb) and _near(r2, self.ra) else "other"
+                self.calls.append(order + " " + arms)
+                return self.original(*args, **named)
+            self.module.apply_impulse = recorder
+        return self
+
+    def __exit__(self, *exc):
+        if callable(self.original):
+            self.module.apply_impulse = self.original
+        return False
+
+
+def _near(v, w):
+    try:
+        return abs(v[0] - w[0]) <= 1e-9 and abs(v[1] - w[1]) <= 1e-9
+    except (TypeError, IndexError, ValueError):
+        return False
 
 
 @reference

@@ -25,7 +25,7 @@ import math
 
 from . import scenes
 from ... import lab_checks
-from ...causes import consistent_mistake
+from ...causes import consistent_mistake, mistake
 from ...checks import Fail, Hint, Passed, Registry
 from lesson11.records import finite
 
@@ -48,48 +48,35 @@ MOMENTUM = 0.05        # the issue: the crate's momentum within 5 %; solution: 0
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
     "toi": Hint(2, "the time of impact of two circles",
-                "Write the gap as dp + dv t (dp = p2 - p1, dv = v2 - v1) and square |dp + dv t| = r1 + r2: "
-                "a = dv·dv, b = 2 dp·dv, c = dp·dp - (r1 + r2)². Return 0.0 when c <= 0 (already touching), None "
-                "when a == 0 or b² - 4ac < 0, else the EARLIER root (-b - √(b² - 4ac)) / 2a if it lies in [0, dt]."),
+                "Lesson, CCD: with dp = p2 - p1, dv = v2 - v1: a = dv·dv, b = 2 dp·dv, c = dp·dp - (r1 + r2)²; "
+                "t = (-b - √(b² - 4ac)) / 2a, kept if 0 <= t <= dt."),
     "toi_later": Hint(2, "the earlier root is the first contact",
-                      "The quadratic has two roots: the moment the circles start to touch and the moment they "
-                      "would stop touching if they passed through each other. The first contact is the smaller "
-                      "one, (-b - √disc) / 2a."),
+                      "Lesson, CCD: the two roots are when the circles start and stop touching; the first contact "
+                      "is the earlier, (-b - √disc) / 2a."),
     "toi_apart": Hint(2, "no contact: apart, parallel, missing, too far",
-                      "Return None when there is no contact in [0, dt]: the paths miss (b² - 4ac < 0), the circles "
-                      "do not move relative to each other (a = 0), or the earlier root is negative (moving apart: "
-                      "the touching lies in the past) or later than dt."),
+                      "Lesson, CCD: return None when a == 0, the discriminant is negative, or t is outside "
+                      "[0, dt] (the dt you are given)."),
     "toi_touching": Hint(2, "already touching",
-                         "When c = |dp|² - (r1 + r2)² <= 0 the circles already overlap: return 0.0 (the impact is "
-                         "now) before solving the quadratic; its roots are then on both sides of 0. Without it, a "
-                         "bullet inside a crate's or the wall's bounding circle is never tested, and bullets tunnel."),
+                         "Lesson, CCD: when c <= 0 the circles already overlap: the impact is now, return 0.0 "
+                         "before solving anything."),
     "bounding": Hint(3, "the bounding circle holds every corner",
-                     "The bounding circle around the crate's centre must reach its farthest corner: the largest "
-                     "centre.distance_to(p) over the points. Half the width or the nearest corner leaves corners "
-                     "outside, and a bullet aimed at a corner is skipped by the broad test: it tunnels."),
+                     "Going further, Bullets: the radius is the largest distance from the centre to a point of the "
+                     "outline, centre.distance_to(p), the max over all points."),
     "broad": Hint(4, "the broad test before the exact test",
-                  "First test the bullet, with its own radius, against the crate's bounding circle (the crate "
-                  "held still) with circle_toi(). Only when that finds no contact this step (None; 0.0 is a hit "
-                  "that happens now) return None at once. Otherwise go on to the exact swept test."),
+                  "Going further, Bullets: call circle_toi() for the bullet (its radius) against the bounding "
+                  "circle; return None only when that gives None, else run the exact test."),
     "broad_missing": Hint(4, "skip what the bullet cannot reach",
-                          "Your time_of_impact() ran the exact swept test on a crate the bullet cannot reach this "
-                          "step. The broad test is the point of step 4: one circle_toi() against the bounding "
-                          "circle, and return None when it finds no contact."),
+                          "Going further, Bullets: the broad test returns None before the exact swept test when "
+                          "the bullet cannot reach the bounding circle this step."),
     "swept": Hint(5, "move to the impact, resolve, spend the rest",
-                  "Move the bullet along its velocity to where it is at the time of impact t; resolve there, at "
-                  "the point of the bullet's surface that touches the other body (one radius from its centre "
-                  "along the normal); then move it for the rest of the step, dt - t, with its NEW velocity. "
-                  "Without the resolve, or moved the whole step first, bullets tunnel through the wall."),
-    "handout": Hint(None, "keep the handed-out code",
-                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; "
-                    "everything else (the constants, the wall, the modes, BulletWorld, the `# lab runtime` lines) "
-                    "stays as handed out, so the checker measures the lab the lesson describes. Start again from "
-                    "the starter if you are unsure what changed."),
+                  "Lesson, CCD: move to t, resolve there at bullet.pos + normal * radius, then move dt - t with "
+                  "the new velocity."),
+    "handout": lab_checks.handout_hint("the constants, the wall, the modes, BulletWorld, the `# lab runtime` "
+                                       "lines"),
     "runtime": lab_checks.RUNTIME_HINT,
     "watch": Hint(6, "watch the bullets",
-                  "The function checks above all pass, yet the bullets do not behave as the lesson says. Press 5 "
-                  "(CCD), fire at the wall and watch the tunnelled count; compare your file with the handout "
-                  "around the steps."),
+                  "The function checks pass, yet the bullets misbehave: press 5 (CCD), fire at the wall and watch "
+                  "the tunnelled count; compare your file with the handout."),
     "crash": Hint(1, "run the file", "Run the file yourself (python bullets.py) and fix the error at the line shown."),
 }
 
@@ -155,21 +142,20 @@ def _toi_ok(got, want):
 
 # the known wrong roots of step 2, by the name the probe gives their times (probes._toi_reference)
 TOI_MISTAKES = {
-    "no_two": "that is what (-b - √disc) / a gives in every case, twice the first-contact time: the 2 "
-              "of 2a is missing",
-    "four": "that is what (-b - √disc) / (4a) gives in every case, half the first-contact time: divide by 2a",
-    "a_unsquared": "that is the root with a = |dv|; the quadratic's a is dv·dv = |dv|²",
-    "b_sign": "that is what b = -2 dp·dv gives in every case (as dp = p1 - p2 or dv = v1 - v2 do): it runs time "
-              "backwards, so circles closing in get negative roots (None) and circles moving apart a contact; with "
-              "dp = p2 - p1 and dv = v2 - v1, b = 2 dp·dv",
+    "no_two": "the root is divided by a, not 2a: (-b - √disc) / a is twice the first-contact time",
+    "four": "the root is divided by 4a, not 2a: half the first-contact time",
+    "a_unsquared": "a = |dv|, not dv·dv = |dv|²",
+    "b_sign": "b = -2 dp·dv (as dp = p1 - p2 or dv = v1 - v2 give): time runs backwards; with dp = p2 - p1 and "
+              "dv = v2 - v1, b = 2 dp·dv",
+    "b_no_two": "b = dp·dv without its factor 2: b = 2 dp·dv",
+    "fixed_dt": "t is kept only up to 1/120 s, not up to the dt you are given",
 }
-
-
 def _toi_mistake(cases, case):
-    """The sentence of the known wrong root that gives the student's time in every case, or ''."""
+    """The Mistake of the known wrong root that gives the student's time in every case, or None."""
     named = consistent_mistake(cases, lambda c, name: _toi_ok(c["got"], c["forms"][name]),
-                               [name for name, value in case["forms"].items() if not _toi_ok(value, case["want"])])
-    return TOI_MISTAKES.get(named, "")
+                               [name for name, value in case["forms"].items() if not _toi_ok(value, case["want"])
+                                and name in TOI_MISTAKES])
+    return mistake(f"toi_{named}", TOI_MISTAKES[named]) if named else None
 
 
 @CHECKS.check(depends=["loads"], max_score=2)
@@ -185,27 +171,32 @@ def toi_matches_root(sub, functions):
                 worst = max(worst, abs(got - want))
             continue
         where = f"for {case['case']} (dt = {case['dt']:.4g} s)"
-        text = f"{where}, circle_toi() returned {_time(got)}; expected {_time(want)}"
-        hint = HINTS["toi"]
+        evidence = f"{where}, circle_toi() returned {_time(got)}; expected {_time(want)}."
+        hint, first, found = HINTS["toi"], "circle_toi() does not give the first-contact time", None
         if _bad(got):
-            hint = HINTS["toi"]
+            first = "circle_toi() must return a time in seconds or None"
         elif want == 0.0 and case["c"] <= 0:
-            text += ": the circles already overlap, so the impact is now"
-            hint = HINTS["toi_touching"]
+            first, hint = "the circles already overlap, so the impact is now: return 0.0", HINTS["toi_touching"]
+            found = mistake("toi_touching_missed", first)
         elif got is not None and case["later"] is not None and abs(got - case["later"]) <= TOI_TOLERANCE:
-            text += ": that is the later root, when the circles would stop touching"
-            hint = HINTS["toi_later"]
+            first, hint = "that is the later root, when the circles stop touching", HINTS["toi_later"]
+            found = mistake("toi_later_root", first)
+        elif want is None and got is not None and got < 0:
+            first, hint = "a negative time is in the past: the circles are moving apart", HINTS["toi_apart"]
+            found = mistake("toi_negative_time", first)
+        elif want is None and got is not None and got > case["dt"]:
+            first, hint = f"the time is later than this step's dt = {case['dt']:.4g} s", HINTS["toi_apart"]
+            found = mistake("toi_after_dt", "the time is later than this step's dt")
         elif want is None and got is not None:
-            if got < 0:
-                text += ": a negative time is in the past (the circles are moving apart)"
-            elif got > case["dt"]:
-                text += f": later than this step's dt = {case['dt']:.4g} s"
             hint = HINTS["toi_apart"]
         elif _toi_mistake(cases, case):
-            text += f": {_toi_mistake(cases, case)}"
+            found = _toi_mistake(cases, case)
+            first = found.text
+            if found.id == "toi_fixed_dt":
+                hint = HINTS["toi_apart"]
         elif want is not None and got is None:
-            text += ": the circles do touch within the step"
-        raise Fail(text + ".", hint)
+            first = "the circles do touch within the step, but circle_toi() found no contact"
+        raise Fail(f"{first}.\n{evidence}", hint, found)
     return Passed(f"the time of impact matches the analytic root in all {len(cases)} cases (largest difference "
                   f"{worst:.1e} s; bound {TOI_TOLERANCE:g} s)", value=cases)
 
@@ -214,14 +205,13 @@ def toi_matches_root(sub, functions):
 
 # the known wrong bounding radii, by the name the probe gives their values (probes._bounding_reference)
 BOUNDING_MISTAKES = {
-    "squared": "that is the squared distance ({want:.2f}² = {want_sq:.1f}): take the distance itself, its square root",
-    "from_origin": "that is the farthest corner's distance from (0, 0); measure from the crate's centre, "
+    "squared": "the radius is the squared distance: take its square root",
+    "from_origin": "the radius is the farthest corner's distance from (0, 0); measure from the centre, "
                    "centre.distance_to(p)",
-    "half_side": "that is the largest |x| or |y| offset from the centre (half a side), not a distance: a corner is "
-                 "farther",
-    "half_width": "that is the largest |x - centre.x| (half the width), not a distance: a corner is farther",
-    "nearest": "that is the nearest corner's distance; the circle must reach the farthest (max, not min)",
-    "average": "that is the average distance to the corners; the circle must reach the farthest (max)",
+    "half_side": "the radius is the largest |x| or |y| offset (half a side), not a distance: a corner is farther",
+    "half_width": "the radius is the largest |x - centre.x| (half the width), not a distance: a corner is farther",
+    "nearest": "the radius is the nearest corner's distance; the circle must reach the farthest (max, not min)",
+    "average": "the radius is the average distance to the corners; the circle must reach the farthest (max)",
 }
 
 
@@ -233,16 +223,20 @@ def bounding_circle(sub, functions):
         got, want = case["got"], case["want"]
         if isinstance(got, float) and _close(got, want):
             continue
-        text = f"for {case['case']}, bounding_radius() returned {_time(got).replace(' s', ' px')}; expected the " \
-               f"farthest corner's distance, {want:.3f} px"
+        evidence = f"for {case['case']}, bounding_radius() returned {_time(got).replace(' s', ' px')}; the " \
+                   f"farthest corner is {want:.3f} px away."
         named = consistent_mistake(cases, lambda c, name: isinstance(c["got"], float)
                                    and _close(c["got"], c["forms"][name]),
-                                   [name for name, value in case["forms"].items() if not _close(value, want)])
-        if named:
-            text += f": {BOUNDING_MISTAKES[named].format(want=want, want_sq=want * want)}"
+                                   [name for name, value in case["forms"].items() if not _close(value, want)
+                                    and name in BOUNDING_MISTAKES])
+        found = mistake(f"bounding_{named}", BOUNDING_MISTAKES[named]) if named else None
+        if found:
+            first = found.text
         elif isinstance(got, float) and got < want:
-            text += ": corners stick out of that circle, so bullets aimed at them are skipped"
-        raise Fail(text + ".", HINTS["bounding"])
+            first = "corners stick out of your circle, so bullets aimed at them are skipped"
+        else:
+            first = "bounding_radius() is not the farthest corner's distance from the centre"
+        raise Fail(f"{first}.\n{evidence}", HINTS["bounding"], found)
     return Passed(f"the bounding circle reaches the farthest corner in all {len(cases)} shapes", value=cases)
 
 
@@ -265,23 +259,24 @@ def _hit(hit):
 
 # step 4's known wrong broad tests, by the name the probe gives their answers (probes.BROAD_MISTAKES)
 BROAD_TEXT = {
-    "zero_is_falsy": "the broad test counts t = 0.0 as no contact (`if not t` is true for 0.0): a bullet already "
-                     "inside the bounding circle touches it now; return None only when circle_toi() gives None",
-    "inverted": "the broad test is the wrong way round: it returns None when circle_toi() DOES find the bounding "
-                "circle (is not None) and runs the exact test when it cannot; return None when it gives None",
-    "point_bullet": "the broad test treats the bullet as a point (radius 0): its centre passes outside the bounding "
-                    "circle, but its own radius reaches the crate; give circle_toi() bullet.radius",
+    "zero_is_falsy": "the broad test counts t = 0.0 as no contact (`if not t`): return None only when circle_toi() "
+                     "gives None",
+    "inverted": "the broad test is the wrong way round: it returns None when circle_toi() DOES reach the bounding "
+                "circle",
+    "point_bullet": "the broad test treats the bullet as a point (radius 0): give circle_toi() bullet.radius",
 }
 
 
 def _broad_mistake(cases, case):
-    """The sentence of the one known wrong broad test that gives the student's answer and exact-test count in
-    every case, or ''."""
+    """The Mistake of the one known wrong broad test that gives the student's answer and exact-test count in
+    every case, or None."""
     def gives(c, name):
         form = c["forms"][name]
         return _hit_matches(c["got"], form["hit"]) and c["exact_tests"] == form["exact_tests"]
-    differs = [name for name, form in case.get("forms", {}).items() if not _hit_matches(form["hit"], case["want"])]
-    return BROAD_TEXT.get(consistent_mistake(cases, gives, differs), "")
+    differs = [name for name, form in case.get("forms", {}).items() if not _hit_matches(form["hit"], case["want"])
+               and name in BROAD_TEXT]
+    named = consistent_mistake(cases, gives, differs)
+    return mistake(f"broad_{named}", BROAD_TEXT[named]) if named else None
 
 
 @CHECKS.check(depends=["loads"])
@@ -291,17 +286,19 @@ def broad_test(sub, functions):
     for case in cases:
         got, want = case["got"], case["want"]
         if not _hit_matches(got, want):
-            text = f"for {case['case']}, time_of_impact() returned {_hit(got)}; expected {_hit(want)}"
-            named = _broad_mistake(cases, case)
-            if named:
-                text += f": {named}"
+            evidence = f"for {case['case']}, time_of_impact() returned {_hit(got)}; expected {_hit(want)}."
+            found = _broad_mistake(cases, case)
+            if found:
+                first = found.text
             elif want is not None and got is None and case["exact_tests"] == 0:
-                text += ": the broad test gave up on a crate the bullet does hit"
-            raise Fail(text + ".", HINTS["broad"])
+                first = "the broad test gave up on a crate the bullet does hit"
+            else:
+                first = "time_of_impact() does not find the lesson's hit"
+            raise Fail(f"{first}.\n{evidence}", HINTS["broad"], found)
         if not case["needs_exact"] and case["exact_tests"]:
-            raise Fail(f"for {case['case']}, the answer is right but time_of_impact() ran the exact swept test "
-                       f"{case['exact_tests']} time(s); the bullet cannot reach the crate's bounding circle this "
-                       "step, so the broad test should have returned None first.", HINTS["broad_missing"])
+            text = "the broad test should have returned None first: the bullet cannot reach the bounding circle"
+            raise Fail(f"{text}.\nfor {case['case']}, the answer is right but the exact swept test ran "
+                       f"{case['exact_tests']} time(s).", HINTS["broad_missing"], mistake("broad_missing", text))
     return Passed(f"the broad test skips the crates out of reach and keeps every hit in all {len(cases)} cases",
                   value=cases)
 
@@ -312,15 +309,17 @@ SWEPT_TEXT = {
     "stops": "the bullet stopped at the impact: the rest of the step (dt - t) was not spent",
     "old_velocity": "the bullet was resolved at the impact but spent the step with its velocity from before the hit "
                     "(it went on through)",
-    "no_impulse": "nothing changed at the impact, as if no impulse was applied: either resolve() was not called "
-                  "there, or it was given the normal reversed (resolve(..., -normal, ...)), so it saw the bodies "
-                  "moving apart; the normal time_of_impact gives points from the bullet into the other body",
+    "no_impulse": "nothing changed at the impact: resolve() was not called there, or was given the normal "
+                  "reversed (-normal) and saw the bodies moving apart",
     "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
-    "far_side": "the impulse was applied on the far side of the bullet; the contact point is on the bullet's "
-                "surface towards the crate, bullet.pos + normal * radius, and its lever arm sets the crate's spin",
-    "resolve_first": "the hit was resolved where the bullet starts the step, then the bullet moved the whole dt "
-                     "with its new velocity, so it turned back before it reached the impact; move it to the impact "
-                     "first (bullet.pos += bullet.vel * t), resolve there, then spend dt - t",
+    "far_side": "the impulse was applied on the far side of the bullet; the contact is on its surface towards "
+                "the crate, bullet.pos + normal * radius",
+    "resolve_first": "the hit was resolved where the bullet starts the step, then it moved the whole dt: it turned "
+                     "back before it reached the impact",
+    "at_centre": "the hit was resolved at the bullet's centre; the contact is on its surface, bullet.pos + "
+                 "normal * radius",
+    "move_then_resolve": "the bullet moved the whole step, then resolved: move it to the impact first, resolve "
+                         "there, then spend dt - t",
 }
 
 
@@ -344,17 +343,21 @@ def swept_move_resolves(sub, functions):
         named = consistent_mistake(cases, lambda c, key: _same_outcome(c["got"], c["variants"].get(key, c["want"])),
                                    [key for key, outcome in case["variants"].items()
                                     if not _same_outcome(outcome, want)])
-        where = f"in '{case['case']}'" + (f" (impact at t = {case['t'] * 1000:.3f} ms)" if case["t"] is not None else "")
-        text = (f"{where}, after swept_move() the bullet is at {_vec(got['bullet']['pos'])} moving "
-                f"{_vec(got['bullet']['vel'])} px/s; expected {_vec(want['bullet']['pos'])} moving "
-                f"{_vec(want['bullet']['vel'])} px/s")
+        where = f"in '{case['case']}'" + (f" (impact at {case['t'] * 1000:.3f} ms)" if case["t"] is not None else "")
+
         spins = [(g.get("omega", 0.0), w.get("omega", 0.0)) for g, w in zip(got["others"], want["others"])
                  if not _close(g.get("omega", 0.0), w.get("omega", 0.0))]
-        if spins:
-            text += f"; the crate spins at {spins[0][0]:.3f} rad/s, expected {spins[0][1]:.3f}"
-        if named:
-            text += f": {SWEPT_TEXT[named]}"
-        raise Fail(text + ".", HINTS["swept"])
+        if spins and _same_point(got["bullet"]["pos"], want["bullet"]["pos"]):
+            evidence = f"{where}, the crate spins at {spins[0][0]:.3f} rad/s; expected {spins[0][1]:.3f}"
+        elif not _same_point(got["bullet"]["vel"], want["bullet"]["vel"]):   # the velocity says most: show it
+            evidence = (f"{where}, the bullet leaves at {_vec(got['bullet']['vel'])} px/s; expected "
+                        f"{_vec(want['bullet']['vel'])}")
+        else:
+            evidence = (f"{where}, the bullet ends at {_vec(got['bullet']['pos'])}; expected "
+                        f"{_vec(want['bullet']['pos'])}")
+        found = mistake(f"swept_{named}", SWEPT_TEXT[named]) if named else None
+        first = found.text if found else "after swept_move() the bullet or the crate is not where the lesson's is"
+        raise Fail(f"{first}.\n{evidence}.", HINTS["swept"], found)
     return Passed(f"the swept move matches the lesson in all {len(cases)} cases", value=cases)
 
 
@@ -369,13 +372,14 @@ def runs(sub):
     run = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])["scene"]
     frames = run.record["records"]
     if not finite(frames):
-        raise Fail("in the scene a body's position or speed became infinite or NaN.", HINTS["watch"])
+        raise Fail("a body's position or speed became infinite or NaN.\nin the scene (CCD, six bullets).",
+                   HINTS["watch"])
     wall_x = WALL_X
     beyond = [frame["frame"] for frame in frames for body in frame["bodies"]
               if not body["static"] and not body["points"] and body["pos"][0] > wall_x + 2]
     if beyond:
-        raise Fail(f"in the scene (CCD mode, six bullets fired at the wall and the crates) a bullet was beyond the "
-                   f"wall at frame {beyond[0]}.", HINTS["watch"])
+        raise Fail(f"a bullet got through the wall in CCD mode.\nsix bullets fired at the wall and the crates: one "
+                   f"was beyond the wall at frame {beyond[0]}.", HINTS["watch"])
     return f"{len(frames)} frames, {max(len(f['bodies']) for f in frames) - 5} bullets at most, none past the wall"
 
 
@@ -386,10 +390,11 @@ def ccd_never_tunnels(sub, functions):
     total = shots["per_speed"] * len(shots["ccd"])
     tunnelled = {speed: n for speed, n in shots["ccd"].items() if n}
     if total < MIN_SHOTS:
-        raise Fail(f"only {total} shots were fired (bound: at least {MIN_SHOTS}).", HINTS["watch"])
+        raise Fail(f"too few shots were fired to grade tunnelling.\n{total} shots (at least {MIN_SHOTS}).",
+                   HINTS["watch"])
     if tunnelled:
         listed = ", ".join(f"{n} of {shots['per_speed']} at {speed} px/s" for speed, n in tunnelled.items())
-        raise Fail(f"with CCD, bullets tunnelled through the {shots['wall']:g} px wall: {listed} (bound: none).",
+        raise Fail(f"with CCD, bullets tunnelled through the {shots['wall']:g} px wall.\n{listed} (bound: none).",
                    HINTS["watch"])
     return (f"0 of {total} shots tunnelled at {min(shots['ccd'], key=int)}-{max(shots['ccd'], key=int)} px/s "
             f"({shots['ccd_seconds'] * 1000:.0f} ms of physics)")
@@ -400,9 +405,9 @@ def substeps_still_tunnel(sub, functions):
     """With sub-stepping x8 alone some bullets still tunnel at 12000 px/s: the lab shows the lesson's point (criterion 2)."""
     shots = _function(sub, functions, "shots", "swept_move", None)
     if shots["x8"] == 0:
-        raise Fail(f"with sub-steps x8 (no CCD) none of {shots['x8_shots']} shots at 12000 px/s tunnelled, so the "
-                   "scene does not show that sub-stepping still misses fast bullets (the wall and the bullet must "
-                   "stay as handed out: 4 px and radius 3 px).", HINTS["handout"])
+        raise Fail(f"sub-stepping x8 stops every bullet, so the lab no longer shows what it misses.\nnone of "
+                   f"{shots['x8_shots']} shots at 12000 px/s tunnelled; the wall (4 px) and bullet (radius 3) stay "
+                   "as handed out.", HINTS["handout"])
     return (f"{shots['x8']} of {shots['x8_shots']} shots tunnelled at 12000 px/s with sub-steps x8 "
             f"({shots['x8_seconds'] * 1000:.0f} ms of physics for {shots['x8_shots']} shots; CCD: "
             f"{shots['ccd_seconds'] * 1000:.0f} ms for {shots['per_speed'] * len(shots['ccd'])})")
@@ -415,7 +420,7 @@ def crate_momentum(sub, functions):
     got = math.hypot(*hit["got"])
     off = abs(got - hit["want"]) / hit["want"]
     if not off <= MOMENTUM:
-        raise Fail(f"a bullet of momentum {hit['bullet_momentum']:.0f} hitting a free crate head-on left the crate "
-                   f"with momentum {got:.1f}; the lesson's answer (e = {hit['e']:g}) is {hit['want']:.1f} (off by "
-                   f"{off:.1%}; bound {MOMENTUM:.0%}).", HINTS["watch"])
+        raise Fail(f"a bullet hitting a free crate does not give it the lesson's momentum.\nbullet "
+                   f"{hit['bullet_momentum']:.0f}, crate {got:.1f}; the lesson's (e = {hit['e']:g}) {hit['want']:.1f} "
+                   f"(off by {off:.1%}; bound {MOMENTUM:.0%}).", HINTS["watch"])
     return f"crate momentum {got:.1f} against {hit['want']:.1f} ({off:.2%} off; bound {MOMENTUM:.0%})"

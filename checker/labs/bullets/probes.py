@@ -106,6 +106,10 @@ def toi_cases():
          Vector2(15, 200), Vector2(0, 0), 8.0, 1.0),
         ("head-on but too far away for this step", Vector2(0, 0), Vector2(1200, 0), 3.0,
          Vector2(200, 0), Vector2(0, 0), 2.0, 1 / 120),
+        # told-apart case (issue 40): a hit within 1/120 s, so a bound fixed at 1/120 s keeps it, while b without
+        # its 2 finds a (wrong) root only this close (|dp| < 1.15 (r1 + r2))
+        ("head-on, 1 px from touching", Vector2(0, 0), Vector2(300, 0), 4.0, Vector2(11, 0), Vector2(0, 0), 6.0,
+         1 / 120),
     ]
 
 
@@ -147,7 +151,9 @@ def _toi_reference(p1, v1, r1, p2, v2, r2, dt):
     earlier = (-b - math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
     return {"want": analytic_toi(p1, v1, r1, p2, v2, r2, dt), "later": later, "earlier": earlier, "c": c,
             "forms": {"no_two": _toi_with(a, b, c, dt, 1.0), "four": _toi_with(a, b, c, dt, 4.0),
-                      "a_unsquared": _toi_with(math.sqrt(a), b, c, dt, 2.0), "b_sign": _toi_with(a, -b, c, dt, 2.0)}}
+                      "a_unsquared": _toi_with(math.sqrt(a), b, c, dt, 2.0), "b_sign": _toi_with(a, -b, c, dt, 2.0),
+                      # issue 40: b without its factor 2; the bound hard-coded to the course's 1/120 s
+                      "b_no_two": _toi_with(a, b / 2, c, dt, 2.0), "fixed_dt": _toi_with(a, b, c, 1 / 120, 2.0)}}
 
 
 @reference
@@ -447,7 +453,8 @@ def _outcome(world, bullet):
 # impact: no resolve(), or one given the normal reversed, which sees the bodies separating), "far_side" (the
 # contact point on the bullet's far side, pos - normal r), "resolve_first" (resolved where the step starts, at
 # pos + normal r there, then moved the whole dt with the new velocity)
-SWEPT_MISTAKES = ("stops", "old_velocity", "whole_step", "no_impulse", "far_side", "resolve_first")
+SWEPT_MISTAKES = ("stops", "old_velocity", "whole_step", "no_impulse", "far_side", "resolve_first", "at_centre",
+                  "move_then_resolve")   # issue 40: the contact at the bullet's centre; the whole dt, then resolve
 
 
 @reference
@@ -459,10 +466,14 @@ def _swept_mistake(make, name):
         world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
         bullet.pos += bullet.vel * STEP
         return _outcome(world, bullet)
+    if name == "move_then_resolve":
+        bullet.pos += bullet.vel * STEP
+        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
+        return _outcome(world, bullet)
     start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
     bullet.pos += velocity * t
     if name != "no_impulse":
-        side = -1 if name == "far_side" else 1
+        side = -1 if name == "far_side" else 0 if name == "at_centre" else 1
         world.resolve(bullet, other, normal, bullet.pos + normal * (side * bullet.radius))
     if name == "old_velocity":
         bullet.pos = start + velocity * STEP

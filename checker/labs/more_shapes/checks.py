@@ -21,7 +21,7 @@ measures in the same scene, with the measured value noted next to it.
 import math
 
 from ... import lab_checks
-from ...causes import consistent_mistake
+from ...causes import consistent_mistake, mistake
 from lesson11 import records as metrics
 from . import scenes
 from ...checks import Fail, Hint, Passed, Registry
@@ -63,40 +63,26 @@ GRAVITY_TOLERANCE = 0.01        # relative; the solution measures 980.0 in the p
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
     "corners": Hint(2, "a regular polygon's corners",
-                    "Put corner k on the circle at angle θk = 2πk / sides: (radius cos θk, radius sin θk) for k = 0 "
-                    "to sides - 1, so corner 0 is (radius, 0) and there are exactly `sides` corners. Angles in "
-                    "radians (math.cos takes radians): in degrees the corners go round more than once, the outline "
-                    "crosses itself and the window never opens."),
+                    "Lesson §1: corner k at radius (cos θk, sin θk), θk = 2πk / sides in radians, k = 0 to sides - "
+                    "1: corner 0 is (radius, 0)."),
     "centroid": Hint(3, "the area-weighted centroid",
-                     "polygon_inertia only works when the points are centred on the centroid, the centre of mass "
-                     "of the solid shape. That is not the average of the corners: weight each edge's term by its "
-                     "area, C = Σ (a + b) (a × b) / (6 A) over the edges a→b, with A the signed shoelace area "
-                     "polygon_area(points) (its sign makes either winding work). Without the division by 6 A a "
-                     "house vanishes: its corners land thousands of px from its centre."),
+                     "Lesson §4: the centre of mass weights each edge a→b by its area: C = Σ (a + b)(a × b) / (6 A), "
+                     "A the signed area; not the corners' average."),
     "inertia": Hint(4, "the triangle-fan sum",
-                    "Cut the polygon into triangles (0, a, b), one per edge a→b. Each weighs |a × b| (twice its "
-                    "area) and contributes a·a + a·b + b·b; I = mass × Σ |a × b| (a·a + a·b + b·b) / (6 Σ |a × b|). "
-                    "Check: a 30 × 20 box of mass 2 gives 216.67, as m (w² + h²) / 12 does. Without the 6 shapes "
-                    "are six times too hard to turn: a pushed hexagon hardly tips."),
+                    "Lesson §4: a fan of triangles (0, a, b): I = m Σ |a × b|(a·a + a·b + b·b) / (6 Σ |a × b|), m "
+                    "the mass you are given; a 30 × 20 box of mass 2: 216.67."),
     "axes": Hint(5, "skip parallel axes, keep every direction",
-                 "SAT must test every edge direction of both shapes, but parallel normals (the same line, pointing "
-                 "either way) cast the same shadows: keep an edge normal only if |axis × kept| > PARALLEL for "
-                 "every axis kept so far. A box has 2 directions, a hexagon 3; skipping a direction that is not "
-                 "parallel makes SAT miss gaps: a shape falling past another's corner stops in mid-air."),
-    "handout": Hint(None, "keep the handed-out code",
-                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
-                    "else (the shapes, build(), sat(), the scene, the World, the `# lab runtime` lines, the final "
-                    "print) stays as handed out, so the checker measures the lab the exercise describes. Start "
-                    "again from the starter if you are unsure what changed."),
+                 "Common questions, parallel axes: keep an edge normal only if |axis × kept| > PARALLEL for every "
+                 "kept axis: a box has 2 directions, a hexagon 3."),
+    "handout": lab_checks.handout_hint("the shapes, build(), sat(), the scene, the World, the `# lab runtime` "
+                                       "lines"),
     "runtime": lab_checks.RUNTIME_HINT,
     "sinking": Hint(6, "the push-out after the impulses",
-                    "Shapes end up deeper in the floor or in each other than the pile allows: the overlap the "
-                    "impulses leave is not being removed. The World's push-out (separate) must stay on, as "
-                    "handed out."),
+                    "Shapes end deeper in the floor or each other than the pile allows: the World's push-out "
+                    "(separate) must stay on, as handed out."),
     "settle": Hint(6, "watch them settle",
-                   "Shapes keep moving where they should rest. Press D and watch the contact points, the normals "
-                   "and the centre-of-mass dots while they settle; the function checks above all pass, so compare "
-                   "your file with the handout around the steps."),
+                   "The function checks pass, yet shapes keep moving: press D and watch the contacts and centre-of-"
+                   "mass dots; compare your file with the handout."),
     "crash": Hint(1, "run the file",
                   "Run the file yourself (python more_shapes.py) and fix the error at the line shown."),
 }
@@ -129,8 +115,8 @@ def _function(sub, functions, probe, function, step):
 def _bad(value, what, hint):
     """Fail if a probe recorded a value the student's function returned that is not the right type."""
     if isinstance(value, str):
-        raise Fail(f"{what} must be {'a list of points' if 'list' in what else 'a number'}; it returned {value}.",
-                   hint)
+        raise Fail(f"{what.split(' (')[0]} must return {'a list of points' if 'list' in what else 'a number'}.\n"
+                   f"it returned {value}.", hint)
 
 
 # ---------------------------------------------------------------- loading and the handout
@@ -142,33 +128,31 @@ lab_checks.register_common(CHECKS, HINTS, ("regular_polygon", "polygon_centroid"
 # ---------------------------------------------------------------- step 2: regular_polygon
 
 def _corner_mistake(case, got):
-    """A sentence naming a usual step-2 mistake, or ''."""
+    """(id, sentence) of a usual step-2 mistake the student's corners show in this case, or None."""
     sides, radius = case["sides"], case["radius"]
     want = case["want"]
     if len(got) != sides:
-        return (f" It has {len(got)} corners; a {sides}-gon has {sides}: k runs over range(sides), corner k at "
-                f"θk = 2πk / sides.")
+        return ("corners_count", f"your polygon has {len(got)} corners; a {sides}-gon has {sides}: k runs over "
+                                 "range(sides)")
     distances = [math.hypot(*p) for p in got]
     if not all(_close(d, radius, radius) for d in distances):
         ratio = sum(distances) / len(distances) / radius
         if all(_close(d / radius, ratio) for d in distances):
-            return (f" Every corner is {ratio:.4g} × radius from the centre; they belong on the circle of `radius` "
-                    "px.")
-        return " The corners are not all `radius` px from the centre (0, 0)."
+            return ("corners_radius", f"every corner is {ratio:.4g} × radius from the centre; they belong on the "
+                                      "circle of `radius` px")
+        return ("corners_off_circle", "the corners are not all `radius` px from the centre (0, 0)")
     same_set = all(any(_close(g[0], w[0], radius) and _close(g[1], w[1], radius) for w in want) for g in got)
     if same_set:
-        return " These are the right corners in another order: corner k belongs at θk = 2πk / sides, k = 0, 1, ..."
-    return (" The corners lie on the circle but at other angles: corner 0 at (radius, 0), and each next one "
-            "2π / sides further (radians, increasing, so clockwise on screen).")
+        return ("corners_order", "these are the right corners in another order: corner k at θk = 2πk / sides")
+    return ("corners_angles", "the corners lie on the circle but at other angles: corner 0 at (radius, 0), each "
+                              "next 2π / sides further")
 
 
 # the known wrong corner formulas, by the name the probe gives their corners (probes._corner_forms)
 CORNER_MISTAKES = {
-    "degrees": "these are the corners at θk = 360k / sides taken as radians: math.cos and math.sin take radians, "
-               "θk = 2πk / sides",
-    "half_turn": "these are the corners at θk = πk / sides, spread over half a turn: θk = 2πk / sides "
-                 "(π instead of 2π)",
-    "sin_cos": "your x and y are swapped: x = radius cos θk, y = radius sin θk (yours takes x from sin, y from cos)",
+    "degrees": "θk = 360k / sides is in degrees; math.cos and math.sin take radians: θk = 2πk / sides",
+    "half_turn": "θk = πk / sides spreads the corners over half a turn: θk = 2πk / sides",
+    "sin_cos": "your x and y are swapped: x = radius cos θk, y = radius sin θk",
 }
 
 
@@ -196,8 +180,11 @@ def polygon_corners(sub, functions):
             cases, lambda c, name: not isinstance(c["got"], str) and _same_corners(c["got"], c["forms"][name],
                                                                                    c["radius"]),
             [name for name, form in case["forms"].items() if not _same_corners(form, want, case["radius"])])
-        raise Fail(f"{label}: {shown_corner}." + (f" {CORNER_MISTAKES[named][0].upper()}{CORNER_MISTAKES[named][1:]}."
-                                                  if named else _corner_mistake(case, got)), HINTS["corners"])
+        found = mistake(f"corners_{named}", CORNER_MISTAKES[named]) if named else None
+        if found is None and _corner_mistake(case, got):
+            found = mistake(*_corner_mistake(case, got))
+        first = found.text if found else "regular_polygon() does not put corner k at θk = 2πk / sides"
+        raise Fail(f"{first}.\n{label}: {shown_corner}.", HINTS["corners"], found)
     return f"the corners of all {len(cases)} polygons (3 to 12 sides) are the lesson's"
 
 
@@ -227,37 +214,34 @@ def centroid(sub, functions):
     for case in cases:
         got, want = case["got"], case["want"]
         if isinstance(got, str):
-            raise Fail(f"polygon_centroid must return a point (a Vector2); for {case['case']} it returned {got}.",
+            raise Fail(f"polygon_centroid() must return a point (a Vector2).\nfor {case['case']} it returned {got}.",
                        HINTS["centroid"])
         scale = max(max(abs(x), abs(y)) for x, y in case["points"])
         if _close(got[0], want[0], scale) and _close(got[1], want[1], scale):
             continue
         average = case["average"]
-        named = ""
+        found = None
         if _close(got[0], average[0], scale) and _close(got[1], average[1], scale):
-            named = (" That is the average of the corners, which is the centre of mass only for triangles and "
-                     "symmetric shapes: weight by area.")
+            found = mistake("centroid_average", "your centroid is the corners' average, the centre of mass only for "
+                                                "triangles and symmetric shapes: weight by area")
         elif _close(got[0], -want[0], scale) and _close(got[1], -want[1], scale):
-            named = (" That is the centroid with its sign flipped: the weights a × b and the area A must carry the "
-                     "same sign, both signed (a × b over the signed A from polygon_area) or both without it "
-                     "(|a × b| over |A|); here one of them lost its sign, which shows when the points wind the "
-                     "other way.")
+            found = mistake("centroid_sign", "your centroid has its sign flipped when the points wind the other "
+                                             "way: a × b and A must both be signed, or both not")
         elif all(not isinstance(c["got"], str) and _close_point(c["got"], c["want"][::-1], scale) for c in cases):
-            named = (" That is the centroid with x and y swapped, in every outline: the x sum goes with the x "
-                     "coordinates, Σ (a.x + b.x)(a × b), and the y sum with the y ones.")
+            found = mistake("centroid_xy_swapped", "your centroid has x and y swapped: the x sum takes the x "
+                                                   "coordinates, Σ (a.x + b.x)(a × b)")
         elif _close_point(got, _without_closing_edge(case), scale):
-            named = (" The edge from the last point back to the first is missing: the loop must run over every "
-                     "edge, (i + 1) % len(points) wrapping round.")
+            found = mistake("centroid_no_closing_edge", "the edge from the last point back to the first is "
+                                                        "missing: wrap round with (i + 1) % len(points)")
         else:
-            for factor, words in ((3, "2A instead of 6A"), (6, "A instead of 6A"), (2, "3A instead of 6A"),
-                                  (1 / 2, "12A instead of 6A")):
+            for factor, words in ((3, "2A"), (6, "A"), (2, "3A"), (1 / 2, "12A")):
                 if _close(got[0], want[0] * factor, scale) and _close(got[1], want[1] * factor, scale):
-                    named = f" That is {factor:g} × the centroid: the sum is divided by {words}."
+                    found = mistake("centroid_divisor", f"your centroid is {factor:g} × the lesson's: the sum is "
+                                                        f"divided by {words}, not 6A")
                     break
-        differs = not (_close(average[0], want[0], scale) and _close(average[1], want[1], scale))
-        aside = f" (the corners' average is {_vec(average)})" if differs else ""
-        raise Fail(f"for {case['case']}, polygon_centroid gives {_vec(got)}; the area-weighted centroid is "
-                   f"{_vec(want)}{aside}." + named, HINTS["centroid"])
+        first = found.text if found else "polygon_centroid() is not the area-weighted centroid"
+        raise Fail(f"{first}.\nfor {case['case']}, yours is {_vec(got)}; the area-weighted centroid {_vec(want)}.",
+                   HINTS["centroid"], found)
     return f"the centroid of all {len(cases)} outlines (both windings) is the area-weighted one"
 
 
@@ -276,6 +260,8 @@ INERTIA_MISTAKES = {
     "no_abs": "the weights are the signed a × b; use abs(cross(a, b)) so that either winding works",
     "precedence": "mass * num / 6 * den multiplies by the weights' sum: divide by (6 * den), brackets included",
     "minus_cross_term": "the a·b term is subtracted; each triangle adds a·a + a·b + b·b",
+    "mass_from_area": "the mass argument is ignored: the mass is recomputed from the area (area / 1000); use the "
+                      "`mass` you are given",
 }
 
 
@@ -290,13 +276,16 @@ def inertia_sum(sub, functions):
                        HINTS["inertia"])
         if _close(got, want):
             continue
-        named = INERTIA_MISTAKES.get(consistent_mistake(
+        named = consistent_mistake(
             cases, lambda c, key: not isinstance(c["got"], str) and c["forms"].get(key) is not None
             and _close(c["got"], c["forms"][key]),
-            [key for key, value in case["forms"].items() if value is not None and not _close(want, value)]))
-        analytic = f" (the analytic value is {case['analytic']:.6g})" if case["analytic"] is not None else ""
-        raise Fail(f"for {case['case']}, polygon_inertia gives {got:.6g}; the triangle-fan sum gives {want:.6g}"
-                   f"{analytic}" + (f": {named}." if named else "."), HINTS["inertia"])
+            [key for key, value in case["forms"].items() if value is not None and not _close(want, value)
+             and key in INERTIA_MISTAKES])
+        found = mistake(f"polygon_inertia_{named}", INERTIA_MISTAKES[named]) if named else None
+        first = found.text if found else "polygon_inertia() is not the triangle-fan sum"
+        analytic = f" (analytic {case['analytic']:.6g})" if case["analytic"] is not None else ""
+        raise Fail(f"{first}.\nfor {case['case']}, yours gives {got:.6g}; the triangle-fan sum {want:.6g}{analytic}.",
+                   HINTS["inertia"], found)
     regular = sum(1 for c in cases if c["analytic"] is not None)
     return f"all {len(cases)} inertias match the lesson ({regular} of them the analytic value of a box or regular polygon)"
 
@@ -309,17 +298,16 @@ def _parallel(u, v):
 
 # the known wrong ways of skipping parallel axes, by the name the probe gives what they keep (probes._axes_forms)
 AXES_MISTAKES = {
-    "dot_not_cross": "an axis is skipped when |axis · kept| is small, which is when it is perpendicular to a kept one; "
-                     "a parallel one has |axis × kept| near 0: compare abs(cross(axis, kept)) with PARALLEL",
-    "same_way_only": "only an axis pointing the same way as a kept one is skipped (axis · kept near 1); one pointing "
-                     "the opposite way is parallel too: test abs(cross(axis, kept)) <= PARALLEL",
-    "cross_without_abs": "the test cross(axis, kept) > PARALLEL has no abs(): an axis turned the other way (a negative "
-                         "cross product) is skipped though it is not parallel",
-    "only_a": "only A's edge normals are there: B's edges give directions of their own (edge_normals(pb) too)",
-    "dot_threshold": "the test 1 - |axis · kept| <= PARALLEL merges axes up to about 0.08° apart (1 - cos θ ≈ θ² / 2): "
-                     "compare |axis × kept| (≈ θ) with PARALLEL, as the lesson does",
-    "last_kept_only": "each axis is compared with the last kept axis only; a twin kept earlier is missed: compare it "
-                      "with every kept axis (all(...))",
+    "dot_not_cross": "an axis is skipped when |axis · kept| is small, i.e. perpendicular; parallel means |axis × kept| "
+                     "near 0",
+    "same_way_only": "only an axis pointing the same way as a kept one is skipped; one pointing the opposite way is "
+                     "parallel too",
+    "cross_without_abs": "the test cross(axis, kept) > PARALLEL has no abs(): an axis turned the other way is "
+                         "skipped though not parallel",
+    "only_a": "only A's edge normals are there: B's edges give directions of their own",
+    "dot_threshold": "the test 1 - |axis · kept| <= PARALLEL merges axes up to 0.08° apart: compare |axis × kept| "
+                     "with PARALLEL",
+    "last_kept_only": "each axis is compared with the last kept axis only: compare it with every kept axis",
     "none_skipped": "no axis is skipped: every parallel twin is kept",
 }
 
@@ -329,11 +317,13 @@ def _same_axes(got, want):
 
 
 def _axes_mistake(cases, case):
-    """' Sentence.' naming the known wrong skip rule that keeps the student's axes in every pair, or ''."""
+    """The Mistake of the known wrong skip rule that keeps the student's axes in every pair, or None. Its
+    sentence says "your skip rule": the lesson's rule was stated just before, and this is the student's."""
     named = consistent_mistake(cases, lambda c, name: not isinstance(c["got"], str)
                                and _same_axes(c["got"], c["forms"][name]),
-                               [name for name, form in case["forms"].items() if not _same_axes(form, case["want"])])
-    return f" That is the rule in every pair: {AXES_MISTAKES[named]}." if named else ""
+                               [name for name, form in case["forms"].items() if not _same_axes(form, case["want"])
+                                and name in AXES_MISTAKES])
+    return mistake(f"axes_{named}", f"your skip rule, in every pair: {AXES_MISTAKES[named]}") if named else None
 
 
 def _label(case):
@@ -349,58 +339,58 @@ def parallel_axes(sub, functions):
         got = case["got"]
         label = _label(case)
         if isinstance(got, str):
-            raise Fail(f"separating_axes must return a list of unit Vector2 axes; for {label} it returned {got}.",
+            raise Fail(f"separating_axes() must return a list of unit Vector2 axes.\nfor {label} it returned {got}.",
                        HINTS["axes"])
         for axis in got:
             if abs(math.hypot(*axis) - 1) > 1e-6:
-                raise Fail(f"for {label}, separating_axes gives the axis {_vec(axis)} of length "
-                           f"{math.hypot(*axis):.4g}; axes are unit edge normals (edge_normals gives them).",
-                           HINTS["axes"])
+                text = "an axis is not a unit vector: axes are unit edge normals (edge_normals gives them)"
+                raise Fail(f"{text}.\nfor {label}, the axis {_vec(axis)} has length {math.hypot(*axis):.4g}.",
+                           HINTS["axes"], mistake("axes_not_unit", text))
         normals = case["normals_a"] + case["normals_b"]
         stray = next((a for a in got if not any(_parallel(a, n) for n in normals)), None)
         if stray is not None:
-            raise Fail(f"for {label}, separating_axes gives {_vec(stray)}, which is not the normal of any edge of "
-                       "A or B.", HINTS["axes"])
+            raise Fail(f"separating_axes() gives an axis that is not the normal of any edge of A or B.\nfor {label}: "
+                       f"{_vec(stray)}.", HINTS["axes"])
         missing = next((n for n in normals if not any(_parallel(a, n) for a in got)), None)
         if missing is not None:
             whose = "A's" if missing in case["normals_a"] else "B's"
             near = next((a for a in got if 1 - abs(a[0] * missing[0] + a[1] * missing[1]) <= 1e-6), None)
             if near is not None:   # merged by a dot-product test: 1 - |a·b| ≈ θ²/2 is tiny long before θ is
                 angle = math.degrees(math.asin(min(1.0, abs(near[0] * missing[1] - near[1] * missing[0]))))
-                raise Fail(f"for {label}, separating_axes has no axis along {whose} edge normal {_vec(missing)}, "
-                           f"which is {angle:.2g}° from the kept axis {_vec(near)}: the test 1 - |a · b| <= PARALLEL "
-                           "merges axes up to about 0.08° apart (1 - cos θ ≈ θ² / 2). Compare |a × b| (≈ θ) with "
-                           "PARALLEL, as the lesson does.", HINTS["axes"])
-            raise Fail(f"for {label}, separating_axes has no axis along {whose} edge normal {_vec(missing)}: "
-                       f"{len(got)} axes for {len(case['want'])} distinct directions. Skip an axis only when it is "
-                       "parallel to one already kept, or SAT misses the gap along it." + _axes_mistake(cases, case),
-                       HINTS["axes"])
+                found = mistake("axes_dot_threshold", AXES_MISTAKES["dot_threshold"])
+                raise Fail(f"{found.text}.\nfor {label}, {whose} edge normal {_vec(missing)} is missing, "
+                           f"{angle:.2g}° from the kept axis {_vec(near)}.", HINTS["axes"], found)
+            found = _axes_mistake(cases, case)
+            first = found.text if found else "a direction that is not parallel to a kept axis was skipped"
+            raise Fail(f"{first}.\nfor {label}, no axis along {whose} edge normal {_vec(missing)}: {len(got)} axes "
+                       f"for {len(case['want'])} directions.", HINTS["axes"], found)
         twins = next(((a, b) for i, a in enumerate(got) for b in got[i + 1:] if _parallel(a, b)), None)
         if twins is not None:
             same = "the same way" if twins[0][0] * twins[1][0] + twins[0][1] * twins[1][1] > 0 else "opposite ways"
-            raise Fail(f"for {label}, separating_axes gives {len(got)} axes where {len(case['want'])} directions are "
-                       f"distinct: {_vec(twins[0])} and {_vec(twins[1])} are parallel (pointing {same}). Skip an "
-                       "axis parallel to any kept one, whichever way it points (|axis × kept| <= PARALLEL)."
-                       + _axes_mistake(cases, case), HINTS["axes"])
+            found = _axes_mistake(cases, case)
+            first = found.text if found else "a parallel axis is kept twice: skip one parallel to any kept axis"
+            raise Fail(f"{first}.\nfor {label}, {_vec(twins[0])} and {_vec(twins[1])} are parallel (pointing "
+                       f"{same}): {len(got)} axes for {len(case['want'])} directions.", HINTS["axes"], found)
     sats = _function(sub, functions, "sat", "sat", 5)
     for case in sats:
         got, want = case["got"], case["want"]
         label = _label(case)
         if got is not None and "bad" in got:
-            raise Fail(f"sat() must return (normal, depth) or None; for {label} it returned {got['bad']}.",
+            raise Fail(f"sat() must return (normal, depth) or None.\nfor {label} it returned {got['bad']}.",
                        HINTS["axes"])
         if want is None:
             if got is not None and not ("touching" in case["pair"] and abs(got["depth"]) <= TOUCHING):
-                raise Fail(f"with your axes sat() says {label} overlaps by {got['depth']:.2f} px, but the shapes are "
-                           "apart along one of their edge normals.", HINTS["axes"])
+                raise Fail(f"with your axes sat() misses a gap: the shapes are apart along an edge normal.\nfor "
+                           f"{label}, sat() says they overlap by {got['depth']:.2f} px.", HINTS["axes"])
             continue
         if got is None:
-            raise Fail(f"with your axes sat() says {label} is apart, but the shapes overlap by {want['depth']:.2f} px.",
-                       HINTS["axes"])
+            raise Fail(f"with your axes sat() says apart where the shapes overlap.\nfor {label}, they overlap by "
+                       f"{want['depth']:.2f} px.", HINTS["axes"])
         along = max(got["normal"][0] * t[0] + got["normal"][1] * t[1] for t in case["ties"] or [want["normal"]])
         if not _close(got["depth"], want["depth"]) or abs(along - 1) > 1e-6:
-            raise Fail(f"with your axes sat() gives {got['depth']:.4g} px along {_vec(got['normal'])} for {label}; "
-                       f"the smallest overlap is {want['depth']:.4g} px along {_vec(want['normal'])}.", HINTS["axes"])
+            raise Fail(f"with your axes sat() misses the smallest overlap.\nfor {label}: {got['depth']:.4g} px along "
+                       f"{_vec(got['normal'])}; expected {want['depth']:.4g} px along {_vec(want['normal'])}.",
+                       HINTS["axes"])
     hexagons = max((len(c["want"]) for c in cases if c["pair"] == "two aligned hexagons"), default=0)
     return Passed(f"every direction once in all {len(cases)} pairs (two aligned hexagons: {hexagons} axes), and sat() "
                   f"right in all {len(sats)}", value=cases)
@@ -417,16 +407,16 @@ def bodies_inertia(sub, functions):
     for case in cases:
         offset = math.hypot(*case["centroid"])
         if offset > CENTRED:
-            raise Fail(f"build() makes a {case['kind']} whose corners' centroid is {offset:.3g} px from its "
-                       "position: the body would turn about the wrong point.", HINTS["centroid"])
+            raise Fail(f"build() makes a {case['kind']} that turns about the wrong point.\nits corners' centroid is "
+                       f"{offset:.3g} px from its position.", HINTS["centroid"])
         want = case["analytic"] if case["analytic"] is not None else case["reference"]
         error = abs(case["inertia"] - want) / want
         worst = max(worst, error)
         if error > INERTIA_REL:
             what = "the analytic value" if case["analytic"] is not None else "the triangle-fan sum about its centroid"
-            raise Fail(f"build() makes a {case['kind']} of mass {case['mass']:.4g} with inertia {case['inertia']:.6g}; "
-                       f"{what} is {want:.6g} ({100 * error:.3g} % off, bound {100 * INERTIA_REL:g} %).",
-                       HINTS["inertia"])
+            raise Fail(f"build() makes a {case['kind']} whose inertia is not {what}.\nmass {case['mass']:.4g}: "
+                       f"inertia {case['inertia']:.6g}, expected {want:.6g} ({100 * error:.3g} % off, bound "
+                       f"{100 * INERTIA_REL:g} %).", HINTS["inertia"])
     return f"{len(cases)} kinds of shape, worst inertia error {100 * worst:.2g} %"
 
 
@@ -439,36 +429,35 @@ def runs(sub):
     records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in records.items():
         if not metrics.finite(run.record["records"]):
-            raise Fail(f"in the '{name}' scene a shape's position or speed became infinite or NaN.", HINTS["settle"])
+            raise Fail(f"a shape's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
     gravity = metrics.free_fall(records["pile"].record)
     if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
-        raise Fail(f"shapes fall with {gravity:.1f} px/s² in the pile scene; the course's gravity is "
-                   f"{GRAVITY:g} px/s².", HINTS["handout"])
+        raise Fail(f"shapes do not fall with the course's gravity, {GRAVITY:g} px/s².\nin the pile scene they fall "
+                   f"with {gravity:.1f} px/s².", HINTS["handout"])
     return records
 
 
 def _escaped(summary, what):
     """Fail if shapes fell through the floor or left the screen."""
     if summary["fell_through"]:
-        raise Fail(f"{what}: {summary['fell_through']} of {summary['crates']} shapes fell through the floor "
+        raise Fail(f"shapes fell through the floor.\n{what}: {summary['fell_through']} of {summary['crates']} "
                    f"(top speed {summary['peak_speed']:.0f} px/s).", HINTS["settle"])
     if summary["off_screen"] or summary["highest_y"] < -50:
-        raise Fail(f"{what}: shapes were flung off the screen (top speed {summary['peak_speed']:.0f} px/s).",
+        raise Fail(f"shapes were flung off the screen.\n{what}: top speed {summary['peak_speed']:.0f} px/s.",
                    HINTS["settle"])
 
 
 def _comes_to_rest(shape, what, turn, turn_words):
     if -shape["floor_gap"] > PENETRATION:
-        raise Fail(f"{what} sank {shown(-shape['floor_gap'], PENETRATION)} px into the floor (bound "
+        raise Fail(f"{what} sank into the floor.\n{shown(-shape['floor_gap'], PENETRATION)} px deep (bound "
                    f"{PENETRATION:g} px).", HINTS["sinking"])
     if shape["turned"] < turn or shape["side_error"] > TIPPED_FLAT:
-        raise Fail(f"{what} did not {turn_words}: it turned {math.degrees(shape['turned']):.1f}° (at least "
-                   f"{math.degrees(turn):.0f}° expected) and its lowest side ended "
-                   f"{shown(math.degrees(shape['side_error']), 6)}° from flat (bound {math.degrees(TIPPED_FLAT):.0f}°).",
-                   HINTS["settle"])
+        raise Fail(f"{what} did not {turn_words}.\nit turned {math.degrees(shape['turned']):.1f}° (at least "
+                   f"{math.degrees(turn):.0f}°); its lowest side ended {shown(math.degrees(shape['side_error']), 6)}° "
+                   f"from flat (bound {math.degrees(TIPPED_FLAT):.0f}°).", HINTS["settle"])
     if shape["rest_speed"] > REST_SPEED or shape["rest_omega"] > REST_OMEGA:
-        raise Fail(f"{what} is still moving at the end ({shown(shape['rest_speed'], REST_SPEED)} px/s, "
-                   f"{shown(shape['rest_omega'], REST_OMEGA)} rad/s over the last 0.5 s; bounds {REST_SPEED:g} px/s, "
+        raise Fail(f"{what} is still moving at the end.\n{shown(shape['rest_speed'], REST_SPEED)} px/s, "
+                   f"{shown(shape['rest_omega'], REST_OMEGA)} rad/s over the last 0.5 s (bounds {REST_SPEED:g} px/s, "
                    f"{REST_OMEGA:g} rad/s).", HINTS["settle"])
 
 
@@ -501,11 +490,11 @@ def pile_stable(records):
     _escaped(metrics.summary(record, scenes.PILE_TAIL), "the pile of seven shapes fell apart")
     pile = metrics.measure_pile(record, scenes.PILE_TAIL)
     if pile["floor_penetration"] > PENETRATION or pile["pair_overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the pile sinks: shapes end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
-                   f"floor (bound {PENETRATION:g} px) and up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into "
+        raise Fail(f"the pile sinks.\nshapes end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
+                   f"floor (bound {PENETRATION:g} px), up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into "
                    f"each other (bound {PAIR_OVERLAP:g} px).", HINTS["sinking"])
     if pile["tail_speed"] > PILE_SPEED or pile["drift"] > PILE_DRIFT:
-        raise Fail(f"the pile jitters: in its last {scenes.PILE_TAIL:g} s a shape moves at "
+        raise Fail(f"the pile jitters.\nin its last {scenes.PILE_TAIL:g} s a shape moves at "
                    f"{shown(pile['tail_speed'], PILE_SPEED)} px/s (bound {PILE_SPEED:g}) and drifts "
                    f"{shown(pile['drift'], PILE_DRIFT)} px (bound {PILE_DRIFT:g}).", HINTS["settle"])
     return (f"deepest overlap {max(pile['floor_penetration'], pile['pair_overlap'], 0):.2f} px, top speed "
@@ -521,9 +510,7 @@ def ramp_holds(records):
     tail_speed = float(arrays["speed"][-metrics.FPS:, list(scenes.ON_RAMP)].max())
     worst = max(ramp, key=lambda shape: abs(shape["slid"]))
     if abs(worst["slid"]) > RAMP_SLIDE or tail_speed > RAMP_SPEED:
-        raise Fail(f"a pentagon and a hexagon set at rest on the 22° ramp did not stay put: one moved "
-                   f"{shown(worst['slid'], RAMP_SLIDE)} px along the slope in 3 s (bound {RAMP_SLIDE:g} px) and the "
-                   f"faster moves {shown(tail_speed, RAMP_SPEED)} px/s at the end (bound {RAMP_SPEED:g}). Friction "
-                   "0.6 holds a 22° slope, and a side of a pentagon or hexagon is too wide to tip over on it.",
-                   HINTS["settle"])
+        raise Fail(f"a pentagon and a hexagon at rest on the 22° ramp did not stay put: friction 0.6 holds them.\n"
+                   f"one moved {shown(worst['slid'], RAMP_SLIDE)} px in 3 s (bound {RAMP_SLIDE:g} px); the faster "
+                   f"moves {shown(tail_speed, RAMP_SPEED)} px/s at the end (bound {RAMP_SPEED:g}).", HINTS["settle"])
     return f"they moved at most {abs(worst['slid']):.2f} px along the slope in 3 s"

@@ -182,6 +182,8 @@ def _inertia_forms(points, mass):
         "precedence": mass * sum(w * t for w, t in zip(weights, terms)) / 6 * total,
         "minus_cross_term": mass * sum(w * (a.dot(a) - a.dot(b) + b.dot(b)) for w, (a, b) in zip(weights, pairs))
         / (6 * total),
+        # issue 40: the mass argument ignored, recomputed from the area (the handout's DENSITY, 1/1000 per px²)
+        "mass_from_area": (total / 2 / 1000) * sum(w * t for w, t in zip(weights, terms)) / (6 * total),
     }
     if abs(sum(signed)) > 0:
         forms["no_abs"] = mass * sum(s * t for s, t in zip(signed, terms)) / (6 * sum(signed))
@@ -195,7 +197,8 @@ def inertia_cases():
         cases.append((f"a regular {sides}-gon of radius {radius} px, mass {mass:g}",
                       regular_polygon(sides, radius), mass,
                       {"kind": "polygon", "mass": mass, "radius": radius, "sides": sides}))
-    for w, h, mass in ((30, 20, 2.0), (80, 45, 3.6), (12, 70, 0.84)):
+    # the last box is heavy for its size (mass 9, area / 1000 = 1.2), so a mass recomputed from the area shows
+    for w, h, mass in ((30, 20, 2.0), (80, 45, 3.6), (12, 70, 0.84), (40, 30, 9.0)):
         cases.append((f"a {w} × {h} box, mass {mass:g}", box_points(w, h), mass,
                       {"kind": "box", "mass": mass, "w": w, "h": h}))
     for name, corners in centroid_cases()[:4]:

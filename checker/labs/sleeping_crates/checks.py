@@ -19,7 +19,7 @@ measures in the same scene, with the measured value noted next to it.
 """
 
 from ... import lab_checks
-from ...causes import consistent_mistake
+from ...causes import consistent_mistake, mistake
 from lesson11 import records as metrics
 from . import scenes
 from ...checks import Fail, Hint, Passed, Registry
@@ -49,32 +49,20 @@ THROW_HEIGHT = 60.0    # px the thrown crate must rise (it did leave the floor);
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
     "timer": Hint(2, "the sleep timer",
-                  "While the crate is calm, its speed below SLEEP_SPEED and the size of its spin below SLEEP_SPIN "
-                  "(spin has a sign), the timer grows by dt: the seconds it has been calm. As soon as either is at "
-                  "or above its "
-                  "threshold return 0.0: the timer starts again, so a crate that is slow for one instant (at the "
-                  "top of a throw) never reaches SLEEP_AFTER; otherwise a crate thrown up hangs in the air, asleep "
-                  "at the top of its throw. dt is in seconds, not frames."),
+                  "Going further, Sleeping: while speed < SLEEP_SPEED (px/s) and |spin| < SLEEP_SPIN (rad/s), the "
+                  "timer grows by dt (s); otherwise it starts again from 0."),
     "moves": Hint(3, "skip sleeping bodies",
-                  "moves(body) is True only for a body the World must integrate: dynamic (body.inv_mass != 0) and "
-                  "awake (not body.asleep). A static body and a sleeping body both return False, so a pair of them "
-                  "is never tested."),
+                  "Going further, Sleeping: moves(body) is True only for a dynamic (inv_mass != 0) and awake body; "
+                  "static and sleeping bodies give False."),
     "wake": Hint(4, "wake on contact",
-                 "Return a list of the bodies to wake: a sleeping body whose partner is dynamic (inv_mass != 0) and "
-                 "awake. Check both orders (a sleeping, b awake, and the other way round). The floor and walls "
-                 "never wake anything (a crate sleeps on the floor), two sleeping crates leave each other asleep, "
-                 "and an awake body is not 'woken'. Return [] when nothing wakes. A pile that is never woken is "
-                 "shoved down by a crate dropped on it: its crates sink into the floor."),
-    "handout": Hint(None, "keep the handed-out code",
-                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
-                    "else (the thresholds, build(), the scene, the World and its hooks, the `# lab runtime` lines, "
-                    "the final print) stays as handed out, so the checker measures the lab the exercise describes. "
-                    "Start again from the starter if you are unsure what changed."),
+                 "Going further, Sleeping: wake the sleeping body of a pair whose other body is dynamic and awake, "
+                 "in both orders; the floor wakes nothing. Return a list, [] for none."),
+    "handout": lab_checks.handout_hint("the thresholds, build(), the scene, the World, the `# lab runtime` "
+                                       "lines, the final print"),
     "runtime": lab_checks.RUNTIME_HINT,
     "settle": Hint(5, "watch the pile sleep",
-                   "The function checks above all pass, yet the scene misbehaves. Run the file, drop crates and "
-                   "watch which ones go dim and when (D shows the contacts); compare your file with the handout "
-                   "around the steps."),
+                   "The function checks pass, yet the scene misbehaves: run the file, drop crates and watch which "
+                   "go dim and when (D shows the contacts)."),
     "crash": Hint(1, "run the file",
                   "Run the file yourself (python sleeping_crates.py) and fix the error at the line shown."),
 }
@@ -104,27 +92,31 @@ lab_checks.register_common(CHECKS, HINTS, ("sleep_timer", "moves", "wake_on_cont
 # the known wrong rules of step 2, by the name the probe gives their answers (probes.timer_mistakes)
 TIMER_MISTAKES = {
     "or": "calm when speed < SLEEP_SPEED `or` |spin| < SLEEP_SPIN; the rule needs both (`and`)",
-    "ignores_spin": "the timer looks at the speed only: a spinning crate must start again from 0 too "
-                    "(|spin| < SLEEP_SPIN as well)",
+    "ignores_spin": "the timer looks at the speed only: a spinning crate must start again from 0 too",
     "ignores_speed": "the timer looks at the spin only: a moving crate must start again from 0 too",
-    "signed_spin": "the spin is compared with its sign: a crate spinning backwards (negative spin) counts as calm; "
-                   "compare abs(spin) with SLEEP_SPIN",
-    "speed_dt": "speed * dt (px moved in one step) is compared with SLEEP_SPEED, which is in px/s: compare the "
-                "speed itself",
+    "signed_spin": "the spin is compared with its sign: a crate spinning backwards counts as calm; compare abs(spin)",
+    "speed_dt": "speed * dt (px per step) is compared with SLEEP_SPEED, which is in px/s",
+    "both_dt": "speed * dt and |spin| * dt (per step) are compared with SLEEP_SPEED and SLEEP_SPIN, which are per "
+               "second",
+    "thresholds_dt": "the thresholds are scaled to one step (SLEEP_SPEED * dt, SLEEP_SPIN * dt); they are per "
+                     "second, like speed and spin",
     "spin_vs_speed": "|spin| is compared with SLEEP_SPEED (5 px/s) where its own threshold is SLEEP_SPIN (0.1 rad/s)",
-    "never_resets": "the timer kept its value: a crate that moves must start again from 0, or a throw that is slow "
-                    "at its top adds up calm instants and sleeps in the air",
-    "counts_frames": "that adds 1 (a frame) per step; the timer counts seconds: add dt",
+    "squared": "speed² and spin² are compared with SLEEP_SPEED and SLEEP_SPIN: compare speed and |spin| themselves",
+    "speed_squared": "speed² is compared with SLEEP_SPEED: compare the speed itself",
+    "never_resets": "the timer keeps its value when the crate moves: it must start again from 0",
+    "counts_frames": "the timer adds 1 (a frame) per step; it counts seconds: add dt",
+    "fixed_step": "the timer adds 1/120 s per step, not dt: a World stepping at another rate counts wrong",
     "returns_dt": "you return dt, not timer + dt: the timer must grow from its value",
     "no_growth": "the timer does not grow while the crate is calm: return timer + dt",
 }
 
 
 def _timer_mistake(cases, case):
-    """' Sentence.' naming the known wrong rule that gives the student's answer in every case, or ''."""
+    """The Mistake of the known wrong rule that gives the student's answer in every case, or None."""
     named = consistent_mistake(cases, lambda c, name: abs(c["got"] - c["mistakes"][name]) <= ABS,
-                               [name for name, value in case["mistakes"].items() if abs(value - case["want"]) > ABS])
-    return f" {TIMER_MISTAKES[named][0].upper()}{TIMER_MISTAKES[named][1:]}." if named else ""
+                               [name for name, value in case["mistakes"].items() if abs(value - case["want"]) > ABS
+                                and name in TIMER_MISTAKES])
+    return mistake(f"timer_{named}", TIMER_MISTAKES[named]) if named else None
 
 
 @CHECKS.check(depends=["loads"])
@@ -136,12 +128,14 @@ def timer_rule(sub, functions):
         label = (f"sleep_timer({case['timer']:g}, {case['speed']:g}, {case['spin']:g}, {case['dt']:.4g}) "
                  f"({case['case']})")
         if isinstance(got, str):
-            raise Fail(f"{label} must return a number of seconds; it returned {got}.", HINTS["timer"])
+            raise Fail(f"sleep_timer() must return a number of seconds.\n{label} returned {got}.", HINTS["timer"])
         if abs(got - case["want"]) <= ABS:
             continue
         numbers = all(not isinstance(c["got"], str) for c in cases)
-        raise Fail(f"{label} returned {got:.6g} s; the timer should be {case['want']:.6g} s."
-                   + (_timer_mistake(cases, case) if numbers else ""), HINTS["timer"])
+        found = _timer_mistake(cases, case) if numbers else None
+        first = found.text if found else "the timer does not follow the rule"
+        raise Fail(f"{first}.\n{label} returned {got:.6g} s; the timer should be {case['want']:.6g} s.",
+                   HINTS["timer"], found)
     return f"all {len(cases)} cases (calm, fast, spinning either way) follow the rule"
 
 
@@ -154,17 +148,18 @@ def skips_sleepers(sub, functions):
     for case in cases:
         got = case["got"]
         if isinstance(got, str):
-            raise Fail(f"moves() must return True or False; for {case['case']} it returned {got}.", HINTS["moves"])
+            raise Fail(f"moves() must return True or False.\nfor {case['case']} it returned {got}.", HINTS["moves"])
         if got == case["want"]:
             continue
         if case["want"]:
-            why = " An awake crate must be integrated, or nothing ever falls."
+            name, why = "moves_awake_false", "an awake crate must move, or nothing ever falls"
         elif "static" in case["case"]:
-            why = (" A static body never moves: with moves() True for the floor, every sleeping crate on it is "
-                   "still tested against it.")
+            name, why = "moves_static_true", ("a static body never moves: with moves() True for the floor, every "
+                                              "sleeping crate on it is still tested")
         else:
-            why = " A sleeping crate is not integrated and its pairs with sleeping or static bodies are not tested."
-        raise Fail(f"moves() says {got} for {case['case']}; it should say {case['want']}." + why, HINTS["moves"])
+            name, why = "moves_sleeping_true", "a sleeping crate does not move, so its quiet pairs are not tested"
+        raise Fail(f"{why}.\nmoves() says {got} for {case['case']}; it should say {case['want']}.", HINTS["moves"],
+                   mistake(name, why))
     return "awake crates move; static and sleeping bodies do not"
 
 
@@ -178,22 +173,25 @@ def wakes_on_contact(sub, functions):
         got, want = case["got"], case["want"]
         label = f"wake_on_contact(a, b) with a {case['a']} and b {case['b']}"
         if isinstance(got, str):
-            raise Fail(f"{label} must return a list of bodies (or []); it returned {got}.", HINTS["wake"])
+            raise Fail(f"wake_on_contact() must return a list of bodies (or []).\n{label} returned {got}.",
+                       HINTS["wake"])
         if got == want:
             continue
         names = " and ".join(got) if got else "nothing"
         if not want and "static" in (case["a"], case["b"]) and got:
-            why = " The floor never wakes a crate: a crate sleeps on the floor."
+            name, why = "wake_by_floor", "the floor never wakes a crate: a crate sleeps on the floor"
         elif not want and case["a"] == case["b"] == "asleep":
-            why = " Two sleeping crates leave each other asleep (their pair is not even tested)."
+            name, why = "wake_two_sleepers", "two sleeping crates leave each other asleep"
         elif not want and case["a"] == case["b"] == "awake":
-            why = " Neither is asleep: there is nothing to wake."
+            name, why = "wake_awake", "neither is asleep: there is nothing to wake"
         elif want and not got:
-            order = "with the sleeping body second" if want == ["b"] else "with the sleeping body first"
-            why = f" An awake crate touching a sleeping one must wake it ({order}: check both orders)."
+            order = "the sleeping body second" if want == ["b"] else "the sleeping body first"
+            name, why = "wake_one_order", f"an awake crate touching a sleeping one must wake it, with {order} " \
+                                          "too: check both orders"
         else:
-            why = " Only the sleeping body of the pair is woken."
-        raise Fail(f"{label} wakes {names}; it should wake {' and '.join(want) or 'nothing'}." + why, HINTS["wake"])
+            name, why = "wake_not_only_sleeper", "only the sleeping body of the pair is woken"
+        raise Fail(f"{why}.\n{label} wakes {names}; it should wake {' and '.join(want) or 'nothing'}.",
+                   HINTS["wake"], mistake(name, why))
     return f"all {len(cases)} kinds of pair, both orders, wake the right body"
 
 
@@ -205,17 +203,17 @@ def narrow_work(sub, functions):
     data = _function(sub, functions, "narrow_work", "build", None)
     awake, asleep = data["awake"], data["asleep"]
     if awake["narrow_tests"] == 0:
-        raise Fail("the 40-crate pile, awake, made no narrow-phase test at all: build() must make the crates it is "
+        raise Fail("the 40-crate pile, awake, made no narrow-phase test at all.\nbuild() must make the crates it is "
                    "given.", HINTS["handout"])
     share = asleep["narrow_tests"] / awake["narrow_tests"]
     if share > NARROW_SHARE:
-        raise Fail(f"with the 40-crate pile asleep a step made {asleep['narrow_tests']} narrow-phase tests "
-                   f"({asleep['pair_tests']} pairs visited), {shown(share, NARROW_SHARE)} of the "
-                   f"{awake['narrow_tests']} of the same pile awake (bound {NARROW_SHARE:g}). The broad phase must "
-                   "skip every pair in which neither body moves.", HINTS["moves"])
+        raise Fail(f"a sleeping pile still costs narrow-phase tests: skip every pair in which neither body moves.\n"
+                   f"asleep, a step of the 40-crate pile made {asleep['narrow_tests']} tests, "
+                   f"{shown(share, NARROW_SHARE)} of the {awake['narrow_tests']} awake (bound {NARROW_SHARE:g}).",
+                   HINTS["moves"])
     if asleep["still_asleep"] < 40:
-        raise Fail(f"one step woke the sleeping 40-crate pile ({asleep['still_asleep']} of 40 still asleep): nothing "
-                   "touched it.", HINTS["wake"])
+        raise Fail(f"one step woke the sleeping 40-crate pile, though nothing touched it.\n"
+                   f"{asleep['still_asleep']} of 40 still asleep.", HINTS["wake"])
     return (f"{asleep['narrow_tests']} narrow tests asleep against {awake['narrow_tests']} awake "
             f"({asleep['pair_tests']} against {awake['pair_tests']} pairs visited)")
 
@@ -229,7 +227,7 @@ def runs(sub):
     records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in records.items():
         if not metrics.finite(run.record["records"]):
-            raise Fail(f"in the '{name}' scene a crate's position or speed became infinite or NaN.", HINTS["settle"])
+            raise Fail(f"a crate's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
     return records
 
 
@@ -238,15 +236,15 @@ def pile_sleeps(records):
     """A loose pile of four crates settles and falls asleep within 2 s of settling, without sinking."""
     pile = scenes.measure_loose(records["sleep"].record)
     if pile["settled"] is None:
-        raise Fail("four crates dropped a little above the floor never settled (some crate stays faster than "
-                   f"{scenes.SLEEP_SPEED:g} px/s or spins faster than {scenes.SLEEP_SPIN:g} rad/s).", HINTS["settle"])
+        raise Fail("four crates dropped a little above the floor never settled.\nsome crate stays faster than "
+                   f"{scenes.SLEEP_SPEED:g} px/s or spins faster than {scenes.SLEEP_SPIN:g} rad/s.", HINTS["settle"])
     if pile["asleep"] is None or pile["asleep"] > SLEPT_BY or pile["asleep"] - pile["settled"] > SLEEP_WITHIN:
         when = "were not all asleep at the end" if pile["asleep"] is None else f"were all asleep at {pile['asleep']:.2f} s"
-        raise Fail(f"four crates settled at {pile['settled']:.2f} s but {when} (bound: asleep by {SLEPT_BY:g} s and "
-                   f"within {SLEEP_WITHIN:g} s of settling).", HINTS["timer"])
+        raise Fail(f"a settled pile does not fall asleep in time.\nfour crates settled at {pile['settled']:.2f} s "
+                   f"but {when} (bound: by {SLEPT_BY:g} s, within {SLEEP_WITHIN:g} s).", HINTS["timer"])
     if pile["penetration"] > PENETRATION or pile["overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the sleeping pile sank: {shown(pile['penetration'], PENETRATION)} px into the floor (bound "
-                   f"{PENETRATION:g}) and {shown(pile['overlap'], PAIR_OVERLAP)} px into each other (bound "
+        raise Fail(f"the sleeping pile sank.\n{shown(pile['penetration'], PENETRATION)} px into the floor (bound "
+                   f"{PENETRATION:g}), {shown(pile['overlap'], PAIR_OVERLAP)} px into each other (bound "
                    f"{PAIR_OVERLAP:g}).", HINTS["moves"])
     return (f"settled at {pile['settled']:.2f} s, all asleep at {pile['asleep']:.2f} s "
             f"({pile['asleep'] - pile['settled']:.2f} s later)")
@@ -257,12 +255,13 @@ def no_sleep_in_air(records):
     """A crate thrown straight up does not fall asleep at the top of its flight (or anywhere in the air)."""
     throw = scenes.measure_throw(records["sleep"].record)
     if throw["height"] < THROW_HEIGHT:
-        raise Fail(f"a crate thrown up at {scenes.THROW_SPEED:g} px/s rose only {throw['height']:.1f} px (at least "
-                   f"{THROW_HEIGHT:g} px expected): it was stopped on its way up.", HINTS["timer"])
+        raise Fail(f"a crate thrown up was stopped on its way up.\nthrown at {scenes.THROW_SPEED:g} px/s it rose "
+                   f"only {throw['height']:.1f} px (at least {THROW_HEIGHT:g} px expected).", HINTS["timer"])
     if throw["asleep_in_air"]:
         t, gap = throw["asleep_in_air"][0]
-        raise Fail(f"a crate thrown up at {scenes.THROW_SPEED:g} px/s was asleep at {t:.2f} s, {gap:.1f} px above the "
-                   "floor: at the top of a throw a crate is slow for an instant, not for SLEEP_AFTER.", HINTS["timer"])
+        raise Fail(f"a thrown crate fell asleep in the air: at the top of a throw it is slow for an instant only.\n"
+                   f"thrown at {scenes.THROW_SPEED:g} px/s, asleep at {t:.2f} s, {gap:.1f} px above the floor.",
+                   HINTS["timer"])
     return f"it rose {throw['height']:.0f} px and slept only on the floor"
 
 
@@ -272,20 +271,21 @@ def drop_wakes_pile(records):
     sinking or jumping."""
     drop = scenes.measure_drop(records["sleep"].record)
     if drop["landed"] is None:
-        raise Fail("the crate dropped on the sleeping pile never touched it.", HINTS["settle"])
+        raise Fail("the crate dropped on the sleeping pile never touched it.\nIt should land on the pile.",
+                   HINTS["settle"])
     if not drop["woke"]:
-        raise Fail(f"a crate landed on the sleeping pile at {drop['landed']:.2f} s and no crate of the pile woke: "
-                   "what an awake crate touches must wake.", HINTS["wake"])
+        raise Fail(f"a crate landed on the sleeping pile and no crate of the pile woke: what it touches must wake.\n"
+                   f"landed at {drop['landed']:.2f} s.", HINTS["wake"])
     if drop["sink"] > SINK or drop["penetration"] > PENETRATION or drop["overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the pile sank when a crate landed on it: a pile crate ended {shown(drop['sink'], SINK)} px "
-                   f"lower (bound {SINK:g}), {shown(drop['penetration'], PENETRATION)} px into the floor (bound "
-                   f"{PENETRATION:g}), {shown(drop['overlap'], PAIR_OVERLAP)} px into another crate (bound "
-                   f"{PAIR_OVERLAP:g}).", HINTS["wake"])
+        raise Fail(f"the pile sank when a crate landed on it.\na pile crate ended {shown(drop['sink'], SINK)} px "
+                   f"lower (bound {SINK:g}), {shown(drop['penetration'], PENETRATION)} px in the floor, "
+                   f"{shown(drop['overlap'], PAIR_OVERLAP)} px in another (bounds {PENETRATION:g}, {PAIR_OVERLAP:g}).",
+                   HINTS["wake"])
     if drop["jump"] > JUMP:
-        raise Fail(f"the pile jumped when a crate landed on it: a pile crate rose {shown(drop['jump'], JUMP)} px "
+        raise Fail(f"the pile jumped when a crate landed on it.\na pile crate rose {shown(drop['jump'], JUMP)} px "
                    f"(bound {JUMP:g}).", HINTS["wake"])
     if drop["asleep_again"] is None or drop["asleep_again"] > WAKE_AGAIN:
-        raise Fail(f"after the crate landed at {drop['landed']:.2f} s the pile and the crate were not all asleep "
-                   f"again by {WAKE_AGAIN:g} s.", HINTS["timer"])
+        raise Fail(f"the pile and the dropped crate do not fall asleep again in time.\nlanded at "
+                   f"{drop['landed']:.2f} s, not all asleep by {WAKE_AGAIN:g} s.", HINTS["timer"])
     return Passed(f"{len(drop['woke'])} pile crates woke at {drop['landed']:.2f} s; all asleep again at "
                   f"{drop['asleep_again']:.2f} s, {drop['sink']:.2f} px lower at most", value=drop)

@@ -80,7 +80,13 @@ def timer_mistakes(timer, speed, spin, dt):
             "speed_dt": rule(speed * dt < SLEEP_SPEED and abs(spin) < SLEEP_SPIN),
             "spin_vs_speed": rule(speed < SLEEP_SPEED and abs(spin) < SLEEP_SPEED),
             "never_resets": timer + dt if calm else timer, "counts_frames": timer + 1 if calm else 0.0,
-            "returns_dt": dt if calm else 0.0, "no_growth": timer if calm else 0.0}
+            "returns_dt": dt if calm else 0.0, "no_growth": timer if calm else 0.0,
+            # issue 40: per-step thresholds, a step fixed at 1/120 s, squared speeds
+            "thresholds_dt": rule(speed < SLEEP_SPEED * dt and abs(spin) < SLEEP_SPIN * dt),
+            "both_dt": rule(speed * dt < SLEEP_SPEED and abs(spin) * dt < SLEEP_SPIN),
+            "fixed_step": timer + 1 / 120 if calm else 0.0,
+            "squared": rule(speed * speed < SLEEP_SPEED and spin * spin < SLEEP_SPIN),
+            "speed_squared": rule(speed * speed < SLEEP_SPEED and abs(spin) < SLEEP_SPIN)}
 
 
 def probe_sleep_timer(module, lab_path):

@@ -25,7 +25,7 @@ import re
 from . import probes
 from . import scenes
 from ... import lab_checks
-from ...causes import arguments_hint, consistent_mistake
+from ...causes import SHARED, arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from lesson11 import records as metrics
 from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TURN, PAIR_OVERLAP, PENETRATION,
                                    PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
@@ -54,67 +54,49 @@ TOUCHING = 1e-6  # px: a depth this small for shapes exactly touching counts as 
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
     "sat_none": Hint(2, "sat() never finds an overlap",
-                     "Crates fall through the floor because sat() never reports a hit. Project both polygons "
-                     "on every edge normal of BOTH shapes, return None only when one axis shows a gap, and "
-                     "otherwise return (normal, depth) for the axis with the smallest overlap."),
+                     "Lesson §2: project both polygons on every edge normal of BOTH shapes; None only when one axis "
+                     "shows a gap, else (normal, depth) of the smallest overlap."),
     "sat_depth": Hint(2, "the SAT loop",
-                      "Test the edge normals of BOTH shapes. On each axis the overlap is the lower of the two "
-                      "shadows' ends minus the higher of their starts; keep the axis with the smallest overlap: "
-                      "that axis and overlap are the normal and the depth (the minimum translation vector)."),
+                      "Lesson §2: on each axis the overlap is the lower shadow end minus the higher start; keep the "
+                      "smallest over both shapes' normals: that axis and depth."),
     "sat_apart": Hint(2, "one gap means apart",
-                      "A single axis with a gap means 'not touching': return None as soon as an overlap is <= 0, "
-                      "and test the edge normals of both shapes (the diamond's diagonal axis shows the gap)."),
+                      "Lesson §2: one axis with a gap means apart: return None as soon as an overlap is <= 0, over "
+                      "the edge normals of both shapes."),
     "sat_shape": Hint(2, "what sat() returns",
-                      "sat() returns None when the shapes are apart, else the pair (normal, depth): a unit "
-                      "Vector2 first, the overlap in px second (the handout's last line returns best_axis, "
-                      "best_depth)."),
+                      "Lesson §2: sat() returns None when apart, else (normal, depth): a unit Vector2, then the "
+                      "overlap in px (the handout's last line)."),
     "normal_flipped": Hint(3, "the normal must point from A to B",
-                           "The axis may point either way, whichever body's edge gave it (each axis comes from two "
-                           "opposite edges and the first is kept). Turn it round when its dot product with the vector "
-                           "from A's centre to B's is negative: the axis, not the depth. Without the flip the "
-                           "crates fall through the floor; with the test reversed they sink into it."),
+                           "Lesson §3: the kept axis may point either way (each comes from two opposite edges; the "
+                           "first wins). Flip it when (B's centre − A's centre) · axis < 0: the axis, not the depth."),
     "k_spin": Hint(4, "the spin terms of the effective mass",
-                   "A corner hit should feel lighter: k needs both spin terms, (ra × n)² / I_A and (rb × n)² / "
-                   "I_B, beside the two inverse masses, or the impulse is too big for a hit at a corner: corner "
-                   "landings kick, crates bounce about and can be thrown out of the window."),
+                   "Lesson §5: k = 1/m_A + 1/m_B + (ra × n)²/I_A + (rb × n)²/I_B: a corner hit feels lighter, or "
+                   "corner landings kick."),
     "friction_clamp": Hint(5, "Coulomb's clamp on friction",
-                           "If a crate thrown along the floor stops dead, the friction impulse isn't clamped: friction may "
-                           "never be bigger than μ times the normal impulse j (Coulomb's law), so keep jt within "
-                           "[-μ j, μ j]. Inside that range, leave jt as it is."),
+                           "Lesson §5: keep jt within [-μ j, μ j], j the normal impulse; leave a smaller jt, and "
+                           "its sign, alone."),
     "friction_sign": Hint(5, "the sign of the friction impulse",
-                          "If friction drives sliding crates on instead of braking them (they spin faster and faster "
-                          "and are thrown out of the window), the friction impulse has the wrong sign: jt = "
-                          "-rel·t / kt opposes the slip, and clamping to [-μ j, μ j] leaves that sign as it is."),
+                          "Lesson §5: friction opposes the slip, jt = -rel·t / kt, and the clamp keeps that sign."),
     "spin_missing": Hint(6, "the two spin updates in apply_impulse",
-                         "If crates freeze on their corners (they land and never turn), the spin lines in "
-                         "apply_impulse are missing: each "
-                         "body's spin changes by its lever arm crossed with the impulse (r × P), times its inverse "
-                         "inertia; A uses -=, B uses +=, exactly like the velocity lines."),
+                         "Lesson §5: each body's spin changes by r × P times its inverse inertia; A uses -=, B uses "
+                         "+=, like the velocity lines."),
     "spin_swapped": Hint(6, "the signs of the spin updates",
-                         "The spin lines in apply_impulse have swapped signs: A uses -=, B uses +=, exactly like the "
-                         "velocity lines. With the signs swapped every touch spins a crate faster, and crates fly "
-                         "off."),
+                         "Lesson §5: A's spin uses -=, B's +=, like the velocity lines; swapped, every touch spins a "
+                         "crate faster."),
     "spin_terms": Hint(6, "the two spin updates in apply_impulse",
-                       "Each body's spin changes by its own lever arm crossed with the impulse (ra × P for A, "
-                       "rb × P for B), times its own inverse inertia; A uses -=, B uses +=, exactly like the "
-                       "velocity lines."),
-    "handout": Hint(None, "keep the handed-out code",
-                    "Write your code only between the `# --- step N` and `# --- end of step N ---` lines; everything "
-                    "else (gravity, MAX_CRATES, the scene, the World, the `# lab runtime` lines, the final print) "
-                    "stays as handed out, so the checker measures the lab the lesson describes. Start again from "
-                    "the starter if you are unsure what changed."),
+                       "Lesson §5: each body uses its own lever arm (ra × P for A, rb × P for B) and its own inverse "
+                       "inertia; A -=, B +=."),
+    "handout": lab_checks.handout_hint("gravity, MAX_CRATES, the scene, the World, the `# lab runtime` lines, the "
+                                       "final print"),
     "sinking": Hint(7, "the push-out after the impulses",
-                    "The pile sinks: impulses stop the approach but nothing removes the overlap that is already "
-                    "there. The World's push-out (separate) must stay on."),
+                    "The pile sinks: impulses stop the approach but nothing removes the overlap already there; the "
+                    "World's push-out (separate) must stay on."),
     "settle": Hint(7, "watch them settle",
-                   "Crates keep moving where they should rest. Press D and watch the contact points and normals "
-                   "while they settle; the function checks above all pass, so compare your file with the handout "
-                   "around the steps."),
+                   "The function checks pass, yet crates keep moving: press D and watch the contacts while they "
+                   "settle; compare your file with the handout."),
     "runtime": lab_checks.RUNTIME_HINT,
     "print": Hint(7, "the final line",
-                  "After the loop, print the line the handout prints: count the dynamic crates whose speed is "
-                  "above 30 px/s in the world you simulated, e.g. "
-                  "'Simulated 4.5 s with 8 crates; fast movers now: 0'."),
+                  "After the loop print the handout's line: the dynamic crates faster than 30 px/s in the world you "
+                  "simulated, e.g. 'Simulated 4.5 s with 8 crates; fast movers now: 0'."),
     "crash": Hint(1, "run the file",
                   "Run the file yourself (python tumbling_crates.py) and fix the error at the line shown."),
 }
@@ -179,35 +161,33 @@ def _overlaps(case):
 
 
 def _depth_mistake(case, depth):
-    """Name a plausible step-2 mistake that gives `depth` for this overlapping pair, or ''."""
+    """The Mistake of a plausible step-2 loop that gives `depth` for this overlapping pair, or None."""
     overlaps, count_a = _overlaps(case)
     lesson = [o for _, o, _ in overlaps]
     if _close(depth, max(lesson)):
-        return " That is the LARGEST overlap: keep the smallest one (best_depth starts at math.inf, update when overlap < best_depth)."
+        return mistake("sat_largest", "that is the LARGEST overlap: keep the smallest (best_depth starts at "
+                                      "math.inf, update when overlap < best_depth)")
     closing = lesson[:count_a - 1] + lesson[count_a:-1]  # every edge but each shape's closing edge
     if closing and _close(depth, min(closing)):
-        return (" That is the smallest overlap with an edge left out: test the normal of every edge of both shapes, "
-                "the closing edge from the last point back to the first included (edge_normals does).")
+        return mistake("sat_closing_edge", "that is the smallest overlap with the closing edge left out: test "
+                                           "every edge, the last point back to the first too")
     if _close(depth, min(lesson[:count_a])) or _close(depth, min(lesson[count_a:])):
         which = "A's" if _close(depth, min(lesson[:count_a])) else "B's"
-        return (f" That is the smallest overlap over {which} edge normals only: loop over the edge normals of "
-                "both shapes.")
-    return ""
+        return mistake("sat_one_shape", f"that is the smallest overlap over {which} edge normals only: loop over "
+                                        "both shapes' edge normals")
+    return None
 
 
 # step 2's known wrong loops named by their own words (probes.SAT_LOOPS); the others (the largest overlap, one
 # shape's normals, the closing edge left out, `break`) keep _depth_mistake's and the apart message's words
 SAT_MISTAKES = {
-    "gap_continue": " On an axis with a gap, sat() goes on to the next axis (`continue`) instead of returning None "
-                    "(that gives your answer for every pair): one axis with a gap means the shapes are apart.",
-    "one_sided": " That is what overlap = max_a - min_b gives for every pair: it holds only while B lies on A's "
-                 "positive side of the axis; the overlap is min(max_a, max_b) - max(min_a, min_b).",
-    "union": " That is the length of both shadows together, max(max_a, max_b) - min(min_a, min_b), for every pair; "
-             "the overlap is the part they share, min(max_a, max_b) - max(min_a, min_b).",
-    "a_twice": " That is A's own width along the axis, for every pair: min_b, max_b come from project(pa, axis); B's "
-               "shadow is project(pb, axis).",
-    "unnormalised": " That is what axes (-e.y, e.x) not divided by their length give for every pair: a projection "
-                    "on an axis of length |e| is |e| times too long. Normalise each axis (edge_normals does).",
+    "gap_continue": "on an axis with a gap, sat() goes on to the next axis (`continue`) instead of returning None",
+    "one_sided": "overlap = max_a - min_b holds only while B lies on A's positive side: the overlap is "
+                 "min(max_a, max_b) - max(min_a, min_b)",
+    "union": "the overlap is the length of both shadows together; it is the part they share, min(max_a, max_b) - "
+             "max(min_a, min_b)",
+    "a_twice": "B's shadow is taken from project(pa, axis), A's own: B's is project(pb, axis)",
+    "unnormalised": "the axes (-e.y, e.x) are not divided by their length: projections come out |e| times too long",
 }
 
 
@@ -223,10 +203,11 @@ def _same_hit(got, form):
 
 
 def _sat_mistake(cases, case):
-    """The sentence of the one known wrong step-2 loop that gives the student's answer for every pair, or ''."""
-    differs = [name for name, form in case.get("mistakes", {}).items() if not _same_hit(case["lesson"], form)]
+    """The Mistake of the one known wrong step-2 loop that gives the student's answer for every pair, or None."""
+    differs = [name for name, form in case.get("mistakes", {}).items() if not _same_hit(case["lesson"], form)
+               and name in SAT_MISTAKES]
     named = consistent_mistake(cases, lambda c, name: _same_hit(c["got"], c["mistakes"][name]), differs)
-    return SAT_MISTAKES.get(named, "")
+    return mistake(f"sat_{named}", SAT_MISTAKES[named]) if named else None
 
 
 @CHECKS.check(depends=["loads"])
@@ -237,15 +218,18 @@ def sat_axes(sub, functions):
         cases = _function(sub, functions, "sat", "sat", 2)
     for case in cases:
         if case["got"] is not None and "bad" in case["got"]:
-            raise Fail(f"sat() must return (normal, depth) or None; for {_label(case)} it returned "
+            raise Fail(f"sat() must return (normal, depth) or None.\nfor {_label(case)} it returned "
                        f"{case['got']['bad']}.", HINTS["sat_shape"])
     hits = [case for case in cases if case["lesson"] is not None]
     if all(case["got"] is None for case in hits):
         line = _placeholder_line(sub.source)
-        placeholder = (f" Line {line} of {sub.name} is the handout's placeholder `return None`, still there at "
-                       "the end of step 2: replace it with your code.") if line else ""
-        raise Fail(f"sat() returned None for every pair, even the {len(hits)} that overlap (e.g. "
-                   f"{_label(hits[0])}, {hits[0]['lesson']['depth']:.2f} px).{placeholder}", HINTS["sat_none"])
+        if line:
+            text = f"line {line} of {sub.name} is the handout's placeholder `return None`, still there after step 2"
+            found = mistake("sat_placeholder", text)
+        else:
+            text, found = "sat() returned None for every pair, even those that overlap", None
+        raise Fail(f"{text}.\nsat() said apart for all {len(hits)} overlapping pairs, e.g. {_label(hits[0])}, "
+                   f"{hits[0]['lesson']['depth']:.2f} px deep.", HINTS["sat_none"], found)
     for case in cases:
         got, want, short = case["got"], case["lesson"], case["short"]
         label = _label(case)
@@ -254,57 +238,62 @@ def sat_axes(sub, functions):
                 overlaps, count_a = _overlaps(case)
                 gap_a = any(o <= 0 for _, o, _ in overlaps[:count_a])
                 where = "A's" if gap_a else "B's"
-                raise Fail(f"sat() says {label} overlaps by {got['depth']:.2f} px, but the shapes are apart: one of "
-                           f"{where} edge normals shows a gap between the shadows." + _sat_mistake(cases, case),
-                           HINTS["sat_apart"])
+                found = _sat_mistake(cases, case) or mistake("sat_misses_gap", "sat() says overlap where one "
+                                                                               "edge normal shows a gap")
+                first = found.text if found.id != "sat_misses_gap" else \
+                    f"sat() misses a gap: one of {where} edge normals shows a gap between the shadows"
+                raise Fail(f"{first}.\nfor {label}, sat() says they overlap by {got['depth']:.2f} px; one of "
+                           f"{where} edge normals shows a gap.", HINTS["sat_apart"], found)
             continue
         if got is None:
-            raise Fail(f"sat() says {label} is apart, but the shapes overlap by {want['depth']:.2f} px (the smallest "
-                       f"overlap, along {_vec(want['normal'])})." + _sat_mistake(cases, case), HINTS["sat_depth"])
+            found = _sat_mistake(cases, case)
+            first = found.text if found else "sat() says apart where the shapes overlap"
+            raise Fail(f"{first}.\nfor {label}, the smallest overlap is {want['depth']:.2f} px along "
+                       f"{_vec(want['normal'])}; sat() says apart.", HINTS["sat_depth"], found)
         depth = abs(got["depth"])  # the depth's sign is step 3's business
         matches = [ref for ref in (want, short) if _close(depth, ref["depth"])]
         if not matches:
-            deep = " (one shape is deep inside the other)" if not _close(want["depth"], short["depth"]) else ""
-            raise Fail(f"sat() gives depth {abs(got['depth']):.4g} px for {label}{deep}; the smallest overlap is "
-                       f"{want['depth']:.4g} px along {_vec(want['normal'])}."
-                       + (_sat_mistake(cases, case) or _depth_mistake(case, depth)), HINTS["sat_depth"])
+            deep = " (one shape deep inside the other)" if not _close(want["depth"], short["depth"]) else ""
+            found = _sat_mistake(cases, case) or _depth_mistake(case, depth)
+            first = found.text if found else "sat() does not find the smallest overlap"
+            raise Fail(f"{first}.\nfor {label}{deep}: depth {depth:.4g} px; the smallest overlap is "
+                       f"{want['depth']:.4g} px along {_vec(want['normal'])}.", HINTS["sat_depth"], found)
         ref = matches[0]["normal"]
         length = math.hypot(*got["normal"])
         if abs(length - 1) > 1e-6:
-            raise Fail(f"sat() gives a normal of length {length:.4g} for {label}; the normal must be a unit vector "
-                       "(edge_normals gives unit axes)." + _sat_mistake(cases, case), HINTS["sat_depth"])
+            found = _sat_mistake(cases, case)
+            first = found.text if found else "sat()'s normal is not a unit vector (edge_normals gives unit axes)"
+            raise Fail(f"{first}.\nfor {label}, the normal has length {length:.4g}.", HINTS["sat_depth"], found)
         along = got["normal"][0] * ref[0] + got["normal"][1] * ref[1]
         if abs(abs(along) - 1) > 1e-6:
-            raise Fail(f"sat() gives the right depth for {label} but the axis {_vec(got['normal'])}; the smallest "
-                       f"overlap is along {_vec(ref)} (or its opposite). Keep best_axis and best_depth together.",
-                       HINTS["sat_depth"])
+            text = "the depth is right but not its axis: keep best_axis and best_depth together"
+            raise Fail(f"{text}.\nfor {label}: axis {_vec(got['normal'])}; the smallest overlap is along "
+                       f"{_vec(ref)} (or its opposite).", HINTS["sat_depth"], mistake("sat_axis_apart", text))
     return Passed(f"all {len(cases)} pairs give the lesson's depth and axis", value=cases)
 
 
 # step 3's known wrong flips (probes._flip_mistakes_reference), named when one gives every pair's normal
 FLIP_MISTAKES = {
-    "not_flipped": " The axis is never turned round: every normal points the way edge_normals gave it.",
-    "reversed": " The flip test is the wrong way round: the axis is turned when it already points from A to B "
-                "((centre_b - centre_a)·n > 0, or (centre_a - centre_b)·n < 0, the same test), so every normal ends "
-                "up from B to A. Turn it when (centre_b - centre_a)·n < 0.",
-    "always_flipped": " The axis is turned round every time, without the test: that is right only for the pairs "
-                      "whose axis edge_normals gave from B to A. Turn it only when (centre_b - centre_a)·n < 0.",
-    "first_vertices": " The test uses pb[0] - pa[0], the first corners, instead of the centres: the first corners "
-                      "are not placed like the centres when the shapes differ in size or angle. Use "
-                      "centre_of(pb) - centre_of(pa).",
+    "not_flipped": "the axis is never turned round: every normal points the way edge_normals gave it",
+    "reversed": "the flip test is the wrong way round: the axis is turned when it already points from A to B; turn "
+                "it when (centre_b - centre_a)·n < 0",
+    "always_flipped": "the axis is turned round every time, without the test: turn it only when "
+                      "(centre_b - centre_a)·n < 0",
+    "first_vertices": "the test uses pb[0] - pa[0], the first corners, instead of centre_of(pb) - centre_of(pa)",
 }
 
 
 def _flip_mistake(cases, case):
-    """The sentence of the one known wrong step-3 flip that gives the student's normal for every pair, or ''."""
+    """The Mistake of the one known wrong step-3 flip that gives the student's normal for every pair, or None."""
     def gives(c, name):
         form = c.get("flips", {}).get(name)
         if form is None:   # the pair is apart: sat_axes already holds the student's None there
             return c["got"] is None
         return c["got"] is not None and all(_close(g, f) for g, f in zip(c["got"]["normal"], form))
     differs = [name for name, form in case.get("flips", {}).items()
-               if not all(_close(f, w) for f, w in zip(form, case["lesson"]["normal"]))]
-    return FLIP_MISTAKES.get(consistent_mistake(cases, gives, differs), "")
+               if not all(_close(f, w) for f, w in zip(form, case["lesson"]["normal"])) and name in FLIP_MISTAKES]
+    named = consistent_mistake(cases, gives, differs)
+    return mistake(f"normal_{named}", FLIP_MISTAKES[named]) if named else None
 
 
 @CHECKS.check(depends=["loads", "sat_axes"])
@@ -312,33 +301,36 @@ def sat_normal(sub, functions, step2_cases):
     """Step 3: the normal sat() returns points from A to B, with a positive depth."""
     cases = _function(sub, functions, "sat", "sat", 3)
     if not any(case["got"] is not None and case["lesson"] is not None for case in cases):   # no vacuous pass
-        raise Fail(f"sat() found no overlap in any of the {len(cases)} pairs, so the direction of its normal could not "
-                   "be graded (nothing was graded).", HINTS["normal_flipped"])
+        raise Fail(f"sat() found no overlap in any of the {len(cases)} pairs.\nSo the direction of its normal could "
+                   "not be graded (nothing was graded).", HINTS["normal_flipped"])
     for case, step2 in zip(cases, step2_cases):
         got, want, before = case["got"], case["lesson"], step2["got"]
         if (got is None) != (before is None) or (got is not None and "bad" in got):
             said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
                                                 f"overlaps by {got['depth']:.2f} px")
-            raise Fail(f"with your step 3, sat() says {_label(case)} {said}; with step 2 alone it was "
-                       f"{'apart' if before is None else 'a hit'}. Step 3 only turns the normal round.",
-                       HINTS["normal_flipped"])
+            raise Fail(f"your step 3 changes what sat() finds; it only turns the normal round.\nfor "
+                       f"{_label(case)} sat() says {said}; with step 2 alone it was "
+                       f"{'apart' if before is None else 'a hit'}.", HINTS["normal_flipped"])
         if got is None or want is None:
             continue
         if not _close(abs(got["depth"]), abs(before["depth"])) or \
                 abs(abs(got["normal"][0] * before["normal"][0] + got["normal"][1] * before["normal"][1]) - 1) > 1e-6:
-            raise Fail(f"your step 3 changes more than the normal's direction: for {_label(case)} step 2 found "
-                       f"{abs(before['depth']):.2f} px along {_vec(before['normal'])} (or its opposite), but sat() "
-                       f"returns {got['depth']:.2f} px along {_vec(got['normal'])}. Turn the whole axis round: "
-                       "best_axis = -best_axis.", HINTS["normal_flipped"])
+            text = "your step 3 changes more than the normal's direction: turn the whole axis, best_axis = -best_axis"
+            raise Fail(f"{text}.\nfor {_label(case)} step 2 found {abs(before['depth']):.2f} px along "
+                       f"{_vec(before['normal'])}; sat() returns {got['depth']:.2f} px along {_vec(got['normal'])}.",
+                       HINTS["normal_flipped"], mistake("normal_part_flipped", text))
         if got["depth"] < 0:
-            raise Fail(f"sat() gives a negative depth ({got['depth']:.2f} px) for {_label(case)}: flip the axis "
-                       "(best_axis = -best_axis), not the depth.", HINTS["normal_flipped"])
+            text = "sat() gives a negative depth: flip the axis (best_axis = -best_axis), not the depth"
+            raise Fail(f"{text}.\nfor {_label(case)}: depth {got['depth']:.2f} px.", HINTS["normal_flipped"],
+                       mistake("normal_depth_negated", text))
         towards_b = (case["centre_b"][0] - case["centre_a"][0]) * got["normal"][0] + \
                     (case["centre_b"][1] - case["centre_a"][1]) * got["normal"][1]
         if towards_b < 0:
             flipped = (-got["normal"][0], -got["normal"][1])
-            raise Fail(f"sat() gives normal {_vec(got['normal'])} for {_label(case)}: it points from B to A; "
-                       f"expected {_vec(flipped)}." + _flip_mistake(cases, case), HINTS["normal_flipped"])
+            found = _flip_mistake(cases, case)
+            first = found.text if found else "sat()'s normal points from B to A"
+            raise Fail(f"{first}.\nfor {_label(case)} the normal {_vec(got['normal'])} points from B to A; expected "
+                       f"{_vec(flipped)}.", HINTS["normal_flipped"], found)
     return f"the normal points from A to B in all {len(cases)} pairs"
 
 
@@ -368,19 +360,20 @@ def resolve_k(sub, functions):
     cases = _function(sub, functions, "resolve", "resolve", 4)
     for case in cases:
         if case["calls"] == 0 or case["j"] is None:
-            raise Fail(f"resolve() applied no impulse in '{case['case']}', where the contact closes at "
-                       f"{-case['vn']:.1f} px/s.", HINTS["k_spin"])
+            raise Fail(f"resolve() applied no normal impulse where the contact closes.\nin '{case['case']}', "
+                       f"closing at {-case['vn']:.1f} px/s.", HINTS["k_spin"])
         want_j = -(1 + case["e"]) * case["vn"] / case["k"]["right"]
         if _close(case["j"], want_j):
             continue
         k = -(1 + case["e"]) * case["vn"] / case["j"] if case["j"] else math.inf
         # a k fits a case when j·k = -(1 + e) vn (no division: a wrong k may be 0)
-        named = K_MISTAKES.get(consistent_mistake(
+        named = consistent_mistake(
             cases, lambda c, key: c["j"] is not None and _close(c["j"] * c["k"][key], -(1 + c["e"]) * c["vn"]),
-            [key for key in K_MISTAKES if not _close(case["k"][key], case["k"]["right"])]))
-        raise Fail(f"in '{case['case']}', your normal impulse is j = {case['j']:.4g}, so your k = {k:.4g}; "
-                   f"expected k = {case['k']['right']:.4g} (j = {want_j:.4g})" + (f": {named}." if named else "."),
-                   HINTS["k_spin"])
+            [key for key in K_MISTAKES if not _close(case["k"][key], case["k"]["right"])])
+        found = mistake(f"k_{named}", K_MISTAKES[named]) if named else None
+        first = found.text if found else "the normal impulse's k is not the lesson's"
+        raise Fail(f"{first}.\nin '{case['case']}', your j = {case['j']:.4g}, so your k = {k:.4g}; expected k = "
+                   f"{case['k']['right']:.4g} (j = {want_j:.4g}).", HINTS["k_spin"], found)
     return Passed(f"k and j match the lesson in all {len(cases)} contacts", value=cases)
 
 
@@ -388,31 +381,40 @@ def _unchanged_arguments(cases, function, why, hint):
     """Fail when `function` changed a vector argument in place in some case (the probe's `changed`)."""
     for case in cases:
         for name, now in sorted((case.get("changed") or {}).items()):
-            raise Fail(f"in '{case['case']}', {function}() changed its argument {name} in place (to {_vec(now)}): "
-                       f"{why.format(name=name)}. Make new vectors (v * s, v.rotate(90)) instead of changing the "
-                       "ones you are given (v *= s, v.rotate_ip(90)).", hint)
+            text = f"{function}() changed its argument {name} in place: make new vectors (v * s, v.rotate(90)), " \
+                   "not v *= s or v.rotate_ip(90)"
+            raise Fail(f"{text}.\nin '{case['case']}', {name} became {_vec(now)}: {why.format(name=name)}.", hint,
+                       mistake("argument_changed"))
 
 
 # the known wrong clamps of step 5, by name (_clamp_forms): the sentence and the hint
 CLAMP_MISTAKES = {
-    "unclamped": ("the friction impulse is never clamped to [-mu·j, mu·j] (jt = -rel·t / kt is never positive, so "
-                  "a clamp from above alone, min(mu·j, jt), clamps nothing either)", "friction_clamp"),
-    "vn_signed": ("the clamp uses mu × vn, the closing speed with its sign: vn < 0, so max(-mu·vn, min(mu·vn, jt)) "
-                  "is always +mu·|vn|; Coulomb's law bounds jt by mu × the normal impulse j", "friction_clamp"),
-    "vn_abs": ("the clamp uses mu × the closing speed |vn| where Coulomb's law uses mu × the normal impulse j",
+    "unclamped": ("friction_unclamped", "(min(mu·j, jt) alone clamps nothing: jt <= 0 here)", "friction_clamp"),
+    "vn_signed": ("friction_bound_vn_signed", "the clamp uses mu × vn, the closing speed with its sign, where "
+                  "Coulomb's law uses mu × j", "friction_clamp"),
+    "vn_abs": ("friction_bound_vn", "the clamp uses mu × the closing speed |vn| where Coulomb's law uses mu × j",
                "friction_clamp"),
-    "slip": ("the clamp uses mu × the slip speed where Coulomb's law uses mu × the normal impulse j", "friction_clamp"),
-    "rel": ("the clamp uses mu × the relative speed |rel| where Coulomb's law uses mu × the normal impulse j",
+    "slip": ("friction_bound_slip", "the clamp uses mu × the slip speed where Coulomb's law uses mu × j",
+             "friction_clamp"),
+    "rel": ("friction_bound_rel", "the clamp uses mu × the relative speed |rel| where Coulomb's law uses mu × j",
             "friction_clamp"),
-    "k": ("the clamp uses mu × k where Coulomb's law uses mu × the normal impulse j", "friction_clamp"),
-    "mu": ("the bound is mu alone; Coulomb's law bounds jt by mu × the normal impulse j", "friction_clamp"),
-    "half": ("the bound is mu·j / 2; Coulomb's law lets |jt| reach mu·j", "friction_clamp"),
-    "always_full": ("friction always takes its full mu·j, even where a smaller impulse already stops the slip: clamp "
-                    "only when |jt| > mu·j", "friction_clamp"),
-    "sign": ("the friction impulse has its sign flipped: it pushes the slide along instead of against it (a flipped "
-             "jt, or a clamp of its size, min(|jt|, mu·j), which loses the sign: jt = -rel·t / kt is never positive)",
-             "friction_sign"),
+    "k": ("friction_bound_k", "the clamp uses mu × k where Coulomb's law uses mu × j", "friction_clamp"),
+    "mu": ("friction_bound_mu", "", "friction_clamp"),
+    "half": ("friction_bound_half", "the bound is mu·j / 2; Coulomb's law lets |jt| reach mu·j", "friction_clamp"),
+    "always_full": ("friction_always_full", "", "friction_clamp"),
+    "clamp_loses_sign": ("friction_clamp_loses_sign", "", "friction_clamp"),
+    "sign": ("friction_sign", "(a flipped jt, or min(|jt|, mu·j), which loses jt's sign)", "friction_sign"),
 }
+
+
+def _clamp_mistake(named):
+    """(Mistake, the first line, hint key) of CLAMP_MISTAKES[named]: the shared sentence (causes.SHARED, the same
+    words as Ball on the Ramp's) and this lab's note, or the lab's own sentence."""
+    name, text, key = CLAMP_MISTAKES[named]
+    if name in SHARED:
+        found = mistake(name)
+        return found, (f"{found.text} {text}" if text else found.text), key
+    return mistake(name, text), text, key
 
 
 def _clamp_forms(case):
@@ -426,7 +428,8 @@ def _clamp_forms(case):
     return {"unclamped": stop, "vn_signed": clamped(mu * vn), "vn_abs": clamped(mu * abs(vn)),
             "slip": clamped(mu * abs(friction["slip"])), "rel": clamped(mu * friction["rel_length"]),
             "k": clamped(mu * case["k"]["right"]), "mu": clamped(mu), "half": clamped(mu * j / 2),
-            "always_full": math.copysign(mu * j, stop), "sign": -clamped(mu * j)}
+            "always_full": math.copysign(mu * j, stop), "sign": -clamped(mu * j),
+            "clamp_loses_sign": mu * j if abs(stop) > mu * j else stop}
 
 
 @CHECKS.check(depends=["loads"])
@@ -438,8 +441,8 @@ def resolve_friction(sub, functions):
     graded = [case for case in cases if case["friction"] is not None and case["j"] is not None]
     if not graded:   # nothing to compare is no pass: a resolve() that returns before step 4 applies no impulse
         said = "applied no impulse" if all(case["calls"] == 0 for case in cases) else "left no slip to stop"
-        raise Fail(f"resolve() {said} in any of the {len(cases)} contacts, so its friction could not be graded "
-                   "(nothing was graded). Write step 4 (the normal impulse) first, then step 5's friction after it.",
+        raise Fail(f"resolve() {said} in any of the {len(cases)} contacts: nothing was graded.\n"
+                   "Write step 4 (the normal impulse) first, then step 5's friction after it.",
                    HINTS["friction_clamp"])
     for case in graded:
         friction, j, mu = case["friction"], case["j"], case["mu"]
@@ -449,28 +452,30 @@ def resolve_friction(sub, functions):
         if _close(jt, want) and friction["off_tangent"] <= ABS + REL * abs(jt):
             continue
         active = abs(stop) > abs(bound)
-        where = f"in '{case['case']}'"
-        numbers = (f"the impulse that stops the slip is {stop:.4g}, mu·j = {mu:.2g} × {j:.4g} = {bound:.4g}, "
-                   f"so jt should be {want:.4g}; yours is {jt:.4g}")
+        where = f"in '{case['case']}'" + (", where |jt| > mu·j" if active else "")
+        numbers = (f"{where}: the slip needs jt = {stop:.4g}, mu·j = {mu:.2g} × {j:.4g} = {bound:.4g}, so jt = "
+                   f"{want:.4g}; yours {jt:.4g}.")
         if friction.get("missing"):
-            raise Fail(f"{where} resolve() applied no friction impulse; {numbers}.", HINTS["friction_clamp"])
-        named = consistent_mistake(graded, lambda c, name: _close(c["friction"]["jt"], _clamp_forms(c)[name]),
+            found = mistake("friction_missing")
+            raise Fail(f"{found.text}.\n{numbers}", HINTS["friction_clamp"], found)
+        fitting = fitting_mistakes(graded, lambda c, name: _close(c["friction"]["jt"], _clamp_forms(c)[name]),
                                    [name for name, value in _clamp_forms(case).items() if not _close(value, want)])
-        if named:
-            text, key = CLAMP_MISTAKES[named]
-            raise Fail(f"{where} {text}: {numbers}.", HINTS[key])
+        if sorted(fitting) == ["clamp_loses_sign", "sign"]:
+            fitting = ["sign"]   # every case that decides it binds: the sign's sentence names both forms
+        if len(fitting) == 1:
+            found, first, key = _clamp_mistake(fitting[0])
+            raise Fail(f"{first}.\n{numbers}", HINTS[key], found)
         if jt * stop < 0:
-            raise Fail(f"{where} friction pushes the slide along instead of against it: {numbers}.",
-                       HINTS["friction_sign"])
+            raise Fail(f"friction pushes the slide along instead of against it.\n{numbers}", HINTS["friction_sign"])
         if active and _close(jt, stop):
-            raise Fail(f"{where} the friction impulse was not clamped here (no clamp, or a bound above mu·j): "
-                       f"{numbers}. A glancing touch stops the crate dead.", HINTS["friction_clamp"])
+            raise Fail(f"the friction impulse was not clamped here (no clamp, or a bound above mu·j).\n{numbers}",
+                       HINTS["friction_clamp"])
         if not active and _close(abs(jt), abs(bound)):
-            raise Fail(f"{where} friction always takes its full mu·j, but a smaller impulse already stops the slip: "
-                       f"{numbers}. Clamp only when |jt| > mu·j.", HINTS["friction_clamp"])
+            raise Fail(f"friction takes its full mu·j where a smaller impulse already stops the slip.\n{numbers}",
+                       HINTS["friction_clamp"])
         if active and abs(jt) < abs(bound):
-            raise Fail(f"{where} the clamp is too tight: {numbers} (|jt| may reach mu·j).", HINTS["friction_clamp"])
-        raise Fail(f"{where} {numbers}.", HINTS["friction_clamp"])
+            raise Fail(f"the clamp is too tight: |jt| may reach mu·j.\n{numbers}", HINTS["friction_clamp"])
+        raise Fail(f"the friction impulse is not Coulomb's clamped jt.\n{numbers}", HINTS["friction_clamp"])
     active = sum(1 for c in cases if c["friction"] and abs(c["friction"]["stop"]) > c["mu"] * abs(c["j"] or 0))
     return f"friction matches Coulomb's law in all {len(cases)} contacts ({active} of them clamped)"
 
@@ -478,25 +483,25 @@ def resolve_friction(sub, functions):
 # ---------------------------------------------------------------- step 6: apply_impulse()
 
 def _spin_mistake(case, body, delta, want):
-    """(text, hint key) naming a plausible step-6 mistake for one body's spin change, or None."""
+    """(Mistake, hint key) naming a plausible step-6 mistake for one body's spin change, or None."""
     sign = -1 if body == "a" else 1
     other = "b" if body == "a" else "a"
     inv_mass, inv_inertia = case["inv"][body]
     letter = body.upper()
     candidates = [
-        (0.0, f"{letter}'s spin did not change: its spin update is missing", "spin_missing"),
-        (-want, f"{letter}'s spin changed the wrong way: A uses -=, B uses += (note cross(ra, impulse) = "
-                "-cross(impulse, ra))", "spin_swapped"),
-        (sign * case["cross"][body] * inv_mass, f"{letter}'s spin update uses inv_mass where inv_inertia belongs",
-         "spin_terms"),
-        (sign * case["cross"][other] * inv_inertia, f"{letter}'s spin update uses r{other} where r{body} belongs",
-         "spin_terms"),
-        (sign * case["cross"][body] * case["inv"][other][1], f"{letter}'s spin update uses "
-         f"{other.upper()}'s inv_inertia", "spin_terms"),
+        (0.0, "spin_missing", f"{letter}'s spin did not change: its spin update is missing", "spin_missing"),
+        (-want, "spin_wrong_way", f"{letter}'s spin changed the wrong way: A uses -=, B uses += (cross(ra, P) = "
+                                  "-cross(P, ra))", "spin_swapped"),
+        (sign * case["cross"][body] * inv_mass, "spin_inv_mass",
+         f"{letter}'s spin update uses inv_mass where inv_inertia belongs", "spin_terms"),
+        (sign * case["cross"][other] * inv_inertia, "spin_other_lever",
+         f"{letter}'s spin update uses r{other} where r{body} belongs", "spin_terms"),
+        (sign * case["cross"][body] * case["inv"][other][1], "spin_other_inertia",
+         f"{letter}'s spin update uses {other.upper()}'s inv_inertia", "spin_terms"),
     ]
-    for value, text, key in candidates:
+    for value, name, text, key in candidates:
         if _close(delta, value) and not _close(value, want):
-            return text, key
+            return mistake(name, text), key
     return None
 
 
@@ -511,20 +516,22 @@ def apply_impulse_spin(sub, functions):
             before, after, want = case["before"][body], case["after"][body], case["expected"][body]
             letter = body.upper()
             if not all(_close(g, w) for g, w in zip(after["vel"], want["vel"])):
-                raise Fail(f"in '{case['case']}', {letter}'s velocity after the impulse is {_vec(after['vel'])} px/s; "
-                           f"expected {_vec(want['vel'])} (the handout's lines: a.vel -= impulse * a.inv_mass, "
-                           "b.vel += impulse * b.inv_mass).", HINTS["spin_terms"])
+                raise Fail(f"{letter}'s velocity changed: keep the handout's velocity lines (a.vel -= impulse * "
+                           f"a.inv_mass, b.vel +=).\nin '{case['case']}', {letter} moves at {_vec(after['vel'])} px/s "
+                           f"after the impulse; expected {_vec(want['vel'])}.", HINTS["spin_terms"])
             if _close(after["omega"], want["omega"]):
                 continue
             delta = after["omega"] - before["omega"]
             change = want["omega"] - before["omega"]
             named = _spin_mistake(case, body, delta, change)
             if _close(after["omega"], change) and not _close(change, want["omega"]):
-                named = (f"{letter}'s spin was set to the change instead of changed by it: use "
-                         f"{body}.omega {'-' if body == 'a' else '+'}=", "spin_terms")
-            text, key = named or (f"{letter}'s spin change is wrong", "spin_terms")
-            raise Fail(f"in '{case['case']}', ω{letter} went from {before['omega']:.4g} to {after['omega']:.4g} rad/s; "
-                       f"expected {want['omega']:.4g} (a change of {change:+.4g}): {text}.", HINTS[key])
+                named = (mistake("spin_assigned", f"{letter}'s spin was set to the change instead of changed by it: "
+                                                  f"use {body}.omega {'-' if body == 'a' else '+'}="), "spin_terms")
+            found, key = named or (None, "spin_terms")
+            first = found.text if found else f"{letter}'s spin change is not -(ra × P)/I_A, +(rb × P)/I_B"
+            raise Fail(f"{first}.\nin '{case['case']}', ω{letter} went from {before['omega']:.4g} to "
+                       f"{after['omega']:.4g} rad/s; expected {want['omega']:.4g} ({change:+.4g}).", HINTS[key],
+                       found)
     return f"both spins change as the lesson says in all {len(cases)} cases"
 
 
@@ -537,11 +544,11 @@ def runs(sub):
     records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in records.items():
         if not metrics.finite(run.record["records"]):
-            raise Fail(f"in the '{name}' scene a crate's position or speed became infinite or NaN.", HINTS["settle"])
+            raise Fail(f"a crate's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
     gravity = metrics.free_fall(records["corner"].record)
     if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
-        raise Fail(f"crates fall with {gravity:.1f} px/s² in the corner scene; the course's gravity is "
-                   f"{GRAVITY:g} px/s².", HINTS["handout"])
+        raise Fail(f"crates do not fall with the course's gravity, {GRAVITY:g} px/s².\nin the corner scene they fall "
+                   f"with {gravity:.1f} px/s².", HINTS["handout"])
     return records
 
 
@@ -550,14 +557,15 @@ def _escaped(summary, what):
     flung = summary["highest_y"] < -50 or (summary["peak_speed"] > EXPLODED and summary["off_screen"]
                                            and summary["fell_through"] < summary["crates"])
     if flung:
-        raise Fail(f"{what}: crates were flung apart (top speed {summary['peak_speed']:.0f} px/s, spin up to "
-                   f"{summary['tail_omega']:.0f} rad/s at the end; {summary['off_screen']} of {summary['crates']} "
-                   "left the screen).", HINTS["settle"])
+        raise Fail(f"crates were flung apart.\n{what}: top speed {summary['peak_speed']:.0f} px/s, spin up to "
+                   f"{summary['tail_omega']:.0f} rad/s; {summary['off_screen']} of {summary['crates']} left the "
+                   "screen.", HINTS["settle"])
     if summary["fell_through"]:
-        raise Fail(f"{what}: {summary['fell_through']} of {summary['crates']} crates fell through the floor "
-                   f"(top speed {summary['peak_speed']:.0f} px/s).", HINTS["settle"])
+        raise Fail(f"crates fell through the floor.\n{what}: {summary['fell_through']} of {summary['crates']} (top "
+                   f"speed {summary['peak_speed']:.0f} px/s).", HINTS["settle"])
     if summary["off_screen"]:
-        raise Fail(f"{what}: {summary['off_screen']} of {summary['crates']} crates left the screen.", HINTS["settle"])
+        raise Fail(f"crates left the screen.\n{what}: {summary['off_screen']} of {summary['crates']}.",
+                   HINTS["settle"])
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
@@ -567,16 +575,17 @@ def corner_tips(records):
     _escaped(metrics.summary(record), "two crates dropped on a corner did not land")
     for index, crate in enumerate(scenes.measure_corner(record), 1):
         if -crate["floor_gap"] > PENETRATION:
-            raise Fail(f"crate {index} landed on its corner but sank {shown(-crate['floor_gap'], PENETRATION)} px "
-                       f"into the floor (bound {PENETRATION:g} px).", HINTS["sinking"])
+            raise Fail(f"a crate landed on its corner and sank into the floor.\ncrate {index}: "
+                       f"{shown(-crate['floor_gap'], PENETRATION)} px deep (bound {PENETRATION:g} px).",
+                       HINTS["sinking"])
         if crate["turned"] < MIN_TURN or crate["flat_error"] > TIPPED_FLAT:
-            raise Fail(f"crate {index} landed on a corner but did not tip onto a flat side: it turned "
+            raise Fail(f"a crate landed on a corner but did not tip onto a flat side.\ncrate {index} turned "
                        f"{math.degrees(crate['turned']):.1f}° and ended {shown(math.degrees(crate['flat_error']), 6)}° "
                        f"from flat (bound {math.degrees(TIPPED_FLAT):.0f}°).", HINTS["settle"])
         if crate["rest_speed"] > REST_SPEED or crate["rest_omega"] > REST_OMEGA:
-            raise Fail(f"crate {index} tipped over but is still moving 2.5 s after the drop "
-                       f"({shown(crate['rest_speed'], REST_SPEED)} px/s, {shown(crate['rest_omega'], REST_OMEGA)} "
-                       f"rad/s; bounds {REST_SPEED:g} px/s, {REST_OMEGA:g} rad/s).", HINTS["settle"])
+            raise Fail(f"a crate tipped over but is still moving 2.5 s after the drop.\ncrate {index}: "
+                       f"{shown(crate['rest_speed'], REST_SPEED)} px/s, {shown(crate['rest_omega'], REST_OMEGA)} "
+                       f"rad/s (bounds {REST_SPEED:g} px/s, {REST_OMEGA:g} rad/s).", HINTS["settle"])
 
 
 @CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
@@ -587,10 +596,10 @@ def ramp_holds(records):
     _escaped(summary, "three crates set on the ramp did not stay there")
     worst = max(metrics.measure_ramp(record), key=lambda c: abs(c["slid"]))
     if abs(worst["slid"]) > RAMP_SLIDE or summary["tail_speed"] > RAMP_SPEED:
-        raise Fail(f"crates set at rest on the 22° ramp did not stay put: one moved {shown(worst['slid'], RAMP_SLIDE)} "
-                   f"px along the slope in 3 s (bound {RAMP_SLIDE:g} px) and the fastest moves "
-                   f"{shown(summary['tail_speed'], RAMP_SPEED)} px/s at the end (bound {RAMP_SPEED:g}). "
-                   "Friction 0.6 holds a 22° slope.", HINTS["settle"])
+        raise Fail(f"crates at rest on the 22° ramp did not stay put: friction 0.6 holds them.\none moved "
+                   f"{shown(worst['slid'], RAMP_SLIDE)} px in 3 s (bound {RAMP_SLIDE:g} px); the fastest moves "
+                   f"{shown(summary['tail_speed'], RAMP_SPEED)} px/s at the end (bound {RAMP_SPEED:g}).",
+                   HINTS["settle"])
     return f"the crates moved at most {abs(worst['slid']):.1f} px along the slope in 3 s"
 
 
@@ -601,11 +610,11 @@ def pile_stable(records):
     _escaped(metrics.summary(record), "the pile of 12 crates fell apart")
     pile = metrics.measure_pile(record)
     if pile["floor_penetration"] > PENETRATION or pile["pair_overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the pile sinks: crates end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
+        raise Fail(f"the pile sinks.\ncrates end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
                    f"floor and up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into each other (bound "
                    f"{PENETRATION:g} px).", HINTS["sinking"])
     if pile["tail_speed"] > PILE_SPEED or pile["drift"] > PILE_DRIFT:
-        raise Fail(f"the pile jitters apart: in its last second a crate moves at {shown(pile['tail_speed'], PILE_SPEED)} "
+        raise Fail(f"the pile jitters apart.\nin its last second a crate moves at {shown(pile['tail_speed'], PILE_SPEED)} "
                    f"px/s (bound {PILE_SPEED:g}) and drifts {shown(pile['drift'], PILE_DRIFT)} px (bound "
                    f"{PILE_DRIFT:g}).", HINTS["settle"])
     return (f"deepest overlap {max(pile['floor_penetration'], pile['pair_overlap'], 0):.2f} px, top speed "
@@ -622,12 +631,12 @@ def fast_movers_zero(records):
     frames = run.record["records"]
     added = metrics.drops_added(run.record)
     if added < len(scenes.DROPS):
-        raise Fail(f"the checker clicked {len(scenes.DROPS)} times to drop crates, but only {added} crate(s) "
-                   f"appeared ({len(metrics.dynamic(frames[0]))} at the start, {len(metrics.dynamic(frames[-1]))} at "
-                   "the end): every click must drop a crate (MAX_CRATES is 14).", HINTS["handout"])
+        raise Fail(f"every click must drop a crate (MAX_CRATES is 14).\nthe checker clicked {len(scenes.DROPS)} "
+                   f"times; {added} crate(s) appeared ({len(metrics.dynamic(frames[0]))} at the start, "
+                   f"{len(metrics.dynamic(frames[-1]))} at the end).", HINTS["handout"])
     matches = LINE.findall(run.stdout)
     if not matches:
-        raise Fail("when the window closed, the program printed no line like "
+        raise Fail("when the window closed, the program printed no final line.\nexpected a line like "
                    "'Simulated 4.5 s with 8 crates; fast movers now: 0'.", HINTS["print"])
     seconds, crates, movers = float(matches[-1][0]), int(matches[-1][1]), int(matches[-1][2])
     last = frames[-1]
@@ -635,12 +644,13 @@ def fast_movers_zero(records):
     recorded_crates = len(metrics.dynamic(last))
     recorded_seconds = last["frame"] / metrics.FPS
     if movers != recorded_movers or crates != recorded_crates or abs(seconds - recorded_seconds) > 0.15:
-        raise Fail(f"the printed line says {seconds:g} s, {crates} crates, {movers} fast movers, but the simulation "
-                   f"recorded {recorded_seconds:.1f} s, {recorded_crates} crates and {recorded_movers} faster than "
-                   f"{metrics.FAST_MOVER:g} px/s at the end.", HINTS["print"])
+        raise Fail(f"the printed line does not match the simulation.\nit says {seconds:g} s, {crates} crates, "
+                   f"{movers} fast movers; recorded {recorded_seconds:.1f} s, {recorded_crates} crates, "
+                   f"{recorded_movers} faster than {metrics.FAST_MOVER:g} px/s.", HINTS["print"])
     if movers:
         _escaped(metrics.summary(run.record), f"in the lab's own scene with {len(scenes.DROPS)} dropped crates, "
                  f"the program printed 'fast movers now: {movers}'")
-        raise Fail(f"{scenes.SETTLE_FRAMES / metrics.FPS:g} s after the last of {len(scenes.DROPS)} dropped "
-                   f"crates the program printed 'fast movers now: {movers}' (expected 0).", HINTS["settle"])
+        raise Fail(f"dropped crates do not come to rest.\n{scenes.SETTLE_FRAMES / metrics.FPS:g} s after the last "
+                   f"of {len(scenes.DROPS)} drops the program printed 'fast movers now: {movers}' (expected 0).",
+                   HINTS["settle"])
     return f"'fast movers now: 0' with {crates} crates after {seconds:g} s"
