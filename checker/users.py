@@ -214,7 +214,7 @@ def kill_uid(uid, rounds=50):
         code = 1
         try:
             os.setgroups([])
-            os.setresuid(uid, uid, uid)
+            os.setuid(uid)   # as root: real, effective and saved uid alike (macOS has no setresuid)
             for _ in range(rounds):
                 try:
                     os.kill(-1, signal.SIGKILL)
