@@ -90,17 +90,19 @@ def with_attack(attack):
 
 
 def run_uid_processes():
-    """The pids of processes running as a uid of users.RUN_UIDS (a run's own), from /proc."""
+    """The pids of live processes running as a uid of users.RUN_UIDS (a run's own), from /proc. A zombie (killed,
+    its exit not yet collected by init, which took the daemon over) is not alive: it runs nothing."""
     found = []
     for name in os.listdir("/proc"):
         if not name.isdigit():
             continue
         try:
             with open(f"/proc/{name}/status", encoding="utf-8") as handle:
-                uids = next(line for line in handle if line.startswith("Uid:")).split()[1:]
-        except (OSError, StopIteration):
+                fields = dict(line.split(":", 1) for line in handle if ":" in line)
+        except OSError:
             continue
-        if any(int(uid) in users.RUN_UIDS for uid in uids):
+        uids = fields.get("Uid", "").split()
+        if fields.get("State", "").split()[:1] != ["Z"] and any(int(uid) in users.RUN_UIDS for uid in uids):
             found.append(int(name))
     return found
 
@@ -125,13 +127,25 @@ MODES = {"root": ([], {}), "child_user": (["--child-user", "nobody"], {}), "no_j
          "portable": ([], {"CHECKER_PORTABLE": "1"})}
 
 
+@pytest.fixture(scope="module")
+def private_project():
+    """A copy of the project in a 700 folder: without the jail the repository's world-readable solutions/ is
+    refused (tests/test_checker_safe_default.py), so that mode grades from a copy the run's user cannot reach."""
+    from test_project_folder_mode import clone_in_private_folder
+    private, project = clone_in_private_folder()
+    yield project
+    shutil.rmtree(private)
+
+
 @pytest.mark.parametrize("mode", sorted(MODES))
-def test_a_daemon_in_a_class_folder_changes_no_other_row_and_is_gone_when_the_batch_ends(tmp_path, mode):
+def test_a_daemon_in_a_class_folder_changes_no_other_row_and_is_gone_when_the_batch_ends(tmp_path, mode,
+                                                                                         private_project):
     argv, env = MODES[mode]
+    project = private_project if mode == "no_jail" else ROOT
     paths = class_folder(str(tmp_path / "class"))
-    environment = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", **env)
+    environment = dict(os.environ, PYTHONPATH=project, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", **env)
     proc = subprocess.run([sys.executable, "-m", "checker", *paths.values(), "--json", "--quiet", "--jobs", "2",
-                           "--timeout", "10", *argv], cwd=ROOT, env=environment, capture_output=True, text=True,
+                           "--timeout", "10", *argv], cwd=project, env=environment, capture_output=True, text=True,
                           timeout=900)
     left = run_uid_processes()   # right when the batch ended: nothing of any run is left
     assert proc.returncode == 1, proc.stderr[-3000:]
