@@ -19,6 +19,9 @@ USE_ZYGOTE = False here) turns it off; whenever the zygote cannot be started or 
 children are started with subprocess as before. The run and its RunResult are the same either way.
 A limit the system refuses (macOS refuses RLIMIT_AS) is skipped and noted in RunResult.notes.
 
+As root, each run has a uid of its own (users.take_uid), is chrooted in its work folder where root may, and
+everything of that uid is killed when it ends (checker/README.md, "Each run alone").
+
 The portable path (portable(): Windows, no fork or process groups, or CHECKER_PORTABLE=1) starts
 the child with plain subprocess and no preexec_fn or pass_fds: the child's stdout is its result
 channel (it moves the lab's stdout to a file first), threads read the pipes, the parent kills
@@ -593,9 +596,11 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
     deadline = start + wall_limit(limits)
     collect = _run_portable if portable() else _run_posix
     settings_path = os.path.join(os.pardir, "settings.json")   # from OUT, inside a jail or not
-    outcome = collect(lab_path, task, settings_path, out, env, limits, deadline, settings.get("probes"))
-    if run_uid is not None:
-        run_uid.kill()   # nothing of the run is left to write its files while they are read (or after)
+    try:
+        outcome = collect(lab_path, task, settings_path, out, env, limits, deadline, settings.get("probes"))
+    finally:
+        if run_uid is not None:
+            run_uid.kill()   # nothing of the run is left to write its files while they are read (or after)
     status = outcome.status
     seconds = time.monotonic() - start
     result, notes = _read_channel(outcome.channel) if outcome.channel is not None else ({}, [])

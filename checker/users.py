@@ -5,8 +5,10 @@ DEFAULT_CHILD_USER ("nobody"), another user with `--child-user NAME`, or root it
 `--child-user root`. A grader that is not root (or a system without users to switch to, such as Windows)
 runs the child as itself, as before.
 
-The forked children (checker/zygote.py) need no file after they switch user: the zygote, still root,
-imported everything a lab and its probes use. What a child can still need to open is a module it imports
+Each run takes a uid of its own from RUN_UIDS (take_uid: locked, so no two runs share one) with the user's group,
+and everything running as that uid is killed when the run ends (kill_uid); where root may chroot (jail_works) the
+forked child is jailed in its work folder before it switches. The forked children (checker/zygote.py) need no file
+after they switch user: the zygote, still root, imported everything a lab and its probes use. What a child can still need to open is a module it imports
 that the zygote did not, or all of Python when the zygote is off; when the child's user cannot read it,
 the checker says so in one line (ChildUserError) and does not blame the student.
 """
@@ -137,7 +139,8 @@ def enter_jail(folder, inside="/"):
 
 class RunUid:
     """A uid of RUN_UIDS held by one run (a lock file of root's, flock'ed): no other run, in this grader or in
-    another one on the machine, gets it until release(). Whatever still runs as it is killed on both ends."""
+    another one on the machine, gets it until release(). Whatever runs as it is killed when it is taken (a
+    grader that died may have left something) and when the run ends (kill())."""
 
     def __init__(self, uid, fd):
         self.uid, self.fd = uid, fd
@@ -146,8 +149,8 @@ class RunUid:
         kill_uid(self.uid)
 
     def release(self):
+        """Give the uid back (the run's end killed what ran as it: a uid with no process cannot start one)."""
         if self.fd is not None:
-            kill_uid(self.uid)
             os.close(self.fd)
             self.fd = None
 
@@ -201,14 +204,14 @@ def _has_entry(uid):
         return False
 
 
-def kill_uid(uid, rounds=50):
+def kill_uid(uid, rounds=3):
     """SIGKILL every process running as `uid` (a daemon that left its process group and session included).
 
     A helper forked from here becomes that uid and calls kill(-1, SIGKILL), which reaches every process of the
-    uid and never the helper itself, until none is left (ESRCH); a zombie still counts, so it stops after
-    `rounds`. RLIMIT_NPROC keeps the uid's processes few, so a fork racing the kill runs out."""
+    uid and never the helper itself. A process with SIGKILL pending cannot fork (the kernel checks it before the
+    new process is visible), so one round leaves nothing; `rounds` more are cheap insurance. (kill(-1) reports
+    success whenever any other process exists, so its answer cannot say when none is left.)"""
     import signal
-    import time
     pid = os.fork()
     if pid == 0:
         code = 1
@@ -218,10 +221,9 @@ def kill_uid(uid, rounds=50):
             for _ in range(rounds):
                 try:
                     os.kill(-1, signal.SIGKILL)
-                except ProcessLookupError:
-                    code = 0
-                    break
-                time.sleep(0.002)
+                except OSError:
+                    pass
+            code = 0
         finally:
             os._exit(code)
     os.waitpid(pid, 0)

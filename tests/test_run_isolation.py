@@ -8,6 +8,8 @@ The attacks, each graded beside the honest work it contains (the starter: 3/17) 
   classmate's starter 17/17 and a solution 0/17. Now each run has a uid of its own, its folder is root's (only
   its out/ is the uid's), the child is chrooted in it where root may, and everything of the uid is killed when
   the run ends: the classmates' rows are their usual ones and no process of a run's uid is left after the batch.
+- `forks`: 300 forks that each leave their session and sleep 60 s: the run's uid may have NPROC processes
+  (RLIMIT_NPROC), so fork fails first, and none of them outlives the batch.
 - `answers`: top-level code that reads solutions/tumbling_crates.py through the path of the checker's own
   package and puts its step 2 in its error message (the JSON report): it must get no answer, in any mode.
 Modes: the CLI as root with no option (the child: a uid of its own, nobody's group, jailed), `--child-user nobody`,
@@ -70,6 +72,21 @@ if _os.fork() == 0:
 _time.sleep(0.5)
 '''
 
+FORKS = '''
+import os as _os, posix as _posix, time as _time
+_forked = 0
+for _ in range(300):
+    try:
+        if _os.fork() == 0:
+            _os.setsid()
+            _time.sleep(60)
+            _posix._exit(0)
+        _forked += 1
+    except OSError:
+        break
+raise RuntimeError(f"FORKED {_forked}")
+'''
+
 ANSWERS = '''
 import os as _os
 import checker as _checker
@@ -109,10 +126,10 @@ def run_uid_processes():
 
 def class_folder(base):
     """A private class folder: the daemon first (so it runs while its classmates do), then alice's starter,
-    bob's solution, carol's starter, and the file reaching for the answers."""
+    bob's solution, carol's starter, the file reaching for the answers and the fork bomb."""
     files = {"a_mallory": with_attack(DAEMON), "b_alice": open(STARTER, encoding="utf-8").read(),
              "c_bob": open(SOLUTION, encoding="utf-8").read(), "d_carol": open(STARTER, encoding="utf-8").read(),
-             "e_eve": with_attack(ANSWERS)}
+             "e_eve": with_attack(ANSWERS), "f_frank": with_attack(FORKS)}
     os.makedirs(base, mode=0o700)
     paths = {}
     for name, text in files.items():
@@ -157,6 +174,8 @@ def test_a_daemon_in_a_class_folder_changes_no_other_row_and_is_gone_when_the_ba
         assert (row["score"], status["loads"], status["sat_axes"]) == (3, "pass", "fail"), row
     assert (rows["c_bob"]["score"], rows["c_bob"]["status"]) == (17, "pass"), rows["c_bob"]
     assert rows["a_mallory"]["score"] <= 3   # no more than the starter it holds
+    frank = next(c["message"] for c in rows["f_frank"]["criteria"] if c["id"] == "loads")
+    assert int(frank.split("FORKED ", 1)[1].split()[0].rstrip(".")) < users.NPROC, frank   # RLIMIT_NPROC held
     eve = next(c["message"] for c in rows["e_eve"]["criteria"] if c["id"] == "loads")
     assert "NO-ANSWER" in eve and "def sat" not in eve and rows["e_eve"]["score"] <= 3, eve
 
