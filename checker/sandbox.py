@@ -646,13 +646,22 @@ def _run_posix(lab_path, task, settings_path, work, env, limits, deadline, probe
     selector.register(proc.stdout_fd, selectors.EVENT_READ, "stdout")
     selector.register(proc.stderr_fd, selectors.EVENT_READ, "stderr")
     selector.register(result_read, selectors.EVENT_READ, "result")
-    open_streams = 3
+    if isinstance(proc, _Forked):
+        selector.register(proc.reply, selectors.EVENT_READ, "exit")   # the zygote's word that the child ended
+    open_streams, ended = 3, False
     while open_streams:
         remaining = deadline - time.monotonic()
         if remaining <= 0:
             status = "timeout"
             break
+        if not ended and isinstance(proc, _Subprocess) and proc.popen.poll() is not None:
+            ended = _ended(proc, limits)
         for key, _ in selector.select(timeout=min(remaining, 0.5)):
+            if key.data == "exit":
+                selector.unregister(key.fileobj)
+                proc.wait(timeout=0)
+                ended = _ended(proc, limits)
+                continue
             data = os.read(key.fd, 65536)
             if not data:
                 selector.unregister(key.fileobj)
@@ -686,6 +695,15 @@ def _run_posix(lab_path, task, settings_path, work, env, limits, deadline, probe
     return _Outcome(status, proc.returncode, b"".join(chunks["stdout"]), b"".join(chunks["stderr"]),
                     b"".join(result_chunks) if result_size <= RESULT_LIMIT else None,
                     as_user=not isinstance(proc, _Forked))
+
+
+def _ended(proc, limits):
+    """The child itself has ended: what it left running (in its group; as root, anything of the run's uid) is
+    killed now, so a process holding its pipes open cannot keep the run waiting until the wall-clock limit."""
+    _kill_group(proc)
+    if limits.uid is not None:
+        users.kill_uid(limits.uid)
+    return True
 
 
 # ---------------------------------------------------------------- the portable path (Windows; CHECKER_PORTABLE=1)
@@ -764,6 +782,8 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline, pr
     if status is None and _flooded(errors, out_path, limits):
         status = "flood"   # it ended (the file-size limit, say) between two looks
     _kill_tree(popen, job)   # a stopped run, and anything the lab left running
+    if limits.uid is not None:
+        users.kill_uid(limits.uid)   # as root: what left the process group too, before its pipes are waited for
     try:
         popen.wait(timeout=5)
     except subprocess.TimeoutExpired:

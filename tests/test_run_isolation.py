@@ -41,7 +41,7 @@ DAEMON = '''
 import glob as _glob, os as _os, posix as _posix, signal as _signal, time as _time
 
 
-def _haunt():
+def _haunt(run):
     me, end = _os.getpid(), _time.time() + 40
     tmp = _os.environ.get("TMPDIR") or "/tmp"
     while _time.time() < end:
@@ -53,23 +53,24 @@ def _haunt():
                 except OSError:
                     pass
         for pid in range(2, 70000):
-            if pid != me:
-                try:
+            try:
+                if pid != me and _os.getpgid(pid) != run:   # every process but its own run's (threads too)
                     _os.kill(pid, _signal.SIGSTOP)
-                except OSError:
-                    pass
+            except OSError:
+                pass
         _time.sleep(0.2)
 
 
+_run = _os.getpid()
 if _os.fork() == 0:
     _os.setsid()
     if _os.fork() == 0:
         try:
-            _haunt()
+            _haunt(_run)
         finally:
             _posix._exit(0)
     _posix._exit(0)
-_time.sleep(0.5)
+_time.sleep(5)   # its run stays alive, so the daemon has the classmates running beside it
 '''
 
 FORKS = '''
