@@ -230,15 +230,16 @@ def kill_uid(uid, rounds=3):
 
 
 def as_run_user(user, work):
-    """Run work() in a process forked from here that has become `user`'s group and a uid of RUN_UIDS (no lock
-    needed: it only reads); returns what work() returned (JSON-able), or None if it failed."""
+    """Run work() in a process forked from here that has become what a run becomes (`user`'s group, a uid of
+    RUN_UIDS, taken for the moment); returns what work() returned (JSON-able), or None if it failed."""
     import json
+    held = take_uid()
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:
         try:
             os.close(read)
-            drop_user(user, RUN_UIDS.stop - 1)
+            drop_user(user, held.uid)
             os.write(write, json.dumps(work()).encode())
         finally:
             os._exit(0)
@@ -251,6 +252,7 @@ def as_run_user(user, work):
         chunks.append(data)
     os.close(read)
     os.waitpid(pid, 0)
+    held.release()
     try:
         return json.loads(b"".join(chunks) or b"null")
     except ValueError:
