@@ -233,13 +233,14 @@ def as_run_user(user, work):
     """Run work() in a process forked from here that has become what a run becomes (`user`'s group, a uid of
     RUN_UIDS, taken for the moment); returns what work() returned (JSON-able), or None if it failed."""
     import json
+    entry = _entry(user)   # everything the forked process needs is at hand before the fork (threads: no imports)
     held = take_uid()
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:
         try:
             os.close(read)
-            drop_user(user, held.uid)
+            drop_to(held.uid, entry.pw_gid)
             os.write(write, json.dumps(work()).encode())
         finally:
             os._exit(0)
