@@ -39,7 +39,7 @@ import threading
 import time
 import types
 
-from checker.sandbox import STDOUT_FILE
+from checker.sandbox import OUT, STDOUT_FILE
 from checker.source import read as read_source   # imported here, so the zygote has it warm
 
 sys.dont_write_bytecode = True
@@ -288,8 +288,8 @@ def run_scenario(module, settings):
         runtime.write_record()
 
 
-# the checker's own files in the work folder (STDOUT_FILE: the lab's stdout on the portable path)
-RESERVED = ("settings.json", "record.json", "timeout_traceback.txt", STDOUT_FILE)
+# the checker's own names in the work folder (the child's files are in its OUT sub-folder)
+RESERVED = ("settings.json", OUT)
 
 
 def copy_name(lab_path):
@@ -317,8 +317,6 @@ def main(argv):
     kind, _, target = channel.partition(":")
     portable = kind == "stdout"
     result_pipe = _stdout_channel(target) if portable else os.fdopen(int(target), "w", encoding="utf-8")
-    copy_path = os.path.abspath(copy_name(lab_path))   # the copy sandbox.run_child put in the working folder
-    sys.argv[:] = [copy_path]
     _only_the_project_on_path()
     faulthandler.enable()
     budget = float(os.environ.get("CHECKER_FAULT_SECONDS", "0") or 0)
@@ -334,6 +332,13 @@ def main(argv):
         settings = json.load(handle)
     # the checker's own settings; what is left goes to the lab runtime
     probes = importlib.import_module(settings.pop("probes"))
+    if portable and limits.user:   # the POSIX path left root before the lab's interpreter started; here, now,
+        from checker import sandbox, zygote   # after importing what a lab needs, as the zygote does
+        zygote.warm_up()
+        sandbox._leave_root(limits, inside="/" + OUT)
+    # the copy sandbox.run_child put in the work folder, the parent of the child's own (root's: the child reads it)
+    copy_path = os.path.abspath(os.path.join(os.pardir, copy_name(lab_path)))
+    sys.argv[:] = [copy_path]
     output_limit = int(settings.pop("max_output", 0) or 0)
     if output_limit:
         counter = [0]
@@ -351,10 +356,6 @@ def main(argv):
         write(dumps(result) + "\n")
         flush()
 
-    if portable and limits.user:   # the POSIX path drops root before the lab's interpreter starts; here, now,
-        from checker import users, zygote   # after importing what a lab needs, as the zygote does
-        zygote.warm_up()
-        users.drop_user(limits.user)
     save()
     try:
         module = load_lab(lab_path, copy_path)

@@ -245,6 +245,8 @@ def main(argv=None):
         # child starts as the grader and switches user itself once it has imported what a lab needs)
         problem = args.child_user and not sandbox.zygote_enabled() and not sandbox.portable() and \
             users.python_problem(args.child_user, sandbox.PROJECT_ROOT)
+        if not problem and args.child_user and not sandbox.jailed_runs():   # no jail: the modes must keep the answers
+            problem = users.answers_problem(args.child_user, sandbox.PROJECT_ROOT)
         if problem:
             raise UsageError(problem)
     except UsageError as exc:

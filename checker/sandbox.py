@@ -19,6 +19,9 @@ USE_ZYGOTE = False here) turns it off; whenever the zygote cannot be started or 
 children are started with subprocess as before. The run and its RunResult are the same either way.
 A limit the system refuses (macOS refuses RLIMIT_AS) is skipped and noted in RunResult.notes.
 
+As root, each run has a uid of its own (users.take_uid), is chrooted in its work folder where root may, and
+everything of that uid is killed when it ends (checker/README.md, "Each run alone").
+
 The portable path (portable(): Windows, no fork or process groups, or CHECKER_PORTABLE=1) starts
 the child with plain subprocess and no preexec_fn or pass_fds: the child's stdout is its result
 channel (it moves the lab's stdout to a file first), threads read the pipes, the parent kills
@@ -67,6 +70,8 @@ class Limits:
     memory_mb: int = 768
     max_output: int = 256 * 1024
     user: str | None = None
+    uid: int | None = None    # the run's own uid (users.RUN_UIDS, set by run_child): user's group, this uid
+    jail: str | None = None   # the run's work folder, chrooted into before the switch where the system allows it
 
 
 @dataclass
@@ -148,23 +153,43 @@ def _limit_child(limits, note_fd=None):
         if note_fd is not None:
             write_notes(note_fd, notes)
         if limits.user:   # last: drop root for the student's user
-            users.drop_user(limits.user)
+            _leave_root(limits)
     return apply
 
 
-def _start(lab_path, task, settings_path, result_fd, work, env, limits):
+def _leave_root(limits, inside="/"):
+    """The run's own uid gets a process limit, the run its jail (where it has one), then root is dropped."""
+    if limits.uid is not None:
+        import resource
+        resource.setrlimit(resource.RLIMIT_NPROC, (users.NPROC, users.NPROC))
+    entry = users._entry(limits.user)   # read now: a jail has no /etc/passwd
+    if limits.jail:
+        users.enter_jail(limits.jail, inside)
+    users.drop_to(entry.pw_uid if limits.uid is None else limits.uid, entry.pw_gid)
+
+
+def _start(lab_path, task, settings_path, result_fd, work, env, limits, preload=()):
     """Start the child: forked by the zygote if it is on and answers, else with subprocess.
 
     result_fd: the write end of the pipe the child writes its result to (the parent reads the other end).
+    preload: modules the forked child imports before it leaves root (the lab's probes), so it needs no file of
+    the project's afterwards (issue 44: a project folder the child's user cannot enter).
     """
     if zygote_enabled():
         for _ in range(1 + ZYGOTE_RESTARTS):   # a zygote that fails to fork is replaced (_zygote_client) and asked again
             client = _zygote_client()
             if client is None:
                 break
-            proc = client.spawn(["checker.child", lab_path, task, settings_path, "fd:3"], work, env, limits, result_fd)
+            inside = "/" + os.path.relpath(work, limits.jail) if limits.jail else work
+            proc = client.spawn(["checker.child", lab_path, task, settings_path, "fd:3"], inside, env, limits,
+                                result_fd, preload)
             if proc is not None:
                 return proc
+    if limits.jail:   # a subprocess starts Python itself: no jail; then the answers must be out of the user's reach
+        problem = users.answers_problem(limits.user, PROJECT_ROOT)
+        if problem:
+            raise users.ChildUserError(problem)
+        limits = Limits(**dict(asdict(limits), jail=None))
     command = [sys.executable, "-X", "faulthandler", "-m", "checker.child", lab_path, task, settings_path,
                f"fd:{result_fd}"]
     return _Subprocess(subprocess.Popen(command, cwd=work, env=env, stdin=subprocess.DEVNULL,
@@ -271,16 +296,16 @@ class ZygoteClient:
                 self.close()
         return self.ready
 
-    def spawn(self, argv, cwd, env, limits, result_fd):
-        """Have the zygote fork a child running `python -m argv...` (result_fd becomes its fd 3); a _Forked or None."""
+    def spawn(self, argv, cwd, env, limits, result_fd, preload=()):
+        """Have the zygote fork a child running `python -m argv...` (result_fd becomes its fd 3); a _Forked or None.
+
+        cwd: the child's folder as it sees it (inside its jail, when it has one)."""
         if self.broken:
             return None
         out_read, out_write = os.pipe()
         err_read, err_write = os.pipe()
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
-        request = {"argv": argv, "cwd": cwd, "env": env,
-                   "limits": {"timeout": limits.timeout, "memory_mb": limits.memory_mb, "user": limits.user,
-                              "max_output": limits.max_output}}
+        request = {"argv": argv, "cwd": cwd, "env": env, "preload": list(preload), "limits": asdict(limits)}
         try:
             with self.lock:
                 socket.send_fds(self.control, [json.dumps(request).encode()],
@@ -400,8 +425,8 @@ def _kill_group(proc):
         pass
 
 
-def _read_work_file(path, limit):
-    """At most `limit` bytes of a file the child left in its work folder, or None.
+def _read_work_file(path, limit, whole=True):
+    """At most `limit` bytes of a file the child left in its work folder, or None (whole: None when larger).
 
     The child's user owns that folder, so the name may have become a link (to /dev/zero, to a file of
     the grader's) or a FIFO (an open() that never returns): only a regular file is read, links not followed.
@@ -412,9 +437,9 @@ def _read_work_file(path, limit):
         return None
     with os.fdopen(fd, "rb") as handle:
         info = os.fstat(handle.fileno())
-        if not stat.S_ISREG(info.st_mode) or info.st_size > limit:
+        if not stat.S_ISREG(info.st_mode) or (whole and info.st_size > limit):
             return None
-        return handle.read(limit + 1)
+        return handle.read(limit + 1 if whole else limit)
 
 
 def _read_json(path, limit):
@@ -498,73 +523,114 @@ def _check_user(result, limits, as_user):
     errors = [result.get("error")] + [t.get("error") for t in tapes.values() if isinstance(t, dict)]
     path = [PROJECT_ROOT] + [p for p in sys.path if p and os.path.abspath(p) != os.getcwd()]
     for error in errors:
-        problem = users.unreadable_import(error if isinstance(error, dict) else None, limits.user, path)
+        problem = users.unreadable_import(error if isinstance(error, dict) else None, limits.user, path,
+                                          jailed=bool(limits.jail))
         if problem:
             raise users.ChildUserError(problem)
 
 
+OUT = "out"   # the run's own sub-folder of its work folder: the only place its user may write
+
+
+def jailed_runs():
+    """True when a child user's runs are chrooted in their work folders: root may chroot here, and the child is
+    forked by the zygote or is the portable one (a POSIX subprocess starts Python as the user: no jail).
+    CHECKER_NO_JAIL=1 turns it off (the tests take the path of a system that refuses chroot)."""
+    return (users.jail_works() and os.environ.get("CHECKER_NO_JAIL") != "1"
+            and (zygote_enabled() or portable()))
+
+
 def run_child(lab_path, task, settings, limits):
-    """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour."""
+    """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour.
+
+    The work folder is the grader's: the settings and the lab's copy, readable by the child, not writable;
+    its OUT sub-folder is the child's (its working folder: the record, the traceback, what the lab writes).
+    With a child user the run gets a uid of its own (users.take_uid), its group the user's, and everything
+    running as that uid is killed when the run ends; where root may chroot, the child is jailed in the work
+    folder before it leaves root, so it opens nothing of the project's, the answers' or another run's.
+    """
     lab_path = os.path.abspath(lab_path)
-    # ignore_cleanup_errors: on Windows a file a dying process still holds open cannot be removed yet
-    with tempfile.TemporaryDirectory(prefix="checker-", ignore_cleanup_errors=True) as work:
-        settings = dict(settings, max_output=limits.max_output)  # the child stops a flood at its print()
-        if task == "scenario":
-            settings["record"] = os.path.join(work, "record.json")
-        settings_path = os.path.join(work, "settings.json")
-        with open(settings_path, "w", encoding="utf-8") as handle:
-            json.dump(settings, handle)
-        env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
-        env.update(_CHILD_ENV)
-        _copy_lab(lab_path, work)   # the child runs a copy, alone in its folder: no file beside the submission
-        if limits.user:   # the child's own user owns its work folder (its record, its traceback) and nothing else
-            import pwd
-            entry = pwd.getpwnam(limits.user)
-            os.chown(work, entry.pw_uid, entry.pw_gid)
-            env["HOME"] = work
-            closed = users.blocked(work, limits.user)   # e.g. TMPDIR in a folder only root may enter
-            if closed:
-                raise users.ChildUserError(f"the checker's work folders in {os.path.dirname(work)} are not "
-                                           f"reachable by user {limits.user!r}: {closed} is closed to it; set "
-                                           "TMPDIR to a folder it can enter, or choose another --child-user")
-        env.update({
-            "PYTHONPATH": PROJECT_ROOT,   # only the project: the submission's own folder is not on the child's path
-            "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
-        })
-        start = time.monotonic()
-        deadline = start + wall_limit(limits)
-        collect = _run_portable if portable() else _run_posix
-        outcome = collect(lab_path, task, settings_path, work, env, limits, deadline)
-        status = outcome.status
-        seconds = time.monotonic() - start
-        result, notes = _read_channel(outcome.channel) if outcome.channel is not None else ({}, [])
-        notes = outcome.notes + notes
-        record = _read_json(settings["record"], RECORD_LIMIT) if task == "scenario" else None
-        trace = ""
-        data = _read_work_file(os.path.join(work, "timeout_traceback.txt"), 1 << 20)
-        if data:
-            trace = data[:20000].decode("utf-8", "replace")
-        if trace and not status:
-            status = "timeout"  # faulthandler fired and ended the process just before our deadline
-        if not status:
-            if result.get("phase") == "done":
-                status = "done"
-            elif "error" in result:
-                status = "error"
-            else:
-                status = "crash"
-        _check_user(result, limits, outcome.as_user)   # an unreadable import is the checker's problem, not the student's
-        return RunResult(status=status, result=result, record=record,
-                         stdout=outcome.stdout.decode("utf-8", "replace"),
-                         stderr=outcome.stderr.decode("utf-8", "replace"),
-                         returncode=outcome.returncode, seconds=seconds, timeout_trace=trace, notes=notes)
+    run_uid = users.take_uid() if limits.user else None
+    try:
+        # ignore_cleanup_errors: on Windows a file a dying process still holds open cannot be removed yet
+        with tempfile.TemporaryDirectory(prefix="checker-", ignore_cleanup_errors=True) as work:
+            return _run_in(work, lab_path, task, settings, limits, run_uid)
+    finally:
+        if run_uid is not None:
+            run_uid.release()
 
 
-def _run_posix(lab_path, task, settings_path, work, env, limits, deadline):
+def _run_in(work, lab_path, task, settings, limits, run_uid):
+    out = os.path.join(work, OUT)
+    os.mkdir(out, 0o700)
+    settings = dict(settings, max_output=limits.max_output)  # the child stops a flood at its print()
+    if task == "scenario":
+        settings["record"] = "record.json"   # in the child's working folder, OUT
+    with open(os.path.join(work, "settings.json"), "w", encoding="utf-8") as handle:
+        json.dump(settings, handle)
+    env = {key: value for key, value in os.environ.items() if not key.startswith("LESSON11_")}
+    env.update(_CHILD_ENV)
+    _copy_lab(lab_path, work)   # the child runs a copy, alone in its folder: no file beside the submission
+    env["HOME"] = out
+    if limits.user:   # the run's uid owns OUT and nothing else
+        import pwd
+        entry = pwd.getpwnam(limits.user)
+        for name in os.listdir(work):
+            os.chmod(os.path.join(work, name), 0o644 if name != OUT else 0o700)
+        os.chmod(work, 0o755)
+        os.chown(out, run_uid.uid, entry.pw_gid)
+        closed = users.blocked(work, limits.user)   # e.g. TMPDIR in a folder only root may enter
+        if closed:
+            raise users.ChildUserError(f"the checker's work folders in {os.path.dirname(work)} are not "
+                                       f"reachable by user {limits.user!r}: {closed} is closed to it; set "
+                                       "TMPDIR to a folder it can enter, or choose another --child-user")
+        jail = work if jailed_runs() else None
+        limits = Limits(**dict(asdict(limits), uid=run_uid.uid, jail=jail))
+        if jail:
+            env["HOME"] = "/" + OUT
+    env.update({
+        "PYTHONPATH": PROJECT_ROOT,   # only the project: the submission's own folder is not on the child's path
+        "CHECKER_FAULT_SECONDS": str(max(wall_limit(limits) - 0.6, 0.2)),
+    })
+    start = time.monotonic()
+    deadline = start + wall_limit(limits)
+    collect = _run_portable if portable() else _run_posix
+    settings_path = os.path.join(os.pardir, "settings.json")   # from OUT, inside a jail or not
+    try:
+        outcome = collect(lab_path, task, settings_path, out, env, limits, deadline, settings.get("probes"))
+    finally:
+        if run_uid is not None:
+            run_uid.kill()   # nothing of the run is left to write its files while they are read (or after)
+    status = outcome.status
+    seconds = time.monotonic() - start
+    result, notes = _read_channel(outcome.channel) if outcome.channel is not None else ({}, [])
+    notes = outcome.notes + notes
+    record = _read_json(os.path.join(out, settings["record"]), RECORD_LIMIT) if task == "scenario" else None
+    trace = ""
+    data = _read_work_file(os.path.join(out, "timeout_traceback.txt"), 1 << 20)
+    if data:
+        trace = data[:20000].decode("utf-8", "replace")
+    if trace and not status:
+        status = "timeout"  # faulthandler fired and ended the process just before our deadline
+    if not status:
+        if result.get("phase") == "done":
+            status = "done"
+        elif "error" in result:
+            status = "error"
+        else:
+            status = "crash"
+    _check_user(result, limits, outcome.as_user)   # an unreadable import is the checker's problem, not the student's
+    return RunResult(status=status, result=result, record=record,
+                     stdout=outcome.stdout.decode("utf-8", "replace"),
+                     stderr=outcome.stderr.decode("utf-8", "replace"),
+                     returncode=outcome.returncode, seconds=seconds, timeout_trace=trace, notes=notes)
+
+
+def _run_posix(lab_path, task, settings_path, work, env, limits, deadline, probes=None):
     """Start the child (zygote or subprocess) with a result pipe and read its three pipes with a selector."""
     result_read, result_write = os.pipe()   # the child's result comes over a pipe we opened, not a file
     try:
-        proc = _start(lab_path, task, settings_path, result_write, work, env, limits)
+        proc = _start(lab_path, task, settings_path, result_write, work, env, limits, (probes,) if probes else ())
     except OSError as exc:   # the user cannot even start this Python (the subprocess path)
         os.close(result_read)
         if limits.user:
@@ -580,13 +646,22 @@ def _run_posix(lab_path, task, settings_path, work, env, limits, deadline):
     selector.register(proc.stdout_fd, selectors.EVENT_READ, "stdout")
     selector.register(proc.stderr_fd, selectors.EVENT_READ, "stderr")
     selector.register(result_read, selectors.EVENT_READ, "result")
-    open_streams = 3
+    if isinstance(proc, _Forked):
+        selector.register(proc.reply, selectors.EVENT_READ, "exit")   # the zygote's word that the child ended
+    open_streams, ended = 3, False
     while open_streams:
         remaining = deadline - time.monotonic()
         if remaining <= 0:
             status = "timeout"
             break
+        if not ended and isinstance(proc, _Subprocess) and proc.popen.poll() is not None:
+            ended = _ended(proc, limits)
         for key, _ in selector.select(timeout=min(remaining, 0.5)):
+            if key.data == "exit":
+                selector.unregister(key.fileobj)
+                proc.wait(timeout=0)
+                ended = _ended(proc, limits)
+                continue
             data = os.read(key.fd, 65536)
             if not data:
                 selector.unregister(key.fileobj)
@@ -620,6 +695,15 @@ def _run_posix(lab_path, task, settings_path, work, env, limits, deadline):
     return _Outcome(status, proc.returncode, b"".join(chunks["stdout"]), b"".join(chunks["stderr"]),
                     b"".join(result_chunks) if result_size <= RESULT_LIMIT else None,
                     as_user=not isinstance(proc, _Forked))
+
+
+def _ended(proc, limits):
+    """The child itself has ended: what it left running (in its group; as root, anything of the run's uid) is
+    killed now, so a process holding its pipes open cannot keep the run waiting until the wall-clock limit."""
+    _kill_group(proc)
+    if limits.uid is not None:
+        users.kill_uid(limits.uid)
+    return True
 
 
 # ---------------------------------------------------------------- the portable path (Windows; CHECKER_PORTABLE=1)
@@ -660,7 +744,7 @@ class _Drain(threading.Thread):
             self.stream.close()
 
 
-def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
+def _run_portable(lab_path, task, settings_path, work, env, limits, deadline, probes=None):
     """Start `python -m checker.child` with plain subprocess and watch it from here.
 
     The child's real stdout is its result channel (the child moves the lab's stdout to STDOUT_FILE
@@ -670,7 +754,7 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
     """
     out_path = os.path.join(work, STDOUT_FILE)
     command = [sys.executable, "-X", "faulthandler", "-m", "checker.child", lab_path, task, settings_path,
-               f"stdout:{out_path}"]
+               f"stdout:{STDOUT_FILE}"]
     env = dict(env, CHECKER_CHILD_LIMITS=json.dumps(asdict(limits)))
     if sys.platform == "win32":
         group = {"creationflags": subprocess.CREATE_NEW_PROCESS_GROUP}
@@ -698,6 +782,8 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
     if status is None and _flooded(errors, out_path, limits):
         status = "flood"   # it ended (the file-size limit, say) between two looks
     _kill_tree(popen, job)   # a stopped run, and anything the lab left running
+    if limits.uid is not None:
+        users.kill_uid(limits.uid)   # as root: what left the process group too, before its pipes are waited for
     try:
         popen.wait(timeout=5)
     except subprocess.TimeoutExpired:
@@ -705,11 +791,7 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline):
     channel.close()
     errors.close()
     stderr = errors.data()
-    try:
-        with open(out_path, "rb") as handle:
-            stdout = handle.read(max(limits.max_output - len(stderr), 0))
-    except OSError:
-        stdout = b""
+    stdout = _read_work_file(out_path, max(limits.max_output - len(stderr), 0), whole=False) or b""
     return _Outcome(status, popen.returncode, stdout, stderr, channel.data() if channel.size <= RESULT_LIMIT else None,
                     notes)
 

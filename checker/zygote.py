@@ -67,10 +67,14 @@ def _child(request, fds, base_path, close):
         out_fd, err_fd, _, result_fd = fds
         argv = request["argv"]
         spec, main_code = _main_code(argv[0])   # read while still the zygote's user
+        import importlib
+        for name in request.get("preload") or ():   # the lab's probes (a lab the zygote did not import): now, as root
+            importlib.import_module(name)
         from checker import sandbox
         limits = sandbox.Limits(**request["limits"])
-        sandbox._limit_child(limits, result_fd)()  # setsid, the rlimits (refused ones as notes) and the user switch, as the preexec_fn does
-        null = os.open(os.devnull, os.O_RDONLY)
+        null = os.open(os.devnull, os.O_RDONLY)   # before the jail, which has no /dev
+        sandbox._limit_child(limits, result_fd)()  # setsid, the rlimits (refused ones as notes), the uid's process
+        # limit, the jail and the user switch, as the preexec_fn does
         os.dup2(null, 0)
         os.dup2(out_fd, 1)
         os.dup2(err_fd, 2)
@@ -100,6 +104,10 @@ def _child(request, fds, base_path, close):
                 stream.flush()
             except BaseException:  # noqa: BLE001
                 pass
+    except BaseException:   # the set-up failed (the lab never ran): its account goes to the run's stderr
+        import traceback
+        os.write(fds[1], traceback.format_exc().encode())
+        raise
     finally:
         os._exit(code)
 

@@ -25,10 +25,12 @@ needs_nobody = pytest.mark.skipif(not users.is_root() or users.choose(None)[0] !
                                   reason=f"needs root and a user {users.DEFAULT_CHILD_USER!r}")
 
 
-def checker(*argv, zygote=True, cwd=ROOT):
-    """(exit status, stdout, stderr) of `python -m checker ARGV` run as this test's user."""
-    env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
-               CHECKER_ZYGOTE="1" if zygote else "0")
+def checker(*argv, zygote=True, cwd=None, jail=True, project=ROOT):
+    """(exit status, stdout, stderr) of `python -m checker ARGV` run as this test's user (jail=False: as on a
+    system that refuses chroot; project: the copy of the project to run)."""
+    cwd = cwd or project
+    env = dict(os.environ, PYTHONPATH=project, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+               CHECKER_ZYGOTE="1" if zygote else "0", CHECKER_NO_JAIL="0" if jail else "1")
     proc = subprocess.run([sys.executable, "-m", "checker", *argv], cwd=cwd, env=env, capture_output=True,
                           text=True, timeout=900)
     return proc.returncode, proc.stdout, proc.stderr
@@ -50,6 +52,32 @@ def lab_raising(folder, name, expression, before=""):
     return path
 
 
+@pytest.fixture(scope="module")
+def private_project():
+    """A copy of the project in a folder of mode 700 (tests/test_project_folder_mode.py): the child's user cannot
+    reach its solutions/, so a grader without the jail (CHECKER_NO_JAIL=1) grades there instead of refusing."""
+    from test_project_folder_mode import clone_in_private_folder
+    private, project = clone_in_private_folder()
+    yield project
+    import shutil
+    shutil.rmtree(private)
+
+
+@needs_nobody
+def test_without_the_jail_answers_the_child_could_read_are_refused_in_one_line():
+    """Issue 39 item 7: no chroot (CHECKER_NO_JAIL=1, as where the system refuses it) and the repository's
+    solutions/ readable by the run's user: nothing is graded; one line says so and how to fix it. The line comes
+    from a real try by a process of that user, not from the mode bits."""
+    where = users.readable_answers(users.DEFAULT_CHILD_USER, ROOT)
+    status, out, err = checker(SOLUTION, "--json", "--quiet", jail=False)
+    if where is None:
+        assert status == 0, err
+        return
+    assert status == 2 and out == ""
+    assert err.strip().splitlines() == [f"checker: error: {users.answers_problem(users.DEFAULT_CHILD_USER, ROOT)}"]
+    assert f"chmod -R go-rwx {os.path.join(ROOT, 'solutions')}" in err
+
+
 # ---------------------------------------------------------------- who runs the child
 
 @needs_nobody
@@ -57,8 +85,12 @@ def test_as_root_the_child_runs_as_nobody_without_being_told_and_root_only_when_
     path = lab_raising(str(tmp_path), "uid_lab.py", "(os.getuid(), os.geteuid(), os.getgroups())")
     status, out, err = checker(path, "--json", "--quiet")
     assert status == 1, err
-    nobody = __import__("pwd").getpwnam(users.DEFAULT_CHILD_USER).pw_uid
-    assert f"seen=({nobody}, {nobody}, [])" in loads_message(rows(out)["uid_lab.py"])
+    nogroup = __import__("pwd").getpwnam(users.DEFAULT_CHILD_USER).pw_gid   # nobody's group, a uid of the run's own
+    seen = loads_message(rows(out)["uid_lab.py"]).split("seen=(", 1)[1].split(")", 1)[0]
+    uid, euid, groups = seen.split(", ", 2)
+    assert uid == euid and int(uid) in users.RUN_UIDS and groups == "[]", seen
+    gid_path = lab_raising(str(tmp_path), "gid_lab.py", "os.getgid()")
+    assert f"seen={nogroup}" in loads_message(rows(checker(gid_path, "--json", "--quiet")[1])["gid_lab.py"])
     status, out, err = checker(path, "--json", "--quiet", "--child-user", "root")   # the opt-out
     assert status == 1, err
     assert "seen=(0, 0," in loads_message(rows(out)["uid_lab.py"])
@@ -103,8 +135,7 @@ def test_without_the_zygote_it_grades_or_says_in_one_line_that_it_cannot():
     assert err.strip().splitlines() == [f"checker: error: {problem}"]
     blocked = users.python_blocked(users.DEFAULT_CHILD_USER)
     assert problem == (f"the checker cannot run Python as user 'nobody': {blocked} is not readable by it; "
-                       f"install Python where that user can read it, choose another --child-user, or "
-                       f"--child-user root to opt out")
+                       f"install Python where that user can read it, or choose another --child-user")
 
 
 @needs_nobody
@@ -120,24 +151,37 @@ def test_a_zygote_that_fails_mid_run_gives_the_checkers_line_not_the_students(mo
 
 
 @needs_nobody
-def test_an_import_nobody_cannot_read_is_the_checkers_line_and_a_missing_module_the_students(tmp_path):
+@pytest.mark.parametrize("jail", [True, False], ids=["jail", "no_jail"])
+def test_an_import_error_is_the_checkers_only_when_the_users_own_try_confirms_it(tmp_path, jail, private_project):
+    """Issue 39 item 8: a step's ModuleNotFoundError is not believed. Jailed (chroot), the child has only what
+    the zygote imported, so every import error is the file's own. Without the jail the grader has a process of
+    the run's user try the module: a forged "No module named 'pygame'" (a module that user can read) stays the
+    file's error; one it really cannot read ('wave' in a Python under /root) is the checker's line, which never
+    advises running the student's code as root. (Without the jail the repository's world-readable solutions/ is
+    refused, so that run grades a copy of the project in a 700 folder, where the answers are out of reach.)"""
     import importlib.util
-    origin = importlib.util.find_spec("wave").origin   # stdlib, not among the zygote's imports
-    if not users.blocked(os.path.realpath(origin), users.DEFAULT_CHILD_USER):
-        pytest.skip("nobody can read the standard library here: importing it simply works")
     solution = open(SOLUTION, encoding="utf-8").read()
     at = solution.index("import math")
-    for name, module in (("reads.py", "wave"), ("missing.py", "no_such_module_35")):
+    files = {"reads.py": "import wave\n", "missing.py": "import no_such_module_35\n",
+             "forged_wave.py": "raise ModuleNotFoundError(\"No module named 'wave'\")\n",
+             "forged_pygame.py": "raise ModuleNotFoundError(\"No module named 'pygame'\")\n"}
+    for name, line in files.items():
         with open(tmp_path / name, "w", encoding="utf-8") as handle:
-            handle.write(solution[:at] + f"import {module}\n" + solution[at:])
-    status, out, err = checker(str(tmp_path / "reads.py"), str(tmp_path / "missing.py"), "--json", "--quiet")
+            handle.write(solution[:at] + line + solution[at:])
+    status, out, err = checker(*(str(tmp_path / name) for name in files), "--json", "--quiet", jail=jail,
+                               project=ROOT if jail else private_project)
     graded = rows(out)
-    line = graded["reads.py"]["message"]
-    assert line.startswith("the checker cannot import 'wave' as user 'nobody': ") and "--child-user root" in line
-    assert graded["reads.py"]["criteria"] == [] and graded["reads.py"]["score"] == 0
-    assert err.count(line) == 1   # said once on stderr
-    assert "ModuleNotFoundError: No module named 'no_such_module_35'" in loads_message(graded["missing.py"])
-    assert graded["missing.py"]["message"] == ""   # graded: the student's own error
+    wave_unreadable = users.blocked(os.path.realpath(importlib.util.find_spec("wave").origin), "nobody")
+    for name in files:
+        row = graded[name]
+        assert "--child-user root" not in row["message"], row["message"]
+        ours = not jail and name in ("reads.py", "forged_wave.py") and wave_unreadable
+        if ours:
+            assert row["message"].startswith("the checker cannot import 'wave' as user 'nobody': ")
+            assert row["criteria"] == [] and err.count(row["message"]) == 1
+        else:
+            assert row["message"] == "" and "ModuleNotFoundError: No module named" in loads_message(row), row
+            assert row["score"] == 0
 
 
 def test_an_import_of_the_answers_kept_from_the_child_stays_the_files_error(tmp_path):
@@ -176,7 +220,7 @@ def test_a_module_beside_the_lab_is_not_importable_and_the_lab_is_alone_in_its_f
     listed = message.split("seen=('not importable', [", 1)[1].split("]", 1)[0]
     names = {name.strip(" '") for name in listed.split(",")}
     assert "side_lab.py" in names and "crate_utils.py" not in names
-    assert names <= {"side_lab.py", "settings.json", "timeout_traceback.txt"}, names
+    assert names <= {"side_lab.py", "settings.json", "out"}, names   # out/: the child's own (its cwd)
 
 
 @needs_nobody
@@ -264,9 +308,12 @@ def test_the_lab_cannot_patch_what_the_child_reports_with(tmp_path):
 
 
 @needs_nobody
-def test_a_file_of_pythons_own_that_nobody_cannot_read_is_the_checkers_line(tmp_path):
+@pytest.mark.parametrize("jail", [True, False], ids=["jail", "no_jail"])
+def test_a_file_of_pythons_own_that_nobody_cannot_read_is_the_checkers_line(tmp_path, jail, private_project):
     """Python's own files (where pygame keeps data it may open late, say) unreadable by the child's user: the
-    checker's line. A file the student opens that is not Python's (the solutions, say) stays the student's."""
+    checker's line, once a process of that user confirmed it. A file the student opens that is not Python's
+    (the solutions, say) stays the student's. Jailed, no file outside the run's folder exists for the child:
+    every open of one is the file's own error."""
     stdlib_file = os.path.join(os.path.dirname(os.__file__), "this.py")
     if not users.blocked(os.path.realpath(stdlib_file), users.DEFAULT_CHILD_USER):
         pytest.skip("nobody can read the standard library here")
@@ -276,10 +323,14 @@ def test_a_file_of_pythons_own_that_nobody_cannot_read_is_the_checkers_line(tmp_
     for name, target in (("python_file.py", stdlib_file), ("private_file.py", str(private))):
         (tmp_path / name).write_text(f"{TITLE}open({target!r}).read()\n", encoding="utf-8")
     status, out, err = checker(str(tmp_path / "python_file.py"), str(tmp_path / "private_file.py"), "--json",
-                               "--quiet")
+                               "--quiet", jail=jail, project=ROOT if jail else private_project)
     graded = rows(out)
-    assert graded["python_file.py"]["message"].startswith(f"the checker cannot read {stdlib_file} as user 'nobody'")
-    assert "PermissionError" in loads_message(graded["private_file.py"])
+    if jail:
+        assert "FileNotFoundError" in loads_message(graded["python_file.py"])
+        assert graded["python_file.py"]["message"] == ""
+    else:
+        assert graded["python_file.py"]["message"].startswith(f"the checker cannot read {stdlib_file} as user 'nobody'")
+    assert ("FileNotFoundError" if jail else "PermissionError") in loads_message(graded["private_file.py"])
     assert graded["private_file.py"]["message"] == ""
 
 

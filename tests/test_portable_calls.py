@@ -49,7 +49,8 @@ ALLOWED = {
         "ZygoteClient.__init__": {"Popen(pass_fds=)", "socket.AF_UNIX", "socket.SOCK_SEQPACKET"},
         "ZygoteClient.spawn": {"socket.AF_UNIX", "socket.SOCK_SEQPACKET", "socket.send_fds"},
         "_kill_group": {"os.killpg", "signal.SIGKILL"},   # the portable path calls it only where both exist
-        "run_child": {"import pwd", "os.chown", "pwd.getpwnam"},   # with a child user only (a root grader)
+        "_run_in": {"import pwd", "os.chown", "pwd.getpwnam"},   # with a child user only (a root grader)
+        "_leave_root": {"import resource", "resource.setrlimit", "resource.RLIMIT_NPROC"},   # a child user only
         "_run_posix": {"selectors.DefaultSelector", "selectors.EVENT_READ"},
     },
     "checker/zygote.py": {
@@ -69,7 +70,14 @@ ALLOWED = {
         "choose": {"import pwd", "pwd.getpwnam"},
         "_entry": {"import pwd", "pwd.getpwnam"},
         "_groups": {"grp.getgrall", "import grp"},
-        "drop_user": {"os.setgid", "os.setgroups", "os.setuid"},
+        "drop_to": {"os.setgid", "os.setgroups", "os.setuid"},
+        # one uid per run, the jail, the real permission checks: a root grader on POSIX only
+        "enter_jail": {"os.chroot"},
+        "jail_works": {"os.chroot", "os.fork"},
+        "take_uid": {"import fcntl", "fcntl.flock", "fcntl.LOCK_EX", "fcntl.LOCK_NB"},
+        "_has_entry": {"import pwd", "pwd.getpwuid"},
+        "kill_uid": {"os.fork", "os.setgroups", "os.setuid", "signal.SIGKILL"},
+        "as_run_user": {"os.fork"},
         "python_problem": {"Popen(preexec_fn=)"},
     },
     # shipped into the graders' Linux containers only (Gradescope, GitHub Classroom, PrairieLearn)
