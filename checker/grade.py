@@ -20,9 +20,9 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
 
-from . import probing, source, step_rules
+from . import budget, probing, source, step_rules
 from .checks import ERROR, FAIL, PASS, skipped_all
-from .sandbox import Limits, run_child
+from .sandbox import Limits, run_child, wall_limit
 
 
 @dataclass
@@ -178,9 +178,14 @@ class Grader:
         if sub.probe is None:
             return LabReport(given, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start,
                              seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
-        if sub.probe.status == "done":   # the verdicts' data: the child's tapes replayed and judged here
-            sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
-        state = lab.checks.run(sub, stop_at_scenarios=True)
+        try:   # the grader's own work on what the child reported runs under a budget (checker/budget.py)
+            with self._budget():
+                if sub.probe.status == "done":   # the verdicts' data: the child's tapes replayed and judged here
+                    sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
+                state = lab.checks.run(sub, stop_at_scenarios=True)
+        except budget.Exhausted as exc:
+            return LabReport(given, lab, skipped_all(lab.checks, exc.message()), time.monotonic() - start,
+                             seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
         if lab.checks.wants_scenarios(state):
             wanted = lab.scenarios()
             with ThreadPoolExecutor(max_workers=len(wanted)) as pool:
@@ -191,7 +196,11 @@ class Grader:
                     run = future.result()
                     if run is not None:
                         sub.scenarios[name] = run
-        results = lab.checks.run(sub, state=state).ordered(lab.checks)
+        try:
+            with self._budget():
+                results = lab.checks.run(sub, state=state).ordered(lab.checks)
+        except budget.Exhausted as exc:
+            results = skipped_all(lab.checks, exc.message())
         with open(path, "rb") as handle:
             if hashlib.sha256(handle.read()).hexdigest() != digest:
                 results = skipped_all(lab.checks, f"{sub.name} changed while it was being graded; grade it again.")
@@ -222,6 +231,13 @@ class Grader:
         by_id = {r.id: r for r in results}
         loaded = by_id.get("loads") is None or by_id["loads"].status == PASS
         return loaded and any(r.status in (FAIL, ERROR) for r in results)
+
+    def _budget(self):
+        """The budget of the grader's own work on one file's runs: a run's CPU seconds (--timeout), its wall-clock
+        limit and the whole run's deadline (--total-timeout), whichever comes first."""
+        deadline = time.monotonic() + wall_limit(self.limits)
+        return budget.Budget(cpu=self.limits.timeout,
+                             deadline=deadline if self.deadline is None else min(deadline, self.deadline))
 
     def _late_message(self):
         return f"not graded: the time limit for the whole run ({self.total_timeout:g} s) ran out first."

@@ -14,7 +14,7 @@ import ast
 import importlib
 import secrets
 
-from . import tape
+from . import budget, tape
 from . import source as source_text
 from .common import value_text
 from .handout import MarkerError, step_regions
@@ -179,11 +179,27 @@ def judge(lab, path, settings, child):
         return {"missing": [], "functions": {name: {"ok": False, "error": _error(
             "the probe's result is not in the checker's format (the file's code changed what the child reports)")}
             for name in probes.PROBES}}
-    steps = settings["steps"]
     pure = set(getattr(probes, "PURE", ()))   # step functions that must leave their arguments as they got them
     namespace = handout_namespace(lab)   # its constants are the ones the replay reads, never the child's
     handout = handout_constants(lab)
     functions, changed = {}, {}   # changed: step function -> {handout constant: the value it set}
+    try:
+        _judge_all(probes, tapes, namespace, handout, settings, path, pure, functions, changed)
+    except budget.Exhausted as exc:   # name what the file's steps changed, in the one error row (grade.py)
+        exc.notes += [f"{changer}() set {', '.join(f'{c} to {now}' for c, (_, now) in sorted(values.items()))}"
+                      for changer, values in sorted(_named(changed, handout).items())]
+        raise
+    # constants a step changed at run time fail that step wherever it was seen (lab_checks.function_data)
+    named = _named(changed, handout)
+    for entry in functions.values():
+        entry["changed_constants"] = named
+    return {"missing": [str(m) for m in missing], "functions": functions}
+
+
+def _judge_all(probes, tapes, namespace, handout, settings, path, pure, functions, changed):
+    """Replay each probe's tape (judge): fills `functions` {probe: entry} and `changed` {function: {constant:
+    value}}."""
+    steps = settings["steps"]
     for name, (function, probe) in probes.PROBES.items():
         record = tapes.get(name)
         if not isinstance(record, dict) or not isinstance(record.get("tape"), list):
@@ -198,15 +214,21 @@ def judge(lab, path, settings, child):
             for constant, value in values.items():
                 changed.setdefault(changer, {}).setdefault(constant, value)
         replay = tape.Replayer(namespace, steps, record["tape"], settings.get("seed", 0))
-        functions[name] = _replayed(replay, probe, function, path, child_error, pure)
-        for constant, value in replay.read_constants().items():   # the child's probe read another value
-            changed.setdefault(function, {}).setdefault(constant, value)
-    # constants a step changed at run time fail that step wherever it was seen (lab_checks.function_data)
+        try:
+            functions[name] = _replayed(replay, probe, function, path, child_error, pure)
+        except budget.Exhausted as exc:
+            exc.what += f", replaying the probe of {function}()"
+            raise
+        finally:
+            for constant, value in replay.read_constants().items():   # the child's probe read another value
+                changed.setdefault(function, {}).setdefault(constant, value)
+
+
+def _named(changed, handout):
+    """{step function: {constant: [the handout's value, the value it set], as text}} from judge's `changed`."""
     named = {}
     for changer, values in sorted(changed.items()):
         for constant, value in sorted(values.items()):   # a splice's calls ("sat:3") are its function's
             named.setdefault(changer.split(":")[0], {}).setdefault(
                 constant, [value_text(handout[constant]), _shown(value)])
-    for entry in functions.values():
-        entry["changed_constants"] = named
-    return {"missing": [str(m) for m in missing], "functions": functions}
+    return named
