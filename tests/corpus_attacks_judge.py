@@ -102,3 +102,14 @@ def entries(attack):
                               "follow: only the order of the probes (the splice last) stands between it and step "
                               "3's points", mechanism=394, modes=both, honest_keeps=(2,)),
     ]
+
+
+# what still fails each entry with the step rules turned off (tests/test_corpus_attacks_judge.py): the grader's
+# own mechanisms alone, the handout's constants and the probes' order (the rules flag `global` and `Body.kept =`)
+WITHOUT_RULES = {
+    "br_m392_percent_first_case": ("closest_point", "push_out_split"),
+    "br_m392_percent_from_step2": ("closest_point", "push_out_split"),
+    "bu_m393_radius_last_shot": ("swept_move_resolves", "ccd_never_tunnels", "substeps_still_tunnel"),
+    "tc_m394_kept_splice": ("sat_normal",),
+    "tc_m394_kept_by_alias": ("sat_normal",),
+}
