@@ -12,8 +12,8 @@ How: one watchdog thread looks at every budget in force each TICK s and raises E
 the thread that overran, with CPython's PyThreadState_SetAsyncExc (the exception arrives at
 the thread's next bytecode; a C call that runs long is interrupted when it returns). The
 judging itself runs untouched: no tracing, no cost. The thread's CPU time is read from its
-own clock (time.pthread_getcpuclockid); where there is none (Windows) only the deadline
-counts.
+own clock (time.pthread_getcpuclockid); where there is none (Windows, macOS) only the
+deadline counts.
 """
 import ctypes
 import threading

@@ -118,3 +118,15 @@ def test_total_timeout_covers_judging(tmp_path, monkeypatch, capsys):
     assert row["status"] == "error" and row["score"] == 0
     first = row["criteria"][0]["message"]
     assert "went past its budget (the time it had left, replaying the probe of swept_move())" in first, first
+
+
+def test_without_a_thread_clock_the_deadline_still_counts(monkeypatch):
+    """Windows and macOS have no time.pthread_getcpuclockid: the CPU limit is dropped, the wall clock kept."""
+    monkeypatch.setattr(budget, "_cpu_clock", lambda thread: None)
+    start = time.monotonic()
+    with pytest.raises(budget.Exhausted) as caught:
+        with budget.Budget(cpu=0.05, deadline=time.monotonic() + 0.5):
+            while True:
+                sum(range(1000))
+    assert "the time it had left" in caught.value.message()
+    assert 0.4 < time.monotonic() - start < 5
