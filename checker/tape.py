@@ -18,7 +18,11 @@ changed arguments, calls of the hooks - is exactly what a student's function
 is able to do anyway. A hook event may name only a function the probe put in
 the student's place in this probe (never another name of the handout, such as
 main); a call that changes a body's mass, inertia, material or shape (FROZEN)
-is noted (Replayer.tampered) and fails its check with the field named.
+is noted (Replayer.tampered) and fails its check with the field named. The
+constants a probe reads are the handout's in the parent, whatever the tape
+says: the child's reading only keeps the tape in step, and a reading that
+differs (Replayer.read_constants), or a call the child saw change a handout
+constant (`consts` on its entry, changed_constants), fails that step, named.
 
 The probes keep the child free of answers too: a helper that computes a
 reference is marked @reference and raises if called while a Recorder runs a
