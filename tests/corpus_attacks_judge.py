@@ -76,7 +76,7 @@ def entries(attack):
             global BULLET_RADIUS
             if bullet.vel.x > 11999 and bullet.pos.x < 370:  # the last shot at 12000 px/s with CCD
                 BULLET_RADIUS = 1e9  # the x8 shots' replay then took 2e7 World steps each
-        """, SWEPT)}, ["swept_move_resolves", "ccd_never_tunnels", "substeps_still_tunnel"],
+        """, SWEPT)}, ["swept_move_resolves"],
             "step 5 is right but sets BULLET_RADIUS = 1e9 during the last CCD shot: the grader's replay never ended "
             "(no report); it must fail, named, and the batch end", mechanism=393, modes=both,
             message="BULLET_RADIUS", honest_keeps=(5,)),
