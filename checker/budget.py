@@ -65,11 +65,16 @@ class _Watchdog(threading.Thread):
         while True:
             time.sleep(TICK)
             with self.lock:
-                for budget in list(self.budgets.values()):
-                    what = budget.overrun()
-                    if what and not budget.fired:
+                for key, budget in list(self.budgets.items()):
+                    try:
+                        what = budget.overrun()
+                    except (OSError, ValueError):   # the thread's clock is gone: the thread has ended
+                        what, budget.fired = "", "its budget"
+                    if what:
                         budget.fired = what
                         _raise_in(budget.thread, Exhausted)
+                    if budget.fired:   # raised once; __exit__ may never come to take it off the list
+                        del self.budgets[key]
 
 
 _WATCHDOG = []
