@@ -6,9 +6,9 @@ tests/test_checker_portable.py) beside its honest file, the same file without th
 placeholder), and must score no more. Mechanism numbers: 392, 393, 394 (issue 39, items 2, 3, 4).
 
   run_time_constant (392)  step 2 sets a handout constant a later probe reads (`global PERCENT; PERCENT = 0`),
-                           so the grader's reference for step 4 pushed 0 px: the
-                           grader now reads the handout's constants, the child puts them back before each
-                           probe, and the step that changed one fails, named
+                           so the grader's reference for step 4 pushed 0 px: the grader now reads the
+                           handout's constants, the child puts them back before each probe, and the step
+                           that changed one fails, named
   judge_budget      (393)  step 5 sets BULLET_RADIUS = 1e9 during the last CCD shot: the grader's replay took
                            about 2e7 World steps a shot and the batch never ended; now a named fail (and the
                            replay has a budget: tests/test_judge_budget.py)
@@ -25,6 +25,7 @@ KINDS = ("run_time_constant", "judge_budget", "kept_splice")
 def code(*parts):
     """One step's code from parts each indented its own way."""
     return "\n".join(textwrap.dedent(part).strip("\n") for part in parts)
+
 
 # the solution's code of the steps these attacks keep, written out (the prompts left out)
 CLOSEST = """

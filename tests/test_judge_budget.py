@@ -20,7 +20,8 @@ from checker.labs import Lab
 from checker.sandbox import Limits
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-STEP_5 = "    bullet.pos += bullet.vel * t\n    world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)\n"
+STEP_5 = ("    bullet.pos += bullet.vel * t\n"
+          "    world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)\n")
 # the attack of issue 39 item 3: the 16th shot at 12000 px/s (the last with CCD) is the only one that reaches the
 # wall from x < 370 px in its hitting step; from then on the bullets are 1e9 px wide
 ATTACK = ("    global BULLET_RADIUS\n    if bullet.vel.x > 11999 and bullet.pos.x < 370:\n"
