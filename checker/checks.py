@@ -43,9 +43,18 @@ class Hint:
     title: str
     text: str
 
-    def render(self):
+    def render(self, file=None):
+        """"[step N: title] text"; with `file` (the name the file was submitted under), a command in the text that
+        runs the lab's own file name (`python tumbling_crates.py`) runs that file instead."""
         where = f"step {self.step}" if self.step else "lesson"
-        return f"[{where}: {self.title}] {self.text}"
+        text = self.text
+        if file:
+            shown = file if re.fullmatch(r"[\w.+-]+", file) else '"' + file.replace('"', '\\"') + '"'
+            text = RUN_COMMAND.sub(lambda _: f"python {shown}", text)
+        return f"[{where}: {self.title}] {text}"
+
+
+RUN_COMMAND = re.compile(r"python [a-z][a-z0-9_]*\.py\b")   # how a hint tells the student to run their file
 
 
 class Fail(Exception):
@@ -161,10 +170,10 @@ class Registry:
             try:
                 returned = chk.call(submission, *(state.values[d] for d in chk.depends))
             except Error as exc:
-                state.add(state.failed(chk, ERROR, exc))
+                state.add(state.failed(chk, ERROR, exc, getattr(submission, "name", None)))
                 continue
             except Fail as exc:
-                state.add(state.failed(chk, FAIL, exc))
+                state.add(state.failed(chk, FAIL, exc, getattr(submission, "name", None)))
                 continue
             if isinstance(returned, Passed):
                 message, value = returned.message, returned.value
@@ -207,10 +216,11 @@ class RunState:
     def add(self, result):
         self.results[result.id] = result
 
-    def failed(self, chk, status, exc):
-        """A Result for a failed check; a hint already shown under an earlier check is referred to, not repeated."""
+    def failed(self, chk, status, exc, file=None):
+        """A Result for a failed check; a hint already shown under an earlier check is referred to, not repeated.
+        file: the name the file was submitted under, which the hint's commands name (Hint.render)."""
         hint = exc.hint
-        text = hint.render() if hint else ""
+        text = hint.render(file) if hint else ""
         if hint is not None and hint in self.hints_shown:
             text = f"[step {hint.step}: {hint.title}] see the hint under '{self.hints_shown[hint]}' above." \
                 if hint.step else f"[lesson: {hint.title}] see the hint under '{self.hints_shown[hint]}' above."

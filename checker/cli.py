@@ -129,7 +129,7 @@ def plan(args):
 
 def grade_all(entries, grader, jobs, progress):
     """One row per entry, in order: a LabReport, or a NotGraded when the entry (or the grader on it) failed."""
-    rows = [NotGraded(e.path, e.lab, e.problem) if not e.gradable else None for e in entries]
+    rows = [NotGraded(e.path, e.lab, e.problem, counted=e.counted) if not e.gradable else None for e in entries]
     todo = [i for i, row in enumerate(rows) if row is None]
     start = time.monotonic()
     done = 0
@@ -158,7 +158,8 @@ def grade_all(entries, grader, jobs, progress):
                         said.add(str(exc))
                         print(f"checker: error: {exc}", file=sys.stderr, flush=True)
                 except OSError as exc:  # the file went away or became unreadable after it was found
-                    rows[index] = NotGraded(entry.path, entry.lab, f"cannot read: {exc.strerror or exc}")
+                    rows[index] = NotGraded(entry.path, entry.lab, f"cannot read: {exc.strerror or exc}",
+                                            counted=True)
                 except Exception as exc:  # a bug of ours: this file gets an error row, the batch goes on
                     rows[index] = NotGraded(entry.path, entry.lab,
                                             f"the checker failed on this file ({type(exc).__name__}: {exc}); "
@@ -174,16 +175,13 @@ def write_outputs(args, rows):
     """Write the outputs asked for; returns (the one-line problems (an output that could not be written),
     what was written, {row path: {check id: [picture paths]}})."""
     problems, written, links = [], [], {}
-    try:
-        made = pictures.all_pictures(rows) if args.pictures or args.html else {}
-    except Exception as exc:  # a picture that cannot be drawn must not cost the grades: no pictures then
-        made = {}
-        problems.append(f"cannot draw the pictures ({type(exc).__name__}: {exc}); none written")
+    # a picture that cannot be drawn or written costs no grade and no other row's pictures: that row goes without
+    made = pictures.all_pictures(rows, problems) if args.pictures or args.html else {}
     shown = made if args.pictures else None   # pictures go into results.json only when --pictures asks
     if args.pictures:
         try:
             links = pictures.write_pictures(rows, args.pictures, outputs.submission_names([r.path for r in rows]),
-                                            made)
+                                            made, problems)
             count = sum(len(paths) for by_check in links.values() for paths in by_check.values())
             written.append(f"Pictures: {count} PNG file(s) written under {args.pictures}")
         except OSError as exc:
@@ -207,9 +205,9 @@ def write_outputs(args, rows):
         count = 0
         for row in rows:
             target = os.path.join(args.gradescope_dir, names[row.path], "results.json")
-            try:
-                os.makedirs(os.path.dirname(target), exist_ok=True)
-                report.write_atomic(target, report.gradescope_text([row], pictures=shown))
+            try:   # in folders the grader made, following no link (outputs.write_below)
+                outputs.write_below(args.gradescope_dir, names[row.path], "results.json",
+                                    report.gradescope_text([row], pictures=shown).encode("utf-8"))
                 count += 1
             except OSError as exc:
                 problems.append(f"--gradescope-dir: cannot write {target}: {exc.strerror or exc}")

@@ -9,6 +9,51 @@ from pygame import Vector2
 from . import source
 
 
+CHILD_KINDS = ("exception", "exit", "memory", "flood", "syntax", "timeout")   # the kinds of error the child writes
+UNREADABLE_ERROR = ("the child's result names an error in a form the child never writes (the file's code wrote "
+                    "on the checker's result channel); nothing the child reports is graded then")
+
+
+def _line_text(value, limit):
+    """A str from the child cut to `limit` characters, else None."""
+    return value[:limit] if isinstance(value, str) else None
+
+
+def child_error(value):
+    """The child's account of an error ({"kind", "message", "line", "text", "traceback"}, as checker/child.py
+    writes it) checked before any of it is used, or None for no error.
+
+    The account comes from the child, where the student's code runs, so it may be anything: a kind the
+    child never writes (or one only the grader writes: "report", "value") becomes "exception", a line that
+    is not a positive int is None, strings are cut; a value that is not such an account at all (`"error":
+    "x"`) becomes the grader's own account saying so (kind "report"), never the grader's exception.
+    """
+    if value is None:
+        return None
+    if not isinstance(value, dict) or not isinstance(value.get("message"), str):
+        return {"kind": "report", "message": UNREADABLE_ERROR, "line": None, "text": None, "traceback": ""}
+    line = value.get("line")
+    return {"kind": value.get("kind") if value.get("kind") in CHILD_KINDS else "exception",
+            "message": value["message"][:600] or "an error",
+            "line": line if isinstance(line, int) and not isinstance(line, bool) and 0 < line < 10 ** 7 else None,
+            "text": _line_text(value.get("text"), 200), "traceback": _line_text(value.get("traceback"), 4000) or ""}
+
+
+def checked_result(result):
+    """The child's result line with every error in it (its own, each probe tape's) through child_error, in place.
+    A result that is not a dict is {}."""
+    if not isinstance(result, dict):
+        return {}
+    if "error" in result:
+        result["error"] = child_error(result["error"]) or child_error({})
+    probe = result.get("probe")
+    tapes = probe.get("tapes") if isinstance(probe, dict) else None
+    for record in (tapes.values() if isinstance(tapes, dict) else ()):
+        if isinstance(record, dict) and record.get("error") is not None:
+            record["error"] = child_error(record["error"])
+    return result
+
+
 def describe_run_failure(run, lab_name, what):
     """A one-paragraph account of a run that did not finish: crash, exit, timeout, flood or memory."""
     error = run.result.get("error") or {}
@@ -26,6 +71,8 @@ def describe_run_failure(run, lab_name, what):
                     "outside main()?")
         return (f"{what} was stopped after {run.timeout:.3g} s of CPU time{where}: the loop never ended. Is "
                 "`and lab.frame_budget()` still in the while condition?")
+    if error.get("kind") == "report":   # the grader's account of what the child reported
+        return f"{what} did not finish: {error['message']}."
     if error.get("kind") == "flood":
         return (f"{what} printed more than {run.max_output // 1024} KB of output and was stopped; it was "
                 f"printing at {at}{text}.")

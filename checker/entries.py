@@ -30,6 +30,7 @@ class Entry:
     lab: object = None
     problem: str = ""
     real: str = ""      # the resolved path, to tell outputs from inputs
+    counted: bool = False   # a file meant as a submission that cannot be graded (empty, unreadable): it scores 0
 
     @property
     def gradable(self):
@@ -47,7 +48,7 @@ def examine(path):
     try:
         info = os.lstat(path)
     except OSError as exc:
-        return Entry(path, by_name, f"cannot read: {exc.strerror}", real)
+        return Entry(path, by_name, f"cannot read: {exc.strerror}", real, counted=True)
     if stat.S_ISLNK(info.st_mode):
         try:
             info = os.stat(path)
@@ -66,17 +67,19 @@ def examine(path):
         return Entry(path, by_name, "not a regular file (a pipe, device or socket)", real)
     if info.st_size > MAX_BYTES:
         return Entry(path, by_name, f"too large for a lab file ({info.st_size / 1e6:.1f} MB; the limit is "
-                                    f"{MAX_BYTES / 1e6:g} MB)", real)
+                                    f"{MAX_BYTES / 1e6:g} MB)", real, counted=True)
     try:
         with open(path, "rb") as handle:
             raw = handle.read(MAX_BYTES + 1)
     except OSError as exc:
-        return Entry(path, by_name, f"cannot read: {exc.strerror}", real)
+        return Entry(path, by_name, f"cannot read: {exc.strerror}", real, counted=True)
     try:   # the compiler's reading (checker/source.py): a coding other than UTF-8 or uncounted line breaks refused
         text = source.decode(raw, "the file")
         source.check(text, "the file")
     except source.SourceError as exc:
-        return Entry(path, by_name, str(exc), real)
+        return Entry(path, by_name, str(exc), real, counted=True)
+    if not text.strip() and by_name is None:   # nothing submitted in it: 0, not "no lab" (discover() names the lab)
+        return Entry(path, None, "the file is empty: nothing to grade", real, counted=True)
     lab = identify(path, text)
     if lab is None:
         what = "" if path.lower().endswith(".py") else "not a .py file, and "
@@ -120,6 +123,13 @@ def discover(paths):
             if key not in seen:
                 seen.add(key)
                 entries.append(entry)
+    # an empty or unreadable file in a batch of one lab counts 0 of that lab's points (an empty nina.py in a
+    # class folder of Tumbling Crates is nina's 0/17, not "0/0, not a lab")
+    known = {entry.lab.id: entry.lab for entry in entries if entry.lab is not None}
+    if len(known) == 1:
+        for entry in entries:
+            if entry.counted and entry.lab is None:
+                entry.lab = next(iter(known.values()))
     return entries, errors
 
 

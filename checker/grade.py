@@ -10,18 +10,23 @@ to take longest (probes first, then scenes by their lab's SCENE_SECONDS). A file
 writes to it), as the compiler reads it (checker/source.py: a file declaring another coding than UTF-8 is an
 error); if the file changes while it is graded the result is an error.
 """
+import ast
 import hashlib
 import heapq
 import itertools
 import math
 import os
+import shutil
+import tempfile
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
 
-from . import budget, probing, source, step_rules
+from . import budget, handout, probing, source, step_rules
 from .checks import ERROR, FAIL, PASS, skipped_all
+from .common import checked_result
+from .lab_checks import record_problem
 from .sandbox import Limits, run_child, wall_limit
 
 
@@ -42,6 +47,8 @@ class Submission:
     scenarios: dict = field(default_factory=dict)
     options: dict = field(default_factory=dict)
     starter: str = ""   # path of the lab's handout, which the code outside the steps must match
+    edits_not_run: list = field(default_factory=list)   # constants changed outside the steps that no check reads:
+    # the runs put the handout's lines back (Grader.grade), handout_unchanged warns
 
 
 @dataclass
@@ -62,6 +69,7 @@ class LabReport:
     seed: int | None = None   # the seed of the probe inputs drawn for this run (--seed N grades with the same)
     flags: list = field(default_factory=list)   # step_rules breaches as dicts (step, line, rule, what, text)
     notes: list = field(default_factory=list)   # limits this system refused and the runs went without (sandbox)
+    preview_note: str = ""   # what the preview ran, when not the whole file: "your step 5 with the lesson's steps ..."
 
     @property
     def score(self):
@@ -149,6 +157,7 @@ class Grader:
             run = run_child(lab_path, task, settings, limits)
         finally:
             self.slots.release()
+        run.result = checked_result(run.result)   # the child's errors checked before any check reads them
         run.lab_path = lab_path
         run.timeout = limits.timeout
         run.cut_short = limits.timeout < self.limits.timeout and run.status == "timeout"
@@ -158,7 +167,42 @@ class Grader:
         return run
 
     def grade(self, path, lab):
-        """Grade one file as `lab`; returns a LabReport. Never raises for anything the file does."""
+        """Grade one file as `lab`; returns a LabReport. Never raises for anything the file does.
+
+        When the only edits outside the steps are changed values of constants that no step and no part of the
+        lab's checks reads (MAX_CRATES = 30), the runs grade the file with those lines put back to the handout's
+        (handout.constant_edits): the edits never run, so they change no grade, and handout_unchanged says so
+        as a warning. When the scenes run they also run on the file itself: an edit that changes what they record
+        or print is graded as any other edit is (handout_unchanged fails and the criteria wait for it).
+        """
+        scratch = None
+        try:
+            scratch, graded, edits = self._handout_copy(path, lab)
+            return self._grade(path, lab, graded, edits)
+        finally:
+            if scratch is not None:
+                shutil.rmtree(scratch, ignore_errors=True)
+
+    def _handout_copy(self, path, lab):
+        """(scratch folder or None, the copy's path, (the text it was made from, [ConstantEdit])) for the runs."""
+        if self.options.get("allow_edits"):   # the instructor allows edits: the file runs as it is
+            return None, None, None
+        try:
+            text = source.read(path, os.path.basename(path))
+            starter = source.read(lab.starter)
+            edits = handout.constant_edits(text, starter)
+            if not edits or any(set(e.names) & checked_names(lab, text) for e in edits):
+                return None, None, None   # a constant a check reads stays an edit that fails
+            copy = handout.with_handout_lines(text, starter, edits)
+        except (OSError, source.SourceError, ValueError, RecursionError, MemoryError):
+            return None, None, None
+        scratch = tempfile.mkdtemp(prefix="checker-handout-")   # the grader's own folder (mode 700)
+        graded = os.path.join(scratch, os.path.basename(path))
+        with open(graded, "x", encoding="utf-8") as handle:
+            handle.write(copy)
+        return scratch, graded, (text, edits)
+
+    def _grade(self, path, lab, graded=None, edits=None):
         start = time.monotonic()
         given, path = path, os.path.abspath(path)   # the report names the file as the user typed it
         with open(path, "rb") as handle:
@@ -171,10 +215,15 @@ class Grader:
         except source.SourceError as exc:
             return LabReport(given, lab, skipped_all(lab.checks, f"{exc}."), time.monotonic() - start)
         sub = Submission(path=path, name=name, source=text, options=dict(self.options), starter=lab.starter)
+        if graded is not None and edits[0] == text:   # made from this same text: the runs grade that copy
+            sub.edits_not_run = [e.problem for e in edits[1]]
+        else:
+            graded = None
+        runs = graded or path   # the file the children run (the grader's copy with the handout's lines, or it)
         sub.flags = step_rules.scan_lab(sub.source, lab, path)   # the steps' code, read before any of it runs
         sub.function_steps = probing.steps_by_function(lab)
         settings = probing.settings_for(lab, sub.source, self.seed)
-        sub.probe = self.run(path, "probe", settings)
+        sub.probe = self.run(runs, "probe", settings)
         if sub.probe is None:
             return LabReport(given, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start,
                              seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
@@ -187,17 +236,16 @@ class Grader:
             return LabReport(given, lab, skipped_all(lab.checks, exc.message()), time.monotonic() - start,
                              seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
         if lab.checks.wants_scenarios(state):
-            wanted = lab.scenarios()
-            with ThreadPoolExecutor(max_workers=len(wanted)) as pool:
-                futures = {name: pool.submit(self.run, path, "scenario", dict(settings, probes=lab.probes),
-                                             lab.scene_seconds(name, settings))
-                           for name, settings in wanted.items()}
-                for name, future in futures.items():
-                    run = future.result()
-                    if run is not None:
-                        sub.scenarios[name] = run
-        try:
+            sub.scenarios = self._scenes(runs, lab)
+            if sub.edits_not_run and not self._same_scenes(sub.scenarios, self._scenes(path, lab)):
+                # the edited constant changes what the scenes show (MAX_CRATES = 4: clicks drop nothing): an edit
+                # that fails handout_unchanged, and the scenes wait for it, as for any other edit
+                sub.edits_not_run, sub.scenarios = [], {}
+                state = None
+        try:   # the checks on the scenes' records, under the budget too
             with self._budget():
+                if state is None:
+                    state = lab.checks.run(sub, stop_at_scenarios=True, state=None)
                 results = lab.checks.run(sub, state=state).ordered(lab.checks)
         except budget.Exhausted as exc:
             results = skipped_all(lab.checks, exc.message())
@@ -208,22 +256,49 @@ class Grader:
         if self.keep_records:   # only the scenes a failed check reads (the lab's picture_scenes): records are big
             scenes = getattr(lab, "picture_scenes", None) or {}
             wanted = {scene for r in results if r.status in (FAIL, ERROR) for scene in scenes.get(r.id, ())}
+            settings_of = lab.scenarios()   # a record is kept only when it can be the runtime's (record_problem)
             records = {name: run.record for name, run in sub.scenarios.items()
-                       if name in wanted and getattr(run, "record", None)}
-        preview = ""
+                       if name in wanted and getattr(run, "record", None)
+                       and not record_problem(run.record, settings_of.get(name) or {})}
+        preview, preview_note = "", ""
         if self.keep_records and not sub.scenarios and self._wants_preview(results):
-            # a function check failed, so no scene ran: run the lab's own scene anyway, for a picture only
-            # (not graded), so the file that needs a picture most gets one beside the solution's
-            name = lab.preview_scene   # (scene_settings, not settings: the report's seed is the probe's)
-            scene_settings = lab.scenarios().get(name) if name else None
-            run = self.run(path, "scenario", dict(scene_settings, probes=lab.probes),
-                           lab.scene_seconds(name, scene_settings)) if scene_settings is not None else None
-            if run is not None and getattr(run, "record", None) and run.record.get("records"):
-                records[name], preview = run.record, name
+            # a function check failed, so no scene ran: run a scene anyway, for a picture only (not graded):
+            # the failing step with the solution's others, where it differs from the solution (checker/preview.py)
+            from . import preview as previews
+            self.preview_started()
+            name, record, note = previews.scene_for(self.run, path, sub.source, lab, previews.failing_step(results),
+                                                    previews.reference_record)
+            if record:
+                records[name], preview, preview_note = record, name, note
         runs = [sub.probe, *sub.scenarios.values()]
         notes = sorted({note for run in runs for note in getattr(run, "notes", ())})
         return LabReport(given, lab, results, time.monotonic() - start, records, preview, settings["seed"],
-                         [asdict(b) for b in sub.flags], notes)
+                         [asdict(b) for b in sub.flags], notes, preview_note)
+
+    def preview_started(self):
+        """Called as the ungraded scene of a failed function check starts (--show prints that it is recording)."""
+
+    def _scenes(self, path, lab):
+        """{scene name: its run} of every scene of the lab, run in parallel on `path` (a scene the whole run's time
+        limit left out is missing)."""
+        wanted, runs = lab.scenarios(), {}
+        with ThreadPoolExecutor(max_workers=len(wanted)) as pool:
+            futures = {name: pool.submit(self.run, path, "scenario", dict(settings, probes=lab.probes),
+                                         lab.scene_seconds(name, settings))
+                       for name, settings in wanted.items()}
+            for name, future in futures.items():
+                run = future.result()
+                if run is not None:
+                    runs[name] = run
+        return runs
+
+    @staticmethod
+    def _same_scenes(graded, own):
+        """True when the file's own runs of the scenes show exactly what the graded runs (the handout's lines put
+        back) show: the same end, records and printed output."""
+        return set(graded) == set(own) and all(
+            (graded[n].status, graded[n].record, graded[n].stdout) == (own[n].status, own[n].record, own[n].stdout)
+            for n in graded)
 
     @staticmethod
     def _wants_preview(results):
@@ -241,3 +316,29 @@ class Grader:
 
     def _late_message(self):
         return f"not graded: the time limit for the whole run ({self.total_timeout:g} s) ran out first."
+
+
+def checked_names(lab, text):
+    """The names a check may read: every identifier in the step regions (the file's and the lab's solution's) and in
+    the lab's checks, probes and scenes modules. A constant changed outside the steps under one of these names is
+    an edit that fails handout_unchanged, never one graded as the handout's."""
+    names = handout.names_read(text)
+    try:
+        names |= handout.names_read(source.read(lab.solution))
+    except (OSError, source.SourceError):
+        pass
+    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "labs", lab.id)
+    for module in ("checks.py", "probes.py", "scenes.py"):
+        try:
+            with open(os.path.join(folder, module), encoding="utf-8") as handle:
+                tree = ast.parse(handle.read())
+        except (OSError, SyntaxError, ValueError):
+            continue
+        for node in ast.walk(tree):   # names, attributes, and names spelled as strings (getattr(module, "SLOP"))
+            if isinstance(node, ast.Name):
+                names.add(node.id)
+            elif isinstance(node, ast.Attribute):
+                names.add(node.attr)
+            elif isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value.isidentifier():
+                names.add(node.value)
+    return names

@@ -361,3 +361,79 @@ def compare(submission, starter, submission_name="the file", starter_name="the h
     if not problems:
         problems.append("the code outside the steps differs from the handout")
     return Comparison(False, problems, added, warnings)
+
+
+@dataclass
+class ConstantEdit:
+    """A top-level `NAME = value` the submission changed: its line, the handout's line, the names it binds."""
+    line: int
+    handout_line: int
+    names: tuple
+    problem: str
+
+
+def _assigned_names(node):
+    targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+    return tuple(sorted({n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name)}))
+
+
+def constant_edits(submission, starter):
+    """[ConstantEdit] when the only differences outside the steps are changed values of top-level constants (a
+    one-line `NAME = value`, or `NAME: type = value`, in the handout's place, binding the same names, on one line
+    in both files); None when there is any other difference, or none at all (compare() then says what it is)."""
+    try:
+        theirs, their_origin, their_steps = _parse(starter, "the handout")
+        mine, my_origin, my_steps = _parse(submission, "the file")
+    except MarkerError:
+        return None
+    known = _top_level_names(theirs)
+    body = [node for node in mine.body if not (isinstance(node, (ast.Import, ast.ImportFrom))
+                                               and not set(_bound_names(node)) & known)]
+    if my_steps != their_steps or len(body) != len(theirs.body):
+        return None
+    sub_lines, start_lines = split_lines(submission), split_lines(starter)
+    edits = []
+    for x, y in zip(body, theirs.body):
+        if _dump(x) == _dump(y):
+            continue
+        if not (type(x) is type(y) and isinstance(x, (ast.Assign, ast.AnnAssign)) and x.value is not None
+                and y.value is not None and _assigned_names(x) == _assigned_names(y)
+                and _dump(_header_of_assign(x)) == _dump(_header_of_assign(y))):
+            return None
+        line, hand = my_origin[x.lineno - 1], their_origin[y.lineno - 1]
+        if my_origin[x.end_lineno - 1] != line or their_origin[y.end_lineno - 1] != hand:
+            return None   # over several lines: not replaced line for line
+        edits.append(ConstantEdit(line, hand, _assigned_names(x),
+                                  f"line {line} `{_text(sub_lines, line)}` (the handout has "
+                                  f"`{_text(start_lines, hand)}`)"))
+    return edits or None
+
+
+def _header_of_assign(node):
+    """An assignment without its value (its targets, and its annotation): what must stay the handout's."""
+    if isinstance(node, ast.Assign):
+        return ast.Assign(targets=node.targets, value=ast.Constant(None))
+    return ast.AnnAssign(target=node.target, annotation=node.annotation, value=None, simple=node.simple)
+
+
+def with_handout_lines(submission, starter, edits):
+    """The submission with each edited line put back to the handout's line: the same lines, numbered as in the
+    submission (each edit is one line in both files), so a message naming a line names the student's."""
+    lines, handout_lines = split_lines(submission), split_lines(starter)
+    for edit in edits:
+        lines[edit.line - 1] = handout_lines[edit.handout_line - 1]
+    return "\n".join(lines) + "\n"
+
+
+def names_read(text):
+    """Every identifier in the step regions of `text` (the names a step's code reads or binds)."""
+    lines = split_lines(text)
+    try:
+        regions = step_regions(lines)
+    except MarkerError:
+        return set()
+    found = set()
+    for start, end, _ in regions.values():
+        for line in lines[start + 1:end]:
+            found.update(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", line.split("#", 1)[0]))
+    return found

@@ -10,7 +10,7 @@ messages, hints and pictures (checker/pictures.py).
 import html
 
 from .outputs import submission_names
-from .report import SYMBOL, NotGraded, _summary_line, check_label, lab_means, message_of, write_atomic
+from .report import SYMBOL, NotGraded, _summary_line, check_label, lab_means, message_of, reason, write_atomic
 
 STATUS_ORDER = ("pass", "fail", "error", "skip")
 COLOURS = {"pass": "#3a9a5b", "fail": "#d0453a", "error": "#7d1d17", "skip": "#b9bcc4"}
@@ -68,10 +68,10 @@ def _e(text):
 
 
 def _first_problem(row):
+    """The row's reason (report.reason): why it was not graded, or its first failed check with its message."""
     if isinstance(row, NotGraded):
-        return f"not graded: {row.message}"
-    first = next((c for c in row.results if c.status != "pass"), None)
-    return f"{check_label(first)}: {first.status}" if first else ""
+        return f"not graded: {reason(row)}"
+    return "" if row.passed else reason(row)
 
 
 def _check_ids(rows):

@@ -102,6 +102,9 @@ def handout_note(sub, hint):
     text = f"code outside the steps differs from the handout: {listed}" + (f"; and {more} more" if more > 0 else "")
     if sub.options.get("allow_edits"):
         return f"warning (allowed by --allow-edits): {text}."
+    if getattr(sub, "edits_not_run", None) and len(sub.edits_not_run) == len(comparison.problems):
+        return (f"warning: {'; '.join(sub.edits_not_run[:handout.MAX_PROBLEMS])}: a constant no check reads, so "
+                "the checker graded your steps with the handout's line there; put it back before you hand in.")
     raise Fail(text + ".", hint)
 
 

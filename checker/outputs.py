@@ -101,3 +101,94 @@ def submission_names(paths):
         taken.add(candidate)
         names[p] = candidate
     return names
+
+
+class NotOurs(OSError):
+    """A folder on the way to an output is a link, not a folder, or belongs to another user: not written into."""
+
+
+def _can_use_dir_fd():
+    return (hasattr(os, "O_DIRECTORY") and hasattr(os, "O_NOFOLLOW") and os.open in os.supports_dir_fd
+            and os.mkdir in os.supports_dir_fd and os.rename in os.supports_dir_fd)
+
+
+def _own(info, name):
+    """NotOurs unless `info` (an fstat/lstat) is a folder this process's user owns."""
+    import stat
+    if not stat.S_ISDIR(info.st_mode):
+        raise NotOurs(f"{name} is not a folder")
+    if hasattr(os, "geteuid") and info.st_uid != os.geteuid():
+        raise NotOurs(f"{name} is not the grader's folder (it belongs to another user)")
+
+
+def write_below(base, relative_path, name, data):
+    """Write `data` (bytes) to base/relative_path/name; returns that path.
+
+    The folders below `base` (the output folder the user named) are made if missing and must be folders
+    this user owns, none a link (NotOurs otherwise); the file is written to a new temporary file, opened
+    exclusively and without following links, and renamed over `name`: a link planted where the file goes is
+    replaced, never written through. Where the system has no dir_fd operations (Windows), the same checks
+    are made by path.
+    """
+    parts = [p for p in relative_path.replace("\\", "/").split("/") if p not in ("", ".")]
+    if ".." in parts or not name or name in (".", "..") or "/" in name or os.sep in name:
+        raise NotOurs(f"{os.path.join(relative_path, name)} is not a name below {base}")
+    target = os.path.join(base, *parts, name)
+    os.makedirs(base, exist_ok=True)   # the folder the user named (created if needed, as the user typed it)
+    if not _can_use_dir_fd():
+        return _write_below_by_path(base, parts, name, data, target)
+    fd = os.open(base, os.O_RDONLY | os.O_DIRECTORY)
+    try:
+        for part in parts:
+            try:
+                os.mkdir(part, 0o777, dir_fd=fd)
+            except FileExistsError:
+                pass
+            try:
+                inner = os.open(part, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW, dir_fd=fd)
+            except OSError as exc:   # ELOOP: a link; ENOTDIR: a file
+                raise NotOurs(f"{part} is a link or not a folder ({exc.strerror})") from None
+            os.close(fd)
+            fd = inner
+            _own(os.fstat(fd), part)
+        temp = f".{name}.{os.urandom(6).hex()}.tmp"
+        out = os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o666, dir_fd=fd)
+        try:
+            with os.fdopen(out, "wb") as handle:
+                handle.write(data)
+            os.replace(temp, name, src_dir_fd=fd, dst_dir_fd=fd)
+        except BaseException:
+            try:
+                os.unlink(temp, dir_fd=fd)
+            except OSError:
+                pass
+            raise
+    finally:
+        os.close(fd)
+    return target
+
+
+def _write_below_by_path(base, parts, name, data, target):
+    import tempfile
+    folder = base
+    for part in parts:
+        folder = os.path.join(folder, part)
+        try:
+            os.mkdir(folder)
+        except FileExistsError:
+            pass
+        if os.path.islink(folder):
+            raise NotOurs(f"{part} is a link")
+        _own(os.lstat(folder), part)
+    fd, temp = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+        os.replace(temp, target)
+    except BaseException:
+        try:
+            os.unlink(temp)
+        except OSError:
+            pass
+        raise
+    return target

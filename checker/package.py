@@ -169,16 +169,44 @@ def write_folder(path, files):
         os.chmod(target, 0o755 if executable else 0o644)
 
 
+def assignment(labs, hide):
+    """What students submit and what it is worth, in one sentence (printed by the command and in README.txt)."""
+    files = " or ".join(f"{lab.id}.py ({lab.title}, {lab.checks.max_score:g} points)" for lab in labs)
+    points = sorted({lab.checks.max_score for lab in labs})
+    worth = f"{points[0]:g} points" if len(points) == 1 else "its lab's points"
+    hidden = f"; {len(hide)} check(s) hidden from students ({', '.join(hide)}) still count" if hide else ""
+    return (f"Students submit {files}. A submission scores out of {worth}: set the assignment's total to that"
+            f"{hidden}.")
+
+
+def gradescope_readme(labs, hide, args):
+    lines = ["Gradescope autograder for Lesson 11 (python -m checker package gradescope).", "",
+             assignment(labs, hide), "",
+             "Checks, in the order students see them (id, points, what it checks):"]
+    for lab in labs:
+        lines.append(f"  {lab.title} ({lab.id}.py), {lab.checks.max_score:g} points:")
+        lines += [f"    {c.id:<24} {c.max_score:g}  {c.description}" + ("  [hidden]" if c.id in hide else "")
+                  for c in lab.checks.checks]
+    lines += ["", "A submission may be the file alone or the file in a folder; another name is graded when it is "
+              "the only .py file, with a note. A file of another lab scores 0.",
+              f"Limits: {args.timeout:g} CPU s per run, {args.total_timeout:g} s of wall clock per submission.",
+              "Upload this zip as the assignment's autograder (Configure Autograder, Zip file upload, Ubuntu 22.04 "
+              "or later).", ""]
+    return "\n".join(lines)
+
+
 def gradescope(labs, hide, args):
     versions = installed_versions()
     pygame_pin = pins({"pygame-ce": versions.get("pygame-ce")})
     extra = {"setup.sh": (template("gradescope_setup.sh", PINS=pins(versions), PYGAME_PIN=pygame_pin,
                                    PYTHON=python_version()), True),
-             "run_autograder": (template("gradescope_run_autograder"), True)}
+             "run_autograder": (template("gradescope_run_autograder"), True),
+             "README.txt": (gradescope_readme(labs, hide, args), False)}
     files = bundle(labs, hide, args, extra)
     write_zip(args.out, files)
     return f"Gradescope autograder written to {args.out} ({os.path.getsize(args.out) / 1024:.0f} KB): upload it " \
-           f"as the assignment's autograder (Configure Autograder, Zip file upload, Ubuntu 22.04 or later)."
+           f"as the assignment's autograder (Configure Autograder, Zip file upload, Ubuntu 22.04 or later). " \
+           f"{assignment(labs, hide)}"
 
 
 def classroom_steps(labs, pin_text):

@@ -28,7 +28,6 @@ import base64
 import io
 import os
 import re
-import threading
 from dataclasses import dataclass
 
 # the video driver the user's environment named (None: SDL picks the desktop's), before the pictures' own default:
@@ -39,7 +38,7 @@ os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 import pygame  # noqa: E402
 
-from .sandbox import Limits, run_child  # noqa: E402
+from .preview import recorded_colour, reference_record  # noqa: E402,F401 (reference_record: used here, and by callers)
 
 FRAMES = 6                 # frames per row
 TILE = (220, 150)          # px of one frame (the 900 × 600 scene drawn at about 1/4)
@@ -80,26 +79,7 @@ class Picture:
         return "data:image/png;base64," + self.base64
 
 
-# ---------------------------------------------------------------- the reference solution's runs (cached)
-
-_REFERENCE = {}
-_REFERENCE_LOCK = threading.Lock()
-
-
-def reference_record(lab, scene, limits=None):
-    """The record of the lab's SOLUTION running `scene` (one child run per process and scene), or None."""
-    key = (getattr(lab, "id", None), scene)
-    with _REFERENCE_LOCK:
-        if key in _REFERENCE:
-            return _REFERENCE[key]
-        record = None
-        solution = getattr(lab, "solution", None)
-        settings = lab.scenarios().get(scene) if solution and os.path.isfile(solution) else None
-        if settings is not None:
-            run = run_child(solution, "scenario", dict(settings, probes=lab.probes), limits or Limits())
-            record = getattr(run, "record", None)
-        _REFERENCE[key] = record
-        return record
+# the reference solution's runs: checker/preview.py reference_record (one child run per process and scene, cached)
 
 
 # ---------------------------------------------------------------- drawing
@@ -119,7 +99,7 @@ def _view(frames, focus=None):
         for index, body in enumerate(frame.get("bodies", ())):
             if body.get("static") or (focus and index not in focus):
                 continue
-            r = body.get("radius") or 0.0
+            r = _radius(body)
             points = body.get("points") or [body["pos"]]
             for x, y in points:
                 if abs(x) < 1e5 and abs(y) < 1e5:
@@ -164,6 +144,17 @@ def _nearest(frames, number):
     return min(frames, key=lambda f: abs(f.get("frame", 0) - number))
 
 
+def _radius(body):
+    """A body's radius in px when the record holds a finite one below 1e5 (the child wrote it), else 0."""
+    r = body.get("radius")
+    return r if isinstance(r, (int, float)) and not isinstance(r, bool) and 0 < r < 1e5 else 0.0
+
+
+def _pair(value):
+    return isinstance(value, list) and len(value) == 2 and all(
+        isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
+
+
 def _draw_frame(surface, rect, frame, view, marked):
     """Draw one recorded frame into rect (a pygame.Rect) of surface, seen through view."""
     left, top, width, height = view
@@ -183,10 +174,11 @@ def _draw_frame(surface, rect, frame, view, marked):
         for body in frame.get("bodies", ()):
             if not all(abs(v) < 1e6 for v in body["pos"]):
                 continue
+            own = recorded_colour(body)   # the lab's own colour, when the record holds one
             if body.get("static"):
-                fill = STATIC
+                fill = own or STATIC
             else:
-                fill = PALETTE[moving % len(PALETTE)]
+                fill = own or PALETTE[moving % len(PALETTE)]
                 fill = tuple((c + 255) // 2 for c in fill) if body.get("asleep") else fill
                 moving += 1
             points = body.get("points") or []
@@ -194,9 +186,9 @@ def _draw_frame(surface, rect, frame, view, marked):
                 corners = [at(p) for p in points]
                 pygame.draw.polygon(surface, fill, corners)
                 outlines.append(("polygon", corners))
-            elif body.get("radius"):
+            elif _radius(body):
                 centre = at(body["pos"])
-                r = max(2, round(body["radius"] * scale))
+                r = max(2, round(_radius(body) * scale))
                 pygame.draw.circle(surface, fill, centre, r)
                 spoke = pygame.Vector2(1, 0).rotate_rad(body.get("angle", 0.0)) * r
                 outlines.append(("circle", (centre, r, (centre[0] + spoke.x, centre[1] + spoke.y))))
@@ -207,9 +199,9 @@ def _draw_frame(surface, rect, frame, view, marked):
                 centre, r, tip = shape
                 pygame.draw.circle(surface, OUTLINE, centre, r, 1)
                 pygame.draw.line(surface, OUTLINE, centre, tip, 1)
-        for contact in frame.get("touching", ()):
-            point, normal = contact["point"], contact["normal"]
-            if not all(abs(v) < 1e6 for v in point + normal):
+        for contact in frame.get("touching") or ():   # the child wrote these: drawn only when they are numbers
+            point, normal = (contact.get("point"), contact.get("normal")) if isinstance(contact, dict) else (0, 0)
+            if not (_pair(point) and _pair(normal) and all(abs(v) < 1e6 for v in point + normal)):
                 continue
             p = at(point)
             pygame.draw.line(surface, CONTACT, p, (p[0] + normal[0] * 9, p[1] + normal[1] * 9), 1)
@@ -235,15 +227,18 @@ def filmstrip(record, reference=None, marked=None, title="", count=FRAMES, focus
     view = _view(shown + [f for f in rows[-1][1] if f is not None], focus)
     label_w = 70
     width = label_w + len(shown) * (TILE[0] + GAP) + GAP
-    height = HEAD_H + len(rows) * (TILE[1] + LABEL_H + GAP) + GAP
+    small, big = _font(16), _font(19)
+    titles = _title_lines(big, title, max(width, 320) - 2 * GAP - 4)
+    head = HEAD_H + (len(titles) - 1) * (HEAD_H - 4)
+    height = head + len(rows) * (TILE[1] + LABEL_H + GAP) + GAP
     surface = pygame.Surface((max(width, 320), height))
     surface.fill(BACKGROUND)
-    small, big = _font(16), _font(19)
-    surface.blit(big.render(title, True, TEXT), (GAP + 2, 4))
+    for k, line in enumerate(titles):
+        surface.blit(big.render(line, True, TEXT), (GAP + 2, 4 + k * (HEAD_H - 4)))
     marked_at = min(shown, key=lambda f: abs(f.get("frame", 0) - marked)).get("frame") \
         if marked is not None and shown else None
     for r, (name, row) in enumerate(rows):
-        y = HEAD_H + r * (TILE[1] + LABEL_H + GAP)
+        y = head + r * (TILE[1] + LABEL_H + GAP)
         surface.blit(small.render(name, True, TEXT), (GAP + 2, y + LABEL_H + TILE[1] // 2 - 6))
         for k, frame in enumerate(row):
             x = label_w + k * (TILE[0] + GAP)
@@ -253,6 +248,19 @@ def filmstrip(record, reference=None, marked=None, title="", count=FRAMES, focus
             surface.blit(small.render(label, True, MARK if is_marked else TEXT), (x + 2, y + 3))
             _draw_frame(surface, pygame.Rect(x, y + LABEL_H, TILE[0], TILE[1]), frame, view, is_marked)
     return surface
+
+
+def _title_lines(font, title, width):
+    """The title broken after "; " where it is wider than `width` px (a piece wider alone stays whole)."""
+    lines, current = [], ""
+    for piece in re.split(r"(?<=;) ", title):
+        joined = f"{current} {piece}" if current else piece
+        if current and font.size(joined)[0] > width:
+            lines.append(current)
+            current = piece
+        else:
+            current = joined
+    return lines + [current]
 
 
 def png_bytes(surface):
@@ -294,9 +302,9 @@ def _scenes_of(report, check_id):
 
 
 def focus_bodies(frame, reference):
-    """Indices of the moving bodies a failure is about in a frame: those more than show.VISIBLE px from the
+    """Indices of the moving bodies a failure is about in a frame: those more than preview.VISIBLE_PX from the
     solution's body of the same index, else every moving body."""
-    from .show import VISIBLE
+    from .preview import VISIBLE_PX as VISIBLE
     moving = [i for i, b in enumerate((frame or {}).get("bodies", ())) if not b.get("static")]
     if reference is None or len(reference.get("bodies", ())) != len(frame.get("bodies", ())):
         return set(moving)
@@ -308,10 +316,11 @@ def _distance(a, b):
     return ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
 
 
-def caption(check_id, scene, title, ungraded, fail_frame, quantity, value):
-    """The filmstrip's title: the check, the scene, the failing frame and the check's quantity there."""
+def caption(check_id, scene, title, ungraded, fail_frame, quantity, value, spliced=""):
+    """The filmstrip's title: the check, the scene (and what ran, when the preview spliced the lesson's other
+    steps in: checker/preview.py), the failing frame and the check's quantity there."""
     head = (f"not graded, to show what {check_id} means: " if ungraded else f"{check_id}: ") + \
-        f"scene '{scene}' ({title})"
+        f"scene '{scene}' ({title})" + (f", {spliced}" if spliced else "")
     if fail_frame is not None:
         head += f"; frame {fail_frame} (t = {fail_frame / FPS:.2f} s)"
         if quantity is not None and value is not None:
@@ -344,7 +353,8 @@ def pictures_for(report, check_id, with_reference=True):
             if fail_frame is not None else None
         value = values[at] if at is not None and values else None
         focus = focus_bodies(frames[at], _nearest(theirs, fail_frame)) if at is not None else None
-        title = caption(check_id, scene, report.lab.title, ungraded, fail_frame, quantity, value)
+        title = caption(check_id, scene, report.lab.title, ungraded, fail_frame, quantity, value,
+                        getattr(report, "preview_note", "") if ungraded else "")
         surface = filmstrip(record, reference, fail_frame, title, focus=focus)
         pictures.append(Picture(check_id, scene, png_bytes(surface)))
     return pictures
@@ -360,33 +370,50 @@ def prairielearn_images(report, check_id):
     return [{"label": f"{p.check_id}: scene {p.scene}", "url": p.data_url} for p in pictures_for(report, check_id)]
 
 
-def all_pictures(rows):
-    """{row path: {check id: [Picture]}} for every failed behaviour check of every row (rows without any left out)."""
+def all_pictures(rows, problems=None):
+    """{row path: {check id: [Picture]}} for every failed behaviour check of every row (rows without any left out).
+
+    A row whose pictures cannot be drawn loses only its own: with a list as `problems`, one line naming
+    it is appended there (else the exception is raised, as before)."""
     found = {}
     for row in rows:
-        for result in pictured_results(row):
-            pictures = pictures_for(row, result.id)
-            if pictures:
-                found.setdefault(row.path, {})[result.id] = pictures
+        try:
+            for result in pictured_results(row):
+                shown = pictures_for(row, result.id)
+                if shown:
+                    found.setdefault(row.path, {})[result.id] = shown
+        except Exception as exc:  # noqa: BLE001 - one row's record or our drawing: that row goes without
+            if problems is None:
+                raise
+            found.pop(row.path, None)
+            problems.append(f"{row.path}: cannot draw its pictures ({type(exc).__name__}: {exc}); none for it")
     return found
 
 
-def write_pictures(rows, folder, names, pictures=None):
+def write_pictures(rows, folder, names, pictures=None, problems=None):
     """Write each picture to folder/<submission name>/<check id>[-<scene>].png; returns {row path: {check id: [paths]}}.
 
     names: {row path: submission folder name} (checker/outputs.submission_names).
     pictures: all_pictures(rows), if already made.
+    Every file is created by the grader in folders it made, following no link (outputs.write_below): a
+    picture or folder some other user planted there (a link to /etc/...) is replaced or refused, never
+    written through. A row whose pictures cannot be written loses only its own: one line naming it is
+    appended to `problems` (a list; else the OSError is raised).
     """
-    pictures = all_pictures(rows) if pictures is None else pictures
+    from .outputs import write_below
+    pictures = all_pictures(rows, problems) if pictures is None else pictures
     written = {}
     for path, by_check in pictures.items():
-        target = os.path.join(folder, names[path])
-        os.makedirs(target, exist_ok=True)
-        for check_id, shown in by_check.items():
-            for picture in shown:
-                name = check_id if len(shown) == 1 else f"{check_id}-{picture.scene}"
-                file = os.path.join(target, name + ".png")
-                with open(file, "wb") as handle:
-                    handle.write(picture.png)
-                written.setdefault(path, {}).setdefault(check_id, []).append(file)
+        try:
+            for check_id, shown in by_check.items():
+                for picture in shown:
+                    name = check_id if len(shown) == 1 else f"{check_id}-{picture.scene}"
+                    file = write_below(folder, names[path], name + ".png", picture.png)
+                    written.setdefault(path, {}).setdefault(check_id, []).append(file)
+        except OSError as exc:
+            if problems is None:
+                raise
+            written.pop(path, None)
+            problems.append(f"--pictures {folder}: {path}: its pictures were not written "
+                            f"({exc.strerror or exc})")
     return written

@@ -34,6 +34,7 @@ import html
 import io
 import json
 import os
+import stat
 import tempfile
 from dataclasses import dataclass
 
@@ -54,6 +55,7 @@ class NotGraded:
     lab: object
     message: str
     seconds: float = 0.0
+    counted: bool = False   # a submission that scores 0 though no lab is known (an empty or unreadable file)
 
     results = ()
     score = 0.0
@@ -70,25 +72,56 @@ def message_of(row):
     return getattr(row, "message", "") or ""
 
 
+REASON_LIMIT = 300   # characters of a check's message in a row's reason
+
+
+def reason(row):
+    """Why a row scored what it did, in one line: why it was not graded, else the first check that failed or erred
+    with its message ("Step 2 (sat_axes): fail: ..."), else "all checks pass"."""
+    if isinstance(row, NotGraded) or not row.results:
+        return one_line(message_of(row)) or "not graded"
+    first = next((r for r in row.results if r.status in ("fail", "error")), None) or \
+        next((r for r in row.results if r.status != "pass"), None)
+    if first is None:
+        return "all checks pass"
+    text = one_line(first.message)
+    text = text if len(text) <= REASON_LIMIT else text[:REASON_LIMIT - 3] + "..."
+    return f"{check_label(first)}: {first.status}" + (f": {text}" if text else "")
+
+
+def indented(text, indent):
+    """text with `indent` before each of its lines (every line break Python's str.splitlines() knows, \\r and
+    form feeds included): a message holding line breaks, which may come from the student's code (an exception's
+    text), stays under its check and cannot print a line that reads like another file's row."""
+    return "\n".join(indent + line for line in str(text).splitlines() or [""])
+
+
+def one_line(text):
+    """text on one line: its line breaks as spaces (for a table cell)."""
+    return " ".join(str(text).splitlines())
+
+
 def text_report(report, stream, root=None, pictures=None):
     """The readable report of one row: a mark per check, the message, and the hint under each failure.
 
-    pictures: {check id: [PNG paths]} (--pictures), each listed under its check.
+    pictures: {check id: [PNG paths]} (--pictures), each listed under its check. Every line of a message or
+    hint is indented (indented()), so no message can print a line at the left margin.
     """
-    name = _rel(report.path, root)
+    name = one_line(_rel(report.path, root))
     if isinstance(report, NotGraded):
         title = f" - {report.lab.title}" if report.lab is not None else ""
+        first, *rest = str(report.message).splitlines() or [""]
         stream.write(f"{name}{title}: 0/{report.max_score:g} (error, not graded)\n"
-                     f"  :( could not be graded: {report.message}\n\n")
+                     f"  :( could not be graded: {first}\n" + "".join(f"      {line}\n" for line in rest) + "\n")
         return
     stream.write(f"{name} - {report.lab.title}: {report.score:g}/{report.max_score:g} "
                  f"({report.status}, {report.seconds:.1f} s)\n")
     for r in report.results:
-        stream.write(f"  {SYMBOL[r.status]} {r.name}\n")
+        stream.write(f"  {SYMBOL[r.status]} {one_line(r.name)}\n")
         if r.message:
-            stream.write(f"      {r.message}\n")
+            stream.write(indented(r.message, "      ") + "\n")
         if r.hint:
-            stream.write(f"      hint {r.hint}\n")
+            stream.write(indented("hint " + r.hint, "      ") + "\n")
         for picture in (pictures or {}).get(r.id, ()):
             stream.write(f"      picture {picture}\n")
     stream.write("\n")
@@ -195,18 +228,19 @@ def summary_table(reports, stream, root=None):
     stream.write(f"{'file':<{width}}  score   status  first problem\n")
     for r in reports:
         if isinstance(r, NotGraded):
-            problem = f"not graded: {r.message}"
+            problem = one_line(f"not graded: {r.message}")
         else:
             first = next((c for c in r.results if c.status != "pass"), None)
             problem = f"{check_label(first)}: {first.status}" if first else ""
-        stream.write(f"{_rel(r.path, root):<{width}}  {r.score:>2g}/{r.max_score:<3g} {r.status:<7} {problem}\n")
+        stream.write(f"{one_line(_rel(r.path, root)):<{width}}  {r.score:>2g}/{r.max_score:<3g} {r.status:<7} {problem}\n")
     stream.write(_summary_line(reports) + "\n")
 
 
 def csv_text(reports, root=None):
     """One row per entry: student (the submission's folder), path, lab, status, score, max_score, fraction (of
-    its own lab's points), each check's status, then message. With several labs a check's column is
-    "lab:check", so no column mixes two labs' checks."""
+    its own lab's points; 0 for a file that scores 0 of no lab's points, such as an empty one), each check's
+    status, then message: the row's reason (reason()). With several labs a check's column is "lab:check", so no
+    column mixes two labs' checks."""
     several = len({r.lab.id for r in reports if r.lab is not None}) > 1
     columns = []
     for r in reports:
@@ -222,9 +256,9 @@ def csv_text(reports, root=None):
     for r in reports:
         lab = r.lab.id if r.lab is not None else ""
         by_id = {(lab, c.id): c.status for c in r.results}
-        fraction = f"{r.score / r.max_score:.3f}" if r.max_score else ""
+        fraction = f"{r.score / r.max_score:.3f}" if r.max_score else ("0.000" if getattr(r, "counted", False) else "")
         writer.writerow([student_of(names[r.path]), _rel(r.path, root), lab, r.status, f"{r.score:g}",
-                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns], message_of(r)])
+                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns], reason(r)])
     return out.getvalue()
 
 
@@ -250,8 +284,11 @@ def write_atomic(path, text):
             handle.write(text)
             handle.flush()
             os.fsync(handle.fileno())
-        try:
-            mode = os.stat(path).st_mode & 0o7777
+        try:   # the old file's permissions: of the file itself, never of what a link there points to
+            info = os.lstat(path)
+            if not stat.S_ISREG(info.st_mode):
+                raise OSError("not a regular file")
+            mode = info.st_mode & 0o777
         except OSError:
             umask = os.umask(0)
             os.umask(umask)

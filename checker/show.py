@@ -9,12 +9,13 @@ or run in this process: the window replays recorded frames (checker/show_view.py
 What is shown (Replay):
   * CHECK, or the first failed check of the file;
   * for a behaviour check, the scene it reads; for a failed function check, whose scenes never ran,
-    the lab's own scene run ungraded (as --pictures does) and the failing cases drawn
-    (checker/show_cases.py);
+    a scene run ungraded with the student's failing step and the lesson's other steps, where it
+    differs from the solution's (checker/preview.py, as --pictures draws it), and the failing cases
+    drawn (checker/show_cases.py);
   * the check's quantity per frame with its bound (SERIES below; for a function check, how far
     the student's bodies are from the solution's), and the failing frame: the frame the check's
     message names, else the first frame the quantity passes its bound, else the first frame the
-    student's run visibly differs from the solution's (VISIBLE px).
+    student's run visibly differs from the solution's (preview.VISIBLE_PX px or VISIBLE_DEG degrees).
 """
 import math
 import os
@@ -24,11 +25,12 @@ from dataclasses import dataclass, field
 from lesson11 import records as metrics
 
 from . import pictures, report
+from . import preview as previews
 from .checks import ERROR, FAIL, PASS
 from .grade import Grader
 from .lab_checks import world_settings
 
-VISIBLE = 1.0   # px: a body this far from the solution's is visibly elsewhere (the criteria's own scale)
+VISIBLE = previews.VISIBLE_PX   # px: a body this far from the solution's is visibly elsewhere
 NO_DISPLAY = "no display: use --pictures DIR"
 
 
@@ -146,17 +148,14 @@ def series_for(lab, check_id):
 
 
 def divergence(frame, reference):
-    """How far (px) the student's bodies are from the solution's in the same frame: the largest distance
-    between bodies of the same index (infinite when the frames hold different numbers of bodies)."""
-    if reference is None:
-        return 0.0
-    mine, theirs = frame["bodies"], reference["bodies"]
-    if len(mine) != len(theirs):
-        return math.inf
-    return max([math.dist(a["pos"], b["pos"]) for a, b in zip(mine, theirs)] + [0.0])
+    """How far the student's bodies are from the solution's in the same frame: the largest distance (px) between
+    bodies of the same index, or the largest difference of their angles (degrees) if larger, counted in the
+    same units as preview.VISIBLE_PX (infinite when the frames hold different numbers of bodies)."""
+    px, deg = previews.apart(frame, reference)
+    return max(px, deg * previews.VISIBLE_PX / previews.VISIBLE_DEG)
 
 
-DIVERGENCE = Quantity("from the solution's bodies (px)", None, VISIBLE)
+DIVERGENCE = Quantity("off the solution's (px or degrees)", None, previews.VISIBLE_PX)
 
 
 # ---------------------------------------------------------------- the replay
@@ -187,6 +186,7 @@ class Replay:
     settings: list = field(default_factory=list)
     reference_settings: list = field(default_factory=list)
     settings_note: str = ""
+    spliced: str = ""            # "your step 5 with the lesson's steps 2, 3, 4, 6" (checker/preview.py), or ""
 
     def settings_at(self, index):
         """(the student's World settings at frames[index], the solution's at the same frame number): dicts or None."""
@@ -214,8 +214,10 @@ class Replay:
                  f"  graded with seed {self.seed}: python -m checker {self.path} --show {self.check.id} "
                  f"--seed {self.seed} replays this run"]
         if self.scene:
-            kind = "the scene it reads" if self.graded else "the lab's scene, run ungraded to show what it does"
+            kind = "the scene it reads" if self.graded else "run ungraded to show what the check means"
             lines.append(f"  scene '{self.scene}' ({kind}): {len(self.frames)} frames, the solution's beside it")
+        if self.spliced:
+            lines.append(f"  the run is {self.spliced}: the failing step alone")
         if self.fail_frame is not None:
             lines.append(f"  failing frame {self.fail_frame} (t = {self.fail_frame / metrics.FPS:.2f} s): "
                          f"{self.fail_reason}")
@@ -229,9 +231,20 @@ class Replay:
 class ShowGrader(Grader):
     """The Grader, keeping every child run it makes (the probe's judged data, for the function cases)."""
 
-    def __init__(self, *args, **kwargs):
+    def __init__(self, *args, announce=None, **kwargs):
         super().__init__(*args, **kwargs)
         self.runs = []
+        self.announce = announce   # called with a line to print as the work changes (None: print nothing)
+        self.announced = False
+
+    def preview_started(self):
+        self.recording()
+
+    def recording(self):
+        """Say once that the replay is being recorded."""
+        if self.announce is not None and not self.announced:
+            self.announced = True
+            self.announce("recording the replay (your run and the solution's)...")
 
     def run(self, lab_path, task, settings, priority=math.inf):
         result = super().run(lab_path, task, settings, priority)
@@ -264,47 +277,29 @@ def _first_crossing(frames, values, quantity):
     return None
 
 
-def _first_difference(frames, reference):
-    for frame in frames:
-        if divergence(frame, pictures._nearest(reference, frame["frame"])) > VISIBLE:
-            return frame["frame"]
-    return None
+trusted_frames = previews.trusted_frames
 
 
-def trusted_frames(lab, scene, record):
-    """The record's frames when they can be what lesson11.runtime wrote for the scene (checker/lab_checks.py
-    record_problem: numbered frames, numbers where numbers belong, rigid bodies), else []: the record comes
-    from the child, where the student's code ran, and the window draws nothing it cannot draw safely."""
-    from .lab_checks import record_problem
-    settings = lab.scenarios().get(scene)
-    if not record or settings is None or record_problem(record, settings):
-        return []
-    return record["records"]
+def _scene_choice(row, result, rerun, reference_record):
+    """(scene, graded, student frames, solution frames, spliced note) for a result.
 
-
-def _scene_choice(row, result, run_scene, reference_record):
-    """(scene, graded, student frames, solution frames) for a result.
-
-    A behaviour check: the scene it reads, as graded. A function check (its scenes never ran): the
-    scene the grader ran ungraded for the picture, or, when the student's run of that one never
-    differs visibly from the solution's, the lab's next scene in which it does (run_scene runs one
-    in the isolated child, as the grader runs the preview)."""
+    A behaviour check: the scene it reads, as graded. A function check (its scenes never ran): the scene
+    the grader ran ungraded for the file's first failure (checker/preview.py: the failing step with the
+    lesson's other steps, in a scene where the run differs from the solution's); for another check, the
+    same made again for that check's own step (rerun(result): in the isolated child, as the grader does)."""
     lab = row.lab
     scenes, ungraded = pictures._scenes_of(row, result.id) if row.records else ((), False)
-    scene = next((s for s in scenes if (row.records.get(s) or {}).get("records")), None)
-    frames = trusted_frames(lab, scene, row.records.get(scene)) if scene else []
+    if (ungraded or not scenes) and rerun is not None and result is not previews.failing_step(row.results):
+        scene, record, note = rerun(result)
+        frames = trusted_frames(lab, scene, record) if scene else []
+        ungraded = True
+    else:
+        scene = next((s for s in scenes if (row.records.get(s) or {}).get("records")), None)
+        frames = trusted_frames(lab, scene, row.records.get(scene)) if scene else []
+        note = getattr(row, "preview_note", "") if ungraded else ""
     scene = scene if frames else None
     reference = ((reference_record(lab, scene) or {}).get("records") or []) if scene else []
-    if (scene is None or ungraded) and run_scene is not None and \
-            _first_difference(frames, reference) is None:
-        for other in lab.scenarios():
-            if other == scene:
-                continue
-            mine = trusted_frames(lab, other, run_scene(other))
-            theirs = (reference_record(lab, other) or {}).get("records") or []
-            if mine and _first_difference(mine, theirs) is not None:
-                return other, False, mine, theirs
-    return scene, scene is not None and not ungraded, frames, reference
+    return scene, scene is not None and not ungraded, frames, reference, note if scene else ""
 
 
 def failure(lab, result, frames, reference, graded):
@@ -332,33 +327,39 @@ def failure(lab, result, frames, reference, graded):
         if crossing is not None:
             where = "at the end" if quantity.at_end else "first"
             return crossing, f"{quantity.label} {where} beyond {quantity.bound:g}", quantity, values
-    differs = _first_difference(frames, reference) if reference else None
+    differs = previews.first_visible(frames, reference) if reference else None
     if differs is not None:
-        return differs, f"the first frame a body is more than {VISIBLE:g} px from the solution's", quantity, values
+        return differs, f"the first frame a body is {previews.VISIBLE_PX:g} px or {previews.VISIBLE_DEG:g} degrees " \
+            "from the solution's", quantity, values
     return None, "", quantity, values
 
 
-def build_replay(row, result, functions=None, run_scene=None, reference_record=None):
-    """The Replay of one graded row's result: its scene (if any was recorded), the solution's, the quantity."""
+def build_replay(row, result, functions=None, rerun=None, reference_record=None):
+    """The Replay of one graded row's result: its scene (if any was recorded), the solution's, the quantity.
+
+    rerun(result) -> (scene, record, note): a function check's scene made for that check (see _scene_choice)."""
     from . import show_cases
     lab = row.lab
     reference_record = reference_record or pictures.reference_record
-    scene, graded, frames, reference = _scene_choice(row, result, run_scene, reference_record)
+    scene, graded, frames, reference, spliced = _scene_choice(row, result, rerun, reference_record)
     fail_frame, reason, quantity, values = failure(lab, result, frames, reference, graded)
     cases = show_cases.failing_cases(lab, result, functions or {}, row.seed)
     settings, note = world_settings(frames)
     reference_settings, reference_note = world_settings(reference)
     note = f"yours: {note}" if note else f"the solution's: {reference_note}" if reference_note else ""
     return Replay(row.path, lab, result, scene, graded, row.seed, frames, reference, quantity, values, fail_frame,
-                  reason, cases, settings, reference_settings, note)
+                  reason, cases, settings, reference_settings, note, spliced)
 
 
-def prepare(path, lab, check_id=None, seed=None, limits=None, options=None):
+def prepare(path, lab, check_id=None, seed=None, limits=None, options=None, announce=None):
     """(row, Replay or None, message): grade `path` as `lab` (with the grading seed) and build the replay.
 
-    message: why there is nothing to replay ("" when there is).
+    message: why there is nothing to replay ("" when there is); announce: called with a line to print as the
+    work moves from grading to recording (the command line prints them; None: silent).
     """
-    grader = ShowGrader(limits, 1, None, options=options, keep_records=True, seed=seed)
+    grader = ShowGrader(limits, 1, None, options=options, keep_records=True, seed=seed, announce=announce)
+    if announce is not None:
+        announce(f"grading {path}...")
     row = grader.grade(path, lab)
     result = target(row, check_id)
     if result is None:
@@ -366,13 +367,16 @@ def prepare(path, lab, check_id=None, seed=None, limits=None, options=None):
                            "every check passes: nothing to show")
     if result.id == "loads" and result.status != PASS:
         return row, None, "the file does not load (see above)"
-    def run_scene(name):   # one more scene, ungraded, in the isolated child (as the grader's preview)
-        settings = lab.scenarios()[name]
-        run = grader.run(os.path.abspath(path), "scenario", dict(settings, probes=lab.probes),
-                         lab.scene_seconds(name, settings))
-        return getattr(run, "record", None) if run is not None and run.status == "done" else None
+    def rerun(other):   # another function check's step, run as the grader runs the preview (checker/preview.py)
+        from . import source
+        try:
+            text = source.read(path)
+        except (OSError, source.SourceError):
+            return None, None, ""
+        return previews.scene_for(grader.run, path, text, lab, other, pictures.reference_record)
 
-    return row, build_replay(row, result, grader.probe_functions(), run_scene), ""
+    grader.recording()
+    return row, build_replay(row, result, grader.probe_functions(), rerun), ""
 
 
 def display_problem(environ=None, platform=None):
@@ -403,8 +407,16 @@ def main(args, entries, events=None, frames=None, out=None, err=None):
         print(f"checker: error: --show {check_id}: {entry.lab.title} has no such check; its checks: {known}",
               file=err)
         return 2
-    row, replay, problem = prepare(entry.path, entry.lab, check_id, args.seed, limits,
-                                   {"allow_edits": args.allow_edits})
+    def announce(line):   # the window takes seconds to prepare: say what is happening meanwhile
+        print(line, file=err, flush=True)
+
+    try:
+        row, replay, problem = prepare(entry.path, entry.lab, check_id, args.seed, limits,
+                                       {"allow_edits": args.allow_edits}, announce)
+    except Exception as exc:  # noqa: BLE001 - a bug of ours on this file: one line, never a traceback
+        print(f"checker: error: --show could not grade {entry.path} ({type(exc).__name__}: {exc}); this is a bug "
+              "in the checker, please report it", file=err)
+        return 1
     report.text_report(row, out)
     print(f"Graded with seed {row.seed} (--seed {row.seed} grades with the same inputs).", file=out)
     if replay is None:

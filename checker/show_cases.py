@@ -390,6 +390,7 @@ class ImpulseCase:
         impulse = Vector2(self.case["impulse"])
         longest = max([d.length() for side in ("a", "b") for d, _ in self.changes(side)] + [1e-9])
         scale = min(self.ARROW, 160 / longest)   # the longest arrow at most 160 px
+        fastest = max([abs(w) for side in ("a", "b") for _, w in self.changes(side)] + [1e-12])
         for side, colour in (("a", (70, 130, 235)), ("b", (245, 150, 40))):
             centre = contact - Vector2(self.case["r" + side]) * self.SCALE
             pygame.draw.circle(surface, colour, centre, 10)
@@ -398,28 +399,61 @@ class ImpulseCase:
             (dv, dw), (lv, lw) = self.changes(side)
             _arrow(surface, LESSON, centre, centre + lv * scale, 5)
             _arrow(surface, STUDENT, centre, centre + dv * scale, 2)
-            for spin, colour_, radius in ((lw, LESSON, 26), (dw, STUDENT, 34)):
-                _spin_arc(surface, colour_, centre, radius, spin)
+            for spin, colour_, radius in ((lw, LESSON, 30), (dw, STUDENT, 44)):
+                _spin_arc(surface, colour_, centre, radius, spin, fastest, font)
         pygame.draw.circle(surface, (235, 80, 80), contact, 5)
         if impulse.length() > 0:
             _arrow(surface, TEXT, contact, contact + impulse.normalize() * 60, 2)
             label = self.case.get("impulse_label", "impulse P")
             surface.blit(font.render(label, True, TEXT), contact + impulse.normalize() * 66)
-        _footer(surface, self.lines(), "arrows: velocity change (same scale), arcs: spin change   [ ]: case   Tab: scene")
+        if self.case.get("friction"):
+            self.draw_friction(surface, contact, font)
+        _footer(surface, self.lines(), "arrows: velocity change, arcs: spin change (+ clockwise), each to one scale  "
+                "[ ]: case  Tab: scene")
+
+    def draw_friction(self, surface, contact, font):
+        """At the contact: B's slip past A (grey) and the friction impulse on B, the lesson's (yellow) and the
+        student's (magenta), to one scale (case["friction"]: vectors, see show_cases_labs.friction_arrows)."""
+        friction = self.case["friction"]
+        slip = Vector2(friction["slip"])
+        grey = (170, 175, 190)
+        if slip.length() > 1e-9:
+            tip = contact + slip.normalize() * 70
+            _arrow(surface, grey, contact, tip, 2)
+            surface.blit(font.render(f"slip {slip.length():.3g} px/s", True, grey), tip + Vector2(6, 4))
+        pushes = [(Vector2(friction[who]), colour, width) for who, colour, width in
+                  (("lesson", LESSON, 5), ("yours", STUDENT, 2))]
+        largest = max([p.length() for p, _, _ in pushes] + [1e-9])
+        for push, colour, width in pushes:
+            if push.length() > 1e-9 * largest:
+                _arrow(surface, colour, contact, contact + push * (90 / largest), width)
+        surface.blit(font.render("friction on B", True, LESSON), contact + Vector2(-150, 20))
 
 
-def _spin_arc(surface, colour, centre, radius, spin):
-    """An arc around `centre` whose length shows a spin change (rad/s; clockwise on screen when positive)."""
-    if abs(spin) < 1e-12:
+FULL_TURN = 1.75 * math.pi   # the arc of the largest spin change in a case (a ring left open at the top)
+
+
+def _spin_arc(surface, colour, centre, radius, spin, largest, font=None):
+    """An arc around `centre` from its top, with an arrowhead, for a spin change `spin` (rad/s): its length is
+    FULL_TURN × |spin| / largest (the largest change drawn in the case, so sizes compare), clockwise on screen
+    when positive (y down); `font`: the value is written at the arrowhead."""
+    if abs(spin) < 1e-12 or not math.isfinite(spin):
         return
-    sweep = max(min(abs(spin), 6.0), 0.15)
-    rect = pygame.Rect(0, 0, 2 * radius, 2 * radius)
-    rect.center = (round(centre.x), round(centre.y))
-    start = -math.pi / 2
-    if spin > 0:
-        pygame.draw.arc(surface, colour, rect, -sweep + start + math.pi, start + math.pi, 3)
-    else:
-        pygame.draw.arc(surface, colour, rect, start, start + sweep, 3)
+    sweep = max(FULL_TURN * min(abs(spin) / max(largest, 1e-12), 1.0), 0.2) * (1 if spin > 0 else -1)
+    start = -math.pi / 2   # the top; the angle grows clockwise on screen
+    steps = max(int(abs(sweep) * radius / 4), 2)
+    points = [centre + Vector2(math.cos(start + sweep * k / steps), math.sin(start + sweep * k / steps)) * radius
+              for k in range(steps + 1)]
+    pygame.draw.lines(surface, colour, False, points, 3)
+    tip = points[-1]
+    along = (points[-1] - points[-2]).normalize() if points[-1] != points[-2] else Vector2(1, 0)
+    side = Vector2(-along.y, along.x)
+    pygame.draw.polygon(surface, colour, [tip + along * 9, tip - along * 3 + side * 6, tip - along * 3 - side * 6])
+    if font is not None:
+        text = font.render(f"{spin:+.3g}", True, colour)
+        out = (tip - centre).normalize() if tip != centre else Vector2(0, -1)
+        at = tip + out * 16
+        surface.blit(text, (at.x - text.get_width() / 2, at.y - text.get_height() / 2))
 
 
 # ---------------------------------------------------------------- resolve (steps 4 and 5)
@@ -479,9 +513,52 @@ class ResolveCase:
         _arrow(surface, TEXT, at(point), at(point) + Vector2(normal) * 50, 2)
         if self.check_id == "resolve_k":
             self._draw_changes(surface, at, a, b, Vector2(normal), Vector2(point))
+            help_text = "white: the normal A->B at the contact   [ ]: case   Tab: scene   Esc: quit"
         else:
+            self._draw_friction_arrows(surface, at, a, b, Vector2(normal), Vector2(point))
             self._draw_friction(surface)
-        _footer(surface, self.lines(), "white: the normal A->B at the contact   [ ]: case   Tab: scene   Esc: quit")
+            help_text = "grey: B's slip past A   arrows: friction impulse on each box   [ ]: case   Tab: scene"
+        _footer(surface, self.lines(), help_text)
+
+    def tangent(self, a, b, normal, point):
+        """The unit tangent t the friction acts along (the direction B slips past A at the contact, after the
+        student's normal impulse), computed here from the probe's fixed contact with the lesson's apply_impulse
+        (grader-side code, as the probe's reference does), or None."""
+        from lesson11.physics2d import apply_impulse, relative_velocity
+        from .labs.tumbling_crates.probes import twin
+        j = self.case.get("j")
+        if j is None or not math.isfinite(j):
+            return None
+        a, b = twin(a), twin(b)
+        ra, rb = point - a.pos, point - b.pos
+        apply_impulse(a, b, normal * j, ra, rb)
+        rel = relative_velocity(a, b, ra, rb)
+        tangent = rel - normal * rel.dot(normal)
+        return tangent.normalize() if tangent.length_squared() > 1e-12 else None
+
+    def _draw_friction_arrows(self, surface, at, a, b, normal, point):
+        """On the boxes: B's slip past A at the contact (grey) and the friction impulse on each box, the
+        lesson's (yellow, thick) and the student's (magenta): +jt t on B, -jt t on A, one scale for all."""
+        friction = self.case.get("friction")
+        t = self.tangent(a, b, normal, point) if friction else None
+        if t is None:
+            return
+        bound = abs(self.case["mu"] * self.case["j"])
+        lesson = max(-bound, min(bound, friction["stop"]))
+        impulses = [(lesson, LESSON, 5), (friction["jt"], STUDENT, 2)]
+        largest = max([abs(jt) for jt, _, _ in impulses if math.isfinite(jt)] + [1e-9])
+        contact = at(point)
+        font = _font(20)
+        slip = t * 70
+        _arrow(surface, (170, 175, 190), contact + normal * 14, contact + normal * 14 + slip, 2)
+        surface.blit(font.render(f"slip {friction['slip']:.3g} px/s", True, (170, 175, 190)),
+                     contact + normal * 14 + slip + Vector2(6, -8))
+        for jt, colour, width in impulses:
+            if not math.isfinite(jt) or abs(jt) < 1e-12:
+                continue
+            push = t * (jt / largest * 90)
+            _arrow(surface, colour, contact + normal * 34, contact + normal * 34 + push, width)   # on B
+            _arrow(surface, colour, contact - normal * 24, contact - normal * 24 - push, width)   # on A
 
     def _draw_changes(self, surface, at, a, b, normal, point):
         impulses = [(normal * self.lesson_j(), LESSON, 5)]
@@ -490,9 +567,10 @@ class ResolveCase:
         changes = [(body, sign * impulse * body.inv_mass, sign * (point - body.pos).cross(impulse) * body.inv_inertia,
                     colour, width) for impulse, colour, width in impulses for body, sign in ((a, -1), (b, 1))]
         longest = max([dv.length() for _, dv, _, _, _ in changes] + [1e-9])
+        fastest = max([abs(dw) for _, _, dw, _, _ in changes] + [1e-12])
         for body, dv, dw, colour, width in changes:
             _arrow(surface, colour, at(body.pos), at(body.pos) + dv * (120 / longest), width)
-            _spin_arc(surface, colour, at(body.pos), 22 if colour == LESSON else 30, dw)
+            _spin_arc(surface, colour, at(body.pos), 22 if colour == LESSON else 30, dw, fastest)
 
     def _draw_friction(self, surface):
         friction, bound = self.case["friction"], abs(self.case["mu"] * self.case["j"])

@@ -470,7 +470,24 @@ def friction_case(case, number, count, geometry):
     before = {"a": {"vel": list(a.vel), "omega": a.omega}, "b": {"vel": list(b.vel), "omega": b.omega}}
     return ImpulseCase({"case": f"{case['case']} (mu = {case['mu']:.2g})", "before": before, "after": case["got"],
                         "expected": case["variants"]["right"], "impulse": list(normal), "impulse_label": "normal n",
-                        "ra": case["ra"], "rb": case["rb"]}, number, count)
+                        "ra": case["ra"], "rb": case["rb"],
+                        "friction": friction_arrows(a, b, Vector2(normal), case["ra"], case["rb"], case["got"],
+                                                    case["variants"]["right"])}, number, count)
+
+
+def friction_arrows(a, b, normal, ra, rb, got, want):
+    """{"slip": B's contact point's velocity past A's along the surface before resolve() (px/s), "yours" /
+    "lesson": the friction impulse on B (the part of B's impulse, or minus A's, across the normal) after the
+    student's resolve() and the lesson's}, computed here from the probe's fixed bodies (grader-side code)."""
+    from lesson11.physics2d import relative_velocity
+    rel = relative_velocity(a, b, Vector2(ra), Vector2(rb))
+    moving, sign = (b, 1) if b.inv_mass else (a, -1)
+    side = "b" if moving is b else "a"
+
+    def on_b(state):   # the impulse B got: its momentum change (or minus A's, when B is static), across n
+        impulse = (Vector2(state[side]["vel"]) - moving.vel) * (moving.mass * sign)
+        return impulse - normal * impulse.dot(normal)
+    return {"slip": rel - normal * rel.dot(normal), "yours": on_b(got), "lesson": on_b(want)}
 
 
 def _ramp_resolve_geometry():

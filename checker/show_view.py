@@ -11,7 +11,7 @@ they differ, the solution's; read-only: no panel key reaches it but H (its size)
 where the live panel has its timings. It sits where it covers the fewest moving bodies of both runs
 (place_panel), never over the title or the timeline.
 
-Keys:  P pause / play    O one frame (paused)    Left / Right one frame back / on    Home the start
+Keys:  P pause / play    O / Right one frame on (paused)    Left one frame back    Home the start
        J jump to the failing frame    G ghost (the solution's outlines over yours) / side by side
        Tab the scene / the failing cases    [ ] previous / next case    N next axis (SAT)
        H the solver panel: compact / full / hidden    Esc, Q quit
@@ -26,6 +26,7 @@ from lesson11.panel import MODES, LabPanel
 from lesson11.physics2d.draw import draw_body, draw_contacts
 
 from .pictures import _font
+from .preview import recorded_colour
 from .show_cases import wrapped
 
 SCENE = (900, 600)          # px: the labs' window
@@ -82,15 +83,17 @@ def _finite(body):
 
 
 def bodies_of(frame, scale=1.0, offset=(0, 0)):
-    """The frame's bodies as RecordedBody (the labs' colours: grey statics, a colour per moving body)."""
+    """The frame's bodies as RecordedBody in the lab's own colours (recorded; a record without them: grey
+    statics, a colour per moving body); asleep, darker, as Sleeping Crates draws them."""
     shown, moving = [], 0
     for body in (frame or {}).get("bodies", ()):
         if not _finite(body):
             continue
+        colour = recorded_colour(body)
         if body.get("static"):
-            colour = STATIC
+            colour = colour or STATIC
         else:
-            colour = PALETTE[moving % len(PALETTE)]
+            colour = colour or PALETTE[moving % len(PALETTE)]
             colour = tuple(int(c * 0.45) for c in colour) if body.get("asleep") else colour
             moving += 1
         shown.append(RecordedBody(body, colour, scale, offset))
@@ -240,10 +243,10 @@ class Viewer:
         mode = "side by side" if self.side_by_side else "ghost: the solution in cyan"
         head = f"{replay.lab.title} - {replay.check.id} ({replay.check.status}) | '{replay.scene}'" \
                f"{'' if replay.graded else ' ungraded'} | frame {frame['frame']} ({frame['frame'] / 60:.2f} s)" \
-               f"{'' if self.playing else ' PAUSED'} | {mode}"
+               f"{'' if self.playing else ' PAUSED'} | {mode}" + (f" | {replay.spliced}" if replay.spliced else "")
         rows = wrapped(self.font, [head], SCENE[0] - 30, " | ")
-        keys = "P pause  O step  Left/Right  J jump to the failing frame  G ghost/side by side" + \
-            ("  Tab cases" if replay.cases else "") + "  Esc quit"
+        keys = "P pause  O / Right one frame on  Left one back  Home start  J the failing frame  G ghost / side by " \
+            "side  H panel" + ("  Tab cases" if replay.cases else "") + "  Esc quit"
         return [rows[0]] + ["| " + row for row in rows[1:]] + [keys]
 
     def draw_hud(self, surface):

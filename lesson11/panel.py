@@ -702,7 +702,7 @@ class LabPanel:
             lines = [("; ".join(others) if others else "the other settings: as the solution's",
                       WARNING if others else DIM)]
         else:
-            lines = [("keys S, arrows, W, C, K, 0 change nothing in a replay", DIM)]
+            lines = [("keys S, Up/Down, W, C, K, 0 change nothing here", DIM)]
         lines.append(("replay: recorded settings, no timing measured", DIM))
         if mine is not None and not compact:
             lines.append((study_short(_Order(mine.get("order")), {**mine}), DIM))
@@ -723,14 +723,12 @@ class LabPanel:
         put("SOLVER PANEL (replay)" if not compact else "solver panel (replay)", KEY if not compact else DIM, (x, y))
         label = "[H] hide" if not compact else "[H] more"
         put(label, DIM, (width - x - self.text(label, DIM).get_width(), y))
-        for key, name, value, solution in rows:
+        for _, name, value, solution in rows:   # no key labels: in a replay the keys change nothing
             y += line
-            if key:
-                put(f"[{key}]", DIM, (x, y))
-            put(name, DIM, (x + 95, y))
-            put(value, WARNING if solution is not None else TEXT, (x + 190, y))
+            put(name, DIM, (x, y))
+            put(value, WARNING if solution is not None else TEXT, (x + 110, y))
             if solution is not None:
-                put(f"solution {solution}", solution_colour, (x + 200 + self.text(value, TEXT).get_width(), y))
+                put(f"solution {solution}", solution_colour, (x + 120 + self.text(value, TEXT).get_width(), y))
         for words, colour in wrapped:
             y += line
             put(words, colour, (x, y))

@@ -1,6 +1,6 @@
 """The lesson's quick quiz in the terminal: python -m lesson11.quiz
 
-Five multiple-choice questions (A-D), folded to the terminal's width. After each answer the quiz says whether
+The lesson's multiple-choice questions (A-D), folded to the terminal's width. After each answer the quiz says whether
 it was right and gives a one-line explanation; at the end it prints the score.
 An answer that is not A, B, C or D is asked again; end of input (Ctrl-D, or a
 closed pipe) stops the quiz cleanly with the score so far, and so does Ctrl-C

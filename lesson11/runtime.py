@@ -28,11 +28,12 @@ Settings (all optional):
 
 Each recorded frame holds "frame", "contacts" (how many), "touching" (each
 contact: body indices "a" and "b", "point", "normal" A→B, "depth") and
-"bodies" (each: "static", "asleep" (the "sleep" effect), "pos", "vel", "angle", "omega", "points", and
-"radius" for a circle, whose "points" are []). A frame also holds "world", the World's settings
-(solver, order, iterations, substeps, warm_starting, correction, contact_rule, effects, step_seconds) as
-the solver panel's advance() last told them (note_world), on the first recorded frame and on every recorded
-frame where they changed; a lab run without the panel records none.
+"bodies" (each: "static", "asleep" (the "sleep" effect), "pos", "vel", "angle", "omega", "points",
+"radius" for a circle, whose "points" are [], and "color", the RGB the lab draws it with, when it is one).
+A frame also holds "world", the World's settings (solver, order, iterations, substeps, warm_starting,
+correction, contact_rule, effects, step_seconds) as the solver panel's advance() last told them (note_world),
+on the first recorded frame and on every recorded frame where they changed; a lab run without the panel
+records none.
 """
 import atexit
 import json
@@ -254,10 +255,17 @@ def record(bodies, contacts=()):
             "omega": body.omega,
             "points": [[p.x, p.y] for p in body.world_points()],
             **({"radius": body.radius} if getattr(getattr(body, "shape", None), "kind", None) == "circle" else {}),
+            **({"color": list(body.color)} if _colour(getattr(body, "color", None)) else {}),
         } for body in bodies],
     })
     if _world is not None and _world != _world_written:   # the settings, when they are new since the last frame
         _records[-1]["world"] = _world_written = _world
+
+
+def _colour(value):
+    """True when `value` is an RGB colour the lab draws with: three ints 0-255."""
+    return isinstance(value, (tuple, list)) and len(value) == 3 and \
+        all(isinstance(c, int) and not isinstance(c, bool) and 0 <= c <= 255 for c in value)
 
 
 def _contact(contact, index):

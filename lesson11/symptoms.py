@@ -3,7 +3,8 @@
 One row per mistake: the lab, a key, the step it belongs to, the mistake in a few words, what the window
 shows (measured: tests/test_symptoms.py applies each mistake to solutions/<lab>.py, runs the scene the row
 names headless and asserts the symptom with a bound), and the symptom's kind. The lesson's Hint section
-(lesson11/README.md) renders this table with `markdown(lab)`; the checker's hints
+(lesson11/README.md) renders the Tumbling Crates rows with `markdown(lab)`, and each Going Further lab's page
+(lesson11/labs/<lab>.md) its own; the checker's hints
 (checker/labs/*/checks.py) may only name a symptom whose kind a row of their lab has (tests/test_symptoms.py
 reads every hint with `kinds_named`).
 
@@ -42,6 +43,9 @@ KINDS = {
     "spin_wrong_way": r"spins? the wrong way",
     "tunnel": r"tunnel",
     "looks_right": r"looks right",
+    "never_settle": r"never settles?",
+    "thin_air": r"thin air",
+    "zero_division": r"ZeroDivisionError",
     "explode": r"explode|shot (apart|away)",
     "never_tip": r"never tip",
 }
@@ -55,29 +59,47 @@ LABS = {
 }
 
 TABLE = (
-    # ---------------------------------------------------------------- Tumbling Crates (its own scene, 3 s)
+    # ---------------------------------------------------------------- Tumbling Crates (its own scene, 3 s; clicked pile)
     Symptom("tumbling_crates", "sat_none", 2, "`sat()` still returns None (the placeholder left below the loop)",
             "all four crates fall through the floor; the HUD counts 0 contacts", "fall_through"),
+    Symptom("tumbling_crates", "gap_continue", 2, "`continue` instead of `return None` on a gap",
+            "crates hit thin air: the first crate is struck about 40 px above the ramp (the HUD counts a "
+            "contact there), knocked sideways to the ramp's high end, and stays there", "thin_air"),
     Symptom("tumbling_crates", "normal_not_flipped", 3, "no flip: the normal is left as the edge gave it",
             "all four crates fall through the floor as if it were not there (2940 px/s after 3 s), though the "
-            "HUD counts contacts while they pass; press D: the normals point into the floor", "fall_through"),
+            "HUD counts contacts while they pass; pause (P) and step (O): the red normals point down into "
+            "the floor", "fall_through"),
     Symptom("tumbling_crates", "flip_reversed", 3, "the flip test reversed (`> 0`)",
-            "the crates that land on the floor sink about 55 px into it and stop there", "sink"),
+            "the two crates that land on the floor sink into it (about 40 and 55 px) and stop there; the two "
+            "on the ramp stop stuck through it", "sink"),
+    Symptom("tumbling_crates", "flip_by_owner", 3, "the axis turned round when it is one of A's edge normals",
+            "the four crates land and tip much as in the finished lab; click a pile of a dozen and some keep "
+            "rocking on a corner: the pile never settles (`fast movers now: 3`)", "never_settle"),
     Symptom("tumbling_crates", "k_no_spin", 4, "`k` without the two spin terms",
             "corner landings kick far too hard: crates bounce about, spin at up to 20 rad/s, and one is "
             "thrown out of the window", "thrown_out"),
+    Symptom("tumbling_crates", "k_divides", 4, "the spin terms divided by `inv_inertia`",
+            "the lab stops as the first crate lands, with ZeroDivisionError in resolve(): the floor's and the "
+            "ramp's inv_inertia are 0", "zero_division"),
     Symptom("tumbling_crates", "friction_unclamped", 5, "no clamp: `jt` left as it is",
-            "a crate thrown along the floor at 400 px/s stops dead within about 30 px, tripping over its front "
-            "corner, instead of sliding about 135 px", "stop_dead"),
+            "looks right here: the crates land, tip flat and rest; `python -m checker FILE --show` shows the "
+            "checker's scene, where a crate thrown along the floor at 400 px/s stops dead", "looks_right"),
     Symptom("tumbling_crates", "friction_flipped", 5, "the clamped `jt` with its sign flipped",
             "friction drives the slide instead of braking it: crates spin up to 47 rad/s and are thrown out of "
             "the window", "thrown_out"),
+    Symptom("tumbling_crates", "clamp_swapped", 5, "the clamp's bounds swapped: `max(mu * j, min(-mu * j, jt))`",
+            "friction at full strength drives every slide: crates spin at hundreds of rad/s and all four are "
+            "thrown out of the window", "thrown_out"),
     Symptom("tumbling_crates", "spin_missing", 6, "no spin lines in `apply_impulse`",
             "crates freeze on their corners: each one stays at the angle it landed, balanced on a corner, and "
             "never turns", "freeze_corner"),
     Symptom("tumbling_crates", "spin_swapped", 6, "the spin lines' signs swapped (A `+=`, B `-=`)",
             "crates fly off: every touch spins them faster, and within 3 s they are more than 19 000 px "
             "away", "fly_off"),
+    Symptom("tumbling_crates", "spin_a_only", 6, "only A's spin line with the wrong sign (A `+=`)",
+            "looks right with the four crates (they touch only the floor and the ramp, which never turn); "
+            "click a pile of a dozen: crates landing on crates spin up and most are thrown out of the window",
+            "thrown_out"),
     # ---------------------------------------------------------------- More Shapes (one or two shapes, 1.5 s)
     Symptom("more_shapes", "degrees", 2, "angles in degrees: `cos(360 k / sides)`",
             "the window never opens: the corners go round more than once, and the lab stops with 'a polygon "
@@ -90,7 +112,7 @@ TABLE = (
             "checker's centroid check finds it", "looks_right"),
     Symptom("more_shapes", "inertia_no_six", 4, "the triangle-fan sum without the 6",
             "shapes are six times too hard to turn: a hexagon pushed along the floor at 420 px/s hardly tips "
-            "(about 50° in all, against about 250° as it rolls over its corners)", "hardly_turn"),
+            "(it turns about 36° in all, rocking, against about 205° as it rolls over its corners)", "hardly_turn"),
     Symptom("more_shapes", "axes_of_a_only", 5, "only the first shape's edge directions",
             "a triangle falling past a box's corner stops in mid-air beside it, about 60 px above the floor",
             "hang"),
@@ -169,7 +191,3 @@ def markdown(lab):
         lines.append(f"| {shows} | {row.mistake} | step {row.step} |")
     return "\n".join(lines)
 
-
-def hint_section():
-    """Every lab's table under its name, as lesson11/README.md's Hint section renders them."""
-    return "\n\n".join(f"**{name}**\n\n{markdown(lab)}" for lab, name in LABS.items())

@@ -13,7 +13,8 @@ to 7 are the code between the lines `# --- step N: ... ---` and
 `# --- end of step N ---`: yours to write in the starter, done in the solution
 (where each step opens with the starter's text for it, between
 `# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
-the lesson (lesson11/README.md) that explains it. In the starter some steps
+the lesson (lesson11/README.md) or of this lab's page (lesson11/labs/ball_on_ramp.md)
+that explains it. In the starter some steps
 hold a placeholder line, marked "replace this placeholder", that keeps the
 file running until you write the step: replace that line with your code. Code
 written above a placeholder left in place is wasted: a placeholder `return`
@@ -146,7 +147,7 @@ def contact_point(center, radius, normal, depth):
     """
     # --- step 6: the contact point on the ball's surface ---
     # BEGIN PROMPT
-    # Step 6 (lesson: "3. Depth, direction and contact points"): a contact pushes on the ball's
+    # Step 6 (lesson: "A ball against a polygon"): a contact pushes on the ball's
     # surface, not at its center: return the point radius px from the center along the normal.
     # starter: return center  # until you write step 6, every push acts at the center (no turning): replace this placeholder
     # END PROMPT

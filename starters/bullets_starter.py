@@ -16,7 +16,8 @@ The comments "Step 1" to "Step 6" follow the exercise's six steps. Steps 2 to
 `# --- end of step N ---`: yours to write in the starter, done in the solution
 (where each step opens with the starter's text for it, between
 `# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
-the lesson (lesson11/README.md) that explains it. In the starter some steps
+the lesson (lesson11/README.md) or of this lab's page (lesson11/labs/bullets.md)
+that explains it. In the starter some steps
 hold a placeholder line, marked "replace this placeholder", that keeps the
 file running until you write the step: replace that line with your code. Code
 written above a placeholder left in place is wasted: a placeholder `return`
@@ -91,7 +92,7 @@ def circle_toi(p1, v1, r1, p2, v2, r2, dt):
 def bounding_radius(points, centre):
     """The radius (px) of the smallest circle around `centre` that holds every point of the outline."""
     # --- step 3: the crate's bounding circle ---
-    # Step 3 (lesson: "Going further", Bullets): the bounding circle around `centre` must hold
+    # Step 3 (lesson: "A circle against a polygon, swept"): the bounding circle around `centre` must hold
     # every point: return the largest distance from centre to a point of the outline
     # (centre.distance_to(p)).
     return math.inf  # until you write step 3, every bounding circle is endless: replace this placeholder
@@ -115,7 +116,7 @@ def time_of_impact(bullet, other, dt):
         return t, (gap.normalize() if gap.length_squared() > 0 else Vector2(1, 0))
     points = other.world_points()
     # --- step 4: the broad test against the bounding circle ---
-    # Step 4 (lesson: "Going further", Bullets): the broad test. Call circle_toi() for the
+    # Step 4 (lesson: "A circle against a polygon, swept"): the broad test. Call circle_toi() for the
     # bullet (pos, vel, radius) against the crate's bounding circle: centre other.pos, not
     # moving (Vector2()), radius bounding_radius(points, other.pos), over dt. If it finds no
     # contact (None, not merely 0.0), the bullet cannot reach the crate this step: return None
@@ -149,7 +150,7 @@ def swept_move(world, bullet, dt):
         return
     t, normal, other = first
     # --- step 5: move to the impact, resolve there, spend the rest of the step ---
-    # Step 5 (lesson: "Tunnelling, sub-stepping and continuous collision detection"): move the
+    # Step 5 (lesson: "The swept move"): move the
     # bullet to its time of impact (bullet.pos += bullet.vel * t), resolve the hit there with
     # world.resolve(bullet, other, normal, point), the point being on the bullet's surface
     # (bullet.pos + normal * bullet.radius), then spend the rest of the step, dt - t, moving with

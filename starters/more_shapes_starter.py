@@ -15,7 +15,8 @@ The comments "Step 1" to "Step 6" follow the exercise's six steps. Steps 2 to
 `# --- end of step N ---`: yours to write in the starter, done in the solution
 (where each step opens with the starter's text for it, between
 `# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
-the lesson (lesson11/README.md) that explains it. In the starter some steps
+the lesson (lesson11/README.md) or of this lab's page (lesson11/labs/more_shapes.md)
+that explains it. In the starter some steps
 hold a placeholder line, marked "replace this placeholder", that keeps the
 file running until you write the step: replace that line with your code. Code
 written above a placeholder left in place is wasted: a placeholder `return`
@@ -67,7 +68,7 @@ def regular_polygon(sides, radius):
     if not isinstance(radius, (int, float)) or not 0 < radius < math.inf:
         raise ValueError(f"a regular polygon needs a positive radius in px, got {radius!r}")
     # --- step 2: a regular polygon's corners ---
-    # Step 2 (lesson: "1. From circles to rotating polygons"): return the `sides` corners of a
+    # Step 2 (lesson: "The regular polygon"): return the `sides` corners of a
     # regular polygon centred on (0, 0): corner k at angle θk = 2πk / sides (radians), that is
     # Vector2(radius * math.cos(θk), radius * math.sin(θk)), for k = 0, 1, ..., sides - 1.
     return box_points(radius, radius)  # until you write step 2, every shape is a square: replace this placeholder
@@ -93,7 +94,7 @@ def polygon_centroid(points):
     if abs(area) < 1e-9:
         raise ValueError("a polygon needs a non-zero area; these points lie on one line")
     # --- step 3: the area-weighted centroid ---
-    # Step 3 (lesson: "4. Spin: angular velocity and moment of inertia": polygon_inertia needs
+    # Step 3 (lesson: "The centroid": polygon_inertia needs
     # the points centred on the centroid): add up (a + b) * cross(a, b) over the edges a -> b
     # (the last edge runs from the last point back to the first) and return the sum / (6 * area).
     # Not the average of the corners: each edge's term is weighted by its triangle's area.
@@ -134,15 +135,15 @@ def separating_axes(pa, pb):
     of both, each direction once.
 
     Two edges whose normals are parallel (|n1 × n2| <= PARALLEL, pointing the same way
-    or opposite) give the same shadows, so only the first of them is kept: a box
+    or opposite) give the same overlap, so only the first of them is kept: a box
     has 2 directions, a hexagon 3, a triangle 3, a regular pentagon 5.
     """
     axes = []
     # --- step 5: skip parallel axes ---
-    # Step 5 (lesson: "Common questions", Should I skip parallel axes?): go through
+    # Step 5 (lesson: "Parallel axes"): go through
     # edge_normals(pa) + edge_normals(pb) and append an axis to `axes` only if it is not
     # parallel to any axis already there: abs(cross(axis, kept)) > PARALLEL for every kept.
-    # Parallel normals (pointing the same way or opposite) give the same shadows. Replace the
+    # Parallel normals (pointing the same way or opposite) give the same overlap. Replace the
     # placeholder below: left in, it throws away the axes you collected.
     axes = edge_normals(pa) + edge_normals(pb)  # until you write step 5, every edge is tested: replace this placeholder
     # --- end of step 5 ---

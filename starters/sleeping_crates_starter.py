@@ -20,7 +20,8 @@ The comments "Step 1" to "Step 5" follow the exercise's five steps. Steps 2 to
 `# --- end of step N ---`: yours to write in the starter, done in the solution
 (where each step opens with the starter's text for it, between
 `# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
-the lesson (lesson11/README.md) that explains it. In the starter some steps
+the lesson (lesson11/README.md) or of this lab's page (lesson11/labs/sleeping_crates.md)
+that explains it. In the starter some steps
 hold a placeholder line, marked "replace this placeholder", that keeps the
 file running until you write the step: replace that line with your code. Code
 written above a placeholder left in place is wasted: a placeholder `return`
@@ -67,7 +68,7 @@ def sleep_timer(timer, speed, spin, dt):
     reaches SLEEP_AFTER.
     """
     # --- step 2: the sleep timer ---
-    # Step 2 (lesson: "Going further", Sleeping): while the crate is calm (speed < SLEEP_SPEED
+    # Step 2 (lesson: "Sleeping"): while the crate is calm (speed < SLEEP_SPEED
     # and |spin| < SLEEP_SPIN) return timer + dt; one step above either threshold starts the
     # timer again from 0.
     return 0.0  # until you write step 2, no crate ever falls asleep: replace this placeholder
@@ -84,7 +85,7 @@ def moves(body):
     the floor costs no contact tests.
     """
     # --- step 3: skip sleeping bodies ---
-    # Step 3 (lesson: "Going further", Sleeping): static bodies (inv_mass 0) never move, and a
+    # Step 3 (lesson: "Sleeping"): static bodies (inv_mass 0) never move, and a
     # sleeping body (body.asleep) must not move either: return False for both.
     return body.inv_mass != 0  # until you write step 3, sleeping crates still move: replace this placeholder
     # --- end of step 3 ---
@@ -99,7 +100,7 @@ def wake_on_contact(a, b):
     each body returned together with the island it fell asleep with.
     """
     # --- step 4: wake on contact ---
-    # Step 4 (lesson: "Going further", Sleeping): return a list of the bodies of the pair to
+    # Step 4 (lesson: "Sleeping"): return a list of the bodies of the pair to
     # wake: a sleeping body whose partner is dynamic and awake. The floor and walls wake
     # nothing; [] if nothing wakes.
     return []  # until you write step 4, no contact wakes a sleeping crate: replace this placeholder

@@ -1,29 +1,12 @@
-"""Tumbling Crates: the Lesson 11 practice exercise.
+"""Tumbling Crates: the Lesson 11 practice exercise (lesson11/README.md, "Practice exercise").
 
-Rotating crates fall onto a floor and a 22° ramp. sat() finds each overlap,
-and resolve() and apply_impulse() turn it into an impulse at the contact point
-that changes both velocity and spin, with Coulomb friction. Everything else
-(bodies, contact points, the push-out, the fixed-step world, drawing) comes
-from lesson11.physics2d.
-
-The comments "Step 1" to "Step 7" follow the exercise's seven steps. Steps 2
-to 6 are the code between the lines `# --- step N: ... ---` and
-`# --- end of step N ---`: yours to write in the starter, done in the solution
-(where each step opens with the starter's text for it, between
-`# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section of
-the lesson (lesson11/README.md) that explains it. In the starter some steps
-hold a placeholder line, marked "replace this placeholder", that keeps the
-file running until you write the step: replace that line with your code. Code
-written above a placeholder left in place is wasted: a placeholder `return`
-hands back its stand-in value unless your code returned first.
-
-Controls: left click drops a crate, R resets, D shows contact points and normals.
-The solver panel (lesson11/panel.py, lines marked `# solver panel`) lists its
-own keys on screen: solver, iterations, sub-steps, P pause, O one step, and H
-for its size (compact, full with the graph, hidden). It shows what one physics
-step costs and whether the lab keeps up with real time.
-Lines marked `# lab runtime` let the checker run this file headless; they
-change nothing when you run it yourself.
+Run it: python starters/tumbling_crates_starter.py  (click drops a crate, R resets,
+D hides the contact normals; the panel's P pauses and O steps).
+Write steps 2 to 6 between the `# --- step N` and `# --- end of step N ---` lines and
+change nothing else. Where a step holds a line marked "replace this placeholder",
+replace that line with your code: code written above it is wasted.
+Check it: python -m checker starters/tumbling_crates_starter.py  (a mark and a hint
+per step; add --show to see the first failure in a window).
 """
 import math
 import random
@@ -62,8 +45,8 @@ def sat(pa, pb):
     # --- end of step 2 ---
     # --- step 3: make the normal point from A to B ---
     # Step 3 (lesson: "3. Depth, direction and contact points"): the axis may point either
-    # way. If it points from B towards A (compare it with centre_of(pb) - centre_of(pa)),
-    # turn it round, so the normal always points from A to B.
+    # way, whichever body's edge it came from. If it points from B towards A (its dot product
+    # with centre_of(pb) - centre_of(pa) is negative), turn it round: best_axis = -best_axis.
     # --- end of step 3 ---
     return best_axis, best_depth
 
@@ -90,7 +73,8 @@ def resolve(a, b, normal, point):
     k = a.inv_mass + b.inv_mass
     # --- step 4: the spin terms of the effective mass ---
     # Step 4 (lesson: "5. Impulses that spin, and friction"): add each body's spin term
-    # to k: (ra × n)² / I_A and (rb × n)² / I_B, using ran, rbn and inv_inertia.
+    # to k: (ra × n)² / I_A and (rb × n)² / I_B. Dividing by I is multiplying by inv_inertia
+    # (1 / I, and 0 for a static body): ran * ran * a.inv_inertia, and the same for b.
     # --- end of step 4 ---
     e = min(a.restitution, b.restitution) if vn < -RESTING_SPEED else 0.0
     j = -(1 + e) * vn / k

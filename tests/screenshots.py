@@ -4,8 +4,9 @@
 
 Runs each lab's solution (and Tumbling Crates' starter) under the lab runtime with SDL's dummy video driver,
 one after another: assets/tumbling_crates.png, tumbling_crates_starter.png, tumbling_crates_panel.png,
-more_shapes.png, ball_on_ramp.png, sleeping_crates.png and bullets.png, and the two `checker --show` pictures
-(tests/show_shot.py). Each script can also run alone.
+more_shapes.png, ball_on_ramp.png, sleeping_crates.png and bullets.png, the two `checker --show` pictures
+(tests/show_shot.py), and the lesson's contact picture, contact_picture.png (tests/contact_shot.py). Each script
+can also run alone.
 """
 import os
 import sys
@@ -16,6 +17,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import ball_on_ramp_shot  # noqa: E402
 import bullets_shot  # noqa: E402
+import contact_shot  # noqa: E402
 import lab_run  # noqa: E402
 import more_shapes_shot  # noqa: E402
 import show_shot  # noqa: E402
@@ -26,6 +28,7 @@ def main():
     lab_run.screenshots()
     for module in (more_shapes_shot, ball_on_ramp_shot, sleeping_crates_shot, bullets_shot, show_shot):
         module.screenshot()
+    contact_shot.draw()
     return 0
 
 

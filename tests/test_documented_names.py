@@ -1,4 +1,4 @@
-"""What the README documents exists: every World setting in its table is a World attribute with the documented
+"""What the READMEs document exists (physics2d's page the World settings, the root README the panel's keys): every World setting in its table is a World attribute with the documented
 default, and every solver-panel key in its table is a key the panel handles. A renamed setting or a dropped key
 fails here, not in a student's window."""
 import os
@@ -14,13 +14,14 @@ from lesson11 import panel as lp  # noqa: E402
 from lesson11.physics2d import World  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-README = open(os.path.join(ROOT, "README.md"), encoding="utf-8").read()
+README = open(os.path.join(ROOT, "README.md"), encoding="utf-8").read()                       # the panel's keys
+PHYSICS2D = open(os.path.join(ROOT, "lesson11", "physics2d", "README.md"), encoding="utf-8").read()  # World settings
 KEY_NAMES = {"Up": pygame.K_UP, "Down": pygame.K_DOWN, "Left": pygame.K_LEFT, "Right": pygame.K_RIGHT}
 
 
-def table_after(heading):
-    """The rows (lists of cells) of the first table after the line that starts with `heading`."""
-    lines = README[README.index(heading):].splitlines()[1:]
+def table_after(heading, text=README):
+    """The rows (lists of cells) of the first table after the line that starts with `heading` in `text`."""
+    lines = text[text.index(heading):].splitlines()[1:]
     start = next(i for i, line in enumerate(lines) if line.startswith("|"))
     rows = []
     for line in lines[start + 2:]:
@@ -33,7 +34,7 @@ def table_after(heading):
 def documented_settings():
     """[(name, documented default text)] from the World settings table; `a`, `b` rows give one pair each."""
     pairs = []
-    for name_cell, default_cell, *_ in table_after("### World settings"):
+    for name_cell, default_cell, *_ in table_after("### World settings", PHYSICS2D):
         names = re.findall(r"`(\w+)`", name_cell)
         defaults = [d.strip() for d in default_cell.split(",")] if len(names) > 1 else [default_cell]
         pairs += list(zip(names, defaults))

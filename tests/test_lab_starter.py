@@ -123,18 +123,25 @@ def test_starter_regions_hold_no_solution_code(lab, step):
     assert comments and comments[0].startswith(f"# Step {step} "), "the region's comment names its step"
 
 
-def lesson_headings():
-    """The headings of the student's lesson, lesson11/README.md, without their #s."""
-    with open(os.path.join(ROOT, "lesson11", "README.md"), encoding="utf-8") as handle:
-        return {line.lstrip("#").strip() for line in handle if line.startswith("#")}
+def lesson_headings(lab=None):
+    """The headings of the student's lesson, lesson11/README.md, and of the lab's page, lesson11/labs/<lab>.md
+    (when it has one), without their #s."""
+    paths = [os.path.join(ROOT, "lesson11", "README.md"), os.path.join(ROOT, "lesson11", "labs", f"{lab}.md")]
+    headings = set()
+    for path in paths:
+        if os.path.exists(path):
+            with open(path, encoding="utf-8") as handle:
+                headings |= {line.lstrip("#").strip() for line in handle if line.startswith("#")}
+    return headings
 
 
 @pytest.mark.parametrize("lab", LABS)
 def test_step_comments_cite_sections_the_lesson_has(lab):
-    """Each step's comment names a heading of lesson11/README.md, as written there (not the seed's names)."""
+    """Each step's comment names a heading of lesson11/README.md or of the lab's page, as written there (not the
+    seed's names)."""
     _, starter, placeholders, _ = LABS[lab]
     regions = split_regions(starter)[1]
-    headings = lesson_headings()
+    headings = lesson_headings(lab)
     for step in placeholders:
         cited = re.findall(r'lesson: "([^"]+)"', " ".join(line.strip("# ") for line in regions[step]))
         assert cited, f"step {step}'s comment cites no section of the lesson"

@@ -1,4 +1,5 @@
-"""The terminal quiz: its five questions, and `python -m lesson11.quiz` driven through stdin."""
+"""The terminal quiz: its seven questions (two to compute or predict, their answers computed or measured here), and
+`python -m lesson11.quiz` driven through stdin."""
 import json
 import os
 import select
@@ -26,10 +27,13 @@ def wrong(letter):
     return "A" if letter != "A" else "B"
 
 
-def test_the_lessons_five_questions_with_answers_and_one_line_explanations():
-    assert len(QUESTIONS) == 5
+N = len(QUESTIONS)
+
+
+def test_the_lessons_seven_questions_with_answers_and_one_line_explanations():
+    assert N == 7
     topics = ["gap between their shadows", "flip the best axis", "cross(ra, n) ** 2 * a.inv_inertia",
-              "jt = max(-mu * j, min(mu * j, jt))", "3000 px/s bullet"]
+              "jt = max(-mu * j, min(mu * j, jt))", "3000 px/s bullet", "What is k?", "leave the flip out"]
     for item, topic in zip(QUESTIONS, topics):
         assert topic in item["question"]
         assert item["answer"] in "ABCD"
@@ -42,6 +46,36 @@ def test_the_lessons_five_questions_with_answers_and_one_line_explanations():
     assert "turns A instead of moving it" in QUESTIONS[2]["choices"][KEY[2]]
     assert "at most mu times the normal impulse" in QUESTIONS[3]["choices"][KEY[3]]
     assert "swept paths first touch" in QUESTIONS[4]["choices"][KEY[4]]
+
+
+def test_question_6_the_one_k_the_numbers_give_is_the_right_choice():
+    """The k of question 6 computed by physics2d from the question's numbers: only the right choice starts with it,
+    and each wrong choice is the number its stated mistake gives."""
+    from pygame import Vector2
+    from lesson11.physics2d import Body, box_points
+    from lesson11.physics2d.response import effective_mass_inverse
+    floor = Body(box_points(100, 20), (0, 40), 0)
+    crate = Body(box_points(60, 40), (0, 0), 2.4)
+    assert crate.inertia == 1040
+    rb, normal = Vector2(20, 30), Vector2(0, -1)
+    k = effective_mass_inverse(floor, crate, rb + crate.pos - floor.pos, rb, normal)
+    item = QUESTIONS[5]
+    starts = {letter: float(text.split(":")[0]) for letter, text in item["choices"].items()}
+    assert [letter for letter, value in starts.items() if abs(value - k) < 0.005] == [item["answer"]]
+    wrong = sorted(value for letter, value in starts.items() if letter != item["answer"])
+    assert wrong == pytest.approx(sorted([1 / 2.4, 1 / 2.4 + 30 ** 2 / 1040, 1 / 2.4 + 20 ** 2 * 1040]), abs=0.005, rel=1e-4)
+    assert "0.8013" in item["explanation"] and "299.5" in item["explanation"]
+
+
+def test_question_7_the_right_choice_is_the_hint_tables_row_and_no_other_is():
+    """Question 7's mistake is the Hint table's "normal_not_flipped" row (held by tests/test_symptoms.py): the
+    right choice names that row's symptom, and no wrong choice names it."""
+    from lesson11 import symptoms
+    row = next(r for r in symptoms.TABLE if r.key == "normal_not_flipped")
+    item = QUESTIONS[6]
+    named = {letter: symptoms.kinds_named(text) for letter, text in item["choices"].items()}
+    assert row.kind in named[item["answer"]] and "contacts" in item["choices"][item["answer"]]
+    assert all(row.kind not in kinds for letter, kinds in named.items() if letter != item["answer"])
 
 
 def test_no_wrong_choice_is_true_of_the_lesson():
@@ -79,11 +113,11 @@ def test_long_lines_fold_to_the_terminal(monkeypatch, capsys):
     assert any(line.startswith("     ") for line in lines)   # a choice's second line, under its text
 
 
-def test_all_right_scores_five():
+def test_all_right_scores_seven():
     result = run_quiz("\n".join(KEY) + "\n")
     assert result.returncode == 0 and result.stderr == ""
-    assert result.stdout.count("Right!") == 5
-    assert "Score: 5 of 5." in result.stdout
+    assert result.stdout.count("Right!") == N
+    assert f"Score: {N} of {N}." in result.stdout
 
 
 def test_wrong_answers_are_corrected_with_the_explanation():
@@ -94,7 +128,7 @@ def test_wrong_answers_are_corrected_with_the_explanation():
         said = " ".join(result.stdout.split())   # the text folded to the terminal's width, joined again
         assert f"Not quite: the answer is {item['answer']}. {item['explanation']}" in said
     assert "Right!" not in result.stdout
-    assert "Score: 0 of 5." in result.stdout
+    assert f"Score: 0 of {N}." in result.stdout
 
 
 def test_bad_input_is_asked_again_and_end_of_input_stops_cleanly():
@@ -103,15 +137,15 @@ def test_bad_input_is_asked_again_and_end_of_input_stops_cleanly():
     assert result.returncode == 0 and result.stderr == ""
     assert result.stdout.count("Please answer with one letter") == 3
     assert "'E'" in result.stdout and "'42'" in result.stdout
-    assert "Question 3 of 5" in result.stdout and "Question 4 of 5" not in result.stdout
+    assert f"Question 3 of {N}" in result.stdout and f"Question 4 of {N}" not in result.stdout
     assert "end of input" in result.stdout
-    assert "Score: 1 of 5 (3 not answered)." in result.stdout
+    assert f"Score: 1 of {N} ({N - 2} not answered)." in result.stdout
 
 
 def test_empty_input_ends_with_a_zero_score():
     result = run_quiz("")
     assert result.returncode == 0 and "Traceback" not in result.stderr
-    assert "Score: 0 of 5 (5 not answered)." in result.stdout
+    assert f"Score: 0 of {N} ({N} not answered)." in result.stdout
 
 
 def test_answer_key():
@@ -153,7 +187,7 @@ def test_run_quiz_in_process_counts_right_and_asked(capsys):
 
     assert quiz.run_quiz(QUESTIONS, ask) == (1, 2)
     out = capsys.readouterr().out
-    assert "Please answer" in out and "Score: 1 of 5 (3 not answered)." in out
+    assert "Please answer" in out and f"Score: 1 of {N} ({N - 2} not answered)." in out
 
 
 def test_score_is_out_of_all_questions_even_when_some_are_unanswered():
@@ -173,7 +207,7 @@ def test_ctrl_c_in_process_prints_the_score_so_far_and_main_exits_130(capsys, mo
     with pytest.raises(KeyboardInterrupt):
         quiz.run_quiz(QUESTIONS, ask)
     out = capsys.readouterr().out
-    assert out.rstrip().splitlines()[-1] == "Stopped (Ctrl-C). Score so far: 2 of 5 (3 not answered)."
+    assert out.rstrip().splitlines()[-1] == f"Stopped (Ctrl-C). Score so far: 2 of {N} ({N - 2} not answered)."
 
     def interrupted(questions):
         raise KeyboardInterrupt
@@ -214,11 +248,11 @@ def test_ctrl_c_at_the_prompt_is_a_clean_one_line_exit_with_the_score():
         proc.stdin.write((KEY[0] + "\n").encode())  # answer question 1 right, then wait at question 2
         proc.stdin.flush()
         before = read_until(proc.stdout, "Your answer (A-D): ", count=2)
-        assert "Question 2 of 5" in before and "Right!" in before
+        assert f"Question 2 of {N}" in before and "Right!" in before
         proc.send_signal(signal.SIGINT)
         out, err = proc.communicate(timeout=30)
     finally:
         proc.kill()
     assert proc.returncode == 130
     assert err == b"", err.decode()
-    assert out.decode().strip().splitlines() == ["Stopped (Ctrl-C). Score so far: 1 of 5 (4 not answered)."]
+    assert out.decode().strip().splitlines() == [f"Stopped (Ctrl-C). Score so far: 1 of {N} ({N - 1} not answered)."]

@@ -151,7 +151,8 @@ def test_checker_record_file_has_the_expected_keys(tmp_path):
     assert set(frame["touching"][0]) == {"a", "b", "point", "normal", "depth"}
     assert (frame["touching"][0]["a"], frame["touching"][0]["b"]) == (0, 1)
     body = frame["bodies"][1]
-    assert set(body) == {"static", "asleep", "pos", "vel", "angle", "omega", "points"}
+    assert set(body) == {"static", "asleep", "pos", "vel", "angle", "omega", "points", "color"}
+    assert body["color"] == list(world.bodies[1].color)   # the lab's own colour, for --show and --pictures
     assert body["static"] is False and len(body["points"]) == 4
     assert frame["bodies"][0]["static"] is True
 
@@ -272,3 +273,9 @@ def test_a_lab_window_prints_no_sound_errors_on_a_machine_without_sound(tmp_path
                           env=env, capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert "ALSA" not in done.stderr and "Simulated" in done.stdout
+
+
+def test_only_a_colour_the_lab_draws_with_is_recorded():
+    assert runtime._colour((200, 150, 90)) and runtime._colour([0, 0, 255])
+    for odd in ((300, 0, 0), (1.5, 2, 3), "red", (True, 0, 0), (1, 2), None):
+        assert not runtime._colour(odd), odd

@@ -3,13 +3,16 @@
 For every row, the row's mistake is made in solutions/<lab>.py by exact (old, new) edits (each old must fit
 once: tests/mutants.py), the file runs headless through the lab runtime (tests/lab_run.py, as the checker
 runs it) on the scene named here, and the symptom the row states is asserted with a measured bound. Scenes:
-  Tumbling Crates  the lab's own scene (seed 11, four crates, 3 s); a crate thrown along the floor (1.5 s)
+  Tumbling Crates  the lab's own scene (seed 11, four crates, 3 s); a dozen crates clicked into a pile (the
+                   student's window with clicks, 7.7 s); the checker's crate thrown along the floor (1.5 s),
+                   which `python -m checker FILE --show` shows
   More Shapes      one or two shapes (1.5 s): a house dropped flat, a hexagon pushed at 420 px/s, a
                    triangle falling past a box's corner
   Ball on the Ramp the checker's ramp, knock and inside scenes (checker/labs/ball_on_ramp/scenes.py)
   Sleeping Crates  the checker's scene (checker/labs/sleeping_crates/scenes.py, 1.5 s)
   Bullets          the lab's own scene, key 5 (CCD), twelve shots at 12000 px/s at the wall (1 s)
-The text, the hints and the table agree: lesson11/README.md's Hint section is the table's rendering, and no
+The text, the hints and the table agree: lesson11/README.md's Hint section and each lab page's (lesson11/labs/)
+are the table's rendering, and no
 checker hint names a symptom its lab's table does not have at the hint's step.
 """
 import math
@@ -32,6 +35,7 @@ def settings(frames, **extra):
 
 # ---------------------------------------------------------------- scenes
 OWN_SCENE = settings(180)
+PILE = None   # filled in below from lab_run.pile_settings (a dozen clicks over the floor, then settling)
 THROWN_CRATE = settings(90, scenario=[{"w": 60, "h": 40, "pos": [300, FLOOR_TOP - 20.25], "vel": [400, 0]}])
 HOUSE = settings(90, scenario=[{"kind": "house", "w": 56, "h": 44, "pos": [450, 490]}])
 PUSHED_HEXAGON = settings(90, scenario=[{"kind": "hexagon", "size": 28, "angle": math.pi / 3, "vel": [420, 0],
@@ -40,6 +44,22 @@ PAST_A_CORNER = settings(90, scenario=[{"kind": "box", "w": 60, "h": 60, "pos": 
                                        {"kind": "triangle", "size": 30, "pos": [492, 300], "angle": -math.pi / 2}])
 BULLETS = settings(60, script=[{"frame": 1, "type": "key", "key": "5"}] +
                    [{"frame": 3 + 4 * k, "type": "click", "pos": [700, 120 + 25 * k]} for k in range(12)])
+
+
+def pile_scene():
+    from lab_run import FPS, pile_settings
+    return dict(pile_settings(settle_frames=8 * FPS - 250), record_every=5)
+
+
+PILE = pile_scene()
+RAMP_CENTRE, RAMP_ANGLE, RAMP_HALF_THICKNESS = (230, 380), math.radians(22), 12   # px, rad, px
+
+
+def below_ramp_top(body):
+    """How far (px) the body's deepest corner lies below the ramp's top face (negative: above it)."""
+    up = (math.sin(RAMP_ANGLE), -math.cos(RAMP_ANGLE))           # the top face's outward normal
+    top = (RAMP_CENTRE[0] + RAMP_HALF_THICKNESS * up[0], RAMP_CENTRE[1] + RAMP_HALF_THICKNESS * up[1])
+    return max(-((p[0] - top[0]) * up[0] + (p[1] - top[1]) * up[1]) for p in body["points"])
 
 
 def ball_scene(name):
@@ -109,12 +129,67 @@ def tc_fall_through_with_contacts(r):
     last = dynamic(r.frames[-1])
     assert all(c["pos"][1] > 600 and math.hypot(*c["vel"]) > 2500 for c in last)   # measured 2940 px/s
     assert any(f["contacts"] for f in r.frames)
+    touching = [c for f in r.frames for c in f["touching"]]
+    assert touching and all(c["normal"][1] > 0.9 for c in touching)          # down, into the floor
 
 
 def tc_sink(r):
-    floor = [c for c in dynamic(r.frames[-1]) if c["pos"][1] > 450]        # the two that land on the floor
-    assert len(floor) == 2 and all(lowest(c) - FLOOR_TOP > 30 and c["pos"][1] < 600 for c in floor)  # 58, 55
+    last = dynamic(r.frames[-1])
+    floor = [c for c in last if c["pos"][1] > 450]                     # the two that land on the floor
+    sunk = sorted(lowest(c) - FLOOR_TOP for c in floor)
+    assert len(floor) == 2 and 30 < sunk[0] < 50 and 45 < sunk[1] < 65   # measured 39 and 55 px
     assert all(math.hypot(*c["vel"]) < 10 for c in floor)
+    ramp = [c for c in last if c["pos"][1] <= 450]                     # the two on the ramp: through it
+    assert len(ramp) == 2 and all(below_ramp_top(c) > 2 * RAMP_HALF_THICKNESS for c in ramp)   # 60, 46 px
+
+
+def lying_flat(body):
+    """Whether the body lies flat (within 2°) on the floor or on the 22° ramp."""
+    on_ramp = (math.degrees(body["angle"]) - 22) % 90
+    return min(flat_degrees(body), on_ramp, 90 - on_ramp) < 2
+
+
+def settled_like_the_solution(r):
+    """The own scene's end: every crate in the window, lying flat, at rest; the printed line says 0."""
+    last = dynamic(r.frames[-1])
+    assert not any(out_of_window(c) for c in last) and all(lying_flat(c) for c in last)
+    assert r.stdout.strip().endswith("fast movers now: 0")
+
+
+def tc_hang_in_thin_air(r):
+    first = [dynamic(f)[0] for f in r.frames]
+    struck = [k for k, c in enumerate(first) if -60 < below_ramp_top(c) < -30 and r.frames[k]["contacts"]]
+    assert struck                                           # a contact while 30-60 px above the ramp (43 px)
+    assert first[-1]["pos"][0] < 120 and below_ramp_top(first[-1]) < 2   # on the ramp near its high end (x 85)
+    assert math.hypot(*first[-1]["vel"]) < 5
+
+
+def tc_never_settles(r):
+    assert r.line is not None and r.line[2] >= 2                        # measured: fast movers now: 3
+    assert solution_run("tumbling_crates", PILE).line[2] == 0
+    own = run("tumbling_crates", CASES["flip_by_owner"][0], OWN_SCENE)
+    last = dynamic(own.frames[-1])
+    assert not any(out_of_window(c) for c in last) and all(lying_flat(c) for c in last)
+
+
+def tc_zero_division(r):
+    assert isinstance(r, str) and "ZeroDivisionError" in r
+
+
+def tc_looks_right_but_stops_dead_in_the_checkers_scene(r):
+    settled_like_the_solution(r)
+    tc_stop_dead(run("tumbling_crates", CASES["friction_unclamped"][0], THROWN_CRATE))
+
+
+def tc_spin_out(r):
+    assert max_spin(r.frames) > 200 and all(out_of_window(c) for c in dynamic(r.frames[-1]))   # 508 rad/s
+
+
+def tc_looks_right_but_a_pile_flies_apart(r):
+    settled_like_the_solution(r)
+    pile = run("tumbling_crates", CASES["spin_a_only"][0], PILE)
+    assert sum(out_of_window(c) for c in dynamic(pile.frames[-1])) >= 6   # measured 8 of 12
+    assert not any(out_of_window(c) for c in dynamic(solution_run("tumbling_crates", PILE).frames[-1]))
 
 
 def tc_thrown_out(r):
@@ -127,6 +202,7 @@ def tc_stop_dead(r):
     end = dynamic(r.frames[-1])[0]["pos"][0]
     sol = dynamic(solution_run("tumbling_crates", THROWN_CRATE).frames[-1])[0]["pos"][0]
     assert end - start < 40 and sol - start > 100                           # measured about 2 and 129 px
+    print(f"thrown crate: {end - start:.1f} px with the mistake, {sol - start:.1f} px in the finished lab")
 
 
 def tc_freeze_corner(r):
@@ -153,11 +229,15 @@ def ms_looks_right(r):
     assert math.dist(mine["pos"], sol["pos"]) < 3 and flat_degrees(mine) < 1
 
 
+def turned_in_all(frames):
+    """Degrees the first body turned over the run, every frame's turn added (rocking back and forth counts)."""
+    angles = [dynamic(frame)[0]["angle"] for frame in frames]
+    return math.degrees(sum(abs(b - a) for a, b in zip(angles, angles[1:])))
+
+
 def ms_hardly_turn(r):
-    turned = abs(dynamic(r.frames[-1])[0]["angle"] - dynamic(r.frames[0])[0]["angle"])
-    sol = solution_run("more_shapes", PUSHED_HEXAGON).frames
-    sol_turned = abs(dynamic(sol[-1])[0]["angle"] - dynamic(sol[0])[0]["angle"])
-    assert math.degrees(turned) < 90 < 180 < math.degrees(sol_turned)       # measured 52° and 256°
+    mine, sol = turned_in_all(r.frames), turned_in_all(solution_run("more_shapes", PUSHED_HEXAGON).frames)
+    assert 25 < mine < 50 and 180 < sol < 230                               # measured 35.9° and 205.2°
 
 
 def ms_hang(r):
@@ -238,12 +318,27 @@ def b_looks_right(r):
 CASES = {
     "sat_none": ([("    # --- step 2: the SAT loop ---\n", "    # --- step 2: the SAT loop ---\n    return None\n")],
                  OWN_SCENE, tc_fall_through_no_contacts),
+    "gap_continue": ([("            return None  # found a gap: not touching\n",
+                       "            continue  # found a gap: not touching\n")], OWN_SCENE, tc_hang_in_thin_air),
+    "flip_by_owner": ([("    for axis in edge_normals(pa) + edge_normals(pb):\n",
+                        "    for i, axis in enumerate(edge_normals(pa) + edge_normals(pb)):\n"),
+                       ("            best_axis, best_depth = axis, overlap\n",
+                        "            best_axis, best_depth, from_a = axis, overlap, i < len(pa)\n"),
+                       ("    if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:\n", "    if from_a:\n")],
+                      PILE, tc_never_settles),
+    "k_divides": ([("    k += ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia\n",
+                    "    k += ran * ran / a.inv_inertia + rbn * rbn / b.inv_inertia\n")], OWN_SCENE, tc_zero_division),
+    "clamp_swapped": ([("        jt = max(-mu * j, min(mu * j, jt))\n", "        jt = max(mu * j, min(-mu * j, jt))\n")],
+                      OWN_SCENE, tc_spin_out),
+    "spin_a_only": ([("    a.omega -= cross(ra, impulse) * a.inv_inertia\n", "    a.omega += cross(ra, impulse) * a.inv_inertia\n")],
+                    OWN_SCENE, tc_looks_right_but_a_pile_flies_apart),
     "normal_not_flipped": ([("    if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:\n        best_axis = -best_axis\n",
                              "")], OWN_SCENE, tc_fall_through_with_contacts),
     "flip_reversed": ([("    if (centre_of(pb) - centre_of(pa)).dot(best_axis) < 0:\n",
                         "    if (centre_of(pb) - centre_of(pa)).dot(best_axis) > 0:\n")], OWN_SCENE, tc_sink),
     "k_no_spin": ([("    k += ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia\n", "")], OWN_SCENE, tc_thrown_out),
-    "friction_unclamped": ([("        jt = max(-mu * j, min(mu * j, jt))\n", "")], THROWN_CRATE, tc_stop_dead),
+    "friction_unclamped": ([("        jt = max(-mu * j, min(mu * j, jt))\n", "")], OWN_SCENE,
+                           tc_looks_right_but_stops_dead_in_the_checkers_scene),
     "friction_flipped": ([("        jt = max(-mu * j, min(mu * j, jt))\n", "        jt = -max(-mu * j, min(mu * j, jt))\n")],
                          OWN_SCENE, tc_thrown_out),
     "spin_missing": ([("    a.omega -= cross(ra, impulse) * a.inv_inertia\n    b.omega += cross(rb, impulse) * b.inv_inertia\n",
@@ -325,7 +420,7 @@ def case_of(row):
 def test_the_window_shows_what_the_table_says(row):
     edits, scene, check = case_of(row)
     result = run(row.lab, edits, scene)
-    if check is not ms_crash:
+    if check not in (ms_crash, tc_zero_division):
         assert not isinstance(result, str), f"{row.lab} {row.key}: the lab stopped:\n{result}"
     check(result)
 
@@ -340,10 +435,14 @@ def test_every_case_has_a_row_and_every_lab_step_a_row():
     assert all(symptoms.kinds_named(row.shows) >= {row.kind} for row in symptoms.TABLE)
 
 
-def test_the_lessons_hint_section_is_the_table():
+def test_the_lessons_and_the_lab_pages_hint_tables_are_the_table():
+    """The lesson's Hint section is the Tumbling Crates table; each Going Further lab's page has its own."""
     with open(os.path.join(ROOT, "lesson11", "README.md"), encoding="utf-8") as handle:
-        text = handle.read()
-    assert symptoms.hint_section() in text
+        assert symptoms.markdown("tumbling_crates") in handle.read()
+    for lab in symptoms.LABS:
+        if lab != "tumbling_crates":
+            with open(os.path.join(ROOT, "lesson11", "labs", lab + ".md"), encoding="utf-8") as handle:
+                assert symptoms.markdown(lab) in handle.read(), lab
 
 
 def hints():

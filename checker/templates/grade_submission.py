@@ -89,7 +89,7 @@ def run_as(config):
 
 def read_picture(path, folder):
     """The PNG bytes at path when it is a regular file inside folder, a PNG, not too big; else None.
-    (The folder is writable by the user the student's code runs as: nothing else is read from there.)"""
+    (The folder is the grader's own; a link or another file is still never read from it.)"""
     try:
         real = os.path.realpath(path)
         if os.path.commonpath([real, os.path.realpath(folder)]) != os.path.realpath(folder):
@@ -162,13 +162,10 @@ def run_checker(path, config):
         user = run_as(config)
         pictures = None
         if config.get("pictures", True):
-            try:
+            try:   # the grader's own folder (mode 700): the student's user cannot plant a link in it, and the
+                # checker writes each picture there with no-follow, exclusive opens (checker/outputs.py)
                 pictures = tempfile.mkdtemp(prefix="pictures-", dir=work)
-                if user:
-                    shutil.chown(pictures, user)
-                else:
-                    os.chmod(pictures, 0o755)
-            except (OSError, LookupError) as exc:
+            except OSError as exc:
                 print(f"grade_submission: no pictures ({exc})", file=sys.stderr)
                 pictures = None
         attempts = [pictures, None] if pictures else [None]
@@ -328,12 +325,22 @@ def fallback(platform, message):
 
 
 def write_json(path, document):
+    """Write the results file through a new temporary file beside it (created exclusively, never through a link)
+    renamed over it: a link at `path` is replaced, not followed."""
     os.makedirs(os.path.dirname(path), exist_ok=True)
-    temp = path + ".tmp"
-    with open(temp, "w", encoding="utf-8") as handle:
-        json.dump(document, handle, indent=2)
-        handle.write("\n")
-    os.replace(temp, path)
+    fd, temp = tempfile.mkstemp(prefix=".results-", suffix=".tmp", dir=os.path.dirname(path))
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            json.dump(document, handle, indent=2)
+            handle.write("\n")
+        os.chmod(temp, 0o644)
+        os.replace(temp, path)
+    except BaseException:
+        try:
+            os.unlink(temp)
+        except OSError:
+            pass
+        raise
 
 
 def main(argv):

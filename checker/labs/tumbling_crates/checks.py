@@ -69,12 +69,10 @@ HINTS = {
                       "Vector2 first, the overlap in px second (the handout's last line returns best_axis, "
                       "best_depth)."),
     "normal_flipped": Hint(3, "the normal must point from A to B",
-                           "An edge normal (-e.y, e.x) of a crate or of the floor points INTO its polygon (the "
-                           "corners run clockwise on screen), so without the flip the normal is wrong exactly when "
-                           "the axis is A's: every floor contact (the floor is body 0), and the crates fall through "
-                           "the floor. With the test the wrong way round they sink into it instead. Check the dot "
-                           "product of the axis with center_b - center_a: when it is negative, turn the axis round "
-                           "(the axis, not the depth)."),
+                           "The axis may point either way, whichever body's edge gave it (each axis comes from two "
+                           "opposite edges and the first is kept). Turn it round when its dot product with the vector "
+                           "from A's centre to B's is negative: the axis, not the depth. Without the flip the "
+                           "crates fall through the floor; with the test reversed they sink into it."),
     "k_spin": Hint(4, "the spin terms of the effective mass",
                    "A corner hit should feel lighter: k needs both spin terms, (ra × n)² / I_A and (rb × n)² / "
                    "I_B, beside the two inverse masses, or the impulse is too big for a hit at a corner: corner "
