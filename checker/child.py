@@ -251,7 +251,7 @@ def run_probe(module, lab_path, probes, seconds, settings):
     result = {"tapes": {}, "constants": constants_of(module),
               "missing": [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]}
     recorder = tape.Recorder(module, settings.get("steps") or (), settings.get("splices"), lab_path,
-                             settings.get("seed", 0))
+                             settings.get("seed", 0), constants=settings.get("constants"))
     for name, (function, probe) in probes.PROBES.items():
         if not callable(getattr(module, function, None)):
             continue

@@ -23,11 +23,11 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field
 
-from . import handout, probing, source, step_rules
+from . import budget, handout, probing, source, step_rules
 from .checks import ERROR, FAIL, PASS, skipped_all
 from .common import checked_result
 from .lab_checks import record_problem
-from .sandbox import Limits, run_child
+from .sandbox import Limits, run_child, wall_limit
 
 
 @dataclass
@@ -227,17 +227,28 @@ class Grader:
         if sub.probe is None:
             return LabReport(given, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start,
                              seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
-        if sub.probe.status == "done":   # the verdicts' data: the child's tapes replayed and judged here
-            sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
-        state = lab.checks.run(sub, stop_at_scenarios=True)
+        try:   # the grader's own work on what the child reported runs under a budget (checker/budget.py)
+            with self._budget():
+                if sub.probe.status == "done":   # the verdicts' data: the child's tapes replayed and judged here
+                    sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
+                state = lab.checks.run(sub, stop_at_scenarios=True)
+        except budget.Exhausted as exc:
+            return LabReport(given, lab, skipped_all(lab.checks, exc.message()), time.monotonic() - start,
+                             seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
         if lab.checks.wants_scenarios(state):
             sub.scenarios = self._scenes(runs, lab)
             if sub.edits_not_run and not self._same_scenes(sub.scenarios, self._scenes(path, lab)):
                 # the edited constant changes what the scenes show (MAX_CRATES = 4: clicks drop nothing): an edit
                 # that fails handout_unchanged, and the scenes wait for it, as for any other edit
                 sub.edits_not_run, sub.scenarios = [], {}
-                state = lab.checks.run(sub, stop_at_scenarios=True, state=None)
-        results = lab.checks.run(sub, state=state).ordered(lab.checks)
+                state = None
+        try:   # the checks on the scenes' records, under the budget too
+            with self._budget():
+                if state is None:
+                    state = lab.checks.run(sub, stop_at_scenarios=True, state=None)
+                results = lab.checks.run(sub, state=state).ordered(lab.checks)
+        except budget.Exhausted as exc:
+            results = skipped_all(lab.checks, exc.message())
         with open(path, "rb") as handle:
             if hashlib.sha256(handle.read()).hexdigest() != digest:
                 results = skipped_all(lab.checks, f"{sub.name} changed while it was being graded; grade it again.")
@@ -295,6 +306,13 @@ class Grader:
         by_id = {r.id: r for r in results}
         loaded = by_id.get("loads") is None or by_id["loads"].status == PASS
         return loaded and any(r.status in (FAIL, ERROR) for r in results)
+
+    def _budget(self):
+        """The budget of the grader's own work on one file's runs: a run's CPU seconds (--timeout), its wall-clock
+        limit and the whole run's deadline (--total-timeout), whichever comes first."""
+        deadline = time.monotonic() + wall_limit(self.limits)
+        return budget.Budget(cpu=self.limits.timeout,
+                             deadline=deadline if self.deadline is None else min(deadline, self.deadline))
 
     def _late_message(self):
         return f"not graded: the time limit for the whole run ({self.total_timeout:g} s) ran out first."

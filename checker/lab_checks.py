@@ -164,6 +164,11 @@ def function_data(sub, functions, probe, function, step, crash_hint):
     entry = functions.get(probe)
     if entry is None:
         raise Error(f"{sub.name} defines no {function}().", crash_hint)
+    for constant, (handout, now) in sorted(((entry.get("changed_constants") or {}).get(function) or {}).items()):
+        raise Fail(f"{function}() sets the handout's constant {constant} to {now} while it runs (the handout's: "
+                   f"{handout}); the checker grades with the handout's constants.",
+                   Hint(step, "the handout's constants", f"Read {constant} and the other constants at the top of "
+                        "the file as they are: no `global` and no assignment to them inside a step."))
     if not entry["ok"] and entry["error"].get("kind") == "value":   # tape.StudentValue: a body's motion's kind
         raise Error(describe_function_error(function, entry["error"], sub.name),
                     Hint(step, f"what {function}() leaves in a body", "A body's pos and vel are Vector2s, its "

@@ -14,11 +14,13 @@ import ast
 import importlib
 import secrets
 
-from . import tape
+from . import budget, tape
 from . import source as source_text
+from .common import value_text
 from .handout import MarkerError, step_regions
 
 _STARTERS = {}   # starter path -> (its compiled code, its step functions)
+_CONSTANTS = {}  # starter path -> its constants (handout_constants)
 MAX_TAPE = 200_000   # entries on one probe's tape the grader replays at most (the solutions' longest: about 2000)
 
 
@@ -89,8 +91,25 @@ def splice_source(mine, theirs, function, steps):
     return {"first": first, "text": "\n".join(lines[first:last]) + "\n"}
 
 
+def handout_namespace(lab):
+    """A fresh namespace of the lab's starter, run as a module (its main() never called): the handout."""
+    namespace = {"__name__": "lab_handout", "__builtins__": __builtins__}
+    exec(_starter(lab.starter)[0], namespace)
+    return namespace
+
+
+def handout_constants(lab):
+    """{name: value} of the starter's top-level constants (numbers, text, tuples of them): the values the
+    probes read, in the grader and, sent with the settings, in the child. Never the child's."""
+    if lab.starter not in _CONSTANTS:
+        _CONSTANTS[lab.starter] = {name: value for name, value in handout_namespace(lab).items()
+                                   if not name.startswith("_") and tape.plain(value)}
+    return dict(_CONSTANTS[lab.starter])
+
+
 def settings_for(lab, source, seed=None):
-    """The probe run's settings: the probe module, the step functions, the splices and the run's seed."""
+    """The probe run's settings: the probe module, the step functions, the splices, the handout's constants and
+    the run's seed."""
     probes = importlib.import_module(lab.probes)
     steps = _starter(lab.starter)[1]
     splices = {}
@@ -102,13 +121,47 @@ def settings_for(lab, source, seed=None):
         spliced = splice_source(source, theirs, function, wanted)
         if spliced:
             splices[tape.splice_name(function, wanted)] = spliced
-    return {"probes": lab.probes, "steps": steps, "splices": splices,
+    constants = {name: tape.encode(value, tape.Seen()) for name, value in handout_constants(lab).items()}
+    return {"probes": lab.probes, "steps": steps, "splices": splices, "constants": constants,
             "seed": secrets.randbelow(2 ** 31) if seed is None else seed}
+
+
+def _shown(value):
+    """A constant's value as the tape carries it, for a message: its repr, cut short."""
+    if value == tape.MISSING_VALUE:
+        return "nothing (deleted)"
+    try:
+        return value_text(tape.decode(value, tape.Seen()))
+    except Exception:  # noqa: BLE001 - a forged value the tape's format does not describe
+        return "a value the tape cannot carry"
 
 
 def _error(message, kind="exception"):
     """An error record as the child writes one; kind "report": the grader's own account of what the child reported."""
     return {"kind": kind, "message": message, "line": None, "text": None, "traceback": ""}
+
+
+def _replayed(replay, probe, function, path, child_error, pure):
+    """The judged entry of one probe: its tape replayed through probe(replay, path) here."""
+    try:
+        data = probe(replay, path)
+    except (tape.StudentRaised, tape.TapeEnded) as exc:
+        return {"ok": False, "error": child_error or _error(
+            f"{function}() stopped in the child, but the child gave no account of the error ({exc})", "report")}
+    except tape.StudentValue as exc:   # the function left a body's vel or omega of the wrong kind
+        return {"ok": False, "error": _error(str(exc), "value")}
+    except tape.TapeMismatch as exc:
+        return {"ok": False, "error": _error(
+            f"the checker could not replay what {function}() did ({exc}): the code outside the steps "
+            "does not behave like the handout's, or the child's report was changed", "report")}
+    except Exception as exc:  # noqa: BLE001 - the probe's own code failed on what the function returned
+        return {"ok": False, "error": child_error or _error(f"{type(exc).__name__}: {exc}")}
+    if child_error is not None:
+        return {"ok": False, "error": child_error}
+    if not replay.finished():
+        return {"ok": False, "error": _error(
+            f"the child reported more calls of {function}() than the checker's probe makes", "report")}
+    return {"ok": True, "data": data, "changed_arguments": replay.changed(pure), "changed_fields": replay.tampered()}
 
 
 def judge(lab, path, settings, child):
@@ -126,11 +179,27 @@ def judge(lab, path, settings, child):
         return {"missing": [], "functions": {name: {"ok": False, "error": _error(
             "the probe's result is not in the checker's format (the file's code changed what the child reports)")}
             for name in probes.PROBES}}
-    steps = settings["steps"]
     pure = set(getattr(probes, "PURE", ()))   # step functions that must leave their arguments as they got them
-    namespace = {"__name__": "lab_handout", "__builtins__": __builtins__}
-    exec(_starter(lab.starter)[0], namespace)
-    functions = {}
+    namespace = handout_namespace(lab)   # its constants are the ones the replay reads, never the child's
+    handout = handout_constants(lab)
+    functions, changed = {}, {}   # changed: step function -> {handout constant: the value it set}
+    try:
+        _judge_all(probes, tapes, namespace, handout, settings, path, pure, functions, changed)
+    except budget.Exhausted as exc:   # name what the file's steps changed, in the one error row (grade.py)
+        exc.notes += [f"{changer}() set {', '.join(f'{c} to {now}' for c, (_, now) in sorted(values.items()))}"
+                      for changer, values in sorted(_named(changed, handout).items())]
+        raise
+    # constants a step changed at run time fail that step wherever it was seen (lab_checks.function_data)
+    named = _named(changed, handout)
+    for entry in functions.values():
+        entry["changed_constants"] = named
+    return {"missing": [str(m) for m in missing], "functions": functions}
+
+
+def _judge_all(probes, tapes, namespace, handout, settings, path, pure, functions, changed):
+    """Replay each probe's tape (judge): fills `functions` {probe: entry} and `changed` {function: {constant:
+    value}}."""
+    steps = settings["steps"]
     for name, (function, probe) in probes.PROBES.items():
         record = tapes.get(name)
         if not isinstance(record, dict) or not isinstance(record.get("tape"), list):
@@ -141,30 +210,25 @@ def judge(lab, path, settings, child):
                 f"the child reported {len(record['tape'])} calls for the probe of {function}(), more than the "
                 f"checker's probe makes (at most {MAX_TAPE}): the child's report was changed", "report")}
             continue
+        for changer, values in tape.changed_constants(record["tape"], handout).items():
+            for constant, value in values.items():
+                changed.setdefault(changer, {}).setdefault(constant, value)
+        replay = tape.Replayer(namespace, steps, record["tape"], settings.get("seed", 0))
         try:
-            replay = tape.Replayer(namespace, steps, record["tape"], constants, settings.get("seed", 0))
-            data = probe(replay, path)
-        except (tape.StudentRaised, tape.TapeEnded) as exc:
-            functions[name] = {"ok": False, "error": child_error or _error(
-                f"{function}() stopped in the child, but the child gave no account of the error ({exc})", "report")}
-            continue
-        except tape.StudentValue as exc:   # the function left a body's vel or omega of the wrong kind
-            functions[name] = {"ok": False, "error": _error(str(exc), "value")}
-            continue
-        except tape.TapeMismatch as exc:
-            functions[name] = {"ok": False, "error": _error(
-                f"the checker could not replay what {function}() did ({exc}): the code outside the steps "
-                "does not behave like the handout's, or the child's report was changed", "report")}
-            continue
-        except Exception as exc:  # noqa: BLE001 - the probe's own code failed on what the function returned
-            functions[name] = {"ok": False, "error": child_error or _error(f"{type(exc).__name__}: {exc}")}
-            continue
-        if child_error is not None:
-            functions[name] = {"ok": False, "error": child_error}
-        elif not replay.finished():
-            functions[name] = {"ok": False, "error": _error(
-                f"the child reported more calls of {function}() than the checker's probe makes", "report")}
-        else:
-            functions[name] = {"ok": True, "data": data, "changed_arguments": replay.changed(pure),
-                               "changed_fields": replay.tampered()}
-    return {"missing": [str(m) for m in missing], "functions": functions}
+            functions[name] = _replayed(replay, probe, function, path, child_error, pure)
+        except budget.Exhausted as exc:
+            exc.what += f", replaying the probe of {function}()"
+            raise
+        finally:
+            for constant, value in replay.read_constants().items():   # the child's probe read another value
+                changed.setdefault(function, {}).setdefault(constant, value)
+
+
+def _named(changed, handout):
+    """{step function: {constant: [the handout's value, the value it set], as text}} from judge's `changed`."""
+    named = {}
+    for changer, values in sorted(changed.items()):
+        for constant, value in sorted(values.items()):   # a splice's calls ("sat:3") are its function's
+            named.setdefault(changer.split(":")[0], {}).setdefault(
+                constant, [value_text(handout[constant]), _shown(value)])
+    return named

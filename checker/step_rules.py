@@ -21,6 +21,9 @@ syntax tree (never running it) and flags what reaches around the exercise:
             statistics as a value (their attributes reach further)
   format    a str.format / format_map template whose field reads an attribute or item (`"{0.gi_frame}"`,
             `"{0[k]}"`), or one that is not written out as a literal (it could be built to do so)
+  keep      an attribute or item stored on (or deleted from) a module-level name (`Body.kept = sat`), or a
+            module-level name declared `global`: state that outlives the call (a spliced function kept for
+            the next step, a handout constant changed while the probes run)
   library   the library function the step asks the student to write (the lab's STEP_LIBRARY:
             {step: names}): called or taken by its imported name, or as an attribute
             (`world.sat(...)`, `f = Circle(r).inertia`, `case object(sat=f)`), unless the lab allows it
@@ -247,6 +250,39 @@ def _step_import_is_free(node):
                                                                   for alias in node.names)
 
 
+def _top_level_names(tree):
+    """The names the file's top-level statements bind (defs, classes, assignments, imports): the handout's names."""
+    names = set()
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            names.add(node.name)
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            names.update((alias.asname or alias.name).split(".")[0] for alias in node.names)
+        elif isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign)):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            names.update(n.id for target in targets for n in ast.walk(target) if isinstance(n, ast.Name))
+    return names
+
+
+def _kept(node, origins):
+    """What an attribute or item store (or del) on a module-level name does (`Body.kept = sat`), or None.
+
+    Such a store outlives the call: a step 2 that keeps the function it runs in on a handout class lets
+    step 3 call the grader's spliced copy of it later.
+    """
+    if not isinstance(node, (ast.Attribute, ast.Subscript)) or isinstance(node.ctx, ast.Load):
+        return None
+    root = node.value
+    while isinstance(root, (ast.Attribute, ast.Subscript)):
+        root = root.value
+    if not isinstance(root, ast.Name) or origins.get(id(root)) not in ("code", "import"):
+        return None
+    what = f".{node.attr}" if isinstance(node, ast.Attribute) else "an item"
+    verb = "deletes" if isinstance(node.ctx, ast.Del) else "stores"
+    return (f"{verb} {what} on the file's {root.id} (a step keeps nothing on the handout's names: it outlives the "
+            "call)")
+
+
 def _format_breach(node):
     """What a `.format` / `.format_map` attribute does wrong, or None (a literal template reading no attribute)."""
     template = node.value
@@ -303,11 +339,18 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
         if step is not None and (line, rule, step) not in found:
             found[(line, rule, step)] = Breach(step, line, rule, what, lines[line - 1].strip())
 
+    top = _top_level_names(tree)
     for node in ast.walk(tree):
         if getattr(node, "lineno", None) is None or step_of(node.lineno) is None:
             continue
         step = step_of(node.lineno)
         names = library.get(step, ())
+        kept = _kept(node, origins)
+        if kept:
+            flag(node, "keep", kept)
+        if isinstance(node, ast.Global) and set(node.names) & top:
+            flag(node, "keep", f"declares the file's {sorted(set(node.names) & top)[0]} global (a step reads the "
+                               "handout's names, it never rebinds them)")
         if isinstance(node, (ast.Import, ast.ImportFrom)) and not _step_import_is_free(node):
             listed = ", ".join(alias.name for alias in node.names)
             flag(node, "import", f"imports {listed}" + (f" from {node.module}" if getattr(node, "module", None)

@@ -18,7 +18,11 @@ changed arguments, calls of the hooks - is exactly what a student's function
 is able to do anyway. A hook event may name only a function the probe put in
 the student's place in this probe (never another name of the handout, such as
 main); a call that changes a body's mass, inertia, material or shape (FROZEN)
-is noted (Replayer.tampered) and fails its check with the field named.
+is noted (Replayer.tampered) and fails its check with the field named. The
+constants a probe reads are the handout's in the parent, whatever the tape
+says: the child's reading only keeps the tape in step, and a reading that
+differs (Replayer.read_constants), or a call the child saw change a handout
+constant (`consts` on its entry, changed_constants), fails that step, named.
 
 The probes keep the child free of answers too: a helper that computes a
 reference is marked @reference and raises if called while a Recorder runs a
@@ -312,8 +316,11 @@ class Recorder:
     the outer call), except calls of a hook, which are recorded as events of the outer call.
     """
 
-    def __init__(self, module, steps, splices=None, lab_path="", seed=0, clock=time.process_time):
+    def __init__(self, module, steps, splices=None, lab_path="", seed=0, clock=time.process_time, constants=None):
         object.__setattr__(self, "_module", module)
+        # the handout's constants (the grader sends them): set before each probe, watched around each call
+        object.__setattr__(self, "_constants", {str(name): decode(value, Seen())
+                                                for name, value in dict(constants or {}).items()})
         object.__setattr__(self, "_splices", dict(splices or {}))
         object.__setattr__(self, "_lab_path", lab_path)
         object.__setattr__(self, "seed", seed)
@@ -374,7 +381,12 @@ class Recorder:
         return self._recording(name, spliced) if callable(spliced) else None
 
     def run(self, probe, lab_path):
-        """probe(self, lab_path) as the child runs it: no reference helper may run meanwhile (`reference`)."""
+        """probe(self, lab_path) as the child runs it: no reference helper may run meanwhile (`reference`).
+
+        The module's constants are the handout's again first: a probe sees the handout's numbers whatever
+        the file (or a step run in an earlier probe) set them to.
+        """
+        self._module.__dict__.update(self._constants)
         _IN_CHILD[0] = True
         try:
             return probe(self, lab_path)
@@ -397,6 +409,18 @@ class Recorder:
 
     def _recording(self, name, func):
         depth, current, tape = self._depth, self._current, self._tape
+        namespace, watched = self._module.__dict__, tuple(self._constants)
+
+        def constants_after(entry, before):
+            """Note on the call's entry each handout constant the call left changed (`consts`: name -> value)."""
+            changed = {}
+            for constant, old in zip(watched, before):
+                new = namespace.get(constant, _MISSING)
+                if new is not old and (new is _MISSING or old is _MISSING or
+                                       key(encode(new, Seen())) != key(encode(old, Seen()))):
+                    changed[constant] = MISSING_VALUE if new is _MISSING else encode(new, Seen())
+            if changed:
+                entry["consts"] = changed
 
         def recorded(*args, **kwargs):
             if depth[0] > 0:
@@ -411,14 +435,17 @@ class Recorder:
             entry["args"] = digest(before)
             tape.append(entry)
             depth[0], current[0] = 1, (entry, arguments)
+            constants = [namespace.get(constant, _MISSING) for constant in watched]
             try:
                 value = func(*args, **kwargs)
             except BaseException:
                 depth[0], current[0] = 0, None
                 entry["post"] = _changed(before, encode(arguments, Seen()))
                 entry["raised"] = True
+                constants_after(entry, constants)
                 raise
             depth[0], current[0] = 0, None
+            constants_after(entry, constants)
             seen = Seen()
             entry["post"] = _changed(before, encode(arguments, seen))
             entry["ret"] = encode(value, seen)
@@ -450,6 +477,7 @@ class Recorder:
 
 
 _MISSING = object()
+MISSING_VALUE = {"o": "missing", "repr": "(deleted)"}   # a constant a call deleted, as the tape says so
 
 
 def _changed(before, after):
@@ -462,6 +490,9 @@ def _plain(value):
     if value is None or isinstance(value, (bool, str, numbers.Real)):
         return True
     return isinstance(value, tuple) and all(_plain(item) for item in value)
+
+
+plain = _plain
 
 
 def mark_error(entry_error, tape):
@@ -478,7 +509,7 @@ class Replayer:
     each step function in it is replaced by a replay of the tape, in order.
     """
 
-    def __init__(self, namespace, steps, tape, constants=None, seed=0):
+    def __init__(self, namespace, steps, tape, seed=0):
         object.__setattr__(self, "_ns", namespace)
         object.__setattr__(self, "seed", seed)
         object.__setattr__(self, "_tape", list(tape))
@@ -486,13 +517,11 @@ class Replayer:
         object.__setattr__(self, "_saved", {})
         object.__setattr__(self, "_hooks", {})       # name -> the function this probe put in the student's place
         object.__setattr__(self, "_tampered", {})    # step function -> body fields it changed (FROZEN)
+        object.__setattr__(self, "_read", {})        # handout constant -> the other value the child's probe read
         replays = {}
         for name in steps:
             replays[name] = self._replay(name)
             namespace[name] = replays[name]
-        for name, value in (constants or {}).items():
-            if name in namespace and _plain(namespace[name]):
-                namespace[name] = decode(value, Seen())
         object.__setattr__(self, "_replays", replays)
 
     def _next(self, kind, name=None):
@@ -511,13 +540,15 @@ class Replayer:
         if name in self._replays:
             return ns.get(name, self._replays[name])
         if name not in ns or _plain(ns[name]):
+            # a constant: always the handout's value (or missing, as in the handout); the child's reading only
+            # keeps the tape in step, and one that differs is noted (read_constants) and fails the probe's step
             entry = self._next("const", name)
-            if entry.get("missing"):
+            if name not in ns:
                 raise AttributeError(name)
-            value = decode(entry.get("value"), Seen())
-            if not _plain(value):
-                raise TapeMismatch(f"the tape's constant {name} is not a number or text")
-            return value
+            told = MISSING_VALUE if entry.get("missing") else entry.get("value")
+            if key(told) != key(encode(ns[name], Seen())):
+                self._read.setdefault(name, told)
+            return ns[name]
         return ns[name]
 
     def __setattr__(self, name, value):
@@ -551,6 +582,10 @@ class Replayer:
     def tampered(self):
         """{step function: [the body fields (FROZEN) it changed in some replayed call]}, sorted."""
         return {name: sorted(fields) for name, fields in sorted(self._tampered.items())}
+
+    def read_constants(self):
+        """{handout constant: the encoded value the child's probe read instead of the handout's}."""
+        return dict(self._read)
 
     def finished(self):
         """True when the probe used the whole tape (a longer tape was made for other inputs)."""
@@ -604,6 +639,20 @@ class Replayer:
                    if before[field] != now[field]}
         if changed:
             self._tampered.setdefault(name, set()).update(changed)
+
+
+def changed_constants(tape, handout):
+    """{step function: {constant: encoded value}}: the handout constants (`handout`: {name: value}) that a call on
+    `tape` left changed, as the child's recorder saw it (Recorder: `consts`). An observation that can only fail
+    the file: the grader's own replay reads the handout's values whatever the tape says."""
+    out = {}
+    for entry in tape:
+        consts = entry.get("consts") if isinstance(entry, dict) and entry.get("k") == "call" else None
+        if isinstance(consts, dict) and isinstance(entry.get("fn"), str):
+            for name, value in consts.items():
+                if name in handout and key(value) != key(encode(handout[name], Seen())):
+                    out.setdefault(entry["fn"], {}).setdefault(name, value)
+    return out
 
 
 # what a step function may never change on a body it is given: the body's mass, inertia, material and shape

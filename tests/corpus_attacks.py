@@ -98,6 +98,7 @@ for _path in (TESTS, ROOT):
     if _path not in sys.path:
         sys.path.insert(0, _path)
 
+import corpus_attacks_judge  # noqa: E402  (issue 39's entries on the judging)
 import corpus_ball_on_ramp  # noqa: E402  (each lab's STARTER, SOLUTION, STEPS, CHECK_STEP, FUNCTION_CHECKS)
 import corpus_bullets  # noqa: E402
 import corpus_more_shapes  # noqa: E402
@@ -134,6 +135,7 @@ class Entry(NamedTuple):
     message: str = ""         # text the first target check's message must hold (the issue's stated outcome)
     extra_text: tuple = ()    # ((old, new), ...) replacements in the built file's text after the edits (bytes-exact
                               # attacks the handout's own parser may not read alike: mechanisms 1 and 2)
+    honest_keeps: tuple = ()  # steps the honest file keeps as the solution writes them (the work beside the attack)
 
 
 def _code(text):
@@ -1313,7 +1315,11 @@ MECHANISMS_BY_LAB = {"tumbling_crates": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10), "more_s
                      "sleeping_crates": (1, 2, 5, 6, 7, 8, 10)}
 
 
-ENTRIES = TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING + FIRST_ROUND + ISSUE35
+# issue 39's attacks on the judging (items 2-4): tests/corpus_attacks_judge.py
+ISSUE39_JUDGE = corpus_attacks_judge.entries(attack)
+MECHANISM_KINDS += corpus_attacks_judge.KINDS
+
+ENTRIES = TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING + FIRST_ROUND + ISSUE35 + ISSUE39_JUDGE
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
 BY_LAB = {lab: [entry for entry in ENTRIES if entry.lab == lab] for lab in LABS}
@@ -1327,7 +1333,7 @@ def honest(entry):
     What it contains of honest work is then exactly what this file earns (the solution's code in the other steps).
     """
     undone = starter_steps(entry.lab)
-    steps = {step: undone[step] if step in entry.steps else code
+    steps = {step: undone[step] if step in entry.steps and step not in entry.honest_keeps else code
              for step, code in FILES_SOLUTION_STEPS[entry.lab].items()}
     return Entry(entry.name + "__honest", entry.lab, "honest", steps, None, f"{entry.name} without its attack")
 

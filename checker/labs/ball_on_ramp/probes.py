@@ -558,13 +558,14 @@ SPLICES = (("circle_polygon", (3,)),)
 # fails one that changes them in place, whatever it returns: checker/lab_checks.function_data)
 PURE = ("closest_on_segment", "circle_polygon", "disc_inertia", "contact_point")
 
-# probe name -> (the lab function it needs, the probe)
+# probe name -> (the lab function it needs, the probe); the spliced probe (circle_outside) runs last, so nothing it
+# leaves (a step 2 that keeps the spliced circle_polygon somewhere) reaches a graded call of the student's own functions
 PROBES = {
     "closest_on_segment": ("closest_on_segment", probe_closest),
-    "circle_outside": ("circle_polygon", probe_circle_outside),
     "circle_inside": ("circle_polygon", probe_circle_inside),
     "separate": ("separate", probe_separate),
     "disc_inertia": ("disc_inertia", probe_inertia),
     "contact_point": ("contact_point", probe_contact),
     "resolve": ("resolve", probe_resolve),
+    "circle_outside": ("circle_polygon", probe_circle_outside),
 }

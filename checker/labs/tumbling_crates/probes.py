@@ -394,6 +394,7 @@ SPLICES = (("sat", (3,)),)
 # fails one that changes them in place, whatever it returns: checker/lab_checks.function_data)
 PURE = ("sat",)
 
-# probe name -> (the lab function it needs, the probe)
-PROBES = {"sat_step2": ("sat", probe_sat_step2), "sat": ("sat", probe_sat),
-          "apply_impulse": ("apply_impulse", probe_apply_impulse), "resolve": ("resolve", probe_resolve)}
+# probe name -> (the lab function it needs, the probe); the spliced probe runs last, so nothing it leaves (a step
+# 2 that keeps the spliced sat on a handout class) reaches a graded call of the student's own functions
+PROBES = {"sat": ("sat", probe_sat), "apply_impulse": ("apply_impulse", probe_apply_impulse),
+          "resolve": ("resolve", probe_resolve), "sat_step2": ("sat", probe_sat_step2)}
