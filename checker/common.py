@@ -108,7 +108,7 @@ def _timeout_line(trace, lab_path):
 
 
 def describe_function_error(name, error, lab_name):
-    """One line for a lab function that raised (or looped) while the checker probed it."""
+    """Two short lines for a lab function that raised, looped or left a wrong value while the checker probed it."""
     at = f"{lab_name}, line {error['line']}" if error.get("line") else lab_name
     text = f": {error['text']}" if error.get("text") else ""
     if error.get("kind") == "timeout":
@@ -122,11 +122,13 @@ def describe_function_error(name, error, lab_name):
         return error["message"].rstrip(".") + "."
     if error.get("kind") == "exit":
         return f"{name}() ended the program: {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
-    # a known mistake's meaning (the window's words too, lesson11/mistakes.py) is the evidence line; else the line
+    # a known mistake's meaning (the window's words too, lesson11/mistakes.py) is the second line, the line the first
     said = meaning(error.get("message") or "", error.get("text") or "")
-    second = _capital(said) if said else f"at {at + text}"
-    return f"{name}() raised {_cut(error['message'], 90)} at line {error.get('line') or '?'}.\n{_cut(second, 196)}." \
-        if said else f"{name}() raised {_cut(error['message'])}.\n{_cut(second, 190)}."
+    if said:
+        kind = error["message"].split(":")[0]   # the exception's name: the second line says what it means
+        first = f"{name}() raised {_cut(kind, 40)} at {at}{text}"
+        return f"{_cut(first, 158)}.\n{_cut(_capital(said), 196)}."
+    return f"{name}() raised {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
 
 
 def _capital(text):

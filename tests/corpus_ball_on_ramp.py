@@ -408,7 +408,7 @@ SAYS = {
     "friction_kt_no_spin": ("lacks the spin terms",),
     "friction_at_centre": ("changes no spin",),
     "friction_velocity_only": ("changes no spin",),
-    "friction_spin_vector": ("unsupported operand", "a.omega -= t * jt * a.inv_inertia"),
+    "friction_spin_vector": ("TypeError", "a.omega -= t * jt * a.inv_inertia", "the cross product forgotten"),
     "friction_crashes": ("NameError",),
     "friction_kt_is_k": ("kt = k",),
     "friction_bodies_swapped": ("apply_impulse(b, a",),

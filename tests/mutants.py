@@ -17,7 +17,7 @@ import os
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
 
-TITLE = '"""Tumbling Crates: the Lesson 11 practice exercise.'
+TITLE = '"""Tumbling Crates: the Lesson 11 practice exercise'   # the solution's first line begins so
 
 # name -> (what is wrong, [(old, new), ...]); each old is whole lines of the solution, indentation and
 # newlines included
@@ -101,7 +101,7 @@ def variant_source(name, solution=None):
             solution = handle.read()
     what, edits = VARIANTS[name]
     label = "hostile checker test file" if name.startswith("hostile_") else "checker test mutant"
-    header = (TITLE, f"{TITLE[:-1]} ({label}: {what}).")
+    header = (TITLE, f"{TITLE} ({label}: {what})")
     return apply_edits(solution, [header] + edits, name)
 
 

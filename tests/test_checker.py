@@ -150,7 +150,7 @@ def test_each_built_file_differs_from_the_solution_only_by_its_edits(name):
         assert new in source and (old in new or old not in source), (name, old)
     # apart from the docstring's first line (which names the bug), every new line comes from an edit
     added = [line for line in source.splitlines() if line not in solution.splitlines()]
-    assert added[0].startswith(mutants.TITLE[:-1] + " (")
+    assert added[0].startswith(mutants.TITLE + " (")
     assert all(any(line in new for _, new in edits) for line in added[1:]), added
 
 

@@ -308,7 +308,7 @@ def test_the_result_channel_keeps_the_last_result_and_every_note():
 HOSTILE = {   # name: (source, words the loads check's message must hold)
     "loop": ('x = 0\nwhile True:\n    x += 1\n', "did not finish importing within 6 s of CPU time"),
     "two_gigabytes": ("hoard = bytearray(2 * 1024 ** 3)\n",
-                      "ran out of memory (limit 512 MB) at two_gigabytes.py, line 2"),
+                      "ran out of memory (limit 512 MB).\nat two_gigabytes.py, line 2"),
     "crash": ("import ctypes\nctypes.string_at(0)\n", "ended the process unexpectedly"),
     "print_flood": ("while True:\n    print('x' * 1000)\n", "printed more than 64 KB of output and was stopped; it was "
                                                           "printing at print_flood.py, line 3"),
