@@ -575,10 +575,13 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
     if limits.user:   # the run's uid owns OUT and nothing else
         import pwd
         entry = pwd.getpwnam(limits.user)
+        # the copy and the settings are the run's uid's alone (0400): every run shares the user's group, so a file
+        # readable by group or others would let another run (unjailed: CHECKER_NO_JAIL, macOS, the zygote off)
+        # read a classmate's submission while it is graded; the folder stays root's, so nothing is renamed or added
         for name in os.listdir(work):
-            os.chmod(os.path.join(work, name), 0o644 if name != OUT else 0o700)
+            os.chmod(os.path.join(work, name), 0o400 if name != OUT else 0o700)
+            os.chown(os.path.join(work, name), run_uid.uid, entry.pw_gid)
         os.chmod(work, 0o755)
-        os.chown(out, run_uid.uid, entry.pw_gid)
         closed = users.blocked(work, limits.user)   # e.g. TMPDIR in a folder only root may enter
         if closed:
             raise users.ChildUserError(f"the checker's work folders in {os.path.dirname(work)} are not "

@@ -1,0 +1,77 @@
+"""Each run alone, attacked again after the fixes of issue 39 (a student who read checker/, grading as root).
+
+- `peek`: top-level code that, while a classmate's file is graded beside it (--jobs 2), reads every lab copy it can
+  open in the other runs' work folders (/tmp/checker-*/NAME.py) and puts the classmate's step 2 in its own error
+  message (the JSON report). Jailed, the child cannot see /tmp at all; without the jail (CHECKER_NO_JAIL=1, a
+  system that refuses chroot; macOS; the zygote off) the copies used to be root's, mode 644, in a folder of mode
+  755: any run's uid read a classmate's submission. Now the copy and the settings are the run's uid's, mode 400.
+The honest twin is the starter the attack sits in (3/17); the classmate is a solution marked ROW-OF-BOB (17/17).
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from checker import users
+from test_run_isolation import SOLUTION, STARTER, with_attack
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+pytestmark = pytest.mark.skipif(not users.is_root() or users.choose(None)[0] is None,
+                                reason="needs a grader running as root and a user nobody")
+
+PEEK = '''
+import glob as _glob, os as _os, time as _time
+_mine = _os.path.dirname(_os.path.abspath(__file__))
+_seen = "NOTHING"
+_end = _time.time() + 8
+while _time.time() < _end and _seen == "NOTHING":
+    for _p in _glob.glob(_os.path.join(_os.environ.get("TMPDIR") or "/tmp", "checker-*", "*.py")):
+        if _os.path.dirname(_p) != _mine:
+            try:
+                _t = open(_p).read()
+                if "ROW-OF-BOB" in _t:
+                    _seen = _t[_t.index("# --- step 2"):][:300]
+            except OSError as _e:
+                _seen = "DENIED " + type(_e).__name__
+    _time.sleep(0.05)
+raise RuntimeError("PEEK " + _seen)
+'''
+
+MODES = {"root": {}, "no_jail": {"CHECKER_NO_JAIL": "1"}, "portable": {"CHECKER_PORTABLE": "1"},
+         "portable_no_jail": {"CHECKER_PORTABLE": "1", "CHECKER_NO_JAIL": "1"}}
+# (CHECKER_ZYGOTE=0 is not a mode here: this machine's Python sits under /root, which nobody cannot run: refused)
+
+
+@pytest.fixture(scope="module")
+def private_project():
+    """A copy of the project in a 700 folder: unjailed, a world-readable solutions/ is refused before grading."""
+    from test_project_folder_mode import clone_in_private_folder
+    private, project = clone_in_private_folder()
+    yield project
+    shutil.rmtree(private)
+
+
+@pytest.mark.parametrize("mode", sorted(MODES))
+def test_a_run_cannot_read_a_classmates_submission_while_it_is_graded(tmp_path, mode, private_project):
+    paths = {"a_mallory": with_attack(PEEK), "b_bob": "# ROW-OF-BOB\n" + open(SOLUTION, encoding="utf-8").read()}
+    for name, text in paths.items():
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "tumbling_crates.py").write_text(text, encoding="utf-8")
+    environment = dict(os.environ, PYTHONPATH=private_project, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+                       **MODES[mode])
+    proc = subprocess.run([sys.executable, "-m", "checker", *(str(tmp_path / n / "tumbling_crates.py") for n in paths),
+                           "--json", "--quiet", "--jobs", "2", "--timeout", "10"], cwd=private_project,
+                          env=environment, capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 1, proc.stderr[-3000:]
+    rows = {os.path.basename(os.path.dirname(row["path"])): row for row in json.loads(proc.stdout)["labs"]}
+    assert (rows["b_bob"]["score"], rows["b_bob"]["status"]) == (17, "pass"), rows["b_bob"]
+    mallory = rows["a_mallory"]
+    message = next(c["message"] for c in mallory["criteria"] if c["id"] == "loads")
+    assert "PEEK " in message, message   # the attack ran
+    assert "PEEK NOTHING" in message or "PEEK DENIED" in message, message
+    assert "# --- step 2" not in json.dumps(mallory) and "ROW-OF-BOB" not in json.dumps(mallory), message
+    assert mallory["score"] <= 3, mallory   # no more than the starter it holds
