@@ -142,13 +142,15 @@ def grade_all(entries, grader, jobs, progress):
 
     def show(row):
         if progress:
-            print(f"[{done}/{len(rows)}] {outputs.relative(row.path)}: {row.score:g}/{row.max_score:g} {row.status} "
+            name = report.one_line(outputs.relative(row.path))   # a student's folder name may hold ESC
+            print(f"[{done}/{len(rows)}] {name}: {row.score:g}/{row.max_score:g} {row.status} "
                   f"({time.monotonic() - start:.1f} s)", file=sys.stderr, flush=True)
 
     for row in rows:
         if row is not None:
             done += 1
-            print(f"checker: {row.path}: not graded: {row.message}", file=sys.stderr, flush=True)
+            print(f"checker: {report.one_line(row.path)}: not graded: {report.one_line(row.message)}",
+                  file=sys.stderr, flush=True)
     if todo:
         with ThreadPoolExecutor(max_workers=max(1, min(len(todo), jobs * 2))) as pool:
             futures = {pool.submit(grader.grade, entries[i].path, entries[i].lab): i for i in todo}
@@ -268,8 +270,8 @@ def main(argv=None):
         for row in rows:
             report.text_report(row, sys.stdout, pictures=links.get(row.path))
             if getattr(row, "seed", None) is not None and not row.passed:
-                print(f"  graded with seed {row.seed}: python -m checker {row.path} --show --seed {row.seed} "
-                      "replays the first failure\n")
+                print(f"  graded with seed {row.seed}: python -m checker {report.one_line(row.path)} --show "
+                      f"--seed {row.seed} replays the first failure\n")
         if len(rows) > 1:
             report.summary_table(rows, sys.stdout)
         for line in written:
