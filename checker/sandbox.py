@@ -552,12 +552,69 @@ def run_child(lab_path, task, settings, limits):
     lab_path = os.path.abspath(lab_path)
     run_uid = users.take_uid() if limits.user else None
     try:
-        # ignore_cleanup_errors: on Windows a file a dying process still holds open cannot be removed yet
-        with tempfile.TemporaryDirectory(prefix="checker-", ignore_cleanup_errors=True) as work:
+        work = tempfile.mkdtemp(prefix="checker-")
+        try:
             return _run_in(work, lab_path, task, settings, limits, run_uid)
+        finally:
+            remove_work(work)
     finally:
         if run_uid is not None:
             run_uid.release()
+
+
+def remove_work(work):
+    """Remove a run's work folder, whatever its child left in it (its processes are gone by now).
+
+    shutil.rmtree recurses once per folder level: a child that made a chain of 3000 folders made it raise
+    RecursionError in the grader ("a bug in the checker") and leave the tree in the temporary folder. A tree
+    rmtree cannot remove is taken apart without recursion (remove_deep). Errors are ignored, as
+    TemporaryDirectory(ignore_cleanup_errors=True) did: on Windows a file a dying process holds cannot go yet."""
+    try:
+        shutil.rmtree(work, ignore_errors=True)
+    except RecursionError:
+        pass
+    if os.path.lexists(work):
+        try:
+            remove_deep(work)
+        except OSError:
+            pass
+
+
+def remove_deep(top):
+    """Remove the folder `top` and everything below it without recursion and with two folders open at a time:
+    each pass lifts the folders two levels down into `top` (renamed, links never followed) and removes the
+    level between, so a chain N folders deep takes N passes of constant depth."""
+    flags = os.O_RDONLY | getattr(os, "O_DIRECTORY", 0) | getattr(os, "O_NOFOLLOW", 0)
+    top_fd, lifted = os.open(top, flags), 0
+    try:
+        while True:
+            entries = list(os.scandir(top_fd))
+            if not entries:
+                break
+            for entry in entries:
+                if not entry.is_dir(follow_symlinks=False):
+                    os.unlink(entry.name, dir_fd=top_fd)
+                    continue
+                sub = os.open(entry.name, flags, dir_fd=top_fd)
+                try:
+                    for inner in list(os.scandir(sub)):
+                        if not inner.is_dir(follow_symlinks=False):
+                            os.unlink(inner.name, dir_fd=sub)
+                            continue
+                        while True:   # a free name in top for it
+                            lifted += 1
+                            try:
+                                os.rename(inner.name, f".lifted-{lifted}", src_dir_fd=sub, dst_dir_fd=top_fd)
+                                break
+                            except OSError:
+                                if not os.path.lexists(os.path.join(top, f".lifted-{lifted}")):
+                                    raise
+                finally:
+                    os.close(sub)
+                os.rmdir(entry.name, dir_fd=top_fd)
+    finally:
+        os.close(top_fd)
+    os.rmdir(top)
 
 
 def _run_in(work, lab_path, task, settings, limits, run_uid):

@@ -75,3 +75,34 @@ def test_a_run_cannot_read_a_classmates_submission_while_it_is_graded(tmp_path, 
     assert "PEEK NOTHING" in message or "PEEK DENIED" in message, message
     assert "# --- step 2" not in json.dumps(mallory) and "ROW-OF-BOB" not in json.dumps(mallory), message
     assert mallory["score"] <= 3, mallory   # no more than the starter it holds
+
+
+DEEP = '''
+import os as _os
+for _ in range(3000):
+    _os.mkdir("deep-mallory")
+    _os.chdir("deep-mallory")
+'''
+
+
+def test_a_folder_chain_thousands_deep_is_removed_and_blames_no_checker(tmp_path):
+    """`deep`: top-level code makes a chain of 3000 folders in its working folder (out/). Removing the work folder
+    with shutil.rmtree (one recursion per level) raised RecursionError in the grader: the row said "this is a bug
+    in the checker" and the tree stayed in the temporary folder. Now the row is the file's own (its twin, the
+    starter it sits in, 3/17; the top-level edit fails handout_unchanged) and nothing of it is left."""
+    import glob
+    tmp = os.environ.get("TMPDIR") or "/tmp"
+    paths = {"a_mallory": with_attack(DEEP), "b_alice": open(STARTER, encoding="utf-8").read()}
+    for name, text in paths.items():
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "tumbling_crates.py").write_text(text, encoding="utf-8")
+    environment = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    proc = subprocess.run([sys.executable, "-m", "checker", *(str(tmp_path / n / "tumbling_crates.py") for n in paths),
+                           "--json", "--quiet", "--jobs", "2", "--timeout", "10"], cwd=ROOT, env=environment,
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 1, proc.stderr[-3000:]
+    rows = {os.path.basename(os.path.dirname(row["path"])): row for row in json.loads(proc.stdout)["labs"]}
+    assert "bug in the checker" not in proc.stdout + proc.stderr, proc.stderr[-3000:]
+    assert rows["a_mallory"]["criteria"], rows["a_mallory"]   # graded, not an error row of ours
+    assert rows["a_mallory"]["score"] <= rows["b_alice"]["score"] == 3, rows
+    assert not glob.glob(os.path.join(tmp, "checker-*", "out", "deep-mallory")), "the deep tree was left behind"
