@@ -8,6 +8,7 @@ without the zygote, the user the student's code would run as cannot run
 Python: then nothing is graded and nothing is written.
 """
 import argparse
+import errno
 import json
 import os
 import sys
@@ -21,6 +22,8 @@ from .grade import Grader
 from . import labs
 from .report import NotGraded
 from .sandbox import Limits
+
+FULL = tuple(getattr(errno, name) for name in ("ENOSPC", "EDQUOT") if hasattr(errno, name))   # a full disk
 
 USAGE = 2
 
@@ -165,8 +168,11 @@ def grade_all(entries, grader, jobs, progress):
                         said.add(str(exc))
                         print(f"checker: error: {exc}", file=sys.stderr, flush=True)
                 except OSError as exc:  # the file went away or became unreadable after it was found
-                    rows[index] = NotGraded(entry.path, entry.lab, f"cannot read: {exc.strerror or exc}",
-                                            counted=True)
+                    why = f"cannot read: {exc.strerror or exc}"
+                    if exc.errno in FULL:   # the grader's own folders, not the file (another run may have filled it)
+                        why = (f"not graded: the checker's temporary folder is full ({exc.strerror}); grade this "
+                               "file again when there is room")
+                    rows[index] = NotGraded(entry.path, entry.lab, why, counted=True)
                 except Exception as exc:  # a bug of ours: this file gets an error row, the batch goes on
                     rows[index] = NotGraded(entry.path, entry.lab,
                                             f"the checker failed on this file ({type(exc).__name__}: {exc}); "

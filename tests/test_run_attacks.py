@@ -106,3 +106,55 @@ def test_a_folder_chain_thousands_deep_is_removed_and_blames_no_checker(tmp_path
     assert rows["a_mallory"]["criteria"], rows["a_mallory"]   # graded, not an error row of ours
     assert rows["a_mallory"]["score"] <= rows["b_alice"]["score"] == 3, rows
     assert not glob.glob(os.path.join(tmp, "checker-*", "out", "deep-mallory")), "the deep tree was left behind"
+
+
+FILL = '''
+import os as _os, time as _time
+_block = b"x" * (1 << 20)
+for _i in range(100000):
+    try:
+        with open(f"fill{_i}", "wb") as _h:
+            for _ in range(60):
+                _h.write(_block)
+    except OSError:
+        break
+_time.sleep(25)
+'''
+
+
+@pytest.fixture
+def small_tmp():
+    """A 300 MB tmpfs as the grader's TMPDIR (a small /tmp, as many systems have), where root may mount one (in
+    the system's temporary folder: pytest's own is closed to the run's user)."""
+    import tempfile
+    folder = tempfile.mkdtemp(prefix="l11-small-tmp-")
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=300m,mode=1777", "tmpfs", folder],
+                      capture_output=True).returncode != 0:
+        os.rmdir(folder)
+        pytest.skip("cannot mount a tmpfs here")
+    yield folder
+    subprocess.run(["umount", "-l", folder], check=False)
+    os.rmdir(folder)
+
+
+@pytest.mark.xfail(strict=True, reason="open: a run may fill the shared temporary folder (64 MB files without a "
+                   "count limit) while a classmate is graded; needs a per-run quota (a size-limited tmpfs on out/ "
+                   "where root may mount, or a disk quota for the run uids)")
+def test_a_run_filling_the_disk_changes_no_classmates_row(tmp_path, small_tmp):
+    """`fill`: top-level code writes 60 MB files into its out/ folder until the disk is full and keeps its run
+    alive 25 s. Graded beside a solution with TMPDIR on a 300 MB tmpfs, the solution's runs cannot write their
+    settings (or their records): measured, bob's row "cannot read: No space left on device", 0/17 (that line now
+    says the checker's temporary folder is full). The honest solution must keep 17/17."""
+    paths = {"a_mallory": with_attack(FILL), "b_bob": open(SOLUTION, encoding="utf-8").read()}
+    for name, text in paths.items():
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "tumbling_crates.py").write_text(text, encoding="utf-8")
+    environment = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+                       TMPDIR=small_tmp)
+    proc = subprocess.run([sys.executable, "-m", "checker", *(str(tmp_path / n / "tumbling_crates.py") for n in paths),
+                           "--json", "--quiet", "--jobs", "2", "--timeout", "10"], cwd=ROOT, env=environment,
+                          capture_output=True, text=True, timeout=600)
+    rows = {os.path.basename(os.path.dirname(row["path"])): row for row in json.loads(proc.stdout)["labs"]}
+    assert rows["a_mallory"]["score"] <= 3, rows["a_mallory"]
+    assert "cannot read" not in rows["b_bob"]["message"], rows["b_bob"]["message"]   # never the file's fault
+    assert (rows["b_bob"]["score"], rows["b_bob"]["status"]) == (17, "pass"), rows["b_bob"]["message"]
