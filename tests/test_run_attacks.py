@@ -158,3 +158,59 @@ def test_a_run_filling_the_disk_changes_no_classmates_row(tmp_path, small_tmp):
     assert rows["a_mallory"]["score"] <= 3, rows["a_mallory"]
     assert "cannot read" not in rows["b_bob"]["message"], rows["b_bob"]["message"]   # never the file's fault
     assert (rows["b_bob"]["score"], rows["b_bob"]["status"]) == (17, "pass"), rows["b_bob"]["message"]
+
+
+SYSV = '''
+import ctypes as _ct
+_libc = _ct.CDLL(None, use_errno=True)
+_libc.shmat.restype = _ct.c_void_p
+_made = []
+for _k in range(4):
+    _id = _libc.shmget(0x4c310000 + _k, 32 << 20, 0o1666)
+    _p = _libc.shmat(_id, None, 0)
+    if _p not in (None, _ct.c_void_p(-1).value):
+        _ct.memset(_p, 1, 32 << 20)
+        _libc.shmdt(_ct.c_void_p(_p))
+    _made.append(_id)
+_made.append(_libc.semget(0x4c320000, 4, 0o1666))
+_made.append(_libc.msgget(0x4c330000, 0o1666))
+raise RuntimeError(f"SYSV {_made}")
+'''
+
+
+def sysv_objects_of_runs():
+    """[(kind, id, creator uid)] of the System V IPC objects a run's uid (users.RUN_UIDS) created or owns."""
+    found = []
+    for kind, column in (("shm", "shmid"), ("sem", "semid"), ("msg", "msqid")):
+        try:
+            with open(f"/proc/sysvipc/{kind}", encoding="ascii") as handle:
+                header, *rows = handle.read().splitlines()
+        except (OSError, ValueError):
+            continue
+        for row in rows:
+            fields = dict(zip(header.split(), row.split()))
+            if int(fields["cuid"]) in users.RUN_UIDS or int(fields["uid"]) in users.RUN_UIDS:
+                found.append((kind, int(fields[column]), int(fields["cuid"])))
+    return found
+
+
+@pytest.mark.skipif(not os.path.exists("/proc/sysvipc/shm"), reason="Linux's /proc/sysvipc")
+@pytest.mark.parametrize("mode", ["root", "portable"])
+def test_a_run_leaves_no_shared_memory_behind(tmp_path, mode):
+    """`sysv`: top-level code (jailed: it needs no file, ctypes is in memory) makes four 32 MB System V shared
+    memory segments, mode 666, touches every page, and a semaphore set and a message queue. They outlived the
+    run and the batch (128 MB resident, readable and writable by any later run). Now everything its uid created
+    is removed when the run ends; the row is its twin's (the starter with a top-level error: 0/17)."""
+    (tmp_path / "a_mallory").mkdir()
+    (tmp_path / "a_mallory" / "tumbling_crates.py").write_text(with_attack(SYSV), encoding="utf-8")
+    environment = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+                       **({"CHECKER_PORTABLE": "1"} if mode == "portable" else {}))
+    proc = subprocess.run([sys.executable, "-m", "checker", str(tmp_path / "a_mallory" / "tumbling_crates.py"),
+                           "--json", "--quiet", "--timeout", "10"], cwd=ROOT, env=environment, capture_output=True,
+                          text=True, timeout=600)
+    left = sysv_objects_of_runs()
+    row = json.loads(proc.stdout)["labs"][0]
+    message = next(c["message"] for c in row["criteria"] if c["id"] == "loads")
+    assert "SYSV [" in message and "-1" not in message.split("SYSV", 1)[1], message   # the attack made them all
+    assert not left, f"System V objects of a run's uid outlived the batch: {left}"
+    assert row["score"] == 0, row
