@@ -499,6 +499,11 @@ class _Outcome:
     as_user: bool = False   # the interpreter itself was started as limits.user (the POSIX subprocess path)
 
 
+def child_copy_name(lab_path):
+    from .child import copy_name
+    return copy_name(lab_path)
+
+
 def _copy_lab(lab_path, work):
     """Copy the submitted file into the child's work folder under its own name (child.copy_name); never the original."""
     from .child import copy_name
@@ -632,12 +637,15 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
     if limits.user:   # the run's uid owns OUT and nothing else
         import pwd
         entry = pwd.getpwnam(limits.user)
-        # the copy and the settings are the run's uid's alone (0400): every run shares the user's group, so a file
-        # readable by group or others would let another run (unjailed: CHECKER_NO_JAIL, macOS, the zygote off)
-        # read a classmate's submission while it is graded; the folder stays root's, so nothing is renamed or added
+        # the copy is the run's uid's alone (0400): every run shares the user's group, so a copy readable by group or
+        # others let another run (unjailed: CHECKER_NO_JAIL, macOS, the zygote off) read a classmate's submission
+        # while it was graded. The settings (nothing private; read by the portable child while still root) stay
+        # root's, and so does the folder: nothing in it is renamed or added
+        copy = child_copy_name(lab_path)
         for name in os.listdir(work):
-            os.chmod(os.path.join(work, name), 0o400 if name != OUT else 0o700)
-            os.chown(os.path.join(work, name), run_uid.uid, entry.pw_gid)
+            os.chmod(os.path.join(work, name), 0o644 if name not in (OUT, copy) else 0o700 if name == OUT else 0o400)
+        os.chown(os.path.join(work, copy), run_uid.uid, entry.pw_gid)
+        os.chown(out, run_uid.uid, entry.pw_gid)
         os.chmod(work, 0o755)
         closed = users.blocked(work, limits.user)   # e.g. TMPDIR in a folder only root may enter
         if closed:
