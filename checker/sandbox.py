@@ -585,6 +585,38 @@ def remove_work(work):
             pass
 
 
+SHARED_FOLDERS = ("/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/var/lock")   # where every user may write
+
+
+def remove_left_behind(uid):
+    """Remove what a run's uid left where every user may write (SHARED_FOLDERS and the temporary folder), once its
+    processes are gone. Unjailed, a run wrote 8 MB files into /dev/shm (memory), /tmp and /var/tmp that outlived the
+    batch, for a later run of the same uid to find. Those folders are sticky, so all a run made hangs from an entry
+    at their top that the uid owns; nothing else is touched (the uids are reserved: no one else has them)."""
+    seen = set()
+    for folder in SHARED_FOLDERS + (tempfile.gettempdir(),):
+        try:
+            real = os.path.realpath(folder)
+            info = os.stat(real)
+            if real in seen or not stat.S_ISDIR(info.st_mode) or not info.st_mode & stat.S_IWOTH:
+                continue
+            seen.add(real)
+            names = os.listdir(real)
+        except OSError:
+            continue
+        for name in names:
+            path = os.path.join(real, name)
+            try:
+                if os.lstat(path).st_uid != uid:
+                    continue
+                if stat.S_ISDIR(os.lstat(path).st_mode):
+                    remove_work(path)
+                else:
+                    os.unlink(path)
+            except OSError:
+                continue
+
+
 def remove_deep(top):
     """Remove the folder `top` and everything below it without recursion and with two folders open at a time:
     each pass lifts the folders two levels down into `top` (renamed, links never followed) and removes the
@@ -669,6 +701,8 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
     finally:
         if run_uid is not None:
             run_uid.kill()   # nothing of the run is left to write its files while they are read (or after)
+            if not limits.jail:
+                remove_left_behind(run_uid.uid)
     status = outcome.status
     seconds = time.monotonic() - start
     result, notes = _read_channel(outcome.channel) if outcome.channel is not None else ({}, [])

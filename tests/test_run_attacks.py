@@ -214,3 +214,42 @@ def test_a_run_leaves_no_shared_memory_behind(tmp_path, mode):
     assert "SYSV [" in message and "-1" not in message.split("SYSV", 1)[1], message   # the attack made them all
     assert not left, f"System V objects of a run's uid outlived the batch: {left}"
     assert row["score"] == 0, row
+
+
+LEAVE = '''
+import os as _os
+_made = []
+for _d in ("/dev/shm", "/tmp", "/var/tmp"):
+    try:
+        with open(_os.path.join(_d, "l11-left-behind"), "wb") as _h:
+            _h.write(b"x" * (8 << 20))
+        _os.mkdir(_os.path.join(_d, "l11-left-folder"))
+        _made.append(_d)
+    except OSError as _e:
+        _made.append(type(_e).__name__)
+raise RuntimeError(f"LEFT {_made}")
+'''
+
+
+@pytest.mark.parametrize("mode", ["no_jail", "portable_no_jail"])
+def test_unjailed_a_run_leaves_nothing_where_everyone_may_write(tmp_path, mode, private_project):
+    """`leave`: unjailed, top-level code writes an 8 MB file and a folder into /dev/shm (memory), /tmp and
+    /var/tmp. They outlived the batch, owned by a run uid that a later run gets again. Now what the run's uid
+    owns at the top of those folders is removed when the run ends; the row is its twin's (a top-level error:
+    0/17)."""
+    (tmp_path / "a_mallory").mkdir()
+    (tmp_path / "a_mallory" / "tumbling_crates.py").write_text(with_attack(LEAVE), encoding="utf-8")
+    environment = dict(os.environ, PYTHONPATH=private_project, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
+                       **MODES[mode])
+    proc = subprocess.run([sys.executable, "-m", "checker", str(tmp_path / "a_mallory" / "tumbling_crates.py"),
+                           "--json", "--quiet", "--timeout", "10"], cwd=private_project, env=environment,
+                          capture_output=True, text=True, timeout=600)
+    row = json.loads(proc.stdout)["labs"][0]
+    message = next(c["message"] for c in row["criteria"] if c["id"] == "loads")
+    left = [os.path.join(d, n) for d in ("/dev/shm", "/tmp", "/var/tmp") for n in ("l11-left-behind", "l11-left-folder")
+            if os.path.lexists(os.path.join(d, n))]
+    for path in left:   # not left for the next test either
+        shutil.rmtree(path) if os.path.isdir(path) else os.unlink(path)
+    assert "LEFT ['/dev/shm', '/tmp', '/var/tmp']" in message, message   # the attack wrote all three
+    assert not left, f"left behind after the batch: {left}"
+    assert row["score"] == 0, row
