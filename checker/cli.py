@@ -8,6 +8,7 @@ without the zygote, the user the student's code would run as cannot run
 Python: then nothing is graded and nothing is written.
 """
 import argparse
+import errno
 import json
 import os
 import sys
@@ -21,6 +22,8 @@ from .grade import Grader
 from . import labs
 from .report import NotGraded
 from .sandbox import Limits
+
+FULL = tuple(getattr(errno, name) for name in ("ENOSPC", "EDQUOT") if hasattr(errno, name))   # a full disk
 
 USAGE = 2
 
@@ -142,13 +145,15 @@ def grade_all(entries, grader, jobs, progress):
 
     def show(row):
         if progress:
-            print(f"[{done}/{len(rows)}] {outputs.relative(row.path)}: {row.score:g}/{row.max_score:g} {row.status} "
+            name = report.one_line(outputs.relative(row.path))   # a student's folder name may hold ESC
+            print(f"[{done}/{len(rows)}] {name}: {row.score:g}/{row.max_score:g} {row.status} "
                   f"({time.monotonic() - start:.1f} s)", file=sys.stderr, flush=True)
 
     for row in rows:
         if row is not None:
             done += 1
-            print(f"checker: {row.path}: not graded: {row.message}", file=sys.stderr, flush=True)
+            print(f"checker: {report.one_line(row.path)}: not graded: {report.one_line(row.message)}",
+                  file=sys.stderr, flush=True)
     if todo:
         with ThreadPoolExecutor(max_workers=max(1, min(len(todo), jobs * 2))) as pool:
             futures = {pool.submit(grader.grade, entries[i].path, entries[i].lab): i for i in todo}
@@ -163,8 +168,11 @@ def grade_all(entries, grader, jobs, progress):
                         said.add(str(exc))
                         print(f"checker: error: {exc}", file=sys.stderr, flush=True)
                 except OSError as exc:  # the file went away or became unreadable after it was found
-                    rows[index] = NotGraded(entry.path, entry.lab, f"cannot read: {exc.strerror or exc}",
-                                            counted=True)
+                    why = f"cannot read: {exc.strerror or exc}"
+                    if exc.errno in FULL:   # the grader's own folders, not the file (another run may have filled it)
+                        why = (f"not graded: the checker's temporary folder is full ({exc.strerror}); grade this "
+                               "file again when there is room")
+                    rows[index] = NotGraded(entry.path, entry.lab, why, counted=True)
                 except Exception as exc:  # a bug of ours: this file gets an error row, the batch goes on
                     rows[index] = NotGraded(entry.path, entry.lab,
                                             f"the checker failed on this file ({type(exc).__name__}: {exc}); "
@@ -268,8 +276,8 @@ def main(argv=None):
         for row in rows:
             report.text_report(row, sys.stdout, pictures=links.get(row.path))
             if getattr(row, "seed", None) is not None and not row.passed:
-                print(f"  graded with seed {row.seed}: python -m checker {row.path} --show --seed {row.seed} "
-                      "replays the first failure\n")
+                print(f"  graded with seed {row.seed}: python -m checker {report.one_line(row.path)} --show "
+                      f"--seed {row.seed} replays the first failure\n")
         if len(rows) > 1:
             report.summary_table(rows, sys.stdout)
         for line in written:

@@ -37,6 +37,7 @@ import json
 import os
 import stat
 import tempfile
+import unicodedata
 from dataclasses import dataclass
 
 from .checks import step_of
@@ -90,16 +91,28 @@ def reason(row):
     return f"{check_label(first)}: {first.status}" + (f": {text}" if text else "")
 
 
+def printable(text):
+    """text with each control character but the tab (a backspace, ESC and the terminal sequences it starts, DEL,
+    C1) and each bidirectional override written as its escape (`\\x1b`): on a terminal they move the cursor,
+    so a student's exception text could erase the lines above or back over its indentation and print a row."""
+    return "".join(c if c == "\t" or not (unicodedata.category(c) == "Cc" or c in BIDI_CONTROLS)
+                   else ascii(c)[1:-1] for c in str(text))
+
+
+BIDI_CONTROLS = frozenset("\u061c\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+
+
 def indented(text, indent):
     """text with `indent` before each of its lines (every line break Python's str.splitlines() knows, \\r and
     form feeds included): a message holding line breaks, which may come from the student's code (an exception's
-    text), stays under its check and cannot print a line that reads like another file's row."""
-    return "\n".join(indent + line for line in str(text).splitlines() or [""])
+    text), stays under its check and cannot print a line that reads like another file's row (nor reach one by
+    a terminal's control characters: printable())."""
+    return "\n".join(indent + printable(line) for line in str(text).splitlines() or [""])
 
 
 def one_line(text):
-    """text on one line: its line breaks as spaces (for a table cell)."""
-    return " ".join(str(text).splitlines())
+    """text on one line: its line breaks as spaces (for a table cell), its control characters escaped."""
+    return printable(" ".join(str(text).splitlines()))
 
 
 def text_report(report, stream, root=None, pictures=None):
@@ -111,7 +124,7 @@ def text_report(report, stream, root=None, pictures=None):
     name = one_line(_rel(report.path, root))
     if isinstance(report, NotGraded):
         title = f" - {report.lab.title}" if report.lab is not None else ""
-        first, *rest = str(report.message).splitlines() or [""]
+        first, *rest = [printable(line) for line in str(report.message).splitlines()] or [""]
         stream.write(f"{name}{title}: 0/{report.max_score:g} (error, not graded)\n"
                      f"  :( could not be graded: {first}\n" + "".join(f"      {line}\n" for line in rest) + "\n")
         return

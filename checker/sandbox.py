@@ -499,6 +499,11 @@ class _Outcome:
     as_user: bool = False   # the interpreter itself was started as limits.user (the POSIX subprocess path)
 
 
+def child_copy_name(lab_path):
+    from .child import copy_name
+    return copy_name(lab_path)
+
+
 def _copy_lab(lab_path, work):
     """Copy the submitted file into the child's work folder under its own name (child.copy_name); never the original."""
     from .child import copy_name
@@ -552,12 +557,101 @@ def run_child(lab_path, task, settings, limits):
     lab_path = os.path.abspath(lab_path)
     run_uid = users.take_uid() if limits.user else None
     try:
-        # ignore_cleanup_errors: on Windows a file a dying process still holds open cannot be removed yet
-        with tempfile.TemporaryDirectory(prefix="checker-", ignore_cleanup_errors=True) as work:
+        work = tempfile.mkdtemp(prefix="checker-")
+        try:
             return _run_in(work, lab_path, task, settings, limits, run_uid)
+        finally:
+            remove_work(work)
     finally:
         if run_uid is not None:
             run_uid.release()
+
+
+def remove_work(work):
+    """Remove a run's work folder, whatever its child left in it (its processes are gone by now).
+
+    shutil.rmtree recurses once per folder level: a child that made a chain of 3000 folders made it raise
+    RecursionError in the grader ("a bug in the checker") and leave the tree in the temporary folder. A tree
+    rmtree cannot remove is taken apart without recursion (remove_deep). Errors are ignored, as
+    TemporaryDirectory(ignore_cleanup_errors=True) did: on Windows a file a dying process holds cannot go yet."""
+    try:
+        shutil.rmtree(work, ignore_errors=True)
+    except RecursionError:
+        pass
+    if os.path.lexists(work):
+        try:
+            remove_deep(work)
+        except OSError:
+            pass
+
+
+SHARED_FOLDERS = ("/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/var/lock")   # where every user may write
+
+
+def remove_left_behind(uid):
+    """Remove what a run's uid left where every user may write (SHARED_FOLDERS and the temporary folder), once its
+    processes are gone. Unjailed, a run wrote 8 MB files into /dev/shm (memory), /tmp and /var/tmp that outlived the
+    batch, for a later run of the same uid to find. Those folders are sticky, so all a run made hangs from an entry
+    at their top that the uid owns; nothing else is touched (the uids are reserved: no one else has them)."""
+    seen = set()
+    for folder in SHARED_FOLDERS + (tempfile.gettempdir(),):
+        try:
+            real = os.path.realpath(folder)
+            info = os.stat(real)
+            if real in seen or not stat.S_ISDIR(info.st_mode) or not info.st_mode & stat.S_IWOTH:
+                continue
+            seen.add(real)
+            names = os.listdir(real)
+        except OSError:
+            continue
+        for name in names:
+            path = os.path.join(real, name)
+            try:
+                if os.lstat(path).st_uid != uid:
+                    continue
+                if stat.S_ISDIR(os.lstat(path).st_mode):
+                    remove_work(path)
+                else:
+                    os.unlink(path)
+            except OSError:
+                continue
+
+
+def remove_deep(top):
+    """Remove the folder `top` and everything below it without recursion and with two folders open at a time:
+    each pass lifts the folders two levels down into `top` (renamed, links never followed) and removes the
+    level between, so a chain N folders deep takes N passes of constant depth."""
+    flags = os.O_RDONLY | getattr(os, "O_DIRECTORY", 0) | getattr(os, "O_NOFOLLOW", 0)
+    top_fd, lifted = os.open(top, flags), 0
+    try:
+        while True:
+            entries = list(os.scandir(top_fd))
+            if not entries:
+                break
+            for entry in entries:
+                if not entry.is_dir(follow_symlinks=False):
+                    os.unlink(entry.name, dir_fd=top_fd)
+                    continue
+                sub = os.open(entry.name, flags, dir_fd=top_fd)
+                try:
+                    for inner in list(os.scandir(sub)):
+                        if not inner.is_dir(follow_symlinks=False):
+                            os.unlink(inner.name, dir_fd=sub)
+                            continue
+                        while True:   # a free name in top for it
+                            lifted += 1
+                            try:
+                                os.rename(inner.name, f".lifted-{lifted}", src_dir_fd=sub, dst_dir_fd=top_fd)
+                                break
+                            except OSError:
+                                if not os.path.lexists(os.path.join(top, f".lifted-{lifted}")):
+                                    raise
+                finally:
+                    os.close(sub)
+                os.rmdir(entry.name, dir_fd=top_fd)
+    finally:
+        os.close(top_fd)
+    os.rmdir(top)
 
 
 def _run_in(work, lab_path, task, settings, limits, run_uid):
@@ -575,10 +669,16 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
     if limits.user:   # the run's uid owns OUT and nothing else
         import pwd
         entry = pwd.getpwnam(limits.user)
+        # the copy is the run's uid's alone (0400): every run shares the user's group, so a copy readable by group or
+        # others let another run (unjailed: CHECKER_NO_JAIL, macOS, the zygote off) read a classmate's submission
+        # while it was graded. The settings (nothing private; read by the portable child while still root) stay
+        # root's, and so does the folder: nothing in it is renamed or added
+        copy = child_copy_name(lab_path)
         for name in os.listdir(work):
-            os.chmod(os.path.join(work, name), 0o644 if name != OUT else 0o700)
-        os.chmod(work, 0o755)
+            os.chmod(os.path.join(work, name), 0o644 if name not in (OUT, copy) else 0o700 if name == OUT else 0o400)
+        os.chown(os.path.join(work, copy), run_uid.uid, entry.pw_gid)
         os.chown(out, run_uid.uid, entry.pw_gid)
+        os.chmod(work, 0o755)
         closed = users.blocked(work, limits.user)   # e.g. TMPDIR in a folder only root may enter
         if closed:
             raise users.ChildUserError(f"the checker's work folders in {os.path.dirname(work)} are not "
@@ -601,6 +701,8 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
     finally:
         if run_uid is not None:
             run_uid.kill()   # nothing of the run is left to write its files while they are read (or after)
+            if not limits.jail:
+                remove_left_behind(run_uid.uid)
     status = outcome.status
     seconds = time.monotonic() - start
     result, notes = _read_channel(outcome.channel) if outcome.channel is not None else ({}, [])

@@ -210,8 +210,9 @@ class Replay:
 
     def summary(self):
         """The lines --show prints before it opens the window (the seed, the check, the frame it jumps to)."""
-        lines = [f"--show: {self.check.id} ({self.check.status}): {self.check.message}".rstrip(),
-                 f"  graded with seed {self.seed}: python -m checker {self.path} --show {self.check.id} "
+        lines = [f"--show: {self.check.id} ({self.check.status}): {report.printable(self.check.message)}".rstrip(),
+                 f"  graded with seed {self.seed}: python -m checker {report.one_line(self.path)} "
+                 f"--show {self.check.id} "
                  f"--seed {self.seed} replays this run"]
         if self.scene:
             kind = "the scene it reads" if self.graded else "run ungraded to show what the check means"

@@ -227,6 +227,39 @@ def kill_uid(uid, rounds=3):
         finally:
             os._exit(code)
     os.waitpid(pid, 0)
+    remove_ipc(uid)
+
+
+IPC_KINDS = (("shm", "shmid"), ("sem", "semid"), ("msg", "msqid"))   # /proc/sysvipc/<kind>: its id column
+
+
+def remove_ipc(uid):
+    """Remove every System V shared memory segment, semaphore set and message queue `uid` created or owns.
+
+    Unlike its processes they outlive a run (jailed too: they need no file): a run left 4 × 32 MB of resident
+    memory, mode 666, after the batch, readable and writable by every later run. The owner can be changed
+    (IPC_SET), the creator cannot. Linux as root (/proc/sysvipc); elsewhere nothing to do here."""
+    try:
+        import ctypes
+        libc = ctypes.CDLL(None, use_errno=True)
+        removers = {"shm": lambda i: libc.shmctl(i, 0, None), "sem": lambda i: libc.semctl(i, 0, 0),
+                    "msg": lambda i: libc.msgctl(i, 0, None)}   # IPC_RMID is 0
+    except (ImportError, OSError, AttributeError):
+        return
+    for kind, column in IPC_KINDS:
+        try:
+            with open(f"/proc/sysvipc/{kind}", encoding="ascii") as handle:
+                header, *rows = handle.read().splitlines() or [""]
+        except (OSError, ValueError):
+            continue
+        names = header.split()
+        for row in rows:
+            fields = dict(zip(names, row.split()))
+            try:
+                if uid in (int(fields["uid"]), int(fields["cuid"])):
+                    removers[kind](int(fields[column]))
+            except (KeyError, ValueError):
+                continue
 
 
 def as_run_user(user, work):
