@@ -34,3 +34,31 @@ def test_without_the_step_rules_the_judging_still_fails_them(tmp_path, monkeypat
         if entry.kind != "kept_splice":   # the check of the step that changed it names the constant
             first = checks[judge_corpus.WITHOUT_RULES[entry.name][0]]["message"]
             assert entry.message in first and "while it runs" in first, (entry.name, first)
+
+
+def test_on_gradescopes_procedure_the_judging_attacks_gain_nothing(tmp_path):
+    """Each judging attack and its honest file, each submitted alone to the lab's Gradescope package run as
+    Gradescope runs it (tests/gradescope_procedure.py says what differs from the real one): the attack scores no
+    more than the honest file. Needs root and a user `nobody`, as the package's grading does."""
+    import pytest
+
+    import gradescope_procedure as gradescope
+    from checker import users
+    if not users.is_root() or users.choose(None)[0] is None:
+        pytest.skip("needs a grader running as root and a user nobody")
+    chosen = list(corpus.ISSUE39_JUDGE)
+    labs = sorted({entry.lab for entry in chosen})
+    bundle = tmp_path / "autograder.zip"
+    gradescope.build(bundle, labs)
+    scores = {}
+    for entry in chosen + [corpus.HONEST[e.name] for e in chosen]:
+        if entry.name in scores:
+            continue
+        text = open(corpus.write(tmp_path / "files", [entry])[entry.name], encoding="utf-8").read()
+        done, results = gradescope.run(bundle, tmp_path / "runs" / entry.name, f"{entry.lab}.py", text)
+        assert done.returncode == 0 and results is not None, (entry.name, done.stderr[-2000:])
+        scores[entry.name] = results["score"]
+    for entry in chosen:
+        honest = corpus.HONEST[entry.name].name
+        assert scores[honest] > 0, (honest, "the honest file was not graded")   # so the comparison can fail
+        assert scores[entry.name] <= scores[honest], (entry.name, scores[entry.name], honest, scores[honest])

@@ -24,10 +24,10 @@ import os
 import shutil
 import subprocess
 import sys
-import zipfile
 
 import pytest
 
+import gradescope_procedure as gradescope
 from checker import users
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -187,32 +187,12 @@ def test_on_gradescopes_procedure_a_daemon_is_gone_and_the_answers_unread(tmp_pa
     more than its starter and nothing of its run is left when run_autograder returns; the file reaching for the
     package's solutions gets none."""
     bundle = tmp_path / "autograder.zip"
-    built = subprocess.run([sys.executable, "-m", "checker", "package", "gradescope", "--out", str(bundle),
-                            "--labs", "tumbling_crates"], cwd=ROOT, capture_output=True, text=True,
-                           env=dict(os.environ, PYTHONPATH=ROOT))
-    assert built.returncode == 0, built.stderr
+    gradescope.build(bundle, ["tumbling_crates"])
     for name, attack, most in (("daemon", DAEMON, 3), ("answers", ANSWERS, 3)):
-        root = tmp_path / name
-        with zipfile.ZipFile(bundle) as archive:
-            archive.extractall(root / "source")
-        for script in ("setup.sh", "run_autograder"):
-            os.chmod(root / "source" / script, 0o755)
-        python = root / "source" / "venv" / "bin" / "python"   # setup.sh's venv, stood in for by this Python
-        python.parent.mkdir(parents=True)
-        python.write_text(f"#!/bin/sh\nexec {sys.executable} \"$@\"\n", encoding="utf-8")
-        python.chmod(0o755)
-        subprocess.run(["chmod", "-R", "go-rwx", str(root / "source" / "project" / "solutions")], check=True)
-        (root / "submission").mkdir()
-        (root / "submission" / "tumbling_crates.py").write_text(with_attack(attack), encoding="utf-8")
-        runner = shutil.copy2(root / "source" / "run_autograder", root / "run_autograder")
-        environment = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "HOME": str(root),
-                       "AUTOGRADER_ROOT": str(root), "AUTOGRADER_USER": "nobody"}
-        done = subprocess.run([str(runner)], cwd=root, env=environment, capture_output=True, text=True,
-                              timeout=300)
+        done, results = gradescope.run(bundle, tmp_path / name, "tumbling_crates.py", with_attack(attack))
         left = run_uid_processes()
         assert done.returncode == 0, done.stderr
         assert not left, f"processes of a run's uid outlived run_autograder: {left}"
-        results = json.loads((root / "results" / "results.json").read_text(encoding="utf-8"))
         assert results["score"] <= most, results["output"]
         text = json.dumps(results)
         assert "def sat" not in text and "SEEN # --- step 2" not in text
