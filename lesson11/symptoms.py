@@ -79,8 +79,8 @@ TABLE = (
             "corner landings kick far too hard: crates bounce about, spin at up to 20 rad/s, and one is "
             "thrown out of the window", "thrown_out"),
     Symptom("tumbling_crates", "k_divides", 4, "the spin terms divided by `inv_inertia`",
-            "the lab stops as the first crate lands, with ZeroDivisionError in resolve(): the floor's and the "
-            "ramp's inv_inertia are 0", "zero_division"),
+            "the window pauses as the first crate lands, naming ZeroDivisionError in resolve(): the floor's and "
+            "the ramp's inv_inertia are 0", "zero_division"),
     Symptom("tumbling_crates", "friction_unclamped", 5, "no clamp: `jt` left as it is",
             "looks right here: the crates land, tip flat and rest; `python -m checker FILE --show` shows the "
             "checker's scene, where a crate thrown along the floor at 400 px/s stops dead", "looks_right"),
