@@ -316,7 +316,7 @@ CORRECT = [
 # the words each wrong entry's first message must contain: it names the mistake, not only the step (issue 33)
 SAYS = {
     "toi_later_root": ("later root",),
-    "toi_disc_sign_flipped": ("math domain error",),
+    "toi_disc_sign_flipped": ("ValueError", "negative discriminant"),
     "toi_a_not_squared": ("a = |dv|",),
     "toi_twice": ("twice the first-contact time",),
     "toi_no_past_check": ("negative time",),

@@ -1,32 +1,39 @@
 """Issue 39's attacks on the judging (tests/corpus_attacks_judge.py) fail without the step rules too.
 
 tests/test_corpus_attacks.py grades them as the checker runs (rules on) in every mode. Here the rules are
-turned off in-process, as that file's last test does for the tables and forgeries: the `global PERCENT` and
-`Body.kept = sat` the rules flag are then left to the grader's own mechanisms (the handout's constants, the
-child putting them back before each probe, the spliced probe run last), which must still fail each entry's
+turned off in a checker process of its own (as that file's last test turns them off in-process): the
+`global PERCENT` and `Body.kept = sat` the rules flag are then left to the grader's own mechanisms (the
+handout's constants, the child putting them back before each probe, the spliced probe run last), which must still fail each entry's
 WITHOUT_RULES checks, naming the constant where one was changed, and score no more than its honest file.
 """
 import json
 import os
+import subprocess
+import sys
 
 import corpus_attacks as corpus
 import corpus_attacks_judge as judge_corpus
 
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-def test_without_the_step_rules_the_judging_still_fails_them(tmp_path, monkeypatch, capsys):
-    from checker import cli, step_rules
-    monkeypatch.setattr(step_rules, "scan_lab", lambda source, module, path=None: [])
+
+def test_without_the_step_rules_the_judging_still_fails_them(tmp_path):
     chosen = list(corpus.ISSUE39_JUDGE)
     paths = corpus.write(tmp_path, chosen + [corpus.HONEST[e.name] for e in chosen])
-    monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")
-    monkeypatch.setenv("SDL_AUDIODRIVER", "dummy")
-    cli.main([*paths.values(), "--json", "--quiet", "--jobs", "2"])
+    # the checker in a process of its own (no state of earlier tests in this one), its step rules turned off
+    without_rules = ("import sys; from checker import cli, step_rules; "
+                     "step_rules.scan_lab = lambda source, module, path=None: []; sys.exit(cli.main(sys.argv[1:]))")
+    done = subprocess.run([sys.executable, "-c", without_rules, *paths.values(), "--json", "--quiet", "--jobs", "2"],
+                          cwd=ROOT, capture_output=True, text=True, timeout=900,
+                          env=dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYTHONPATH=ROOT))
+    assert done.returncode in (0, 1), done.stderr[-2000:]
     names = {os.path.abspath(path): name for name, path in paths.items()}
-    rows = {names[os.path.abspath(r["path"])]: r for r in json.loads(capsys.readouterr().out)["labs"]}
+    rows = {names[os.path.abspath(r["path"])]: r for r in json.loads(done.stdout)["labs"]}
     assert set(judge_corpus.WITHOUT_RULES) == {e.name for e in chosen}
     for entry in chosen:
         row, honest = rows[entry.name], rows[corpus.HONEST[entry.name].name]
         checks = {c["id"]: c for c in row["criteria"]}
+        assert set(judge_corpus.WITHOUT_RULES[entry.name]) <= set(checks), (entry.name, "not graded", row)
         assert row["flags"] == []
         passing = [t for t in judge_corpus.WITHOUT_RULES[entry.name] if checks[t]["status"] == "pass"]
         assert not passing, (entry.name, passing, [(c["id"], c["status"], c["message"]) for c in row["criteria"]])

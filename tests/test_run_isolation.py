@@ -108,8 +108,10 @@ def with_attack(attack):
 
 
 def run_uid_processes():
-    """The pids of live processes running as a uid of users.RUN_UIDS (a run's own), from /proc. A zombie (killed,
-    its exit not yet collected by init, which took the daemon over) is not alive: it runs nothing."""
+    """The pids of live processes running as a uid of users.RUN_UIDS (a run's own) that outlived the process that
+    started them (their parent is now init, pid 1), from /proc. Anything a run leaves behind has such a process at
+    its root; a run still going (another test's, beside this one under pytest-xdist) has the grader or its zygote as
+    parent and is not counted. A zombie (killed, its exit not yet collected by init) is not alive: it runs nothing."""
     found = []
     for name in os.listdir("/proc"):
         if not name.isdigit():
@@ -120,7 +122,8 @@ def run_uid_processes():
         except OSError:
             continue
         uids = fields.get("Uid", "").split()
-        if fields.get("State", "").split()[:1] != ["Z"] and any(int(uid) in users.RUN_UIDS for uid in uids):
+        orphan = fields.get("PPid", "").strip() == "1"
+        if orphan and fields.get("State", "").split()[:1] != ["Z"] and any(int(uid) in users.RUN_UIDS for uid in uids):
             found.append(int(name))
     return found
 
