@@ -510,7 +510,7 @@ def _copy_lab(lab_path, work):
     shutil.copyfile(lab_path, os.path.join(work, copy_name(lab_path)))
 
 
-def _check_user(result, limits, as_user):
+def _check_user(result, limits, as_user, probes=None):
     """Raise users.ChildUserError when the run failed only because its user could not read Python or a module.
 
     A child whose interpreter was started as that user (the POSIX subprocess path) and that never reached
@@ -527,9 +527,11 @@ def _check_user(result, limits, as_user):
     tapes = ((result.get("probe") or {}).get("tapes") or {}) if isinstance(result.get("probe"), dict) else {}
     errors = [result.get("error")] + [t.get("error") for t in tapes.values() if isinstance(t, dict)]
     path = [PROJECT_ROOT] + [p for p in sys.path if p and os.path.abspath(p) != os.getcwd()]
+    from .zygote import warm_names
+    warm = () if as_user else warm_names(probes)   # forked or portable: these were imported before leaving root
     for error in errors:
         problem = users.unreadable_import(error if isinstance(error, dict) else None, limits.user, path,
-                                          jailed=bool(limits.jail))
+                                          jailed=bool(limits.jail), warm=warm)
         if problem:
             raise users.ChildUserError(problem)
 

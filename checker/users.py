@@ -364,7 +364,7 @@ def python_problem(user, project):
     return f"the checker cannot run Python as user {user!r} ({said[-1] if said else 'it exits at once'}); {FIX}"
 
 
-def unreadable_import(error, user, path, jailed=False):
+def unreadable_import(error, user, path, jailed=False, warm=()):
     """The one line when `error` (a child's account of an exception) is an import the child's user could not
     read although the module is there, on the child's own `path`; else None.
 
@@ -373,6 +373,8 @@ def unreadable_import(error, user, path, jailed=False):
     fails is it the checker's problem. A student's import of a module that does not exist, or of one the user
     can read (a forged ModuleNotFoundError), stays the student's error. `jailed`: the child ran chrooted in its
     work folder, where nothing but what the zygote imported is there to import: every import error is the file's.
+    `warm`: the modules the child imported before it left root (zygote.warm_names()); importing one again cannot
+    fail for want of a file, so an error naming one is the file's own (forged, or its own sys.modules edit).
     """
     message = (error or {}).get("message") or ""
     if jailed or not user or not message.startswith(("ModuleNotFoundError: No module named ", "PermissionError: ")):
@@ -380,6 +382,8 @@ def unreadable_import(error, user, path, jailed=False):
     if message.startswith("PermissionError: "):
         return None if "Errno 13" not in message else _unreadable_file(message, user)
     name = message.split("No module named ", 1)[1].strip().strip("'\"")
+    if name in warm:
+        return None
     import importlib.machinery
     top = name.split(".")[0]
     if top in PRIVATE:   # kept from the child on purpose: importing it is the file's doing, not our failure

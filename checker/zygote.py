@@ -23,6 +23,7 @@ The zygote says {"ready": true} on the control socket once its imports are done,
 The grader side is checker.sandbox (ZygoteClient); the zygote is started with
 `python -m checker.zygote FD`.
 """
+import functools
 import json
 import os
 import selectors
@@ -290,6 +291,23 @@ def warm_up():
             if name in required:
                 raise
     _keep_package_data()
+
+
+@functools.lru_cache(maxsize=None)
+def warm_names(probes=None):
+    """The modules warm_up imports (and `probes`, a run's preloaded lab probes): in a child forked from the
+    zygote, or a portable child after warm_up, importing one again needs no file. The optional ones count only
+    where this Python has them."""
+    import importlib.util
+    optional = [name for name in WARM_STDLIB + _handout_imports() if _findable(importlib.util, name)]
+    return frozenset(WARM_MODULES + _lab_probes() + tuple(optional) + ((probes,) if probes else ()))
+
+
+def _findable(util, name):
+    try:
+        return util.find_spec(name) is not None
+    except (ImportError, ValueError):
+        return False
 
 
 def _lab_probes():

@@ -203,6 +203,22 @@ def test_an_import_of_the_answers_kept_from_the_child_stays_the_files_error(tmp_
         assert other.startswith("the checker cannot import 'shared' as user 'nobody': ")
 
 
+@needs_nobody
+def test_an_error_naming_a_module_the_child_had_warm_is_the_files_even_where_its_user_cannot_read_it(tmp_path):
+    """Issue 44: in a clone inside a 700 folder the venv's pygame is unreadable by nobody, yet the forked child
+    has it imported before it left root. A ModuleNotFoundError naming a warm module cannot come from the folder's
+    mode, so it stays the file's (forged); the same name not warm, on the same unreadable path, is the checker's."""
+    (tmp_path / "venv" / "warmpkg").mkdir(parents=True)
+    (tmp_path / "venv" / "warmpkg" / "__init__.py").write_text("", encoding="utf-8")
+    tmp_path.chmod(0o700)
+    error = {"message": "ModuleNotFoundError: No module named 'warmpkg'"}
+    path = [str(tmp_path / "venv")]
+    assert users.unreadable_import(error, "nobody", path, warm=frozenset({"warmpkg"})) is None
+    assert users.unreadable_import(error, "nobody", path).startswith("the checker cannot import 'warmpkg' as user")
+    from checker import zygote
+    assert {"pygame", "numpy", "lesson11.physics2d", "checker.labs.tumbling_crates.probes"} <= zygote.warm_names()
+
+
 # ---------------------------------------------------------------- the child's folder and path
 
 @pytest.mark.parametrize("user", ["default", "root"])
