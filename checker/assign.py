@@ -39,7 +39,7 @@ import tempfile
 from . import source
 from . import labs
 from .handout import MarkerError, _comment_lines, step_regions
-from .sandbox import PROJECT_ROOT as ROOT
+from .project import PROJECT_ROOT as ROOT
 
 SOLUTIONS = os.path.join(ROOT, labs.SOLUTIONS)
 STARTERS = os.path.join(ROOT, labs.STARTERS)

@@ -39,7 +39,7 @@ import threading
 import time
 import types
 
-from checker.sandbox import OUT, STDOUT_FILE
+from checker.confine import OUT, copy_name
 from checker.source import read as read_source   # imported here, so the zygote has it warm
 
 sys.dont_write_bytecode = True
@@ -228,11 +228,11 @@ def _stdout_channel(path):
 
 def _portable_limits(result_pipe, trace):
     """Apply the run's limits from inside (CHECKER_CHILD_LIMITS): the rlimits the system accepts (notes of the
-    refused ones go to the parent) and the Watchdog for CPU time. Returns the sandbox.Limits."""
-    from checker import sandbox
+    refused ones go to the parent) and the Watchdog for CPU time. Returns the confine.Limits."""
+    from checker import confine
     global _watchdog
-    limits = sandbox.Limits(**json.loads(os.environ.pop("CHECKER_CHILD_LIMITS", "{}")))
-    sandbox.write_notes(result_pipe.fileno(), sandbox.set_rlimits(limits, cpu=False))
+    limits = confine.Limits(**json.loads(os.environ.pop("CHECKER_CHILD_LIMITS", "{}")))
+    confine.write_notes(result_pipe.fileno(), confine.set_rlimits(limits, cpu=False))
     _watchdog = Watchdog(max(1, math.ceil(limits.timeout)), trace)   # RLIMIT_CPU's soft limit on POSIX
     return limits
 
@@ -288,16 +288,6 @@ def run_scenario(module, settings):
         runtime.write_record()
 
 
-# the checker's own names in the work folder (the child's files are in its OUT sub-folder)
-RESERVED = ("settings.json", OUT)
-
-
-def copy_name(lab_path):
-    """The name of the lab's copy in the child's work folder: the file's own name, unless the checker uses it."""
-    name = os.path.basename(lab_path)
-    return name if name not in RESERVED and not name.startswith(".") else "lab_" + name.lstrip(".")
-
-
 def _only_the_project_on_path():
     """Take the working folder off sys.path (`python -m` puts it first): the lab's copy there is no module."""
     here = os.getcwd()
@@ -333,9 +323,9 @@ def main(argv):
     # the checker's own settings; what is left goes to the lab runtime
     probes = importlib.import_module(settings.pop("probes"))
     if portable and limits.user:   # the POSIX path left root before the lab's interpreter started; here, now,
-        from checker import sandbox, zygote   # after importing what a lab needs, as the zygote does
+        from checker import confine, zygote   # after importing what a lab needs, as the zygote does
         zygote.warm_up()
-        sandbox._leave_root(limits, inside="/" + OUT)
+        confine.leave_root(limits, inside="/" + OUT)
     # the copy sandbox.run_child put in the work folder, the parent of the child's own (root's: the child reads it)
     copy_path = os.path.abspath(os.path.join(os.pardir, copy_name(lab_path)))
     sys.argv[:] = [copy_path]

@@ -30,7 +30,6 @@ group), and the child applies its own limits: rlimits where `resource` exists an
 accepts them, CPU time by a watchdog thread, on Windows memory by the parent's Job Object.
 """
 import json
-import math
 import os
 import atexit
 import selectors
@@ -46,9 +45,9 @@ import time
 from dataclasses import asdict, dataclass, field
 
 from . import users
+from .project import PROJECT_ROOT
+from .confine import OUT, STDOUT_FILE, Limits, copy_name, limit_child
 
-PROJECT_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
 RECORD_LIMIT = 48 * 1024 * 1024  # bytes: largest record the parent will read
 RESULT_LIMIT = 32 * 1024 * 1024  # bytes: largest result (a probe's tapes) the parent will read
 WALL_FACTOR, WALL_EXTRA = 3.0, 5.0   # the wall-clock limit: WALL_FACTOR × timeout + WALL_EXTRA s
@@ -56,22 +55,6 @@ FLOOD_SLACK = 64 * 1024          # bytes past max_output before the parent kills
 USE_ZYGOTE = True                # fork children from a warm zygote where possible (and CHECKER_ZYGOTE != "0")
 ZYGOTE_START_SECONDS = 60.0      # s the zygote may take to import its modules before we do without it
 ZYGOTE_REPLY_SECONDS = 10.0      # s the zygote may take to fork a child before we do without it
-
-
-@dataclass
-class Limits:
-    """Per-run limits: CPU seconds, address-space MB, output bytes (stdout + stderr), and the user it runs as.
-
-    user: None runs the child as the grader's own user; a user name (the grader must be root) runs
-    only the child as that user, so files the grader keeps to itself (the solutions) stay unreadable.
-    The command line picks one for a root grader unless told otherwise (checker/users.py: nobody).
-    """
-    timeout: float = 20.0
-    memory_mb: int = 768
-    max_output: int = 256 * 1024
-    user: str | None = None
-    uid: int | None = None    # the run's own uid (users.RUN_UIDS, set by run_child): user's group, this uid
-    jail: str | None = None   # the run's work folder, chrooted into before the switch where the system allows it
 
 
 @dataclass
@@ -110,64 +93,6 @@ def portable():
             or not all(hasattr(os, name) for name in ("fork", "setsid", "killpg")))
 
 
-def set_rlimits(limits, cpu=True):
-    """Apply the run's resource limits to this process where the system accepts them.
-
-    Returns a note per limit not applied: the `resource` module missing (Windows), or setrlimit
-    refusing it (macOS refuses RLIMIT_AS: "current limit exceeds maximum limit"). A refused limit is
-    skipped, never an error: the run goes on, and the note goes to the run's record, not to the student.
-    cpu=False leaves RLIMIT_CPU out (the portable child watches its CPU time with a thread instead).
-    """
-    try:
-        import resource
-    except ImportError:   # Windows: the parent limits memory with a Job Object instead
-        missing = "file size" if sys.platform == "win32" else "memory, file size"
-        return [f"resource limits ({missing}): no resource module on this system, not applied"]
-    memory = limits.memory_mb * 1024 * 1024
-    seconds = max(1, math.ceil(limits.timeout))
-    wanted = [("RLIMIT_AS", (memory, memory), f"memory {limits.memory_mb} MB"),
-              ("RLIMIT_CPU", (seconds, seconds + 1), f"CPU time {seconds} s"),
-              ("RLIMIT_FSIZE", (FILE_LIMIT, FILE_LIMIT), f"file size {FILE_LIMIT >> 20} MB"),
-              ("RLIMIT_CORE", (0, 0), "no core dumps")]
-    notes = []
-    for name, value, what in wanted if cpu else [w for w in wanted if w[0] != "RLIMIT_CPU"]:
-        try:
-            resource.setrlimit(getattr(resource, name), value)
-        except (AttributeError, ValueError, OSError) as exc:
-            notes.append(f"{name} ({what}) refused by this system ({type(exc).__name__}: {exc}): not applied")
-    return notes
-
-
-def write_notes(fd, notes):
-    """Send the notes of skipped limits to the parent as one line on the result channel (fd)."""
-    if notes:
-        os.write(fd, (json.dumps({"limits_skipped": notes}) + "\n").encode())
-
-
-def _limit_child(limits, note_fd=None):
-    """The POSIX child's set-up after fork: its own session, the rlimits (notes of refused ones to note_fd),
-    and last the student's user."""
-    def apply():
-        os.setsid()
-        notes = set_rlimits(limits)
-        if note_fd is not None:
-            write_notes(note_fd, notes)
-        if limits.user:   # last: drop root for the student's user
-            _leave_root(limits)
-    return apply
-
-
-def _leave_root(limits, inside="/"):
-    """The run's own uid gets a process limit, the run its jail (where it has one), then root is dropped."""
-    if limits.uid is not None:
-        import resource
-        resource.setrlimit(resource.RLIMIT_NPROC, (users.NPROC, users.NPROC))
-    entry = users._entry(limits.user)   # read now: a jail has no /etc/passwd
-    if limits.jail:
-        users.enter_jail(limits.jail, inside)
-    users.drop_to(entry.pw_uid if limits.uid is None else limits.uid, entry.pw_gid)
-
-
 def _start(lab_path, task, settings_path, result_fd, work, env, limits, preload=()):
     """Start the child: forked by the zygote if it is on and answers, else with subprocess.
 
@@ -194,7 +119,7 @@ def _start(lab_path, task, settings_path, result_fd, work, env, limits, preload=
                f"fd:{result_fd}"]
     return _Subprocess(subprocess.Popen(command, cwd=work, env=env, stdin=subprocess.DEVNULL,
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, pass_fds=(result_fd,),
-                                        preexec_fn=_limit_child(limits, result_fd)))
+                                        preexec_fn=limit_child(limits, result_fd)))
 
 
 class _Subprocess:
@@ -499,14 +424,8 @@ class _Outcome:
     as_user: bool = False   # the interpreter itself was started as limits.user (the POSIX subprocess path)
 
 
-def child_copy_name(lab_path):
-    from .child import copy_name
-    return copy_name(lab_path)
-
-
 def _copy_lab(lab_path, work):
     """Copy the submitted file into the child's work folder under its own name (child.copy_name); never the original."""
-    from .child import copy_name
     shutil.copyfile(lab_path, os.path.join(work, copy_name(lab_path)))
 
 
@@ -534,9 +453,6 @@ def _check_user(result, limits, as_user, probes=None):
                                           jailed=bool(limits.jail), warm=warm)
         if problem:
             raise users.ChildUserError(problem)
-
-
-OUT = "out"   # the run's own sub-folder of its work folder: the only place its user may write
 
 
 def jailed_runs():
@@ -675,7 +591,7 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
         # others let another run (unjailed: CHECKER_NO_JAIL, macOS, the zygote off) read a classmate's submission
         # while it was graded. The settings (nothing private; read by the portable child while still root) stay
         # root's, and so does the folder: nothing in it is renamed or added
-        copy = child_copy_name(lab_path)
+        copy = copy_name(lab_path)
         for name in os.listdir(work):
             os.chmod(os.path.join(work, name), 0o644 if name not in (OUT, copy) else 0o700 if name == OUT else 0o400)
         os.chown(os.path.join(work, copy), run_uid.uid, entry.pw_gid)
@@ -811,9 +727,6 @@ def _ended(proc, limits):
 
 
 # ---------------------------------------------------------------- the portable path (Windows; CHECKER_PORTABLE=1)
-
-STDOUT_FILE = "lab_stdout.txt"   # in the work folder: the lab's stdout on the portable path
-
 
 class _Drain(threading.Thread):
     """Reads a pipe to its end in a thread (Windows cannot select() on pipes): keeps `keep` bytes, counts all."""

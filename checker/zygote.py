@@ -71,10 +71,10 @@ def _child(request, fds, base_path, close):
         import importlib
         for name in request.get("preload") or ():   # the lab's probes (a lab the zygote did not import): now, as root
             importlib.import_module(name)
-        from checker import sandbox
-        limits = sandbox.Limits(**request["limits"])
+        from checker import confine
+        limits = confine.Limits(**request["limits"])
         null = os.open(os.devnull, os.O_RDONLY)   # before the jail, which has no /dev
-        sandbox._limit_child(limits, result_fd)()  # setsid, the rlimits (refused ones as notes), the uid's process
+        confine.limit_child(limits, result_fd)()  # setsid, the rlimits (refused ones as notes), the uid's process
         # limit, the jail and the user switch, as the preexec_fn does
         os.dup2(null, 0)
         os.dup2(out_fd, 1)
@@ -282,7 +282,7 @@ def warm_up():
     switches user, so that a child running as another user never opens a file of Python's afterwards.
     """
     import importlib
-    importlib.import_module("checker.sandbox")
+    importlib.import_module("checker.confine")
     required = WARM_MODULES + _lab_probes()
     for name in required + WARM_STDLIB + _handout_imports():
         try:

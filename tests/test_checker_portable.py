@@ -58,7 +58,7 @@ import test_corpus_bullets as bullets_verdicts
 import test_corpus_more_shapes as more_shapes_verdicts
 import test_corpus_sleeping_crates as sleeping_crates_verdicts
 import test_corpus_tumbling_crates as tumbling_crates_verdicts
-from checker import sandbox
+from checker import confine, sandbox
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LABS = ("tumbling_crates", "more_shapes", "ball_on_ramp", "bullets", "sleeping_crates")
@@ -287,12 +287,12 @@ def test_refused_limits_are_skipped_with_a_note_each(monkeypatch):
         applied.append(kind)
 
     monkeypatch.setattr(resource, "setrlimit", setrlimit)
-    notes = sandbox.set_rlimits(sandbox.Limits(timeout=2.5, memory_mb=300))
+    notes = confine.set_rlimits(confine.Limits(timeout=2.5, memory_mb=300))
     assert applied == [resource.RLIMIT_CPU, resource.RLIMIT_FSIZE]
     assert [note.split(" (")[0] for note in notes] == ["RLIMIT_AS", "RLIMIT_CORE"]
     assert "memory 300 MB" in notes[0] and notes[0].endswith("not applied")
     applied.clear()
-    assert sandbox.set_rlimits(sandbox.Limits(), cpu=False)[0].startswith("RLIMIT_AS")
+    assert confine.set_rlimits(confine.Limits(), cpu=False)[0].startswith("RLIMIT_AS")
     assert resource.RLIMIT_CPU not in applied
 
 

@@ -20,7 +20,7 @@ import importlib
 import os
 from dataclasses import dataclass
 
-from ..sandbox import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
+from ..project import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STARTERS, SOLUTIONS = "starters", "solutions"   # the project's folders of the handouts and of the solutions
