@@ -1,4 +1,4 @@
-"""Pictures of failed behaviour checks (issue 14 §2): checker/pictures.py and --pictures.
+"""Pictures of failed behaviour checks (issue 14 §2): checker/replay/pictures.py and --pictures.
 
 One Ball on the Ramp file fails one scene cheaply: the solution with the
 push-out's SLOP raised from 0.5 to 6 px (graded with allow_edits), so a ball
@@ -17,7 +17,9 @@ import sys
 import pygame
 import pytest
 
-from checker import labs, pictures, report
+from checker import labs
+from checker.replay import pictures
+from checker.reporting import report
 from checker.grade import Grader
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -202,7 +204,8 @@ def test_a_file_that_does_not_load_gets_no_picture():
 def test_pictures_follow_the_failure(failing, monkeypatch):
     """Issue 30 item 4: the filmstrip starts a little before the failing frame and ends after it, frames the
     bodies the check is about, and its caption names the frame and the quantity; the HTML report links it."""
-    from checker import html_report, show
+    from checker.reporting import html_report
+    from checker.replay import show
     frames = failing.records["inside"]["records"]
     result = next(r for r in failing.results if r.id == "pushed_out_of_crate")
     reference = pictures.reference_record(LAB, "inside")["records"]

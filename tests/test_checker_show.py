@@ -1,7 +1,7 @@
 """python -m checker FILE --show (issue 30), driven headless as a student would use it.
 
 The tests set SDL's dummy video and audio drivers themselves and script the keys through the viewer's
-event source (checker/show_view.py run(events=...)); a real desktop window differs only in that
+event source (checker/replay/show_view.py run(events=...)); a real desktop window differs only in that
 pygame.event.get() delivers the keys. For every lab one file of its mistake corpus (tests/corpus_<lab>.py)
 with one wrong step is shown: --show opens on that step's check, the student's replayed run is the
 graded record frame for frame, the ghost is the solution's run (a run of solutions/<lab>.py made here
@@ -20,10 +20,12 @@ os.environ["SDL_VIDEODRIVER"] = "dummy"
 os.environ["SDL_AUDIODRIVER"] = "dummy"
 import pygame  # noqa: E402
 
-from checker import cli, lab_checks, labs, pictures, show, show_cases, show_cases_labs, show_view  # noqa: E402
+from checker import cli, labs
+from checker.judging import lab_checks
+from checker.replay import pictures, show, show_cases, show_cases_labs, show_view   # noqa: E402
 from lesson11 import records  # noqa: E402
 from checker.grade import Grader  # noqa: E402
-from checker.sandbox import Limits, run_child  # noqa: E402
+from checker.isolation.sandbox import Limits, run_child   # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
@@ -472,7 +474,7 @@ def test_more_shapes_sat_on_the_students_axes_is_drawn_as_a_sat_case():
     pairs are drawn as SAT cases with the pair's shapes from the probe's own list, both answers on the picture.
     The probe data here are made by hand (no corpus file fails that way): the lesson's answer from the grader's
     reference_sat, the student's with the depth doubled."""
-    from checker import probe_kit
+    from checker.judging import probe_kit
     from checker.labs.more_shapes import probes
     name, a, b = probes.axis_pairs()[0]   # two aligned boxes, overlapping
     normal, depth = probe_kit.reference_sat(a, b)

@@ -8,19 +8,19 @@ A lab is its id and the files named from it (Lab below finds each one; no lab sp
                                scenes first);
   checker/labs/<id>/probes.py  the inputs and references of its probes (REQUIRED, PROBES {name: (function,
                                probe)}, SPLICES): they run in the child to record a tape and again in the
-                               grader to judge it (checker/tape.py, checker/probing.py);
+                               grader to judge it (checker/judging/tape.py, checker/judging/probing.py);
   checker/labs/<id>/scenes.py  its scenes: SCENARIOS {name: settings builder}, and what they measure;
   starters/<id>_starter.py     the handout: its functions holding a step region are the student's, and the
                                grader replays the probes' calls of them through its code;
   solutions/<id>.py            the reference solution (probes splice its steps in; --pictures draws its runs).
 To add a lab, add those files: every folder here holding a checks.py is a lab. Helpers several labs share are
-in checker/probe_kit.py and checker/lab_checks.py.
+in checker/judging/probe_kit.py and checker/judging/lab_checks.py.
 """
 import importlib
 import os
 from dataclasses import dataclass
 
-from ..project import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
+from checker.project import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STARTERS, SOLUTIONS = "starters", "solutions"   # the project's folders of the handouts and of the solutions

@@ -16,7 +16,7 @@ JSON schema (`--json`, version 1):
       "score": float, "max_score": float, "seconds": float,
       "seed": int | null,               # the seed of the inputs the probes drew (checker --seed N repeats them)
       "flags": [{"step": int, "line": int, "rule": str, "what": str, "text": str}],   # constructs in the
-                                        # step regions the step rules flagged (checker/step_rules.py), [] if none
+                                        # step regions the step rules flagged (checker/reading/step_rules.py), [] if none
       "message": str,                   # why the entry could not be graded ("" when it was)
       "criteria": [{                     # in the lab's fixed order ([] when not graded)
           "id": str,                     # stable check id, e.g. "corner_tips"
@@ -40,8 +40,8 @@ import tempfile
 import unicodedata
 from dataclasses import dataclass
 
-from .checks import step_of
-from .outputs import relative, submission_names
+from checker.judging.checks import step_of
+from checker.reporting.outputs import relative, submission_names
 
 SYMBOL = {"pass": ":)", "fail": ":(", "skip": ":|", "error": ":("}
 
@@ -173,7 +173,7 @@ def gradescope(reports, root=None, pictures=None):
     """Gradescope's results.json: top-level score, and one test per check (name, score, max_score, status, output).
 
     Meant for one submission (one row); a row that could not be graded is one failed test saying why.
-    pictures: {row path: {check id: [checker.pictures.Picture]}} (--pictures): a test with pictures gets
+    pictures: {row path: {check id: [checker.replay.pictures.Picture]}} (--pictures): a test with pictures gets
     output_format "html", its text in a <pre> and each picture as an <img> with a data: URI.
     """
     tests = []

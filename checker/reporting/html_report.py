@@ -6,13 +6,13 @@ files passed, failed, erred or were skipped there, so the step the class
 struggled with stands out), the mistakes named per check (how many files fail it, each named mistake with its
 count and the files that made it, so an instructor knows what to reteach), the summary table (click a heading to sort by
 file, lab, score, status or first problem), and each file's checks with their
-messages, hints and pictures (checker/pictures.py).
+messages, hints and pictures (checker/replay/pictures.py).
 """
 import html
 
-from .outputs import submission_names
-from .report import (SYMBOL, NotGraded, _summary_line, check_label, class_mistakes, lab_means, message_of, reason,
-                     write_atomic)
+from checker.reporting.outputs import submission_names
+from checker.reporting.report import (SYMBOL, NotGraded, _summary_line, check_label, class_mistakes, lab_means,
+                                      message_of, reason, write_atomic)
 
 STATUS_ORDER = ("pass", "fail", "error", "skip")
 COLOURS = {"pass": "#3a9a5b", "fail": "#d0453a", "error": "#7d1d17", "skip": "#b9bcc4"}

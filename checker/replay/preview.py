@@ -14,9 +14,9 @@ import os
 import tempfile
 import threading
 
-from . import source as source_text
-from .handout import MarkerError, step_regions
-from .sandbox import Limits, run_child
+from checker.reading import source as source_text
+from checker.reading.handout import MarkerError, step_regions
+from checker.isolation.sandbox import Limits, run_child
 
 VISIBLE_PX = 5.0    # px: a body this far from the solution's is visibly elsewhere at the window's scale
 VISIBLE_DEG = 5.0   # degrees: a body turned this much more or less than the solution's visibly differs
@@ -66,9 +66,9 @@ def first_visible(frames, reference):
 
 
 def trusted_frames(lab, scene, record):
-    """The record's frames when they can be what lesson11.runtime wrote for the scene (checker/lab_checks.py
+    """The record's frames when they can be what lesson11.runtime wrote for the scene (checker/judging/lab_checks.py
     record_problem), else []: the record comes from the child, where the student's code ran."""
-    from .lab_checks import record_problem
+    from checker.judging.lab_checks import record_problem
     settings = lab.scenarios().get(scene)
     if not record or settings is None or record_problem(record, settings):
         return []
@@ -188,7 +188,7 @@ def scene_for(run, path, text, lab, result, reference_record):
     `text`): the student's failing step with the solution's other steps (note: describe()'s line; the whole file,
     note "", when the check names no step, the markers cannot be read or the spliced file runs to the end in no
     scene), in the scene choose() picks.
-    run: Grader.run; reference_record(lab, scene): the solution's record (checker/pictures.py's)."""
+    run: Grader.run; reference_record(lab, scene): the solution's record (checker/replay/pictures.py's)."""
     step = getattr(result, "step", None)
     spliced = None
     if step and getattr(lab, "solution", None):

@@ -6,7 +6,7 @@ functions (those holding a step region in the starter), the spliced sources
 some probes use (the student's function with the solution's other step in it,
 checker/labs/tumbling_crates/probes.py `with_reference_steps`), and a fresh random seed for
 the inputs the probes draw per run. After the run, `judge` replays the child's
-tapes (checker/tape.py) through the same probes, with the starter as the
+tapes (checker/judging/tape.py) through the same probes, with the starter as the
 module, and returns what the lab's checks read: {"missing": [...],
 "functions": {probe name: {"ok": True, "data": ...} or {"ok": False, "error": ...}}}.
 """
@@ -14,10 +14,10 @@ import ast
 import importlib
 import secrets
 
-from . import budget, tape
-from . import source as source_text
-from .common import value_text
-from .handout import MarkerError, step_regions
+from checker.judging import budget, tape
+from checker.reading import source as source_text
+from checker.judging.common import value_text
+from checker.reading.handout import MarkerError, step_regions
 
 _STARTERS = {}   # starter path -> (its compiled code, its step functions)
 _CONSTANTS = {}  # starter path -> its constants (handout_constants)

@@ -1,12 +1,12 @@
 """The --show window: a recorded scene replayed with the lab's own drawing code, the solution's beside it.
 
-The student's frames and the solution's come from checker/show.py's Replay (recorded by the runtime
+The student's frames and the solution's come from checker/replay/show.py's Replay (recorded by the runtime
 in the isolated child, and by a run of the solution on the grading side); they are drawn with
 lesson11.physics2d.draw's draw_body and draw_contacts, the functions the labs draw with, through
 RecordedBody (a recorded body that looks like a Body to them). Both runs advance in lockstep.
 
 The lab's solver panel (lesson11/panel.py, LabPanel.draw_recorded) shows the World's settings the
-replayed run had (recorded by the runtime, validated by checker/lab_checks.py world_settings) and, where
+replayed run had (recorded by the runtime, validated by checker/judging/lab_checks.py world_settings) and, where
 they differ, the solution's; read-only: no panel key reaches it but H (its size), and it says "replay"
 where the live panel has its timings. It sits where it covers the fewest moving bodies of both runs
 (place_panel), never over the title or the timeline.
@@ -25,9 +25,9 @@ from pygame import Vector2
 from lesson11.panel import MODES, LabPanel
 from lesson11.physics2d.draw import draw_body, draw_contacts
 
-from .pictures import _font
-from .preview import recorded_colour
-from .show_cases import wrapped
+from checker.replay.pictures import _font
+from checker.replay.preview import recorded_colour
+from checker.replay.show_cases import wrapped
 
 SCENE = (900, 600)          # px: the labs' window
 TIMELINE_H = 130            # px: the timeline under the scene
@@ -354,8 +354,8 @@ def run(replay, events=None, frames=None, screen=None):
     events: a callable returning this frame's events (default pygame.event.get; tests script keys).
     With a driver that shows nothing (dummy, offscreen) and no `frames`, the replay plays once and stops.
     """
-    from .pictures import USER_VIDEO_DRIVER
-    if USER_VIDEO_DRIVER is None:   # checker/pictures.py set "dummy" for its own drawing: the window needs the desktop
+    from checker.replay.pictures import USER_VIDEO_DRIVER
+    if USER_VIDEO_DRIVER is None:   # checker/replay/pictures.py set "dummy" for its own drawing: the window needs the desktop
         os.environ.pop("SDL_VIDEODRIVER", None)
     if frames is None and (USER_VIDEO_DRIVER or "").lower() in ("dummy", "offscreen"):
         frames = len(replay.frames) + 1

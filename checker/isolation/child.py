@@ -1,7 +1,7 @@
 """The child process that runs one lab file for the checker, isolated from the grader.
 
-    python -m checker.child LAB_PATH TASK SETTINGS_JSON fd:N
-    python -m checker.child LAB_PATH TASK SETTINGS_JSON stdout:FILE     (the portable path)
+    python -m checker.isolation.child LAB_PATH TASK SETTINGS_JSON fd:N
+    python -m checker.isolation.child LAB_PATH TASK SETTINGS_JSON stdout:FILE     (the portable path)
 
 TASK is "probe" (import the lab and test its own functions on the lesson's
 cases) or "scenario" (configure the lab runtime with SETTINGS_JSON and run the
@@ -16,7 +16,7 @@ student's file and line) and imported under the module name "lab_under_test",
 so its `if __name__ == "__main__":` guard does not run main(). No bytecode is
 written anywhere. What the child calls after the lab's code ran (json.dumps, the
 pipe's write, describe(), ...) is bound before the lab loads. On the portable path
-(Windows, CHECKER_PORTABLE=1: checker/sandbox.py) the result channel is the child's
+(Windows, CHECKER_PORTABLE=1: checker/isolation/sandbox.py) the result channel is the child's
 own stdout, and the lab's stdout goes to FILE from before the lab loads; the child
 then applies its limits itself (CHECKER_CHILD_LIMITS, see Watchdog).
 
@@ -39,8 +39,8 @@ import threading
 import time
 import types
 
-from checker.confine import OUT, copy_name
-from checker.source import read as read_source   # imported here, so the zygote has it warm
+from checker.isolation.confine import OUT, copy_name
+from checker.reading.source import read as read_source   # imported here, so the zygote has it warm
 
 sys.dont_write_bytecode = True
 
@@ -132,7 +132,7 @@ def describe(exc, lab_path, _format_exception=traceback.format_exception):
 def load_lab(lab_path, copy_path):
     """Compile and run the lab's source as module MODULE_NAME; returns the module.
 
-    It compiles the text the grader read and numbered (checker/source.py), never the bytes under a coding
+    It compiles the text the grader read and numbered (checker/reading/source.py), never the bytes under a coding
     of the file's choosing, so the lines the grader's rules read are the lines that run. It reads the copy
     in the work folder (the child may not read the original); the grader checks the original is unchanged.
     """
@@ -229,7 +229,7 @@ def _stdout_channel(path):
 def _portable_limits(result_pipe, trace):
     """Apply the run's limits from inside (CHECKER_CHILD_LIMITS): the rlimits the system accepts (notes of the
     refused ones go to the parent) and the Watchdog for CPU time. Returns the confine.Limits."""
-    from checker import confine
+    from checker.isolation import confine
     global _watchdog
     limits = confine.Limits(**json.loads(os.environ.pop("CHECKER_CHILD_LIMITS", "{}")))
     confine.write_notes(result_pipe.fileno(), confine.set_rlimits(limits, cpu=False))
@@ -238,7 +238,7 @@ def _portable_limits(result_pipe, trace):
 
 
 def run_probe(module, lab_path, probes, seconds, settings):
-    """Each of the lab's probes in turn, recorded on a tape (checker/tape.py); a failing one gets its own error.
+    """Each of the lab's probes in turn, recorded on a tape (checker/judging/tape.py); a failing one gets its own error.
 
     `probes.PROBES` maps a probe's name to (the lab function it needs, probe(module, lab_path)).
     The probe sees the lab through a tape.Recorder, which records every call of a step function
@@ -247,7 +247,7 @@ def run_probe(module, lab_path, probes, seconds, settings):
     verdict or reference value; the parent replays each tape through the same probe and judges.
     A probe that runs longer than `seconds` of CPU is stopped and reported with the line it was at.
     """
-    from checker import tape
+    from checker.judging import tape
     result = {"tapes": {}, "constants": constants_of(module),
               "missing": [m for m in probes.REQUIRED if not callable(getattr(module, m, None))]}
     recorder = tape.Recorder(module, settings.get("steps") or (), settings.get("splices"), lab_path,
@@ -269,7 +269,7 @@ def run_probe(module, lab_path, probes, seconds, settings):
 
 def constants_of(module, limit=200):
     """The lab's top-level numbers, text and tuples of them (its constants), JSON-ready, for the replay."""
-    from checker import tape
+    from checker.judging import tape
     out = {}
     for name, value in list(vars(module).items())[:5000]:
         if not name.startswith("_") and tape._plain(value) and len(out) < limit:
@@ -323,7 +323,7 @@ def main(argv):
     # the checker's own settings; what is left goes to the lab runtime
     probes = importlib.import_module(settings.pop("probes"))
     if portable and limits.user:   # the POSIX path left root before the lab's interpreter started; here, now,
-        from checker import confine, zygote   # after importing what a lab needs, as the zygote does
+        from checker.isolation import confine, zygote   # after importing what a lab needs, as the zygote does
         zygote.warm_up()
         confine.leave_root(limits, inside="/" + OUT)
     # the copy sandbox.run_child put in the work folder, the parent of the child's own (root's: the child reads it)

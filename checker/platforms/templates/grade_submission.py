@@ -163,7 +163,7 @@ def run_checker(path, config):
         pictures = None
         if config.get("pictures", True):
             try:   # the grader's own folder (mode 700): the student's user cannot plant a link in it, and the
-                # checker writes each picture there with no-follow, exclusive opens (checker/outputs.py)
+                # checker writes each picture there with no-follow, exclusive opens (checker/reporting/outputs.py)
                 pictures = tempfile.mkdtemp(prefix="pictures-", dir=work)
             except OSError as exc:
                 print(f"grade_submission: no pictures ({exc})", file=sys.stderr)

@@ -17,8 +17,8 @@ from pygame import Vector2
 
 from lesson11.physics2d import box_points, centre_of, cross, edge_normals, project, regular_polygon
 
-from .common import real, value_text
-from .tape import judging, reference, splice_name  # noqa: F401 (the labs' probes import them from here)
+from checker.judging.common import real, value_text
+from checker.judging.tape import judging, reference, splice_name   # noqa: F401 (the labs' probes import them from here)
 
 
 def twin(body):
@@ -43,7 +43,7 @@ def with_reference_steps(module, lab_path, function, steps):
 
     Grading step 2 with the solution's step 3 (and so on) tells a mistake in one step from a
     mistake in the next: e.g. a step 3 that negates the depth instead of the axis. The grading
-    parent builds the spliced source (checker/probing.py, from the probe module's SPLICES, so
+    parent builds the spliced source (checker/judging/probing.py, from the probe module's SPLICES, so
     the child never opens the solution); `module` (a tape.Recorder or tape.Replayer) compiles and
     records it in the child, or replays it in the parent. None when the markers cannot be found.
     """

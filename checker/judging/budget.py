@@ -1,6 +1,6 @@
 """A budget on the grader's own work for one file: the replay of its tapes and its checks.
 
-The child's runs have their limits (checker/sandbox.py); the grader's replay of what a child
+The child's runs have their limits (checker/isolation/sandbox.py); the grader's replay of what a child
 reported, and the checks on it, run in the grading process itself. What they cost depends on
 the file through the tape, which the file's code can write, so they get a budget too: `cpu`
 seconds of the judging thread's CPU time and a wall-clock `deadline` (time.monotonic(); the

@@ -2,16 +2,16 @@
 
 The file is graded exactly as `python -m checker FILE` grades it (checker/grade.py: the student's
 code runs only in the isolated child, with its limits); the grader keeps the records the child wrote.
-The solution's run of the same scene is computed on the grading side (checker/pictures.py's
+The solution's run of the same scene is computed on the grading side (checker/replay/pictures.py's
 reference_record, one child run of solutions/<lab>.py). Nothing of the student's file is imported
-or run in this process: the window replays recorded frames (checker/show_view.py).
+or run in this process: the window replays recorded frames (checker/replay/show_view.py).
 
 What is shown (Replay):
   * CHECK, or the first failed check of the file;
   * for a behaviour check, the scene it reads; for a failed function check, whose scenes never ran,
     a scene run ungraded with the student's failing step and the lesson's other steps, where it
-    differs from the solution's (checker/preview.py, as --pictures draws it), and the failing cases
-    drawn (checker/show_cases.py);
+    differs from the solution's (checker/replay/preview.py, as --pictures draws it), and the failing cases
+    drawn (checker/replay/show_cases.py);
   * the check's quantity per frame with its bound (SERIES below; for a function check, how far
     the student's bodies are from the solution's), and the failing frame: the frame the check's
     message names, else the first frame the quantity passes its bound, else the first frame the
@@ -24,11 +24,12 @@ from dataclasses import dataclass, field
 
 from lesson11 import records as metrics
 
-from . import pictures, report
-from . import preview as previews
-from .checks import ERROR, FAIL, PASS
-from .grade import Grader
-from .lab_checks import world_settings
+from checker.replay import pictures
+from checker.reporting import report
+from checker.replay import preview as previews
+from checker.judging.checks import ERROR, FAIL, PASS
+from checker.grade import Grader
+from checker.judging.lab_checks import world_settings
 
 VISIBLE = previews.VISIBLE_PX   # px: a body this far from the solution's is visibly elsewhere
 NO_DISPLAY = "no display: use --pictures DIR"
@@ -166,7 +167,7 @@ class Replay:
 
     frames / reference: the student's and the solution's recorded frames (lesson11.runtime records);
     values: the quantity per student frame; fail_frame: a recorded frame number (or None);
-    cases: the failing cases of a function check (checker/show_cases.py), possibly [];
+    cases: the failing cases of a function check (checker/replay/show_cases.py), possibly [];
     settings / reference_settings: the World's settings per student / solution frame (lab_checks.world_settings:
     validated, None where none was recorded or one was ignored); settings_note: why one was ignored, or "".
     """
@@ -186,7 +187,7 @@ class Replay:
     settings: list = field(default_factory=list)
     reference_settings: list = field(default_factory=list)
     settings_note: str = ""
-    spliced: str = ""            # "your step 5 with the lesson's steps 2, 3, 4, 6" (checker/preview.py), or ""
+    spliced: str = ""            # "your step 5 with the lesson's steps 2, 3, 4, 6" (checker/replay/preview.py), or ""
 
     def settings_at(self, index):
         """(the student's World settings at frames[index], the solution's at the same frame number): dicts or None."""
@@ -285,7 +286,7 @@ def _scene_choice(row, result, rerun, reference_record):
     """(scene, graded, student frames, solution frames, spliced note) for a result.
 
     A behaviour check: the scene it reads, as graded. A function check (its scenes never ran): the scene
-    the grader ran ungraded for the file's first failure (checker/preview.py: the failing step with the
+    the grader ran ungraded for the file's first failure (checker/replay/preview.py: the failing step with the
     lesson's other steps, in a scene where the run differs from the solution's); for another check, the
     same made again for that check's own step (rerun(result): in the isolated child, as the grader does)."""
     lab = row.lab
@@ -339,7 +340,7 @@ def build_replay(row, result, functions=None, rerun=None, reference_record=None)
     """The Replay of one graded row's result: its scene (if any was recorded), the solution's, the quantity.
 
     rerun(result) -> (scene, record, note): a function check's scene made for that check (see _scene_choice)."""
-    from . import show_cases
+    from checker.replay import show_cases
     lab = row.lab
     reference_record = reference_record or pictures.reference_record
     scene, graded, frames, reference, spliced = _scene_choice(row, result, rerun, reference_record)
@@ -368,8 +369,8 @@ def prepare(path, lab, check_id=None, seed=None, limits=None, options=None, anno
                            "every check passes: nothing to show")
     if result.id == "loads" and result.status != PASS:
         return row, None, "the file does not load (see above)"
-    def rerun(other):   # another function check's step, run as the grader runs the preview (checker/preview.py)
-        from . import source
+    def rerun(other):   # another function check's step, run as the grader runs the preview (checker/replay/preview.py)
+        from checker.reading import source
         try:
             text = source.read(path)
         except (OSError, source.SourceError):
@@ -394,13 +395,13 @@ def display_problem(environ=None, platform=None):
 
 def main(args, entries, events=None, frames=None, out=None, err=None):
     """Run --show for the command line (one entry); returns the exit status. events / frames: for tests
-    (an event source and a frame limit, checker/show_view.py)."""
+    (an event source and a frame limit, checker/replay/show_view.py)."""
     out, err = out or sys.stdout, err or sys.stderr
     entry = entries[0]
     if not entry.gradable:
         print(f"checker: {entry.path}: not graded: {entry.problem}", file=err)
         return 1
-    from .sandbox import Limits
+    from checker.isolation.sandbox import Limits
     limits = Limits(args.timeout, args.memory, args.max_output * 1024, args.child_user)
     check_id = args.show or None
     if check_id and check_id not in [c.id for c in entry.lab.checks.checks]:
@@ -425,7 +426,7 @@ def main(args, entries, events=None, frames=None, out=None, err=None):
         return 0 if row.passed else 1
     for line in replay.summary():
         print(line, file=out)
-    from . import show_view
+    from checker.replay import show_view
     try:
         show_view.run(replay, events=events, frames=frames)
     except Exception as exc:   # a bug of ours, or a window the system refused: one line, the grades stand

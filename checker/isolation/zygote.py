@@ -1,15 +1,15 @@
 """A fork server ("zygote") that starts the checker's child processes already warm.
 
-Every child the checker starts (checker/child.py) would spend its first ~0.3 CPU-s starting
+Every child the checker starts (checker/isolation/child.py) would spend its first ~0.3 CPU-s starting
 Python and importing pygame, lesson11 and the checker's probes before any lab code runs.
 The zygote does that work once per grading run: it imports those modules (and nothing else:
 it never calls pygame.init(), opens a window or configures lesson11.runtime), then serves
 requests from the grader over a Unix socket. For each request it forks; the forked process
-sets itself up the way `python -X faulthandler -m checker.child ...` under sandbox.run_child
+sets itself up the way `python -X faulthandler -m checker.isolation.child ...` under sandbox.run_child
 would be set up (its own session, the same resource limits, the working directory, the
 environment, sys.path as PYTHONPATH would make it, stdin from /dev/null, stdout and stderr on
 the grader's pipes, unbuffered utf-8 text streams, no bytecode written, faulthandler on) and
-runs checker/child.py as __main__. The zygote reaps its children and reports each exit status.
+runs checker/isolation/child.py as __main__. The zygote reaps its children and reports each exit status.
 
 Protocol (SOCK_SEQPACKET, one JSON message per packet):
   grader -> zygote, on the control socket: {"argv", "cwd", "env", "limits"} with four file
@@ -20,8 +20,8 @@ Protocol (SOCK_SEQPACKET, one JSON message per packet):
 The zygote says {"ready": true} on the control socket once its imports are done, and leaves
 (killing the process groups of children still running) when the grader's end is closed.
 
-The grader side is checker.sandbox (ZygoteClient); the zygote is started with
-`python -m checker.zygote FD`.
+The grader side is checker.isolation.sandbox (ZygoteClient); the zygote is started with
+`python -m checker.isolation.zygote FD`.
 """
 import functools
 import json
@@ -33,7 +33,7 @@ import sys
 
 WARM_MODULES = ("pygame", "pygame.font", "pygame.freetype", "pygame.sysfont", "pygame.pkgdata", "pygame.sprite",
                 "pygame.surfarray", "pygame.sndarray", "numpy", "lesson11.runtime", "lesson11.panel",
-                "lesson11.physics2d", "lesson11.physics2d.draw", "checker.child", "checker.tape")
+                "lesson11.physics2d", "lesson11.physics2d.draw", "checker.isolation.child", "checker.judging.tape")
 # and every lab's probe module (_lab_probes: found as the registry finds the labs, so a new lab needs no row here)
 # the standard library a step or a lab may import (item 7 of issue 35 allows the pure ones in steps), and what
 # the child's own error and timing paths import late: all imported here, so a child that runs as another user
@@ -71,7 +71,7 @@ def _child(request, fds, base_path, close):
         import importlib
         for name in request.get("preload") or ():   # the lab's probes (a lab the zygote did not import): now, as root
             importlib.import_module(name)
-        from checker import confine
+        from checker.isolation import confine
         limits = confine.Limits(**request["limits"])
         null = os.open(os.devnull, os.O_RDONLY)   # before the jail, which has no /dev
         confine.limit_child(limits, result_fd)()  # setsid, the rlimits (refused ones as notes), the uid's process
@@ -268,7 +268,7 @@ def _send(sock, message):
 def main(argv):
     control = socket.socket(fileno=int(argv[0]))
     warm_up()
-    _main_code("checker.child")
+    _main_code("checker.isolation.child")
     import gc
     gc.collect()
     gc.freeze()  # what is here now stays shared with the children: their collections never walk it
@@ -278,11 +278,11 @@ def main(argv):
 def warm_up():
     """Import everything a child needs and keep the data files pygame opens lazily, while still the grader's user.
 
-    The zygote does it once before it forks; the portable child (checker/child.py) does it itself before it
+    The zygote does it once before it forks; the portable child (checker/isolation/child.py) does it itself before it
     switches user, so that a child running as another user never opens a file of Python's afterwards.
     """
     import importlib
-    importlib.import_module("checker.confine")
+    importlib.import_module("checker.isolation.confine")
     required = WARM_MODULES + _lab_probes()
     for name in required + WARM_STDLIB + _handout_imports():
         try:

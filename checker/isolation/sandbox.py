@@ -1,6 +1,6 @@
 """Run one lab file in a child process with limits, and collect what it left behind.
 
-The child (checker/child.py) runs in a fresh temporary directory with SDL's
+The child (checker/isolation/child.py) runs in a fresh temporary directory with SDL's
 dummy video and audio drivers, in its own process group, with:
   - a CPU-time limit (`timeout`, s of CPU): at the soft limit the child's faulthandler dumps the
     lab's stack (SIGXCPU), so we can say where it looped, and a second later the kernel kills it.
@@ -12,7 +12,7 @@ dummy video and audio drivers, in its own process group, with:
   - an output cap (`max_output` bytes over stdout + stderr): the child raises at the print() that
     crosses it (so the report names the line); past FLOOD_SLACK more the parent kills the group.
 
-Where os.fork and Unix sockets are available the child is forked from a zygote (checker/zygote.py),
+Where os.fork and Unix sockets are available the child is forked from a zygote (checker/isolation/zygote.py),
 a process started once per grading run that has already imported pygame, lesson11 and the probes,
 so each run saves starting Python and those imports. CHECKER_ZYGOTE=0 in the environment (or
 USE_ZYGOTE = False here) turns it off; whenever the zygote cannot be started or stops answering,
@@ -44,9 +44,9 @@ import threading
 import time
 from dataclasses import asdict, dataclass, field
 
-from . import users
-from .project import PROJECT_ROOT
-from .confine import OUT, STDOUT_FILE, Limits, copy_name, limit_child
+from checker.isolation import users
+from checker.project import PROJECT_ROOT
+from checker.isolation.confine import OUT, STDOUT_FILE, Limits, copy_name, limit_child
 
 RECORD_LIMIT = 48 * 1024 * 1024  # bytes: largest record the parent will read
 RESULT_LIMIT = 32 * 1024 * 1024  # bytes: largest result (a probe's tapes) the parent will read
@@ -106,7 +106,7 @@ def _start(lab_path, task, settings_path, result_fd, work, env, limits, preload=
             if client is None:
                 break
             inside = "/" + os.path.relpath(work, limits.jail) if limits.jail else work
-            proc = client.spawn(["checker.child", lab_path, task, settings_path, "fd:3"], inside, env, limits,
+            proc = client.spawn(["checker.isolation.child", lab_path, task, settings_path, "fd:3"], inside, env, limits,
                                 result_fd, preload)
             if proc is not None:
                 return proc
@@ -115,7 +115,7 @@ def _start(lab_path, task, settings_path, result_fd, work, env, limits, preload=
         if problem:
             raise users.ChildUserError(problem)
         limits = Limits(**dict(asdict(limits), jail=None))
-    command = [sys.executable, "-X", "faulthandler", "-m", "checker.child", lab_path, task, settings_path,
+    command = [sys.executable, "-X", "faulthandler", "-m", "checker.isolation.child", lab_path, task, settings_path,
                f"fd:{result_fd}"]
     return _Subprocess(subprocess.Popen(command, cwd=work, env=env, stdin=subprocess.DEVNULL,
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, pass_fds=(result_fd,),
@@ -158,7 +158,7 @@ class _Forked:
         try:
             data = self.reply.recv(4096)
         except socket.timeout:
-            raise subprocess.TimeoutExpired("checker.child", timeout) from None
+            raise subprocess.TimeoutExpired("checker.isolation.child", timeout) from None
         except OSError:
             data = b""
         self._waited = True
@@ -184,7 +184,7 @@ def zygote_enabled():
 
 
 class ZygoteClient:
-    """The grader's end of one zygote process (checker/zygote.py); shared by threads.
+    """The grader's end of one zygote process (checker/isolation/zygote.py); shared by threads.
 
     Creating one starts the zygote; wait_ready() waits for it to finish its imports.
     """
@@ -197,7 +197,7 @@ class ZygoteClient:
         env.pop("CHECKER_FAULT_SECONDS", None)
         try:
             self.process = subprocess.Popen(
-                [sys.executable, "-m", "checker.zygote", str(theirs.fileno())], cwd=PROJECT_ROOT, env=env,
+                [sys.executable, "-m", "checker.isolation.zygote", str(theirs.fileno())], cwd=PROJECT_ROOT, env=env,
                 stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                 pass_fds=(theirs.fileno(),), start_new_session=True)
         finally:
@@ -313,7 +313,7 @@ def _zygote_client():
 
     A zygote that broke (it did not answer in time on a busy machine, say) is replaced by a new one up to
     ZYGOTE_RESTARTS times: the subprocess path it would fall back to cannot run as a child user who may
-    not read Python's own files (checker/users.py)."""
+    not read Python's own files (checker/isolation/users.py)."""
     global _zygote
     with _zygote_lock:
         _start_locked()
@@ -446,7 +446,7 @@ def _check_user(result, limits, as_user, probes=None):
     tapes = ((result.get("probe") or {}).get("tapes") or {}) if isinstance(result.get("probe"), dict) else {}
     errors = [result.get("error")] + [t.get("error") for t in tapes.values() if isinstance(t, dict)]
     path = [PROJECT_ROOT] + [p for p in sys.path if p and os.path.abspath(p) != os.getcwd()]
-    from .zygote import warm_names
+    from checker.isolation.zygote import warm_names
     warm = () if as_user else warm_names(probes)   # forked or portable: these were imported before leaving root
     for error in errors:
         problem = users.unreadable_import(error if isinstance(error, dict) else None, limits.user, path,
@@ -464,7 +464,7 @@ def jailed_runs():
 
 
 def run_child(lab_path, task, settings, limits):
-    """Run `python -m checker.child` on lab_path; returns a RunResult. Never raises for lab behaviour.
+    """Run `python -m checker.isolation.child` on lab_path; returns a RunResult. Never raises for lab behaviour.
 
     The work folder is the grader's: the settings and the lab's copy, readable by the child, not writable;
     its OUT sub-folder is the child's (its working folder: the record, the traceback, what the lab writes).
@@ -762,15 +762,15 @@ class _Drain(threading.Thread):
 
 
 def _run_portable(lab_path, task, settings_path, work, env, limits, deadline, probes=None):
-    """Start `python -m checker.child` with plain subprocess and watch it from here.
+    """Start `python -m checker.isolation.child` with plain subprocess and watch it from here.
 
     The child's real stdout is its result channel (the child moves the lab's stdout to STDOUT_FILE
     before the lab loads); its stderr is the lab's. Both pipes are read by threads. The parent stops
     the whole process tree at the wall-clock limit or past max_output + FLOOD_SLACK bytes of output;
-    the child applies its own resource limits and watches its CPU time (checker/child.py).
+    the child applies its own resource limits and watches its CPU time (checker/isolation/child.py).
     """
     out_path = os.path.join(work, STDOUT_FILE)
-    command = [sys.executable, "-X", "faulthandler", "-m", "checker.child", lab_path, task, settings_path,
+    command = [sys.executable, "-X", "faulthandler", "-m", "checker.isolation.child", lab_path, task, settings_path,
                f"stdout:{STDOUT_FILE}"]
     env = dict(env, CHECKER_CHILD_LIMITS=json.dumps(asdict(limits)))
     if sys.platform == "win32":

@@ -8,12 +8,12 @@ raises Fail / Error with the hint it is given.
 import ast
 import math
 
-from . import handout, source
+from checker.reading import handout, source
 from lesson11.physics2d.world import CONTACT_RULES, EFFECTS, ORDERS, SOLVERS
 
-from .causes import mistake
-from .checks import Error, Fail, Hint, Mistake
-from .common import describe_function_error, describe_run_failure
+from checker.judging.causes import mistake
+from checker.judging.checks import Error, Fail, Hint, Mistake
+from checker.judging.common import describe_function_error, describe_run_failure
 
 RUNTIME_HOOKS = ("seed", "scene", "frame_budget", "tick", "events", "record")
 
@@ -143,7 +143,7 @@ def missing_hooks(sub, crash_hint, hint=RUNTIME_HINT, hooks=RUNTIME_HOOKS):
 def function_data(sub, functions, probe, function, step, crash_hint):
     """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped.
 
-    Fail first when the step rules flagged the step's code (sub.flags, checker/step_rules.py): a
+    Fail first when the step rules flagged the step's code (sub.flags, checker/reading/step_rules.py): a
     step that reaches around the exercise earns nothing, whatever its function returns.
     """
     # a breach in any step of the same function counts: steps 4 and 5 both live in resolve(), so a step 4 that

@@ -6,7 +6,7 @@ import os
 import sys
 from dataclasses import dataclass
 
-from . import users
+from checker.isolation import users
 
 FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
 OUT = "out"   # the run's own sub-folder of its work folder: the only place its user may write
@@ -19,7 +19,7 @@ class Limits:
 
     user: None runs the child as the grader's own user; a user name (the grader must be root) runs
     only the child as that user, so files the grader keeps to itself (the solutions) stay unreadable.
-    The command line picks one for a root grader unless told otherwise (checker/users.py: nobody).
+    The command line picks one for a root grader unless told otherwise (checker/isolation/users.py: nobody).
     """
     timeout: float = 20.0
     memory_mb: int = 768

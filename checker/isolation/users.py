@@ -7,7 +7,7 @@ runs the child as itself, as before.
 
 Each run takes a uid of its own from RUN_UIDS (take_uid: locked, so no two runs share one) with the user's group,
 and everything running as that uid is killed when the run ends (kill_uid); where root may chroot (jail_works) the
-forked child is jailed in its work folder before it switches. The forked children (checker/zygote.py) need no file
+forked child is jailed in its work folder before it switches. The forked children (checker/isolation/zygote.py) need no file
 after they switch user: the zygote, still root, imported everything a lab and its probes use. What a child can still need to open is a module it imports
 that the zygote did not, or all of Python when the zygote is off; when the child's user cannot read it,
 the checker says so in one line (ChildUserError) and does not blame the student.
@@ -346,11 +346,11 @@ def answers_problem(user, project):
 def python_problem(user, project):
     """None if `user` can start this Python and import the child (the subprocess path); else the one line.
 
-    Starts `python -c "import checker.child"` once as that user (cached per user).
+    Starts `python -c "import checker.isolation.child"` once as that user (cached per user).
     """
     env = dict(os.environ, PYTHONPATH=project, PYTHONDONTWRITEBYTECODE="1")
     try:
-        probe = subprocess.run([sys.executable, "-c", "import checker.child"], cwd="/", env=env,
+        probe = subprocess.run([sys.executable, "-c", "import checker.isolation.child"], cwd="/", env=env,
                                stdin=subprocess.DEVNULL, capture_output=True, timeout=60,
                                preexec_fn=lambda: drop_user(user))
     except (OSError, subprocess.SubprocessError):

@@ -30,8 +30,8 @@ import math
 import pygame
 from pygame import Vector2
 
-from .show_cases import LESSON, SIZE, STUDENT, TEXT, ImpulseCase, PolygonCase, SatCase, _arrow, _cross, _fit, \
-    _font, _footer, _vec
+from checker.replay.show_cases import (LESSON, SIZE, STUDENT, TEXT, ImpulseCase, PolygonCase, SatCase, _arrow,
+                                       _cross, _fit, _font, _footer, _vec)
 
 BACK = (24, 26, 34)
 GREY = (150, 155, 170)
@@ -154,8 +154,8 @@ def more_shapes_sat_wrong(case):
 
 
 def _more_shapes_pairs():
-    from .labs.more_shapes import probes
-    from .probe_kit import sat_pairs
+    from checker.labs.more_shapes import probes
+    from checker.judging.probe_kit import sat_pairs
     return {name: (a, b) for name, a, b in probes.axis_pairs() + sat_pairs()}
 
 
@@ -165,7 +165,7 @@ def _ordered(pair, order):
 
 def parallel_axes_cases(functions):
     """The failing pairs of parallel_axes: the axes when they are wrong, else sat() on them, drawn as SAT cases."""
-    from .show_cases import _data
+    from checker.replay.show_cases import _data
     pairs = _more_shapes_pairs()
     axes = [c for c in _data(functions, "separating_axes") or [] if "want" in c and axes_wrong(c)]
     if axes:
@@ -214,7 +214,7 @@ class CornersCase(Case):
 
 def corners_wrong(case):
     """True when the student's corners are not the lesson's (More Shapes' polygon_corners rule)."""
-    from .labs.more_shapes.checks import _close
+    from checker.labs.more_shapes.checks import _close
     got, want, radius = case["got"], case["want"], case["radius"]
     return isinstance(got, str) or len(got) != len(want) or not all(
         _close(g[0], w[0], radius) and _close(g[1], w[1], radius) for g, w in zip(got, want))
@@ -262,8 +262,8 @@ class BoundingCase(Case):
 
 
 def bounding_cases(functions):
-    from .labs.bullets import checks, probes
-    from .show_cases import _data
+    from checker.labs.bullets import checks, probes
+    from checker.replay.show_cases import _data
     shapes = {name: (points, centre) for name, points, centre in probes.bounding_cases()}
     wrong = [c for c in _data(functions, "bounding_radius") or [] if "want" in c and
              not (isinstance(c["got"], float) and checks._close(c["got"], c["want"]))]
@@ -282,7 +282,7 @@ class BroadCase(Case):
         self.geometry = geometry   # (bullet, other body, dt) from the probe's impact_cases()
 
     def lines(self):
-        from .labs.bullets.checks import _hit
+        from checker.labs.bullets.checks import _hit
         case = self.case
         reach = "the bullet reaches the bounding circle" if case["needs_exact"] else \
             "out of the bounding circle's reach: no exact test needed"
@@ -315,8 +315,8 @@ class BroadCase(Case):
 
 
 def broad_cases(functions):
-    from .labs.bullets import checks, probes
-    from .show_cases import _data
+    from checker.labs.bullets import checks, probes
+    from checker.replay.show_cases import _data
     geometry = {name: (bullet, other, dt) for name, bullet, other, dt, _ in probes.impact_cases()}
     wrong = [c for c in _data(functions, "time_of_impact") or [] if "want" in c and c["case"] in geometry and
              (not checks._hit_matches(c["got"], c["want"]) or (not c["needs_exact"] and c["exact_tests"]))]
@@ -491,7 +491,7 @@ def friction_arrows(a, b, normal, ra, rb, got, want):
 
 
 def _ramp_resolve_geometry():
-    from .labs.ball_on_ramp import probes
+    from checker.labs.ball_on_ramp import probes
     return {name: (a, b, normal, point) for name, a, b, normal, point in probes.resolve_cases()}
 
 
@@ -505,8 +505,8 @@ def _disc(case):
 
 
 def ball_on_ramp_cases(check_id, functions):
-    from .labs.ball_on_ramp import checks
-    from .show_cases import _data
+    from checker.labs.ball_on_ramp import checks
+    from checker.replay.show_cases import _data
 
     def failing(probe, wrong):
         return [c for c in _data(functions, probe) or [] if ("want" in c or "variants" in c) and wrong(c)]
@@ -668,8 +668,8 @@ class WakeCase(Case):
 
 
 def sleeping_crates_cases(check_id, functions):
-    from .labs.sleeping_crates import checks, probes
-    from .show_cases import _data
+    from checker.labs.sleeping_crates import checks, probes
+    from checker.replay.show_cases import _data
     if check_id == "timer_rule":
         wrong = [c for c in _data(functions, "sleep_timer") or [] if "want" in c and
                  (isinstance(c["got"], str) or not abs(c["got"] - c["want"]) <= checks.ABS)]
@@ -685,7 +685,7 @@ def sleeping_crates_cases(check_id, functions):
 
 def failing_cases(lab, result, functions):
     """The failing cases of one of the checks drawn here ([] when there are none to draw), or None for others."""
-    from .show_cases import _data
+    from checker.replay.show_cases import _data
     if lab.id == "more_shapes" and result.id == "parallel_axes":
         return parallel_axes_cases(functions)
     if lab.id == "more_shapes" and result.id == "polygon_corners":

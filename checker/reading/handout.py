@@ -28,7 +28,7 @@ import string
 import tokenize
 from dataclasses import dataclass, field
 
-from .source import lines as split_lines
+from checker.reading.source import lines as split_lines
 
 START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+)\b.*---\s*$")
 END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---\s*$")
@@ -117,7 +117,7 @@ def _comment_lines(text):
 def step_regions(lines):
     """{step: (start line index, end line index, indent)} of the marked regions (0-based marker lines).
 
-    `lines`: the file's lines as Python counts them (checker/source.py lines()), never str.splitlines().
+    `lines`: the file's lines as Python counts them (checker/reading/source.py lines()), never str.splitlines().
     A marker counts only as the comment it looks like: one inside a string literal is a MarkerError.
     """
     regions, open_step = {}, None

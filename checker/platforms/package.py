@@ -12,7 +12,7 @@ library only), finds the lab file in the submission, grades it with
 `python -m checker FILE --json` in a child process (as a non-root user when run
 as root and that user exists) and always writes the platform's results.json.
 
-`python -m checker.package verdict FILE LAB CHECK` is the per-check step of
+`python -m checker.platforms.package verdict FILE LAB CHECK` is the per-check step of
 the GitHub Classroom workflow: exit 0 if CHECK passed in the checker's --json
 output FILE.
 """
@@ -23,10 +23,10 @@ import os
 import sys
 import zipfile
 
-from . import labs as lab_registry
-from .outputs import inside
+from checker import labs as lab_registry
+from checker.project import PROJECT_ROOT
+from checker.reporting.outputs import inside
 
-PROJECT_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEMPLATES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "templates")
 PROJECT_DIRS = ("checker", "lesson11", "starters", "solutions")
 PROJECT_FILES = ("pyproject.toml", "README.md")
@@ -238,7 +238,7 @@ def classroom_steps(labs, pin_text):
                 "        uses: classroom-resources/autograding-command-grader@v1",
                 "        with:",
                 f"          test-name: \"{lab.title}: {check.id}\"",
-                f"          command: python -m checker.package verdict .autograder/{lab.id}.json {lab.id} {check.id}",
+                f"          command: python -m checker.platforms.package verdict .autograder/{lab.id}.json {lab.id} {check.id}",
                 "          timeout: 1",
                 f"          max-score: {check.max_score:g}",
             ]
@@ -356,5 +356,5 @@ def verdict(argv):
 if __name__ == "__main__":
     if sys.argv[1:2] == ["verdict"] and len(sys.argv) == 5:
         sys.exit(verdict(sys.argv[2:]))
-    print("usage: python -m checker.package verdict FILE LAB CHECK", file=sys.stderr)
+    print("usage: python -m checker.platforms.package verdict FILE LAB CHECK", file=sys.stderr)
     sys.exit(2)

@@ -1,6 +1,6 @@
 """The failing cases of a function check, drawn (python -m checker FILE --show).
 
-The data are the probe's, judged on the grading side (checker/probing.py): each case holds the
+The data are the probe's, judged on the grading side (checker/judging/probing.py): each case holds the
 inputs, the student's answer ("got", recorded in the child) and the lesson's (computed here). Nothing
 of the student's code runs in this process.
 
@@ -15,7 +15,7 @@ of the student's code runs in this process.
   SweptCase    swept_move(): the bullet's path to the impact and both ends of the step
 
 More Shapes' separating_axes, Ball on the Ramp's and Sleeping Crates' function checks are drawn by
-checker/show_cases_labs.py.
+checker/replay/show_cases_labs.py.
 
 failing_cases(lab, result, functions, seed) -> [case], each with draw(surface), key(key) and lines().
 """
@@ -40,7 +40,7 @@ def _close(got, want):
 
 
 def _font(size=22):
-    from .pictures import _font as font
+    from checker.replay.pictures import _font as font
     return font(size)
 
 
@@ -525,7 +525,7 @@ class ResolveCase:
         student's normal impulse), computed here from the probe's fixed contact with the lesson's apply_impulse
         (grader-side code, as the probe's reference does), or None."""
         from lesson11.physics2d import apply_impulse, relative_velocity
-        from .labs.tumbling_crates.probes import twin
+        from checker.labs.tumbling_crates.probes import twin
         j = self.case.get("j")
         if j is None or not math.isfinite(j):
             return None
@@ -590,7 +590,7 @@ class ResolveCase:
 
 
 def _resolve_geometry(name):
-    from .labs.tumbling_crates import probes
+    from checker.labs.tumbling_crates import probes
     for case in probes.resolve_cases():
         if case[0] == name:
             return case[1], case[2], Vector2(case[3]), Vector2(case[4])
@@ -816,7 +816,7 @@ def _toi_geometry(case, seed=None):
     redrawn here from the grading seed as the probe drew it (drawn_toi_cases with run_rng's Random), both
     grader-side code; a redrawn case counts only when its dt is the recorded one. None when neither fits."""
     import random
-    from .labs.bullets import probes
+    from checker.labs.bullets import probes
     drawn = probes.drawn_toi_cases(random.Random(f"{seed}:circle_toi")) if seed is not None else []
     for name, p1, v1, r1, p2, v2, r2, dt in probes.toi_cases() + drawn:
         if name == case["case"] and abs(dt - case["dt"]) <= 1e-12 * max(1.0, dt):
@@ -842,7 +842,7 @@ def failing_cases(lab, result, functions, seed=None):
     seed: the grading run's seed (the probe's drawn inputs; Bullets' drawn circle_toi paths are redrawn from it)."""
     if result.status not in ("fail", "error"):
         return []
-    from . import show_cases_labs
+    from checker.replay import show_cases_labs
     cases = show_cases_labs.failing_cases(lab, result, functions)
     if cases is not None:
         return cases
@@ -865,7 +865,7 @@ def failing_cases(lab, result, functions, seed=None):
         wrong = [case for case in _data(functions, "circle_toi") or [] if "want" in case and toi_wrong(case)]
         return [ToiCase(case, k + 1, len(wrong), _toi_geometry(case, seed)) for k, case in enumerate(wrong)]
     if result.id == "swept_move_resolves":
-        from .labs.bullets import probes
+        from checker.labs.bullets import probes
         wrong = [case for case in _data(functions, "swept_move") or [] if "want" in case and swept_wrong(case)]
         return [SweptCase(case, k + 1, len(wrong), probes.STEP) for k, case in enumerate(wrong)]
     if result.id in IMPULSE_PROBES:

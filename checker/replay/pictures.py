@@ -8,7 +8,7 @@ FRAMES frames spread over the run, the bodies' outlines (static grey, moving
 in colours, asleep paler, outlines over the fills), every contact point as a red dot with its normal, and
 under it the lab's reference solution running the same scene (run once per
 process and scene, then cached). The pictures follow the failure: the frames
-run from LEAD frames before the failing frame (checker/show.py's failure(): the
+run from LEAD frames before the failing frame (checker/replay/show.py's failure(): the
 frame the message names, "... at frame 42 ...", else the first frame the check's
 quantity passes its bound, else the first frame the run differs from the
 solution's) to TRAIL frames after it, that frame is framed in red in both rows,
@@ -31,14 +31,14 @@ import re
 from dataclasses import dataclass
 
 # the video driver the user's environment named (None: SDL picks the desktop's), before the pictures' own default:
-# --show (checker/show.py) opens its window with it
+# --show (checker/replay/show.py) opens its window with it
 USER_VIDEO_DRIVER = os.environ.get("SDL_VIDEODRIVER")
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 import pygame  # noqa: E402
 
-from .preview import recorded_colour, reference_record  # noqa: E402,F401 (reference_record: used here, and by callers)
+from checker.replay.preview import recorded_colour, reference_record   # noqa: E402,F401 (reference_record: used here, and by callers)
 
 FRAMES = 6                 # frames per row
 TILE = (220, 150)          # px of one frame (the 900 × 600 scene drawn at about 1/4)
@@ -79,7 +79,7 @@ class Picture:
         return "data:image/png;base64," + self.base64
 
 
-# the reference solution's runs: checker/preview.py reference_record (one child run per process and scene, cached)
+# the reference solution's runs: checker/replay/preview.py reference_record (one child run per process and scene, cached)
 
 
 # ---------------------------------------------------------------- drawing
@@ -304,7 +304,7 @@ def _scenes_of(report, check_id):
 def focus_bodies(frame, reference):
     """Indices of the moving bodies a failure is about in a frame: those more than preview.VISIBLE_PX from the
     solution's body of the same index, else every moving body."""
-    from .preview import VISIBLE_PX as VISIBLE
+    from checker.replay.preview import VISIBLE_PX as VISIBLE
     moving = [i for i, b in enumerate((frame or {}).get("bodies", ())) if not b.get("static")]
     if reference is None or len(reference.get("bodies", ())) != len(frame.get("bodies", ())):
         return set(moving)
@@ -318,7 +318,7 @@ def _distance(a, b):
 
 def caption(check_id, scene, title, ungraded, fail_frame, quantity, value, spliced=""):
     """The filmstrip's title: the check, the scene (and what ran, when the preview spliced the lesson's other
-    steps in: checker/preview.py), the failing frame and the check's quantity there."""
+    steps in: checker/replay/preview.py), the failing frame and the check's quantity there."""
     head = (f"not graded, to show what {check_id} means: " if ungraded else f"{check_id}: ") + \
         f"scene '{scene}' ({title})" + (f", {spliced}" if spliced else "")
     if fail_frame is not None:
@@ -332,11 +332,11 @@ def caption(check_id, scene, title, ungraded, fail_frame, quantity, value, splic
 def pictures_for(report, check_id, with_reference=True):
     """[Picture] for one failed behaviour check of a report: one filmstrip per scene it reads ([] otherwise).
 
-    Each filmstrip runs from a little before the failing frame to a little after it (checker/show.py's
+    Each filmstrip runs from a little before the failing frame to a little after it (checker/replay/show.py's
     failure(): the frame the message names, or where the check's quantity first passes its bound, or
     where the run first differs from the solution's), framed on the bodies the failure is about.
     """
-    from .show import failure
+    from checker.replay.show import failure
     result = next((r for r in pictured_results(report) if r.id == check_id), None)
     if result is None:
         return []
@@ -400,7 +400,7 @@ def write_pictures(rows, folder, names, pictures=None, problems=None):
     written through. A row whose pictures cannot be written loses only its own: one line naming it is
     appended to `problems` (a list; else the OSError is raised).
     """
-    from .outputs import write_below
+    from checker.reporting.outputs import write_below
     pictures = all_pictures(rows, problems) if pictures is None else pictures
     written = {}
     for path, by_check in pictures.items():

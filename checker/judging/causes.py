@@ -5,7 +5,7 @@ differs, a message may say *why* only if a known wrong formula (computed in the 
 lesson's answer) gives the student's answer in every case, and no other known formula does: two
 formulas that agree on every case were not told apart, so neither is named.
 """
-from .checks import Hint, Mistake
+from checker.judging.checks import Hint, Mistake
 
 # The mistakes more than one lab names, in the same words everywhere (the Coulomb clamp of Tumbling Crates step 5
 # is Ball on the Ramp step 7's): id -> the sentence in the student's terms. A lab's own mistakes live in its checks.

@@ -2,7 +2,7 @@
 
 A solution (solutions/LAB.py) is also the worked answer handed out, so its
 annotations are comments a student can read past. Each step the student
-writes sits between the step markers the checker reads (checker/handout.py)
+writes sits between the step markers the checker reads (checker/reading/handout.py)
 and opens with its prompt block:
 
     # --- step 2: the SAT loop ---
@@ -36,10 +36,10 @@ import re
 import sys
 import tempfile
 
-from . import source
-from . import labs
-from .handout import MarkerError, _comment_lines, step_regions
-from .project import PROJECT_ROOT as ROOT
+from checker.reading import source
+from checker import labs
+from checker.reading.handout import MarkerError, _comment_lines, step_regions
+from checker.project import PROJECT_ROOT as ROOT
 
 SOLUTIONS = os.path.join(ROOT, labs.SOLUTIONS)
 STARTERS = os.path.join(ROOT, labs.STARTERS)

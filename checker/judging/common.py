@@ -5,7 +5,7 @@ import re
 
 from lesson11.mistakes import VALUE_RULE, meaning, number_problem, value_text, vector_problem  # noqa: F401
 
-from . import source
+from checker.reading import source
 
 
 CHILD_KINDS = ("exception", "exit", "memory", "flood", "syntax", "timeout")   # the kinds of error the child writes
@@ -19,7 +19,7 @@ def _line_text(value, limit):
 
 
 def child_error(value):
-    """The child's account of an error ({"kind", "message", "line", "text", "traceback"}, as checker/child.py
+    """The child's account of an error ({"kind", "message", "line", "text", "traceback"}, as checker/isolation/child.py
     writes it) checked before any of it is used, or None for no error.
 
     The account comes from the child, where the student's code runs, so it may be anything: a kind the

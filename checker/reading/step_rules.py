@@ -59,8 +59,8 @@ import os
 import re
 from dataclasses import dataclass
 
-from .handout import MarkerError, reaching_fields, step_regions
-from .source import SourceError, read as read_source, lines as split_lines
+from checker.reading.handout import MarkerError, reaching_fields, step_regions
+from checker.reading.source import SourceError, read as read_source, lines as split_lines
 
 BUILTINS = frozenset({"exec", "eval", "compile", "open", "getattr", "setattr", "delattr", "globals", "vars",
                       "locals", "__import__", "breakpoint", "input", "memoryview"})
