@@ -7,6 +7,7 @@ expected (and the reverse), a folder that does not exist, or the same path
 for two outputs. An existing output file named by the user is replaced
 (atomically: see report.write_atomic).
 """
+import contextlib
 import os
 
 
@@ -153,16 +154,10 @@ def write_below(base, relative_path, name, data):
             _own(os.fstat(fd), part)
         temp = f".{name}.{os.urandom(6).hex()}.tmp"
         out = os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o666, dir_fd=fd)
-        try:
+        with temporary_removed_on_failure(temp, dir_fd=fd):
             with os.fdopen(out, "wb") as handle:
                 handle.write(data)
             os.replace(temp, name, src_dir_fd=fd, dst_dir_fd=fd)
-        except BaseException:
-            try:
-                os.unlink(temp, dir_fd=fd)
-            except OSError:
-                pass
-            raise
     finally:
         os.close(fd)
     return target
@@ -181,14 +176,21 @@ def _write_below_by_path(base, parts, name, data, target):
             raise NotOurs(f"{part} is a link")
         _own(os.lstat(folder), part)
     fd, temp = tempfile.mkstemp(prefix=f".{name}.", suffix=".tmp", dir=folder)
-    try:
+    with temporary_removed_on_failure(temp):
         with os.fdopen(fd, "wb") as handle:
             handle.write(data)
         os.replace(temp, target)
+    return target
+
+
+@contextlib.contextmanager
+def temporary_removed_on_failure(temp, dir_fd=None):
+    """Whatever goes wrong inside (a full disk, Ctrl-C), the temporary file `temp` is not left behind."""
+    try:
+        yield
     except BaseException:
         try:
-            os.unlink(temp)
+            os.unlink(temp, dir_fd=dir_fd)
         except OSError:
             pass
         raise
-    return target

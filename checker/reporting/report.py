@@ -41,7 +41,7 @@ import unicodedata
 from dataclasses import dataclass
 
 from checker.judging.checks import step_of
-from checker.reporting.outputs import relative, submission_names
+from checker.reporting.outputs import relative, submission_names, temporary_removed_on_failure
 
 SYMBOL = {"pass": ":)", "fail": ":(", "skip": ":|", "error": ":("}
 
@@ -350,7 +350,7 @@ def write_atomic(path, text):
     """
     folder = os.path.dirname(os.path.abspath(path))
     fd, temp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".", suffix=".tmp", dir=folder)
-    try:
+    with temporary_removed_on_failure(temp):
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
             handle.write(text)
             handle.flush()
@@ -366,12 +366,6 @@ def write_atomic(path, text):
             mode = 0o666 & ~umask
         os.chmod(temp, mode)
         os.replace(temp, path)
-    except BaseException:
-        try:
-            os.unlink(temp)
-        except OSError:
-            pass
-        raise
 
 
 def _rel(path, root):
