@@ -40,17 +40,19 @@ SOCKET_METHODS = {"send_fds", "recv_fds", "sendmsg", "recvmsg"}  # methods of a 
 # checker/isolation/sandbox.py, zygote.py and child.py are the checker's POSIX child (issue 32: a portable path beside it
 # is branch i32-portable's); the lead refines these three entries after that branch is merged.
 ALLOWED = {
-    "checker/isolation/sandbox.py": {
-        "<module>": {"import selectors"},
+    "checker/isolation/confine.py": {
         # the portable path calls it too: `import resource` failing (Windows) and a refused limit (macOS) are notes
         "set_rlimits": {"import resource", "resource.setrlimit"},
-        "_limit_child.apply": {"os.setsid"},
+        "limit_child.apply": {"os.setsid"},
+        "leave_root": {"import resource", "resource.setrlimit", "resource.RLIMIT_NPROC"},   # a child user only
+    },
+    "checker/isolation/sandbox.py": {
+        "<module>": {"import selectors"},
         "_start": {"Popen(pass_fds=)", "Popen(preexec_fn=)"},
         "ZygoteClient.__init__": {"Popen(pass_fds=)", "socket.AF_UNIX", "socket.SOCK_SEQPACKET"},
         "ZygoteClient.spawn": {"socket.AF_UNIX", "socket.SOCK_SEQPACKET", "socket.send_fds"},
         "_kill_group": {"os.killpg", "signal.SIGKILL"},   # the portable path calls it only where both exist
         "_run_in": {"import pwd", "os.chown", "pwd.getpwnam"},   # with a child user only (a root grader)
-        "_leave_root": {"import resource", "resource.setrlimit", "resource.RLIMIT_NPROC"},   # a child user only
         "_run_posix": {"selectors.DefaultSelector", "selectors.EVENT_READ"},
     },
     "checker/isolation/zygote.py": {
