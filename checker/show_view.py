@@ -25,9 +25,8 @@ from pygame import Vector2
 from lesson11.panel import MODES, LabPanel
 from lesson11.physics2d.draw import draw_body, draw_contacts
 
-from .pictures import _font
 from .preview import recorded_colour
-from .show_cases import wrapped
+from .show_kit import text_font as _font, wrapped
 
 SCENE = (900, 600)          # px: the labs' window
 TIMELINE_H = 130            # px: the timeline under the scene
