@@ -30,7 +30,6 @@ from .grade import Grader
 from .lab_checks import world_settings
 from .show_series import Quantity, failure, nearest
 
-VISIBLE = previews.VISIBLE_PX   # px: a body this far from the solution's is visibly elsewhere
 NO_DISPLAY = "no display: use --pictures DIR"
 
 

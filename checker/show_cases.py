@@ -23,7 +23,7 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, centre_of
 
-from .show_kit import LESSON, SIZE, STUDENT, TEXT, arrow, cross, fit, footer, footer_top, spin_arc, text_font, \
+from .show_kit import LESSON, SIZE, STUDENT, TEXT, Case, arrow, cross, fit, footer, footer_top, spin_arc, text_font, \
     vec, wrapped
 
 
@@ -271,21 +271,14 @@ class SatCase:
         footer(surface, self.lines(), "N/Space: next axis   [ ]: previous/next case   Tab: the scene   Esc: quit")
 
 
-
 # ---------------------------------------------------------------- apply_impulse
 
-class ImpulseCase:
+class ImpulseCase(Case):
     """One apply_impulse() case: the contact, the impulse, each body's velocity and spin change, both answers."""
 
     kind = "impulse"
     SCALE = 3.0     # screen px per px of lever arm
     ARROW = 0.6     # screen px per px/s of velocity change
-
-    def __init__(self, case, number, count):
-        self.case, self.number, self.count = case, number, count
-
-    def key(self, key):
-        return False
 
     def changes(self, side):
         """(the student's (Δv, Δω), the lesson's) for body `side` ("a" or "b")."""
@@ -350,24 +343,21 @@ class ImpulseCase:
         surface.blit(font.render("friction on B", True, LESSON), contact + Vector2(-150, 20))
 
 
-
 # ---------------------------------------------------------------- polygon_centroid and polygon_inertia
 
-class PolygonCase:
+class PolygonCase(Case):
     """One polygon_centroid() or polygon_inertia() case: the outline (fitted to the window) with the student's
     point and the lesson's (centroid), or both radii of gyration sqrt(I / m) as circles around (0, 0) (inertia)."""
 
     kind = "polygon"
 
     def __init__(self, case, number, count, inertia):
-        self.case, self.number, self.count, self.inertia = case, number, count, inertia   # False: the centroid
-
-    def key(self, key):
-        return False
+        super().__init__(case, number, count)
+        self.inertia = inertia   # False: the centroid
 
     def lines(self):
         got, want = self.case["got"], self.case["want"]
-        head = f"failing case {self.number} of {self.count}: {self.case['case']}"
+        head = self.head()
         if not self.inertia:
             said = got if isinstance(got, str) else vec(got)
             return [head, f"yours (magenta): centroid {said}", f"the lesson's (yellow): centroid {vec(want)} "

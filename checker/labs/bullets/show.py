@@ -51,7 +51,7 @@ def _time(value):
     return f"{value * 1000:.4g} ms"
 
 
-class ToiCase:
+class ToiCase(Case):
     """One circle_toi() case: both circles' paths over the step, where they are at the student's time of
     impact (magenta) and at the lesson's (yellow), and a bar of the step [0, dt] with both times on it.
     The geometry comes from the probe's cases (probes.py toi_cases(), and drawn_toi_cases()
@@ -60,13 +60,11 @@ class ToiCase:
     kind = "toi"
 
     def __init__(self, case, number, count, geometry=None):
-        self.case, self.number, self.count, self.geometry = case, number, count, geometry
-
-    def key(self, key):
-        return False
+        super().__init__(case, number, count)
+        self.geometry = geometry
 
     def lines(self):
-        return [f"failing case {self.number} of {self.count}: {self.case['case']} (dt = {self.case['dt'] * 1000:.4g} ms)",
+        return [f"{self.head()} (dt = {self.case['dt'] * 1000:.4g} ms)",
                 f"yours (magenta): t = {_time(self.case['got'])}",
                 f"the lesson's (yellow): t = {_time(self.case['want'])}"]
 
@@ -101,17 +99,15 @@ class ToiCase:
         footer(surface, self.lines(), "circles: where both are at each time   [ ]: case   Tab: scene   Esc: quit")
 
 
-class SweptCase:
+class SweptCase(Case):
     """One swept_move() case: the bullet's path over the step, the impact (at the lesson's time of impact),
     and where the bullet ends: the student's (magenta) and the lesson's (yellow)."""
 
     kind = "swept"
 
     def __init__(self, case, number, count, step):
-        self.case, self.number, self.count, self.step = case, number, count, step
-
-    def key(self, key):
-        return False
+        super().__init__(case, number, count)
+        self.step = step
 
     def path(self):
         """(start, impact or None, lesson's end, student's end) in px, from the probe's data."""
@@ -127,7 +123,7 @@ class SweptCase:
     def lines(self):
         t = self.case.get("t")
         got, want = self.case["got"]["bullet"], self.case["want"]["bullet"]
-        return [f"failing case {self.number} of {self.count}: {self.case['case']}"
+        return [self.head()
                 + (f" (impact at t = {t * 1000:.4g} ms of {self.step * 1000:.4g})" if t is not None else ""),
                 f"yours (magenta): the bullet ends at {vec(got['pos'])} moving {vec(got['vel'])} px/s",
                 f"the lesson's (yellow): at {vec(want['pos'])} moving {vec(want['vel'])} px/s"]

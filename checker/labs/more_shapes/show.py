@@ -190,7 +190,6 @@ def polygon_wrong(case, inertia):
     return not close(got, want)
 
 
-
 def polygon_cases(probe, inertia):
     def cases(functions, seed):
         return numbered(PolygonCase, [case for case in data(functions, probe) or []

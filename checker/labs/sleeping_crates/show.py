@@ -91,7 +91,8 @@ def _crate(surface, rect, kind, outline=None):
     colour = {"static": (130, 130, 140), "awake": (200, 150, 90), "asleep": (90, 68, 40)}[kind]
     pygame.draw.rect(surface, colour, rect)
     if kind == "asleep":
-        surface.blit(text_font(26).render("z z", True, TEXT), rect.move(rect.width / 2 - 14, rect.height / 2 - 10).topleft)
+        at = rect.move(rect.width / 2 - 14, rect.height / 2 - 10).topleft
+        surface.blit(text_font(26).render("z z", True, TEXT), at)
 
 
 class MovesCase(Case):

@@ -12,7 +12,7 @@ from pygame import Vector2
 from lesson11.crate_scenes import PENETRATION, RAMP_SLIDE
 
 from ...show_cases import ImpulseCase, SatCase
-from ...show_kit import LESSON, STUDENT, TEXT, arrow, close, data, fit, footer, numbered, spin_arc, text_font
+from ...show_kit import LESSON, STUDENT, TEXT, Case, arrow, close, data, fit, footer, numbered, spin_arc, text_font
 from ...show_series import FASTEST, Moved, Quantity, fast_count, sink_depth
 from . import probes
 
@@ -53,7 +53,6 @@ def sat_wrong(case, check_id):
     return False
 
 
-
 # ---------------------------------------------------------------- apply_impulse() (step 6)
 
 def impulse_wrong(case):
@@ -64,7 +63,6 @@ def impulse_wrong(case):
                 not close(after["omega"], want["omega"]):
             return True
     return False
-
 
 
 # ---------------------------------------------------------------- resolve() (steps 4 and 5)
@@ -81,7 +79,7 @@ def resolve_wrong(case, check_id):
     return not close(friction["jt"], max(-bound, min(bound, friction["stop"])))
 
 
-class ResolveCase:
+class ResolveCase(Case):
     """One resolve() contact: both bodies, the contact point and normal; for step 4 each body's velocity
     change (arrows) and spin change (arcs) from the student's normal impulse j n and the lesson's; for
     step 5 the friction impulse on a bar from -mu j to mu j, with the impulse that stops the slip.
@@ -90,16 +88,14 @@ class ResolveCase:
     kind = "resolve"
 
     def __init__(self, case, number, count, check_id, geometry):
-        self.case, self.number, self.count, self.check_id, self.geometry = case, number, count, check_id, geometry
-
-    def key(self, key):
-        return False
+        super().__init__(case, number, count)
+        self.check_id, self.geometry = check_id, geometry
 
     def lesson_j(self):
         return -(1 + self.case["e"]) * self.case["vn"] / self.case["k"]["right"]
 
     def lines(self):
-        head = f"failing case {self.number} of {self.count}: {self.case['case']}"
+        head = self.head()
         j = self.case["j"]
         if self.check_id == "resolve_k":
             return [head, f"yours (magenta): j = {'none applied' if j is None else f'{j:.4g}'}",
