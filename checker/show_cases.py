@@ -326,7 +326,7 @@ class ImpulseCase(Case):
 
     def draw_friction(self, surface, contact, font):
         """At the contact: B's slip past A (grey) and the friction impulse on B, the lesson's (yellow) and the
-        student's (magenta), to one scale (case["friction"]: vectors, see Ball on the Ramp's friction_arrows)."""
+        student's (magenta), to one scale (case["friction"]: {"slip", "lesson", "yours"} vectors, from the lab)."""
         friction = self.case["friction"]
         slip = Vector2(friction["slip"])
         grey = (170, 175, 190)

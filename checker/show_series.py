@@ -1,7 +1,7 @@
 """What a check measures per frame, and the frame a failure is shown at (--show's timeline, --pictures' frames).
 
 A behaviour check's quantity is its lab's: SERIES {check id: Quantity} in checker/labs/<id>/show.py (see
-checker/labs/__init__.py), built from the measures here; a check without one gets none. A function check's
+checker/labs/__init__.py), built from the measures here or its own; a check without one gets none. A function check's
 scene, run ungraded, is measured by how far the student's bodies are from the solution's (DIVERGENCE).
 
 failure(lab, result, frames, reference, graded) picks the failing frame: the frame the check's message
@@ -49,26 +49,6 @@ def top_speed(frame):
     return max([metrics.speed(b) for b in metrics.dynamic(frame)] + [0.0])
 
 
-def fast_count(frame):
-    """How many dynamic bodies move faster than the lab's fast-mover threshold (30 px/s)."""
-    return float(metrics.fast_movers(frame))
-
-
-def ball_depth(frame):
-    """How deep (px) the first dynamic circle overlaps any polygon body (0 when none)."""
-    balls = [b for b in metrics.dynamic(frame) if b.get("radius")]
-    if not balls:
-        return 0.0
-    ball = balls[0]
-    return max([metrics.circle_depth(ball["pos"], ball["radius"], b["points"])
-                for b in frame["bodies"] if len(b["points"]) >= 3] + [0.0])
-
-
-def awake_count(frame):
-    """How many dynamic bodies are awake."""
-    return float(sum(1 for b in metrics.dynamic(frame) if not b.get("asleep")))
-
-
 class Moved:
     """How far (px) the dynamic body that moved most is from where it was in the run's first frame.
 
@@ -76,25 +56,18 @@ class Moved:
 
     def __init__(self, frames, only=None):
         self.only = only
-        self.start = self._chosen(frames[0]) if frames else []
+        self.start = self.chosen(frames[0]) if frames else []
 
-    def _chosen(self, frame):
+    def chosen(self, frame):
+        """The dynamic bodies of a frame the measure reads."""
         bodies = metrics.dynamic(frame)
         return [bodies[i] for i in self.only if i < len(bodies)] if self.only is not None else bodies
 
     def __call__(self, frame):
-        return max([math.dist(a["pos"], b["pos"]) for a, b in zip(self.start, self._chosen(frame))] + [0.0])
+        return max([math.dist(a["pos"], b["pos"]) for a, b in zip(self.start, self.chosen(frame))] + [0.0])
 
 
-class Turned(Moved):
-    """How far (degrees) the dynamic body that turned most has turned since the run's first frame."""
-
-    def __call__(self, frame):
-        return max([abs(math.degrees(b["angle"] - a["angle"])) for a, b in zip(self.start, self._chosen(frame))]
-                   + [0.0])
-
-
-FASTEST = Quantity("fastest body (px/s)", top_speed)   # what a lab's whole run is plotted by, e.g. its `runs`
+FASTEST = Quantity("fastest body (px/s)", top_speed)   # a check of the whole run: how fast it went
 
 
 def series_for(lab, check_id):

@@ -83,7 +83,7 @@ def _finite(body):
 
 def bodies_of(frame, scale=1.0, offset=(0, 0)):
     """The frame's bodies as RecordedBody in the lab's own colours (recorded; a record without them: grey
-    statics, a colour per moving body); asleep, darker, as Sleeping Crates draws them."""
+    statics, a colour per moving body); a sleeping body darker, as the labs draw one."""
     shown, moving = [], 0
     for body in (frame or {}).get("bodies", ()):
         if not _finite(body):

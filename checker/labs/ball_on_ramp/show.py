@@ -16,14 +16,26 @@ import math
 import pygame
 from pygame import Vector2
 
+from lesson11 import records
 from lesson11.physics2d import relative_velocity
 
 from ...show_cases import ImpulseCase, PolygonCase
 from ...show_kit import BACK, BLUE, GREY, LESSON, ORANGE, SIZE, STUDENT, TEXT, Case, arrow, close, cross, data, \
     is_point, numbered, point_text, text_font, vec, view
-from ...show_series import FASTEST, Quantity, ball_depth
+from ...show_series import FASTEST, Quantity
 from . import probes
 from .checks import INSIDE_DEPTH, SINK
+
+
+def ball_depth(frame):
+    """How deep (px) the first dynamic circle overlaps any polygon body (0 when none)."""
+    balls = [b for b in records.dynamic(frame) if b.get("radius")]
+    if not balls:
+        return 0.0
+    ball = balls[0]
+    return max([records.circle_depth(ball["pos"], ball["radius"], b["points"])
+                for b in frame["bodies"] if len(b["points"]) >= 3] + [0.0])
+
 
 SERIES = {
     "runs": FASTEST,

@@ -18,10 +18,19 @@ from ...probe_kit import sat_pairs
 from ...show_cases import PolygonCase, SatCase
 from ...show_kit import BACK, BLUE, CLOSE, GREY, LESSON, ORANGE, STUDENT, Case, arrow, close, data, is_point, \
     numbered, text_font, vec, view
-from ...show_series import FASTEST, Moved, Quantity, Turned, sink_depth
+from ...show_series import FASTEST, Moved, Quantity, sink_depth
 from . import probes
 from .checks import HEXAGON_TURN, PENETRATION, RAMP_SLIDE, TRIANGLE_TURN
 from .scenes import ON_RAMP, PUSHED, TRIANGLE
+
+
+class Turned(Moved):
+    """How far (degrees) the dynamic body that turned most has turned since the run's first frame."""
+
+    def __call__(self, frame):
+        return max([abs(math.degrees(b["angle"] - a["angle"])) for a, b in zip(self.start, self.chosen(frame))]
+                   + [0.0])
+
 
 SERIES = {
     "runs": FASTEST,

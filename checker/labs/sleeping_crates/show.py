@@ -11,9 +11,17 @@ import math
 
 import pygame
 
+from lesson11 import records
+
 from ...show_kit import BACK, BAD, GOOD, LESSON, STUDENT, TEXT, Case, arrow, data, numbered, text_font
-from ...show_series import FASTEST, Quantity, awake_count
+from ...show_series import FASTEST, Quantity
 from .probes import SLEEP_SPEED, SLEEP_SPIN
+
+
+def awake_count(frame):
+    """How many dynamic bodies are awake."""
+    return float(sum(1 for b in records.dynamic(frame) if not b.get("asleep")))
+
 
 AWAKE = Quantity("crates awake", awake_count)
 SERIES = {

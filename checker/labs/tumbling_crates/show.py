@@ -9,12 +9,19 @@ import math
 import pygame
 from pygame import Vector2
 
+from lesson11 import records
 from lesson11.crate_scenes import PENETRATION, RAMP_SLIDE
 
 from ...show_cases import ImpulseCase, SatCase
 from ...show_kit import LESSON, STUDENT, TEXT, Case, arrow, close, data, fit, footer, numbered, spin_arc, text_font
-from ...show_series import FASTEST, Moved, Quantity, fast_count, sink_depth
+from ...show_series import FASTEST, Moved, Quantity, sink_depth
 from . import probes
+
+
+def fast_count(frame):
+    """How many dynamic bodies move faster than the lab's fast-mover threshold (30 px/s)."""
+    return float(records.fast_movers(frame))
+
 
 SERIES = {
     "runs": FASTEST,
