@@ -137,3 +137,46 @@ def test_a_lab_without_a_replay_gets_no_plot_and_no_cases(monkeypatch):
     moved = {"frame": 7, "bodies": [{"pos": [50.0, 0.0], "angle": 0.0, "points": [], "static": False}]}
     fail_frame, why, quantity, values = show_series.failure(lab, result, [moved], [frame], True)
     assert quantity is show_series.DIVERGENCE and fail_frame == 7 and values == [pytest.approx(50.0)]
+
+
+REPLAY = ("show.py", "show_view.py", "show_series.py", "show_cases.py", "show_kit.py", "pictures.py", "preview.py")
+
+
+def _imports(path):
+    """The checker files a file imports, at its top or inside a function (relative imports, as the checker writes
+    them): `from .x import y` and `from . import x` give checker/x.py, `from ...x import y` in a lab's folder too."""
+    with open(path, encoding="utf-8") as handle:
+        tree = ast.parse(handle.read())
+    here = os.path.dirname(path)
+    found = set()
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.ImportFrom) or not node.level:
+            continue
+        base = here
+        for _ in range(node.level - 1):
+            base = os.path.dirname(base)
+        parts = node.module.split(".") if node.module else []
+        targets = [os.path.join(base, *parts)] if parts else [os.path.join(base, a.name) for a in node.names]
+        targets += [os.path.join(base, *parts, a.name) for a in node.names] if parts else []
+        for target in targets:
+            for candidate in (target + ".py", os.path.join(target, "__init__.py")):
+                if os.path.isfile(candidate):
+                    found.add(candidate)
+    return found
+
+
+def test_the_replay_modules_import_each_other_one_way():
+    """No import circle through --show's and --pictures' modules (issue 42: pictures, show, show_cases, the labs'
+    drawings and show_view imported each other): from no replay module does a chain of imports lead back to it."""
+    files = glob.glob(os.path.join(CHECKER, "**", "*.py"), recursive=True)
+    graph = {path: _imports(path) for path in files}
+    assert os.path.join(CHECKER, "show_kit.py") in graph[os.path.join(CHECKER, "show_cases.py")]   # read as meant
+    replay = [os.path.join(CHECKER, name) for name in REPLAY] + glob.glob(os.path.join(labs.HERE, "*", "show.py"))
+    for start in replay:
+        seen, todo = set(), list(graph[start])
+        while todo:
+            path = todo.pop()
+            if path not in seen:
+                seen.add(path)
+                todo += graph.get(path, ())
+        assert start not in seen, os.path.relpath(start, CHECKER)
