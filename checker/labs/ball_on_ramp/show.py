@@ -66,9 +66,8 @@ def _hit_matches(got, want):
 
 def _state_matches(got, want):
     """Both bodies' velocity and spin after resolve() against the lesson's."""
-    return all(close(got[k]["omega"], want[k]["omega"]) and all(close(g, w) for g, w in zip(got[k]["vel"],
-                                                                                        want[k]["vel"]))
-               for k in ("a", "b"))
+    return all(close(got[k]["omega"], want[k]["omega"])
+               and all(close(g, w) for g, w in zip(got[k]["vel"], want[k]["vel"])) for k in ("a", "b"))
 
 
 def failing(functions, probe, wrong):
