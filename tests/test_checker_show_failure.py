@@ -26,7 +26,7 @@ import pygame  # noqa: E402
 from pygame import Vector2  # noqa: E402
 
 from checker import labs
-from checker.replay import pictures, preview, show, show_cases, show_view   # noqa: E402
+from checker.replay import pictures, preview, show, show_cases, show_kit, show_view   # noqa: E402
 from checker.grade import Grader  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -216,7 +216,7 @@ def arc_pixels(spin, largest, radius=40):
     pygame.font.init()
     surface = pygame.Surface((200, 200))
     surface.fill((0, 0, 0))
-    show_cases._spin_arc(surface, (255, 0, 255), Vector2(100, 100), radius, spin, largest)
+    show_kit.spin_arc(surface, (255, 0, 255), Vector2(100, 100), radius, spin, largest)
     return [(x, y) for x in range(200) for y in range(200) if surface.get_at((x, y))[:3] == (255, 0, 255)]
 
 
@@ -243,7 +243,7 @@ def test_friction_case_draws_the_slip_and_the_impulses_on_the_boxes(working_in_o
     surface = pygame.Surface(show_cases.SIZE)
     case.draw(surface)
     corners = [p for body in (a, b) for p in body.world_points()]
-    scale, offset = show_cases._fit([(p.x, p.y) for p in corners], (260, 150, 380, 200))
+    scale, offset = show_kit.fit([(p.x, p.y) for p in corners], (260, 150, 380, 200))
     contact = Vector2(point) * scale + offset
     bound = case.case["mu"] * case.case["j"]
     lesson_jt = max(-bound, min(bound, case.case["friction"]["stop"]))

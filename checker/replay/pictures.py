@@ -8,7 +8,7 @@ FRAMES frames spread over the run, the bodies' outlines (static grey, moving
 in colours, asleep paler, outlines over the fills), every contact point as a red dot with its normal, and
 under it the lab's reference solution running the same scene (run once per
 process and scene, then cached). The pictures follow the failure: the frames
-run from LEAD frames before the failing frame (checker/replay/show.py's failure(): the
+run from LEAD frames before the failing frame (checker/replay/show_series.py failure(): the
 frame the message names, "... at frame 42 ...", else the first frame the check's
 quantity passes its bound, else the first frame the run differs from the
 solution's) to TRAIL frames after it, that frame is framed in red in both rows,
@@ -39,6 +39,8 @@ os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 import pygame  # noqa: E402
 
 from checker.replay.preview import recorded_colour, reference_record   # noqa: E402,F401 (reference_record: used here, and by callers)
+from checker.replay.show_kit import text_font as _font   # noqa: E402
+from checker.replay.show_series import failure, nearest as _nearest   # noqa: E402
 
 FRAMES = 6                 # frames per row
 TILE = (220, 150)          # px of one frame (the 900 × 600 scene drawn at about 1/4)
@@ -60,7 +62,6 @@ CONTACT = (225, 40, 40)
 MARK = (220, 30, 30)
 TEXT = (30, 30, 35)
 FAILED = ("fail", "error")
-FRAME_IN_MESSAGE = re.compile(r"\bframe (\d+)\b")
 
 
 @dataclass
@@ -83,12 +84,6 @@ class Picture:
 
 
 # ---------------------------------------------------------------- drawing
-
-def _font(size):
-    if not pygame.font.get_init():
-        pygame.font.init()
-    return pygame.font.Font(None, size)
-
 
 def _view(frames, focus=None):
     """(left, top, width, height) in px: around every moving body shown (40 px margin, at least MIN_VIEW px),
@@ -136,12 +131,6 @@ def _pick(frames, marked=None, count=FRAMES):
             indices[nearest] = at
             indices.sort()
     return [frames[i] for i in indices]
-
-
-def _nearest(frames, number):
-    if not frames:
-        return None
-    return min(frames, key=lambda f: abs(f.get("frame", 0) - number))
 
 
 def _radius(body):
@@ -272,12 +261,6 @@ def png_bytes(surface):
 
 # ---------------------------------------------------------------- per check
 
-def marked_frame(result):
-    """The frame number a check's message names ("... at frame 42 ..."), or None."""
-    found = FRAME_IN_MESSAGE.search(getattr(result, "message", "") or "")
-    return int(found.group(1)) if found else None
-
-
 def pictured_results(report):
     """The results of a report that get a picture: failed behaviour checks whose scenes were recorded, and,
     when the report ran its lab's scene ungraded (report.preview), the first failed check."""
@@ -332,11 +315,10 @@ def caption(check_id, scene, title, ungraded, fail_frame, quantity, value, splic
 def pictures_for(report, check_id, with_reference=True):
     """[Picture] for one failed behaviour check of a report: one filmstrip per scene it reads ([] otherwise).
 
-    Each filmstrip runs from a little before the failing frame to a little after it (checker/replay/show.py's
+    Each filmstrip runs from a little before the failing frame to a little after it (checker/replay/show_series.py
     failure(): the frame the message names, or where the check's quantity first passes its bound, or
     where the run first differs from the solution's), framed on the bodies the failure is about.
     """
-    from checker.replay.show import failure
     result = next((r for r in pictured_results(report) if r.id == check_id), None)
     if result is None:
         return []

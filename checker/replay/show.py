@@ -10,12 +10,11 @@ What is shown (Replay):
   * CHECK, or the first failed check of the file;
   * for a behaviour check, the scene it reads; for a failed function check, whose scenes never ran,
     a scene run ungraded with the student's failing step and the lesson's other steps, where it
-    differs from the solution's (checker/replay/preview.py, as --pictures draws it), and the failing cases
-    drawn (checker/replay/show_cases.py);
-  * the check's quantity per frame with its bound (SERIES below; for a function check, how far
-    the student's bodies are from the solution's), and the failing frame: the frame the check's
-    message names, else the first frame the quantity passes its bound, else the first frame the
-    student's run visibly differs from the solution's (preview.VISIBLE_PX px or VISIBLE_DEG degrees).
+    differs from the solution's (checker/replay/preview.py, as --pictures draws it), and its failing cases
+    (the CASES of the lab's checker/labs/<id>/show.py, looked up by checker/replay/show_cases.py);
+  * the check's quantity per frame with its bound (the SERIES of the lab's checker/labs/<id>/show.py;
+    for a function check, how far the student's bodies are from the solution's), and the failing
+    frame (checker/replay/show_series.py failure()).
 """
 import math
 import os
@@ -24,139 +23,15 @@ from dataclasses import dataclass, field
 
 from lesson11 import records as metrics
 
-from checker.replay import pictures
+from checker.replay import pictures, show_cases
 from checker.reporting import report
 from checker.replay import preview as previews
 from checker.judging.checks import ERROR, FAIL, PASS
 from checker.grade import Grader
 from checker.judging.lab_checks import world_settings
+from checker.replay.show_series import Quantity, failure, nearest
 
-VISIBLE = previews.VISIBLE_PX   # px: a body this far from the solution's is visibly elsewhere
 NO_DISPLAY = "no display: use --pictures DIR"
-
-
-# ---------------------------------------------------------------- the quantities a check measures, per frame
-
-def sink_depth(frame):
-    """Deepest floor penetration (px) of any dynamic polygon in a frame (0 when none is below the floor)."""
-    depths = [metrics.floor_penetration(b) for b in metrics.dynamic(frame) if len(b["points"]) >= 3]
-    return max(depths + [0.0])
-
-
-def top_speed(frame):
-    """The fastest dynamic body's speed (px/s) in a frame."""
-    return max([metrics.speed(b) for b in metrics.dynamic(frame)] + [0.0])
-
-
-def fast_count(frame):
-    """How many dynamic bodies move faster than the lab's fast-mover threshold (30 px/s)."""
-    return float(metrics.fast_movers(frame))
-
-
-def ball_depth(frame):
-    """How deep (px) the first dynamic circle overlaps any polygon body (0 when none)."""
-    balls = [b for b in metrics.dynamic(frame) if b.get("radius")]
-    if not balls:
-        return 0.0
-    ball = balls[0]
-    return max([metrics.circle_depth(ball["pos"], ball["radius"], b["points"])
-                for b in frame["bodies"] if len(b["points"]) >= 3] + [0.0])
-
-
-def awake_count(frame):
-    """How many dynamic bodies are awake."""
-    return float(sum(1 for b in metrics.dynamic(frame) if not b.get("asleep")))
-
-
-class Moved:
-    """How far (px) the dynamic body that moved most is from where it was in the run's first frame.
-
-    only: the indices (among the dynamic bodies) of the bodies the check reads (None: all)."""
-
-    def __init__(self, frames, only=None):
-        self.only = only
-        self.start = self._chosen(frames[0]) if frames else []
-
-    def _chosen(self, frame):
-        bodies = metrics.dynamic(frame)
-        return [bodies[i] for i in self.only if i < len(bodies)] if self.only is not None else bodies
-
-    def __call__(self, frame):
-        return max([math.dist(a["pos"], b["pos"]) for a, b in zip(self.start, self._chosen(frame))] + [0.0])
-
-
-class Turned(Moved):
-    """How far (degrees) the dynamic body that turned most has turned since the run's first frame."""
-
-    def __call__(self, frame):
-        return max([abs(math.degrees(b["angle"] - a["angle"])) for a, b in zip(self.start, self._chosen(frame))]
-                   + [0.0])
-
-
-@dataclass(frozen=True)
-class Quantity:
-    """What a check measures per frame: a label with its unit, how to measure a frame, its bound.
-
-    measure: a frame -> a number, or a class taking the run's frames and `only` (a measure relative to the
-    start, of the dynamic bodies numbered `only`, or all);
-    bound: the check's bound in the same unit, or None; above: True when exceeding the bound fails;
-    at_end: True when the check judges the run's end only (a frame before it may exceed the bound).
-    """
-    label: str
-    measure: object
-    bound: float | None = None
-    above: bool = True
-    at_end: bool = False
-    only: tuple | None = None
-
-
-def _bound(lab, name, default=None, scale=1.0):
-    value = getattr(lab.module, name, default)
-    return None if value is None else value * scale
-
-
-def _bodies(lab, name):
-    """The dynamic body indices a lab's scenes module names (More Shapes' TRIANGLE, PUSHED, ON_RAMP), or None."""
-    value = getattr(lab.scenes, name, None)
-    return None if value is None else tuple(value) if isinstance(value, (tuple, list)) else (value,)
-
-
-def series_for(lab, check_id):
-    """The Quantity plotted for a check of a lab (a behaviour check's own measure), or None."""
-    table = {
-        "corner_tips": Quantity("deepest into the floor (px)", sink_depth, _bound(lab, "PENETRATION")),
-        "pile_stable": Quantity("deepest into the floor (px)", sink_depth, _bound(lab, "PENETRATION")),
-        "ramp_holds": Quantity("moved since the start (px)", Moved, _bound(lab, "RAMP_SLIDE"),
-                               only=_bodies(lab, "ON_RAMP")),
-        "fast_movers_zero": Quantity("fast movers (> 30 px/s)", fast_count, 0.0, at_end=True),
-        "triangle_tips": Quantity("turned since the start (deg)", Turned,
-                                  _bound(lab, "TRIANGLE_TURN", scale=180 / math.pi), above=False, at_end=True,
-                                  only=_bodies(lab, "TRIANGLE")),
-        "hexagon_tips": Quantity("turned since the start (deg)", Turned,
-                                 _bound(lab, "HEXAGON_TURN", scale=180 / math.pi), above=False, at_end=True,
-                                 only=_bodies(lab, "PUSHED")),
-        "rolls_without_slipping": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
-        "slides_without_friction": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
-        "knocks_crate_over": Quantity("ball into a body (px)", ball_depth, _bound(lab, "SINK")),
-        "pushed_out_of_crate": Quantity("ball into the crate (px)", ball_depth, _bound(lab, "INSIDE_DEPTH"),
-                                        at_end=True),
-        "pile_sleeps": Quantity("crates awake", awake_count, 0.0, at_end=True),
-        "no_sleep_in_air": Quantity("crates awake", awake_count),
-        "drop_wakes_pile": Quantity("crates awake", awake_count),
-        "runs": Quantity("fastest body (px/s)", top_speed),
-    }
-    return table.get(check_id)
-
-
-def divergence(frame, reference):
-    """How far the student's bodies are from the solution's in the same frame: the largest distance (px) between
-    bodies of the same index, or the largest difference of their angles (degrees) if larger, counted in the
-    same units as preview.VISIBLE_PX (infinite when the frames hold different numbers of bodies)."""
-    px, deg = previews.apart(frame, reference)
-    return max(px, deg * previews.VISIBLE_PX / previews.VISIBLE_DEG)
-
-
-DIVERGENCE = Quantity("off the solution's (px or degrees)", None, previews.VISIBLE_PX)
 
 
 # ---------------------------------------------------------------- the replay
@@ -203,7 +78,7 @@ class Replay:
 
     def reference_at(self, number):
         """The solution's recorded frame with this frame number (nearest), or None."""
-        return pictures._nearest(self.reference, number)
+        return nearest(self.reference, number)
 
     def index_of(self, number):
         """Index into frames of the recorded frame with this number (nearest)."""
@@ -268,17 +143,6 @@ def target(row, check_id=None):
     return next((r for r in row.results if r.status in (FAIL, ERROR)), None)
 
 
-def _first_crossing(frames, values, quantity):
-    if quantity is None or quantity.bound is None:
-        return None
-    if quantity.at_end:
-        frames, values = frames[-1:], values[-1:]
-    for frame, value in zip(frames, values):
-        if (value > quantity.bound) if quantity.above else (value < quantity.bound):
-            return frame["frame"]
-    return None
-
-
 trusted_frames = previews.trusted_frames
 
 
@@ -304,43 +168,10 @@ def _scene_choice(row, result, rerun, reference_record):
     return scene, scene is not None and not ungraded, frames, reference, note if scene else ""
 
 
-def failure(lab, result, frames, reference, graded):
-    """(failing frame or None, why that frame, Quantity or None, its value per frame) for a result's run.
-
-    graded: the frames are the scene the check read (else a scene run ungraded for a function check,
-    whose quantity is the distance from the solution's bodies).
-    """
-    quantity = series_for(lab, result.id) if graded else None
-    if quantity is None and reference:
-        quantity = DIVERGENCE
-    if quantity is DIVERGENCE:
-        values = [divergence(f, pictures._nearest(reference, f["frame"])) for f in frames]
-    elif quantity is not None:
-        measure = quantity.measure(frames, quantity.only) if isinstance(quantity.measure, type) else quantity.measure
-        values = [measure(f) for f in frames]
-    else:
-        values = []
-    values = [v if math.isfinite(v) else float("nan") for v in values]
-    named = pictures.marked_frame(result) if graded else None
-    if named is not None:
-        return named, f"the frame the check names ({result.message})", quantity, values
-    if quantity is not None and quantity is not DIVERGENCE:
-        crossing = _first_crossing(frames, values, quantity)
-        if crossing is not None:
-            where = "at the end" if quantity.at_end else "first"
-            return crossing, f"{quantity.label} {where} beyond {quantity.bound:g}", quantity, values
-    differs = previews.first_visible(frames, reference) if reference else None
-    if differs is not None:
-        return differs, f"the first frame a body is {previews.VISIBLE_PX:g} px or {previews.VISIBLE_DEG:g} degrees " \
-            "from the solution's", quantity, values
-    return None, "", quantity, values
-
-
 def build_replay(row, result, functions=None, rerun=None, reference_record=None):
     """The Replay of one graded row's result: its scene (if any was recorded), the solution's, the quantity.
 
     rerun(result) -> (scene, record, note): a function check's scene made for that check (see _scene_choice)."""
-    from checker.replay import show_cases
     lab = row.lab
     reference_record = reference_record or pictures.reference_record
     scene, graded, frames, reference, spliced = _scene_choice(row, result, rerun, reference_record)

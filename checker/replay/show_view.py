@@ -25,9 +25,8 @@ from pygame import Vector2
 from lesson11.panel import MODES, LabPanel
 from lesson11.physics2d.draw import draw_body, draw_contacts
 
-from checker.replay.pictures import _font
 from checker.replay.preview import recorded_colour
-from checker.replay.show_cases import wrapped
+from checker.replay.show_kit import text_font as _font, wrapped
 
 SCENE = (900, 600)          # px: the labs' window
 TIMELINE_H = 130            # px: the timeline under the scene
@@ -84,7 +83,7 @@ def _finite(body):
 
 def bodies_of(frame, scale=1.0, offset=(0, 0)):
     """The frame's bodies as RecordedBody in the lab's own colours (recorded; a record without them: grey
-    statics, a colour per moving body); asleep, darker, as Sleeping Crates draws them."""
+    statics, a colour per moving body); a sleeping body darker, as the labs draw one."""
     shown, moving = [], 0
     for body in (frame or {}).get("bodies", ()):
         if not _finite(body):
