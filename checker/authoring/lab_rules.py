@@ -49,6 +49,7 @@ class Rule:
     function: object
     file: str            # the file the rule is about, with {id}
     needs: tuple = ()    # rules that must hold for this one to be checked
+    tests: str = ""      # the tests (in tests/) that enforce it too
 
     @property
     def id(self):
@@ -63,10 +64,11 @@ class Rule:
 RULES = []
 
 
-def rule(file, needs=()):
-    """Register the function as the next rule; `file` names what it is about ({id}: the lab's id)."""
+def rule(file, needs=(), tests=""):
+    """Register the function as the next rule; `file` names what it is about ({id}: the lab's id), `tests` the
+    tests that enforce it too."""
     def register(function):
-        RULES.append(Rule(function, file, tuple(needs)))
+        RULES.append(Rule(function, file, tuple(needs), tests))
         return function
     return register
 
@@ -86,7 +88,7 @@ STATED = (
     Stated("The step rules flag no wrong corpus entry either (an honest mistake is graded, not flagged).",
            "tests/test_step_rules.py"),
     Stated("The checker gives every corpus entry its verdict: correct ones pass, each wrong one fails its check "
-           "naming its step and mistake, in a message of two short lines.", "tests/test_corpus_{id}.py"),
+           "naming its step and mistake, in a message of two short lines.", "tests/test_corpus_<id>.py"),
 )
 
 
@@ -134,24 +136,23 @@ class Subject:
 
     @cached_property
     def corpus(self):
-        """tests/corpus_<id>.py, imported (tests/ on the path, as pytest has it)."""
+        """tests/corpus_<id>.py, imported with tests/ on the path as pytest has it (the project's under its own
+        name, another root's under a name of its own, so it never stands in for the project's); sys.path is
+        left as it was."""
         folder = self.path("tests")
         name = f"corpus_{self.id}"
         path = os.path.join(folder, f"{name}.py")
-        loaded = sys.modules.get(name)
-        if loaded is not None and os.path.abspath(getattr(loaded, "__file__", "")) == os.path.abspath(path):
-            return loaded
-        if folder not in sys.path:
-            sys.path.insert(0, folder)
-        spec = importlib.util.spec_from_file_location(name, path)
-        module = importlib.util.module_from_spec(spec)
-        sys.modules[name] = module
+        kept = list(sys.path)
+        sys.path.insert(0, folder)
         try:
+            if os.path.abspath(folder) == os.path.join(PROJECT_ROOT, "tests"):
+                return importlib.import_module(name)
+            spec = importlib.util.spec_from_file_location(f"_lint_{name}_{abs(hash(path))}", path)
+            module = importlib.util.module_from_spec(spec)
             spec.loader.exec_module(module)
-        except BaseException:
-            sys.modules.pop(name, None)
-            raise
-        return module
+            return module
+        finally:
+            sys.path[:] = kept
 
 
 def relative(path):
@@ -221,7 +222,7 @@ def _listing(names):
 
 # ---------------------------------------------------------------- the lab's folder
 
-@rule("checker/labs/{id}/")
+@rule("checker/labs/{id}/", tests="test_lab_convention.py")
 def lab_files(s):
     """checker/labs/<id>/ holds __init__.py, checks.py, probes.py and scenes.py, and no other .py file."""
     have = {name for name in os.listdir(s.folder) if name.endswith(".py")} if os.path.isdir(s.folder) else set()
@@ -233,7 +234,7 @@ def lab_files(s):
                       "scenes.py, or into checker/judging/ if labs share it")
 
 
-@rule("solutions/{id}.py")
+@rule("solutions/{id}.py", tests="test_lab_convention.py")
 def solution_and_starter(s):
     """The solution is solutions/<id>.py and the starter starters/<id>_starter.py."""
     for path, fix in ((s.lab.solution, "write the annotated solution there"),
@@ -242,7 +243,7 @@ def solution_and_starter(s):
             return broken("no such file", fix, relative(path))
 
 
-@rule("checker/labs/{id}/", needs=("lab_files",))
+@rule("checker/labs/{id}/", needs=("lab_files",), tests="test_lab_convention.py")
 def no_own_paths(s):
     """No lab module spells a path: none assigns ROOT, STARTER or SOLUTION, only probes.py assigns PROBES, and
     none reads __file__ (checker.labs.Lab finds every file from the id)."""
@@ -262,7 +263,7 @@ def no_own_paths(s):
 
 # ---------------------------------------------------------------- checks.py
 
-@rule("checker/labs/{id}/checks.py", needs=("lab_files",))
+@rule("checker/labs/{id}/checks.py", needs=("lab_files",), tests="test_message_length.py, test_step_rules.py")
 def checks_names(s):
     """checks.py defines TITLE (the lab's name), CHECKS (a Registry), HINTS {key: Hint} with "crash", "handout"
     and "runtime", STEP_LIBRARY and STEP_ADVICE."""
@@ -279,7 +280,7 @@ def checks_names(s):
                       "give each a checks.Hint (lab_checks.handout_hint, lab_checks.RUNTIME_HINT for two)")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names",))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names", "probes_names"), tests="test_lab_convention.py")
 def shared_checks_first(s):
     """The first three checks are loads, handout_unchanged and runtime_lines, registered by
     lab_checks.register_common with the names probes.py's REQUIRED lists, and no lab writes them again."""
@@ -300,7 +301,7 @@ def shared_checks_first(s):
                       "pass register_common the names REQUIRED holds")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names", "solution_and_starter"))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names", "solution_and_starter"), tests="test_step_rules.py (STEP_LIBRARY; STEP_ADVICE: lint-lab only)")
 def step_rows(s):
     """STEP_LIBRARY and STEP_ADVICE have one row for each step region of the solution, and no other."""
     steps = set(s.regions)
@@ -312,7 +313,7 @@ def step_rows(s):
                           "must not call; the advice that ends a step-rule message)")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names",))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names",), tests="test_grader_faults.py")
 def runs_check(s):
     """A check with id `runs` reads the scenes (needs_scenarios=True): main() runs them to the end."""
     runs = [c for c in s.module.CHECKS.checks if c.id == "runs"]
@@ -321,7 +322,7 @@ def runs_check(s):
                       "register @CHECKS.check(after=[...], needs_scenarios=True) def runs(sub)")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names",))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names",), tests="test_checker_units.py")
 def checks_read_what_they_take(s):
     """Every check reads each parameter it takes; a check that only has to pass first goes in after=[...]."""
     unused = {c.id: unused_parameters(c.func) for c in s.module.CHECKS.checks}
@@ -332,7 +333,7 @@ def checks_read_what_they_take(s):
                       "names in after=[...] instead of depends=[...]")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names", "scenarios"))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names", "scenarios"), tests="test_checker_units.py")
 def scene_seconds(s):
     """SCENE_SECONDS gives each scene of SCENARIOS, and only those, the CPU seconds the solution's run takes (> 0)."""
     seconds = getattr(s.module, "SCENE_SECONDS", None)
@@ -346,7 +347,7 @@ def scene_seconds(s):
         return broken(f"SCENE_SECONDS of {_listing(bad)} is not a number > 0", "give the measured CPU seconds")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names", "scenarios"))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names", "scenarios"), tests="test_checker_pictures.py")
 def picture_scenes(s):
     """PICTURE_SCENES (for --pictures) maps check ids of CHECKS to scenes of SCENARIOS."""
     pictures = getattr(s.module, "PICTURE_SCENES", {})
@@ -358,7 +359,7 @@ def picture_scenes(s):
             return broken(f"PICTURE_SCENES {what}", "name a check id and the scenes it reads")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names",))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names",), tests="test_message_length.py")
 def short_hints(s):
     """Every hint, as the student reads it ("[step N: title] text"), is at most 250 characters."""
     long = {key: len(hint.render()) for key, hint in s.module.HINTS.items() if len(hint.render()) > HINT_LIMIT}
@@ -368,7 +369,7 @@ def short_hints(s):
                       "lesson's section and the one idea")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names", "solution_and_starter"))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names", "solution_and_starter"), tests="test_hints_coach.py")
 def hints_hand_out_no_code(s):
     """No hint quotes the solution's step code: no run of 22 characters of a step line (spaces ignored), nor a
     whole step line of 14 or more."""
@@ -380,7 +381,7 @@ def hints_hand_out_no_code(s):
                           "say it in words and symbols, as the lesson's Hint section does")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names",))
+@rule("checker/labs/{id}/checks.py", needs=("checks_names",), tests="test_symptoms.py")
 def hint_symptoms(s):
     """A hint names only symptoms its lab's rows of lesson11/symptoms.py show at the hint's step."""
     from lesson11 import symptoms
@@ -397,7 +398,7 @@ def hint_symptoms(s):
 
 # ---------------------------------------------------------------- scenes.py and probes.py
 
-@rule("checker/labs/{id}/scenes.py", needs=("lab_files",))
+@rule("checker/labs/{id}/scenes.py", needs=("lab_files",), tests="test_lab_convention.py")
 def scenarios(s):
     """scenes.py's SCENARIOS maps each scene's name to a function returning its settings (a dict), at least one."""
     table = getattr(s.scenes, "SCENARIOS", None)
@@ -408,7 +409,7 @@ def scenarios(s):
         return broken(f"SCENARIOS[{bad[0]!r}] gives no settings dict", "make it a function returning a dict")
 
 
-@rule("checker/labs/{id}/probes.py", needs=("lab_files",))
+@rule("checker/labs/{id}/probes.py", needs=("lab_files",), tests="test_lab_convention.py")
 def probes_names(s):
     """probes.py defines REQUIRED (the names the file must define, main among them) and PROBES {probe name:
     (the step function it calls, the probe function)}, each function one REQUIRED names."""
@@ -426,7 +427,7 @@ def _probed(s):
     return {function for function, _ in s.probes.PROBES.values()}
 
 
-@rule("checker/labs/{id}/probes.py", needs=("probes_names",))
+@rule("checker/labs/{id}/probes.py", needs=("probes_names",), tests="lint-lab only")
 def pure(s):
     """PURE (optional) names only probed step functions: each must leave its arguments as it got them."""
     extra = sorted(set(getattr(s.probes, "PURE", ())) - _probed(s))
@@ -434,7 +435,7 @@ def pure(s):
         return broken(f"PURE names {_listing(extra)}, which no probe calls", "list only functions PROBES calls")
 
 
-@rule("checker/labs/{id}/probes.py", needs=("probes_names", "solution_and_starter"))
+@rule("checker/labs/{id}/probes.py", needs=("probes_names", "solution_and_starter"), tests="lint-lab only")
 def splices(s):
     """SPLICES (optional) is ((function, (step, ...)), ...): a probed function, and steps of the solution inside
     it, which the probe splices into the student's function to grade the other steps on their own."""
@@ -454,7 +455,7 @@ def splices(s):
                           f"name steps whose markers are inside def {function}")
 
 
-@rule("checker/labs/{id}/probes.py", needs=("probes_names",))
+@rule("checker/labs/{id}/probes.py", needs=("probes_names",), tests="test_probe_references.py")
 def reference_names(s):
     """Every probe helper named like a reference (reference_*, analytic_*, _*_reference ...) is marked @reference,
     so it runs in the grader only; a lab has at least one."""
@@ -472,7 +473,7 @@ def reference_names(s):
 
 # ---------------------------------------------------------------- the solution and its starter
 
-@rule("solutions/{id}.py", needs=("solution_and_starter",))
+@rule("solutions/{id}.py", needs=("solution_and_starter",), tests="test_assign.py, test_lab_starter.py")
 def prompts(s):
     """Each step of the solution sits between `# --- step N: title ---` and `# --- end of step N ---` and opens
     with its prompt (# BEGIN PROMPT ... # END PROMPT; placeholders as `# starter: CODE`), whose first line is
@@ -489,7 +490,7 @@ def prompts(s):
                           f"start it `# Step {step} (lesson: \"...\"): ...`")
 
 
-@rule("starters/{id}_starter.py", needs=("prompts",))
+@rule("starters/{id}_starter.py", needs=("prompts",), tests="test_lab_starter.py, test_assign.py")
 def starter_is_assigned(s):
     """The starter is exactly what `python -m checker assign` writes from the solution (never edited by hand)."""
     from checker.authoring import assign
@@ -499,7 +500,7 @@ def starter_is_assigned(s):
         return broken("differs from what assign writes", "edit the solution, then run `python -m checker assign`")
 
 
-@rule("solutions/{id}.py", needs=("prompts",))
+@rule("solutions/{id}.py", needs=("prompts",), tests="test_lab_starter.py")
 def placeholders(s):
     """Each step of the solution has code; in the starter the step holds only placeholders, each ending
     `  # until you write step N, ...: replace this placeholder`, never the whole step."""
@@ -518,7 +519,7 @@ def placeholders(s):
                               f"end it `  # until you write step {step}, ...: replace this placeholder`")
 
 
-@rule("solutions/{id}.py", needs=("prompts",))
+@rule("solutions/{id}.py", needs=("prompts",), tests="test_lab_starter.py")
 def starter_header(s):
     """The module docstring tells the student to replace each placeholder ("replace that line with your code")
     and that a step left as it is scores nothing ("wasted")."""
@@ -530,7 +531,7 @@ def starter_header(s):
                       "docstrings have about the placeholders")
 
 
-@rule("solutions/{id}.py", needs=("prompts",))
+@rule("solutions/{id}.py", needs=("prompts",), tests="test_lab_starter.py")
 def lesson_citations(s):
     """Each step's prompt cites `lesson: "<heading>"`, a heading of lesson11/README.md or lesson11/labs/<id>.md."""
     headings = lesson_headings(s.id)
@@ -542,7 +543,7 @@ def lesson_citations(s):
             return broken(f"step {step}'s prompt {what}", "cite a heading as written in the lesson or the lab's page")
 
 
-@rule("solutions/{id}.py", needs=("prompts",))
+@rule("solutions/{id}.py", needs=("prompts",), tests="test_lab_starter.py")
 def numbered_steps(s):
     """The comments number the steps # Step 1 (run it) to # Step K + 1 (watch it), K the last step region, and
     no further."""
@@ -554,7 +555,7 @@ def numbered_steps(s):
         return broken(f"a `# Step {last + 1}` comment after the last step {last}", "number the steps 1 to K + 1")
 
 
-@rule("solutions/{id}.py", needs=("checks_names", "solution_and_starter"))
+@rule("solutions/{id}.py", needs=("checks_names", "solution_and_starter"), tests="test_corpus_<id>.py (corpus_verdicts.assert_builds), test_lab_convention.py")
 def title_names_the_file(s):
     """The solution's docstring names the lab's TITLE, and the lab recognises its own solution."""
     parts = s.solution.split('"""')
@@ -567,7 +568,7 @@ def title_names_the_file(s):
 
 # ---------------------------------------------------------------- tests/
 
-@rule("tests/corpus_{id}.py", needs=("solution_and_starter",))
+@rule("tests/corpus_{id}.py", needs=("solution_and_starter",), tests="test_message_length.py, test_step_rules.py, test_corpus_<id>.py")
 def corpus(s):
     """tests/corpus_<id>.py builds the lab's mistake corpus: ENTRIES = CORRECT (at least 3) + WRONG (at least 10),
     each built by build(name) from the current starter."""
@@ -583,7 +584,7 @@ def corpus(s):
                       "add entries: at least 3 correct ones in other styles and 10 plausible mistakes")
 
 
-@rule("tests/test_corpus_{id}.py", needs=("corpus",))
+@rule("tests/test_corpus_{id}.py", needs=("corpus",), tests="test_message_length.py")
 def corpus_test(s):
     """tests/test_corpus_<id>.py grades the corpus and holds each entry to its verdict (corpus_verdicts)."""
     path = s.path("tests", f"test_corpus_{s.id}.py")
@@ -593,7 +594,7 @@ def corpus_test(s):
                       "call verdicts.assert_verdict(entry, graded[entry.name], corpus) per entry")
 
 
-@rule("solutions/{id}.py", needs=("corpus", "checks_names"))
+@rule("solutions/{id}.py", needs=("corpus", "checks_names"), tests="test_step_rules.py")
 def no_flags(s):
     """The step rules (checker/reading/step_rules.py) flag nothing in the solution, the starter or a correct
     corpus entry: a flag there would fail a right answer."""
