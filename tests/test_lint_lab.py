@@ -56,7 +56,7 @@ def test_the_guide_lists_the_rules_lint_lab_states_in_its_order():
     section = guide[guide.index("### Writing a lab"):]
     section = section[:section.index("\n### ", 5)] if "\n### " in section[5:] else section
     listed = re.findall(r"^\d+\. (.+)$", section, re.M)
-    wanted = [r.text for r in lab_rules.RULES] + [f"{s.text} (left to {s.test})" for s in lab_rules.STATED]
+    wanted = [r.text for r in lab_rules.RULES] + [f"{s.text} (left to `{s.test}`)" for s in lab_rules.STATED]
     assert listed == wanted
 
 

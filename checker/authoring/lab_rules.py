@@ -83,7 +83,7 @@ class Stated:
 STATED = (
     Stated("The solution passes every function check, whatever inputs the probes draw (40 seeds).",
            "tests/test_probe_tape.py"),
-    Stated("At least 3 distinct @reference helpers run in the grader when the solution is judged, and none in the "
+    Stated("At least 3 distinct `@reference` helpers run in the grader when the solution is judged, and none in the "
            "child.", "tests/test_probe_references.py"),
     Stated("The step rules flag no wrong corpus entry either (an honest mistake is graded, not flagged).",
            "tests/test_step_rules.py"),
@@ -224,7 +224,8 @@ def _listing(names):
 
 @rule("checker/labs/{id}/", tests="test_lab_convention.py")
 def lab_files(s):
-    """checker/labs/<id>/ holds __init__.py, checks.py, probes.py and scenes.py, and no other .py file."""
+    """`checker/labs/<id>/` holds `__init__.py`, `checks.py`, `probes.py` and `scenes.py`, and no other `.py`
+    file."""
     have = {name for name in os.listdir(s.folder) if name.endswith(".py")} if os.path.isdir(s.folder) else set()
     missing, extra = sorted(set(LAB_FILES) - have), sorted(have - set(LAB_FILES))
     if missing:
@@ -236,7 +237,7 @@ def lab_files(s):
 
 @rule("solutions/{id}.py", tests="test_lab_convention.py")
 def solution_and_starter(s):
-    """The solution is solutions/<id>.py and the starter starters/<id>_starter.py."""
+    """The solution is `solutions/<id>.py` and the starter `starters/<id>_starter.py`."""
     for path, fix in ((s.lab.solution, "write the annotated solution there"),
                       (s.lab.starter, "run `python -m checker assign` to write it from the solution")):
         if not os.path.isfile(path):
@@ -245,8 +246,8 @@ def solution_and_starter(s):
 
 @rule("checker/labs/{id}/", needs=("lab_files",), tests="test_lab_convention.py")
 def no_own_paths(s):
-    """No lab module spells a path: none assigns ROOT, STARTER or SOLUTION, only probes.py assigns PROBES, and
-    none reads __file__ (checker.labs.Lab finds every file from the id)."""
+    """No lab module spells a path: none assigns `ROOT`, `STARTER` or `SOLUTION`, only `probes.py` assigns
+    `PROBES`, and none reads `__file__` (`checker.labs.Lab` finds every file from the id)."""
     for name in LAB_FILES:
         path = os.path.join(s.folder, name)
         with open(path, encoding="utf-8") as handle:
@@ -265,8 +266,8 @@ def no_own_paths(s):
 
 @rule("checker/labs/{id}/checks.py", needs=("lab_files",), tests="test_message_length.py, test_step_rules.py")
 def checks_names(s):
-    """checks.py defines TITLE (the lab's name), CHECKS (a Registry), HINTS {key: Hint} with "crash", "handout"
-    and "runtime", STEP_LIBRARY and STEP_ADVICE."""
+    """`checks.py` defines `TITLE` (the lab's name), `CHECKS` (a `Registry`), `HINTS` {key: `Hint`} with "crash",
+    "handout" and "runtime", `STEP_LIBRARY` and `STEP_ADVICE`."""
     module = s.module
     wanted = {"TITLE": str, "CHECKS": Registry, "HINTS": dict, "STEP_LIBRARY": dict, "STEP_ADVICE": dict}
     wrong = [name for name, kind in wanted.items() if not isinstance(getattr(module, name, None), kind)]
@@ -282,8 +283,8 @@ def checks_names(s):
 
 @rule("checker/labs/{id}/checks.py", needs=("checks_names", "probes_names"), tests="test_lab_convention.py")
 def shared_checks_first(s):
-    """The first three checks are loads, handout_unchanged and runtime_lines, registered by
-    lab_checks.register_common with the names probes.py's REQUIRED lists, and no lab writes them again."""
+    """The first three checks are `loads`, `handout_unchanged` and `runtime_lines`, registered by
+    `lab_checks.register_common` with the names `REQUIRED` lists, and `checks.py` does not define them itself."""
     first = s.module.CHECKS.checks[:3]
     if tuple(c.id for c in first) != SHARED_CHECKS or [c.max_score for c in first] != [1.0] * 3 \
             or [c.after for c in first] != [(), ("loads",), ("loads",)]:
@@ -303,7 +304,7 @@ def shared_checks_first(s):
 
 @rule("checker/labs/{id}/checks.py", needs=("checks_names", "solution_and_starter"), tests="test_step_rules.py (STEP_LIBRARY; STEP_ADVICE: lint-lab only)")
 def step_rows(s):
-    """STEP_LIBRARY and STEP_ADVICE have one row for each step region of the solution, and no other."""
+    """`STEP_LIBRARY` and `STEP_ADVICE` have one row for each step region of the solution, and no other."""
     steps = set(s.regions)
     for name in ("STEP_LIBRARY", "STEP_ADVICE"):
         rows = set(getattr(s.module, name))
@@ -315,7 +316,7 @@ def step_rows(s):
 
 @rule("checker/labs/{id}/checks.py", needs=("checks_names",), tests="test_grader_faults.py")
 def runs_check(s):
-    """A check with id `runs` reads the scenes (needs_scenarios=True): main() runs them to the end."""
+    """A check with id `runs` reads the scenes (`needs_scenarios=True`): `main()` runs them to the end."""
     runs = [c for c in s.module.CHECKS.checks if c.id == "runs"]
     if not runs or not runs[0].needs_scenarios:
         return broken("no check `runs` reading the scenes" if not runs else "`runs` does not read the scenes",
@@ -324,7 +325,7 @@ def runs_check(s):
 
 @rule("checker/labs/{id}/checks.py", needs=("checks_names",), tests="test_checker_units.py")
 def checks_read_what_they_take(s):
-    """Every check reads each parameter it takes; a check that only has to pass first goes in after=[...]."""
+    """Every check reads each parameter it takes; a check that only has to pass first goes in `after=[...]`."""
     unused = {c.id: unused_parameters(c.func) for c in s.module.CHECKS.checks}
     unused = {cid: names for cid, names in unused.items() if names}
     if unused:
@@ -335,7 +336,8 @@ def checks_read_what_they_take(s):
 
 @rule("checker/labs/{id}/checks.py", needs=("checks_names", "scenarios"), tests="test_checker_units.py")
 def scene_seconds(s):
-    """SCENE_SECONDS gives each scene of SCENARIOS, and only those, the CPU seconds the solution's run takes (> 0)."""
+    """`SCENE_SECONDS` gives each scene of `SCENARIOS`, and only those, the CPU seconds the solution's run takes
+    (> 0)."""
     seconds = getattr(s.module, "SCENE_SECONDS", None)
     scenes = set(s.scenes.SCENARIOS)
     if not isinstance(seconds, dict) or set(seconds) != scenes:
@@ -349,7 +351,7 @@ def scene_seconds(s):
 
 @rule("checker/labs/{id}/checks.py", needs=("checks_names", "scenarios"), tests="test_checker_pictures.py")
 def picture_scenes(s):
-    """PICTURE_SCENES (for --pictures) maps check ids of CHECKS to scenes of SCENARIOS."""
+    """`PICTURE_SCENES` (optional, for `--pictures`) maps check ids of `CHECKS` to scenes of `SCENARIOS`."""
     pictures = getattr(s.module, "PICTURE_SCENES", {})
     ids = {c.id for c in s.module.CHECKS.checks}
     for check_id, scenes in pictures.items():
@@ -383,7 +385,7 @@ def hints_hand_out_no_code(s):
 
 @rule("checker/labs/{id}/checks.py", needs=("checks_names",), tests="test_symptoms.py")
 def hint_symptoms(s):
-    """A hint names only symptoms its lab's rows of lesson11/symptoms.py show at the hint's step."""
+    """A hint names only symptoms its lab's rows of `lesson11/symptoms.py` show at the hint's step."""
     from lesson11 import symptoms
     rows = symptoms.rows(s.id)
     for key, hint in s.module.HINTS.items():
@@ -400,7 +402,8 @@ def hint_symptoms(s):
 
 @rule("checker/labs/{id}/scenes.py", needs=("lab_files",), tests="test_lab_convention.py")
 def scenarios(s):
-    """scenes.py's SCENARIOS maps each scene's name to a function returning its settings (a dict), at least one."""
+    """`scenes.py`'s `SCENARIOS` maps each scene's name to a function returning its settings (a dict), at least
+    one."""
     table = getattr(s.scenes, "SCENARIOS", None)
     if not isinstance(table, dict) or not table:
         return broken("no SCENARIOS, or an empty one", "add {name: function returning the scene's settings}")
@@ -411,8 +414,8 @@ def scenarios(s):
 
 @rule("checker/labs/{id}/probes.py", needs=("lab_files",), tests="test_lab_convention.py")
 def probes_names(s):
-    """probes.py defines REQUIRED (the names the file must define, main among them) and PROBES {probe name:
-    (the step function it calls, the probe function)}, each function one REQUIRED names."""
+    """`probes.py` defines `REQUIRED` (the names the file must define, `main` among them) and `PROBES` {probe
+    name: (the function it calls, one of `REQUIRED`, the probe function)}."""
     required, table = getattr(s.probes, "REQUIRED", None), getattr(s.probes, "PROBES", None)
     if not isinstance(required, tuple) or "main" not in required or not isinstance(table, dict) or not table:
         return broken("REQUIRED (with main) or PROBES missing", "define both, as new-lab's template does")
@@ -429,7 +432,7 @@ def _probed(s):
 
 @rule("checker/labs/{id}/probes.py", needs=("probes_names",), tests="lint-lab only")
 def pure(s):
-    """PURE (optional) names only probed step functions: each must leave its arguments as it got them."""
+    """`PURE` (optional) names only probed functions: each must leave its arguments as it got them."""
     extra = sorted(set(getattr(s.probes, "PURE", ())) - _probed(s))
     if extra:
         return broken(f"PURE names {_listing(extra)}, which no probe calls", "list only functions PROBES calls")
@@ -437,8 +440,8 @@ def pure(s):
 
 @rule("checker/labs/{id}/probes.py", needs=("probes_names", "solution_and_starter"), tests="lint-lab only")
 def splices(s):
-    """SPLICES (optional) is ((function, (step, ...)), ...): a probed function, and steps of the solution inside
-    it, which the probe splices into the student's function to grade the other steps on their own."""
+    """`SPLICES` (optional) is `((function, (step, ...)), ...)`: a probed function and steps of the solution
+    inside it, which the probe splices into the student's function to grade its other steps on their own."""
     tree = ast.parse(s.solution)
     spans = {node.name: (node.lineno, node.end_lineno) for node in ast.walk(tree) if isinstance(node, ast.FunctionDef)}
     for entry in getattr(s.probes, "SPLICES", ()):
@@ -457,8 +460,8 @@ def splices(s):
 
 @rule("checker/labs/{id}/probes.py", needs=("probes_names",), tests="test_probe_references.py")
 def reference_names(s):
-    """Every probe helper named like a reference (reference_*, analytic_*, _*_reference ...) is marked @reference,
-    so it runs in the grader only; a lab has at least one."""
+    """Every probe helper named like a reference (`reference_*`, `analytic_*`, `_*_reference` ...) is marked
+    `@reference`, so it runs in the grader only; a lab has at least one."""
     probes = s.probes
     named = [name for name, value in vars(probes).items()
              if inspect.isfunction(value) and REFERENCE_NAME.match(name) and value.__module__ in (
@@ -476,7 +479,7 @@ def reference_names(s):
 @rule("solutions/{id}.py", needs=("solution_and_starter",), tests="test_assign.py, test_lab_starter.py")
 def prompts(s):
     """Each step of the solution sits between `# --- step N: title ---` and `# --- end of step N ---` and opens
-    with its prompt (# BEGIN PROMPT ... # END PROMPT; placeholders as `# starter: CODE`), whose first line is
+    with its prompt (`# BEGIN PROMPT` ... `# END PROMPT`, placeholders as `# starter: CODE`), whose first line is
     `# Step N (lesson: "..."): ...`."""
     from checker.authoring import assign
     try:
@@ -503,7 +506,7 @@ def starter_is_assigned(s):
 @rule("solutions/{id}.py", needs=("prompts",), tests="test_lab_starter.py")
 def placeholders(s):
     """Each step of the solution has code; in the starter the step holds only placeholders, each ending
-    `  # until you write step N, ...: replace this placeholder`, never the whole step."""
+    `# until you write step N, ...: replace this placeholder`, never the whole step."""
     answers, handed = region_lines(s.solution), region_lines(s.starter)
     for step in sorted(answers):
         answer, left = code_lines(answers[step]), code_lines(handed.get(step, []))
@@ -533,7 +536,8 @@ def starter_header(s):
 
 @rule("solutions/{id}.py", needs=("prompts",), tests="test_lab_starter.py")
 def lesson_citations(s):
-    """Each step's prompt cites `lesson: "<heading>"`, a heading of lesson11/README.md or lesson11/labs/<id>.md."""
+    """Each step's prompt cites `lesson: "<heading>"`, a heading of `lesson11/README.md` or
+    `lesson11/labs/<id>.md`."""
     headings = lesson_headings(s.id)
     for step, lines in sorted(region_lines(s.starter).items()):
         cited = re.findall(r'lesson: "([^"]+)"', " ".join(line.strip("# ") for line in lines))
@@ -545,7 +549,7 @@ def lesson_citations(s):
 
 @rule("solutions/{id}.py", needs=("prompts",), tests="test_lab_starter.py")
 def numbered_steps(s):
-    """The comments number the steps # Step 1 (run it) to # Step K + 1 (watch it), K the last step region, and
+    """The comments number the steps `# Step 1` (run it) to `# Step K+1` (watch it), K the last step region, and
     no further."""
     last = max(s.regions) + 1
     missing = [step for step in range(1, last + 1) if not re.search(rf"# Step {step}\b", s.starter)]
@@ -557,7 +561,7 @@ def numbered_steps(s):
 
 @rule("solutions/{id}.py", needs=("checks_names", "solution_and_starter"), tests="test_corpus_<id>.py (corpus_verdicts.assert_builds), test_lab_convention.py")
 def title_names_the_file(s):
-    """The solution's docstring names the lab's TITLE, and the lab recognises its own solution."""
+    """The solution's docstring names the lab's `TITLE`, and the lab recognises its own solution."""
     parts = s.solution.split('"""')
     if len(parts) < 3 or s.module.TITLE not in parts[1]:
         return broken(f"the module docstring does not name \"{s.module.TITLE}\"",
@@ -570,8 +574,8 @@ def title_names_the_file(s):
 
 @rule("tests/corpus_{id}.py", needs=("solution_and_starter",), tests="test_message_length.py, test_step_rules.py, test_corpus_<id>.py")
 def corpus(s):
-    """tests/corpus_<id>.py builds the lab's mistake corpus: ENTRIES = CORRECT (at least 3) + WRONG (at least 10),
-    each built by build(name) from the current starter."""
+    """`tests/corpus_<id>.py` builds the lab's mistake corpus: `ENTRIES` = `CORRECT` (at least 3) + `WRONG` (at
+    least 10), each built by `build(name)` from the current starter."""
     path = s.path("tests", f"corpus_{s.id}.py")
     if not os.path.isfile(path):
         return broken("no such file", "write the corpus (new-lab writes a first one)", relative(path))
@@ -586,7 +590,7 @@ def corpus(s):
 
 @rule("tests/test_corpus_{id}.py", needs=("corpus",), tests="test_message_length.py")
 def corpus_test(s):
-    """tests/test_corpus_<id>.py grades the corpus and holds each entry to its verdict (corpus_verdicts)."""
+    """`tests/test_corpus_<id>.py` grades the corpus and holds each entry to its verdict (`corpus_verdicts`)."""
     path = s.path("tests", f"test_corpus_{s.id}.py")
     text = open(path, encoding="utf-8").read() if os.path.isfile(path) else ""
     if "verdicts.assert_verdict(" not in text and "verdicts.assert_first_message(" not in text:
@@ -596,7 +600,7 @@ def corpus_test(s):
 
 @rule("solutions/{id}.py", needs=("corpus", "checks_names"), tests="test_step_rules.py")
 def no_flags(s):
-    """The step rules (checker/reading/step_rules.py) flag nothing in the solution, the starter or a correct
+    """The step rules (`checker/reading/step_rules.py`) flag nothing in the solution, the starter or a correct
     corpus entry: a flag there would fail a right answer."""
     from checker.reading import step_rules
     corpus_file = relative(s.path("tests", f"corpus_{s.id}.py"))

@@ -49,7 +49,7 @@ def lint(subject, rules=None):
 def rules_text():
     """Every rule on a line, numbered, in order; then the rules left to the tests."""
     out = [f"{n}. {rule.text}" for n, rule in enumerate(lab_rules.RULES, 1)]
-    out += [f"{n}. {stated.text} (left to {stated.test})"
+    out += [f"{n}. {stated.text} (left to `{stated.test}`)"
             for n, stated in enumerate(lab_rules.STATED, len(lab_rules.RULES) + 1)]
     return "\n".join(out)
 
