@@ -302,7 +302,8 @@ def shared_checks_first(s):
                       "pass register_common the names REQUIRED holds")
 
 
-@rule("checker/labs/{id}/checks.py", needs=("checks_names", "solution_and_starter"), tests="test_step_rules.py (STEP_LIBRARY; STEP_ADVICE: lint-lab only)")
+@rule("checker/labs/{id}/checks.py", needs=("checks_names", "solution_and_starter"),
+      tests="test_step_rules.py (STEP_LIBRARY; STEP_ADVICE: lint-lab only)")
 def step_rows(s):
     """`STEP_LIBRARY` and `STEP_ADVICE` have one row for each step region of the solution, and no other."""
     steps = set(s.regions)
@@ -559,7 +560,8 @@ def numbered_steps(s):
         return broken(f"a `# Step {last + 1}` comment after the last step {last}", "number the steps 1 to K + 1")
 
 
-@rule("solutions/{id}.py", needs=("checks_names", "solution_and_starter"), tests="test_corpus_<id>.py (corpus_verdicts.assert_builds), test_lab_convention.py")
+@rule("solutions/{id}.py", needs=("checks_names", "solution_and_starter"),
+      tests="test_corpus_<id>.py (corpus_verdicts.assert_builds), test_lab_convention.py")
 def title_names_the_file(s):
     """The solution's docstring names the lab's `TITLE`, and the lab recognises its own solution."""
     parts = s.solution.split('"""')
@@ -572,7 +574,8 @@ def title_names_the_file(s):
 
 # ---------------------------------------------------------------- tests/
 
-@rule("tests/corpus_{id}.py", needs=("solution_and_starter",), tests="test_message_length.py, test_step_rules.py, test_corpus_<id>.py")
+@rule("tests/corpus_{id}.py", needs=("solution_and_starter",),
+      tests="test_message_length.py, test_step_rules.py, test_corpus_<id>.py")
 def corpus(s):
     """`tests/corpus_<id>.py` builds the lab's mistake corpus: `ENTRIES` = `CORRECT` (at least 3) + `WRONG` (at
     least 10), each built by `build(name)` from the current starter."""
