@@ -83,6 +83,8 @@ class Stated:
 STATED = (
     Stated("The solution passes every function check, whatever inputs the probes draw (40 seeds).",
            "tests/test_probe_tape.py"),
+    Stated("The solution scores full marks, its scenes included (`python -m checker solutions/` exits 0).",
+           "tests/test_checker.py"),
     Stated("At least 3 distinct `@reference` helpers run in the grader when the solution is judged, and none in the "
            "child.", "tests/test_probe_references.py"),
     Stated("The step rules flag no wrong corpus entry either (an honest mistake is graded, not flagged).",
