@@ -235,3 +235,20 @@ def test_a_module_that_does_not_import_is_one_line_per_rule_that_reads_it(copy, 
     found = lint_lab.lint(copy)
     assert found and all("could not be checked (ImportError: No module named 'numpyy')" in b.what for _, b in found)
     assert [rule.id for rule, _ in found] == ["checks_names"]   # the rules that read checks.py wait for it
+
+
+def test_every_rule_has_its_broken_copy_here():
+    """A rule added to lab_rules.py without a broken copy in this file fails here."""
+    covered = set(MODULE_BREAKS) | set(SOURCE_BREAKS) | {
+        "reference_names", "lab_files", "no_own_paths", "corpus", "solution_and_starter", "placeholders"}
+    assert covered == {rule.id for rule in lab_rules.RULES}
+
+
+def test_a_broken_rule_through_the_command_line_is_one_line_and_exit_1(monkeypatch, capsys):
+    from checker.labs.sleeping_crates import checks
+    monkeypatch.setattr(checks, "SCENE_SECONDS", {})
+    assert cli.main(["lint-lab", LAB]) == 1
+    out, err = capsys.readouterr()
+    assert err == "" and out.splitlines() == [
+        f"checker/labs/{LAB}/checks.py: SCENE_SECONDS names nothing, the scenes are sleep — measure the solution's "
+        "run of each scene and give it its seconds"]

@@ -344,7 +344,7 @@ def scene_seconds(s):
     seconds = getattr(s.module, "SCENE_SECONDS", None)
     scenes = set(s.scenes.SCENARIOS)
     if not isinstance(seconds, dict) or set(seconds) != scenes:
-        have = _listing(sorted(seconds)) if isinstance(seconds, dict) else "nothing"
+        have = _listing(sorted(seconds)) if isinstance(seconds, dict) and seconds else "nothing"
         return broken(f"SCENE_SECONDS names {have}, the scenes are {_listing(sorted(scenes))}",
                       "measure the solution's run of each scene and give it its seconds")
     bad = sorted(name for name, value in seconds.items() if not isinstance(value, (int, float)) or not value > 0)
