@@ -13,7 +13,7 @@ import os
 import re
 import sys
 import textwrap
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import cached_property
 
 from checker import labs
@@ -98,8 +98,7 @@ STATED = (
 class Subject:
     """The lab a rule reads: its Lab (starter, solution and tests/ under lab.root) and its modules' folder."""
     lab: labs.Lab
-    folder: str = None
-    _cache: dict = field(default_factory=dict)
+    folder: str = None   # checker/labs/<id> unless a test gives a copy
 
     def __post_init__(self):
         self.folder = self.folder or os.path.join(labs.HERE, self.lab.id)
@@ -219,7 +218,8 @@ def lesson_headings(lab_id, root=PROJECT_ROOT):
 
 
 def _listing(names):
-    return ", ".join(str(name) for name in names)
+    """The names, comma-separated; "none" for none."""
+    return ", ".join(str(name) for name in names) or "none"
 
 
 # ---------------------------------------------------------------- the lab's folder
