@@ -9,7 +9,7 @@ from checker.isolation import sandbox
 safe_output()  # reports use θ, ×, ², ≤: a console that is not UTF-8 gets stand-ins, never a UnicodeEncodeError
 
 if any(not arg.startswith("-") and os.path.exists(arg) for arg in sys.argv[1:]) \
-        and sys.argv[1:2] not in (["package"], ["assign"]):
+        and sys.argv[1:2] not in (["package"], ["assign"], ["lint-lab"], ["new-lab"]):
     sandbox.start_zygote()  # there is something to grade: warm the children's zygote while the labs import
 
 from checker.cli import main   # noqa: E402 (imports every lab: numpy, pygame, lesson11)

@@ -241,6 +241,12 @@ def main(argv=None):
     if argv[:1] == ["assign"]:  # python -m checker assign [--check] [--out DIR]: see checker/authoring/assign.py
         from checker.authoring import assign
         return assign.main(argv[1:])
+    if argv[:1] == ["lint-lab"]:  # python -m checker lint-lab ID: see checker/authoring/lint_lab.py
+        from checker.authoring import lint_lab
+        return lint_lab.main(argv[1:])
+    if argv[:1] == ["new-lab"]:  # python -m checker new-lab ID --title "...": see checker/authoring/new_lab.py
+        from checker.authoring import new_lab
+        return new_lab.main(argv[1:])
     try:
         args = parse_args(argv)
         if args.list:

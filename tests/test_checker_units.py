@@ -246,16 +246,9 @@ def test_a_check_whose_parameters_do_not_match_its_dependencies_is_refused_at_re
 
 
 def _unused_parameters(func):
-    """The parameters of `func` its body never reads (by name, anywhere in it, nested functions included)."""
-    import ast
-    import inspect
-    import textwrap
-    node = ast.parse(textwrap.dedent(inspect.getsource(func))).body[0]
-    arguments = node.args
-    names = [a.arg for a in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)]
-    names += [a.arg for a in (arguments.vararg, arguments.kwarg) if a is not None]
-    read = {n.id for n in ast.walk(node) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)}
-    return [name for name in names if name not in read]
+    """The parameters of `func` its body never reads (the rule lint-lab states: checker/authoring/lab_rules.py)."""
+    from checker.authoring.lab_rules import unused_parameters
+    return unused_parameters(func)
 
 
 def test_the_unused_parameter_finder_sees_a_parameter_that_is_never_read():

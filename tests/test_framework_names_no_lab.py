@@ -18,6 +18,7 @@ import pytest
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 
+from checker.authoring import lab_rules
 from checker.judging import checks, lab_checks
 from checker import labs
 from checker.replay import show_cases, show_series   # noqa: E402
@@ -32,10 +33,11 @@ def framework_modules():
 
 
 def framework_checks():
-    """The ids of the checks the framework itself gives every lab (lab_checks.register_common): loads, ... ."""
+    """The ids of the checks the framework itself gives every lab (lab_checks.register_common: loads, ...) or
+    requires of every lab (lab_rules.RUNS_CHECK)."""
     registry = checks.Registry()
     lab_checks.register_common(registry, {}, ("f",))
-    return {c.id for c in registry.checks}
+    return {c.id for c in registry.checks} | {lab_rules.RUNS_CHECK}   # and the one every lab must have
 
 
 def lab_words():

@@ -5,53 +5,23 @@ For every lab, no hint (its text or title) contains a line of code from the solu
 run of 22 characters of one (spaces ignored): `ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia` inside
 a sentence counts as handing out the line it comes from.
 """
-import re
-
 import pytest
 
 from checker import labs
-
-WINDOW = 22   # characters (spaces removed) of a solution line that a hint may not repeat
-
-
-def squeeze(text):
-    return re.sub(r"\s+", "", text)
+from checker.authoring import lab_rules
+from checker.authoring.lab_rules import WINDOW, handed_out  # noqa: F401 (the rule lint-lab states: one source)
+from checker.reading import source
 
 
 def step_code(path):
     """The code lines (comments and blank lines left out) between each step's markers, spaces removed."""
-    lines, inside = [], False
-    with open(path, encoding="utf-8") as handle:
-        for line in handle:
-            if re.match(r"\s*# --- step \d+", line):
-                inside = True
-            elif re.match(r"\s*# --- end of step", line):
-                inside = False
-            elif inside and line.strip() and not line.strip().startswith("#"):
-                lines.append(squeeze(line.split("  #")[0]))
-    return lines
-
-
-def handed_out(code, hint):
-    """The part of a solution line found in the hint, or None."""
-    text = squeeze(hint)
-    for line in code:
-        if len(line) < WINDOW:
-            if len(line) >= 14 and line in text:   # a whole short line; not "return None"
-                return line
-            continue
-        for start in range(len(line) - WINDOW + 1):
-            if line[start:start + WINDOW] in text:
-                return line[start:start + WINDOW]
-    return None
+    return lab_rules.step_code(source.read(path))
 
 
 @pytest.mark.parametrize("lab", labs.LABS, ids=lambda lab: lab.id)
 def test_no_hint_repeats_the_solutions_code(lab):
-    code = step_code(lab.solution)
-    assert code, f"{lab.id}: no step code found in {lab.solution}"
-    leaks = {key: handed_out(code, f"{hint.title} {hint.text}") for key, hint in lab.module.HINTS.items()}
-    assert {key: part for key, part in leaks.items() if part} == {}
+    assert step_code(lab.solution), f"{lab.id}: no step code found in {lab.solution}"
+    assert lab_rules.hints_hand_out_no_code(lab_rules.Subject(lab)) is None   # the rule lint-lab states
 
 
 def test_the_rule_catches_a_hint_that_hands_out_a_line():

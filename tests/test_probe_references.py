@@ -16,7 +16,6 @@ import copy
 import importlib
 import inspect
 import os
-import re
 
 import pytest
 
@@ -29,8 +28,7 @@ from checker.judging.checks import FAIL, PASS   # noqa: E402
 from test_probe_tape import ROOT, function_results, lab_by_id, recorded  # noqa: E402
 
 LAB_IDS = [lab.id for lab in labs.LABS]
-REFERENCE_NAME = re.compile(r"^(reference_\w+|analytic_\w+|_\w+_reference|_k_forms|_inertia_forms|distinct_directions"
-                            r"|_tied_normals|first_hit)$")
+from checker.authoring.lab_rules import REFERENCE_NAME   # noqa: E402 (the pattern lint-lab holds a lab to)
 
 
 def _reference_helpers(module):

@@ -18,7 +18,8 @@ A lab is its id and the files named from it (Lab below finds each one; no lab sp
   starters/<id>_starter.py     the handout: its functions holding a step region are the student's, and the
                                grader replays the probes' calls of them through its code;
   solutions/<id>.py            the reference solution (probes splice its steps in; --pictures draws its runs).
-To add a lab, add those files: every folder here holding a checks.py is a lab. Helpers several labs share are
+To add a lab, add those files (checker/README.md, "Writing a lab"; `python -m checker lint-lab ID` states the rules
+they keep): every folder here holding a checks.py is a lab. Helpers several labs share are
 in checker/judging/probe_kit.py and checker/judging/lab_checks.py.
 """
 import importlib

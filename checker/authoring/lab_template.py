@@ -1,0 +1,494 @@
+'''The files `python -m checker new-lab ID --title "..."` writes: a one-step lab in today's form, in one place.
+
+FILES maps each path (under the project) to its text; `$lab_id` and `$title` are filled in (string.Template:
+Python's own braces stay as they are). The lab: two crates fall onto the floor; the student writes step 2,
+normal_speed(va, vb, normal) = (vB - vA) · n, probed on fixed and drawn pairs, with ten known wrong forms named
+by the one-formula rule; `runs` runs one scene. new_lab.py also writes the starter, with assign's starter_text.
+When checks become declarative (issue 42, part 2), only checks.py and probes.py here change.
+'''
+
+SOLUTION = '''"""$title: a Lesson 11 lab (written by `python -m checker new-lab`; make it yours).
+
+Two crates fall onto the floor. The HUD shows the fastest approach along a
+contact normal seen so far, read with normal_speed(): how fast B moves
+relative to A along the contact's normal (px/s), negative while the two
+approach, as the lesson's resolve() reads it before an impulse.
+
+The comments "Step 1" to "Step 3" follow the exercise's steps. Step 2 is the
+code between the lines `# --- step 2: ... ---` and `# --- end of step 2 ---`:
+yours to write in the starter, done in the solution (where the step opens
+with the starter's text for it, between `# BEGIN PROMPT` and `# END PROMPT`).
+The step's comment names the section of the lesson (lesson11/README.md) that
+explains it. In the starter the step holds a placeholder line, marked
+"replace this placeholder", that keeps the file running until you write the
+step: replace that line with your code. Code written above a placeholder left
+in place is wasted: a placeholder `return` hands back its stand-in value
+unless your code returned first.
+
+Controls: left click drops a crate (up to 20), R resets.
+"""
+import random
+
+import pygame
+
+from lesson11 import runtime as lab  # lab runtime
+from lesson11.panel import LabPanel  # solver panel
+from lesson11.physics2d import Body, World, box_points
+from lesson11.physics2d.draw import draw_text
+
+WIDTH, HEIGHT = 900, 600
+MAX_CRATES = 20
+STATIC_BODIES = 1    # the floor
+BACKGROUND = (24, 26, 34)
+GREY = (90, 96, 110)
+
+# Step 1: run this file. Until you write step 2 the HUD reads 0.0 px/s, however hard the crates land.
+
+
+def normal_speed(va, vb, normal):
+    """How fast B moves relative to A along the unit normal (px/s): (vB - vA) · n.
+
+    va, vb: the two bodies' velocities (px/s); normal: the contact's unit
+    normal, from A to B. Negative while the bodies approach, positive while
+    they separate, 0 when they slide past each other.
+    """
+    # --- step 2: the speed along the normal ---
+    # BEGIN PROMPT
+    # Step 2 (lesson: "5. Impulses that spin, and friction"): return B's velocity relative to A's,
+    # projected on the normal (a dot product); it is negative while the two approach.
+    # starter: return 0.0  # until you write step 2, every contact reads 0.0 px/s: replace this placeholder
+    # END PROMPT
+    return (vb - va).dot(normal)
+    # --- end of step 2 ---
+
+
+def build(item):
+    """One crate from {"w", "h", "pos", optional "angle", "vel", "omega"} (mass w·h/1000)."""
+    return Body(box_points(item["w"], item["h"]), item["pos"], mass=item["w"] * item["h"] / 1000,
+                angle=item.get("angle", 0.0), vel=item.get("vel", (0, 0)), omega=item.get("omega", 0.0),
+                color=item.get("color", (214, 150, 86)))
+
+
+def make_scene():
+    """The floor and two crates dropped onto it, from 300 px and 400 px above it."""
+    floor = Body(box_points(WIDTH, 40), (WIDTH / 2, HEIGHT - 20), 0, color=GREY)
+    return [floor, build({"w": 60, "h": 40, "pos": [300, 240]}), build({"w": 60, "h": 40, "pos": [600, 140]})]
+
+
+def fastest_approach(world):
+    """The fastest approach along a normal among the world's contacts (px/s, 0 when none approaches)."""
+    return max([0.0] + [-normal_speed(c.a.vel, c.b.vel, c.normal) for c in world.contacts])
+
+
+def main():
+    pygame.init()
+    screen = pygame.display.set_mode((WIDTH, HEIGHT))
+    pygame.display.set_caption("$title")
+    clock = pygame.time.Clock()
+    font = pygame.font.Font(None, 24)
+    rng = random.Random(lab.seed(11))  # lab runtime: seed()
+    world = World(lab.scene(make_scene(), build=build))  # lab runtime: scene()
+    panel = LabPanel()  # solver panel
+    fastest = 0.0
+    running = True
+    # Step 3: watch the crates land, then click to drop more and read the fastest approach.
+    while running and lab.frame_budget():  # lab runtime: frame_budget()
+        dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)
+        for event in lab.events():  # lab runtime: pygame.event.get()
+            panel.handle(event)  # solver panel: its keys
+            if event.type == pygame.QUIT:
+                running = False
+            elif event.type == pygame.MOUSEBUTTONDOWN and event.button == 1:
+                if len(world.bodies) - STATIC_BODIES < MAX_CRATES:
+                    world.add(build({"w": rng.randint(36, 56), "h": rng.randint(28, 44), "pos": list(event.pos)}))
+            elif event.type == pygame.KEYDOWN and event.key == pygame.K_r:
+                world = World(make_scene())
+                fastest = 0.0
+        panel.advance(world, dt)  # solver panel: fixed steps, long frames clamped
+        lab.record(world.bodies, world.contacts)  # lab runtime: record()
+        fastest = max(fastest, fastest_approach(world))
+
+        screen.fill(BACKGROUND)
+        for body in world.bodies:
+            pygame.draw.polygon(screen, body.color, body.world_points())
+        draw_text(screen, font, f"crates {len(world.bodies) - STATIC_BODIES}/{MAX_CRATES} | fastest approach "
+                                f"{fastest:.1f} px/s | [click] drop  [R] reset")
+        panel.draw(screen, world)  # solver panel: settings, ms, graph
+        pygame.display.flip()
+    pygame.quit()
+    print(f"fastest approach along a normal: {fastest:.1f} px/s")
+
+
+if __name__ == "__main__":
+    main()
+'''
+
+INIT = '''"""The $title lab: checks.py (its checks), probes.py (its probes), scenes.py (its scenes)."""
+'''
+
+CHECKS = '''"""$title: the checks and the hints (written by `python -m checker new-lab`; make them yours).
+
+Order of checks: loads, handout_unchanged, runtime_lines, normal_speed_right (step 2), runs (the scene).
+normal_speed_right reads checker/labs/$lab_id/probes.py's cases, names the first that differs, and the
+mistake when exactly one known wrong form (NORMAL_MISTAKES) gives the student's answer in every case.
+"""
+from checker.judging import lab_checks
+from checker.judging.causes import consistent_mistake, mistake
+from checker.judging.checks import Fail, Hint, Registry
+from lesson11 import records as metrics
+from . import scenes
+
+TITLE = "$title"
+# the library functions step 2 asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
+STEP_LIBRARY = {2: ("relative_velocity",)}
+STEP_ADVICE = {2: "subtract the velocities and take the dot product with the normal yourself"}
+
+RELATIVE = 1e-9   # the answer against (vB - vA) · n, relative to its size (other orders of the same sums differ)
+
+HINTS = {
+    "normal": Hint(2, "the speed along the normal",
+                   "Section 5: the relative velocity is B's minus A's; its part along the unit normal n (from A "
+                   "to B) is a dot product, negative while the bodies approach."),
+    "handout": lab_checks.handout_hint("the scene, the World, the `# lab runtime` lines, the final print"),
+    "runtime": lab_checks.RUNTIME_HINT,
+    "crash": Hint(1, "run the file", "Run the file yourself (python $lab_id.py) and fix the error at the line shown."),
+}
+
+# The scenes each behaviour check reads, by check id (checker/replay/pictures.py draws them when one fails).
+PICTURE_SCENES = {"runs": ("drop",)}
+
+# CPU s of the solution's run of each scene (the template's: 0.4 s in a child process; measure yours again when
+# the scene changes: the grader starts the longest first).
+SCENE_SECONDS = {"drop": 0.4}
+
+CHECKS = Registry()
+
+lab_checks.register_common(CHECKS, HINTS, ("normal_speed", "main"))
+
+# the known wrong forms of step 2, by the name the probe gives their answers (probes.normal_mistakes)
+NORMAL_MISTAKES = {
+    "sign": "you take A's velocity relative to B's: vB - vA, so that approaching reads negative",
+    "only_b": "only B's velocity is projected: subtract A's first",
+    "only_a": "only A's velocity is projected: take B's minus A's",
+    "length": "the length of vB - vA is not its part along the normal: take the dot product with n",
+    "sum": "vB + vA is projected: the relative velocity is vB - vA",
+    "cross": "a cross product gives the part across the normal: take the dot product",
+    "abs": "the speed lost its sign: approaching must read negative",
+    "halved": "the speed is halved: (vB - vA) · n has no factor 1/2",
+    "clamped": "a separating pair reads 0: keep the positive speeds too",
+    "x_only": "only the x part is taken: the normal is not always along x, take the dot product",
+}
+
+
+def _mistake(cases, case):
+    """The Mistake of the one known wrong form that gives the student's answer in every case, or None."""
+    def close(got, value):
+        return abs(got - value) <= RELATIVE * max(1.0, abs(value))
+    named = consistent_mistake(cases, lambda c, name: close(c["got"], c["mistakes"][name]),
+                               [name for name, value in case["mistakes"].items() if not close(value, case["want"])])
+    return mistake(f"normal_{named}", NORMAL_MISTAKES[named]) if named else None
+
+
+@CHECKS.check(depends=["loads"])
+def normal_speed_right(sub, functions):
+    """Step 2: normal_speed(va, vb, normal) is (vB - vA) · n, negative while the bodies approach."""
+    cases = lab_checks.function_data(sub, functions, "normal_speed", "normal_speed", 2, HINTS["crash"])
+    numbers = all(not isinstance(c["got"], str) for c in cases)
+    for case in cases:
+        got, want = case["got"], case["want"]
+        label = (f"normal_speed({lab_checks.vec_text(case['va'])}, {lab_checks.vec_text(case['vb'])}, "
+                 f"{lab_checks.vec_text(case['normal'])}) ({case['case']})")
+        if isinstance(got, str):
+            raise Fail(f"normal_speed() must return a number (px/s).\\n{label} returned {got}.", HINTS["normal"])
+        if abs(got - want) <= RELATIVE * max(1.0, abs(want)):
+            continue
+        found = _mistake(cases, case) if numbers else None
+        first = found.text if found else "the speed along the normal is not (vB - vA) · n"
+        raise Fail(f"{first}.\\n{label} gave {got:.6g} px/s; expected {want:.6g} ({case['how']}).", HINTS["normal"],
+                   found)
+    return f"all {len(cases)} pairs (approaching, separating, sliding past, at rest) read (vB - vA) · n"
+
+
+@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "normal_speed_right"], needs_scenarios=True)
+def runs(sub):
+    """main() runs the checker's scene to the end."""
+    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
+    for name, run in records.items():
+        if not metrics.finite(run.record["records"]):
+            raise Fail(f"a crate's position or speed became infinite or NaN.\\nin the '{name}' scene.",
+                       HINTS["crash"])
+    return f"main() ran {', '.join(records)} to the end"
+'''
+
+PROBES = '''"""Probes of a $title file's own functions, run inside the checker's child process (new-lab's template).
+
+    normal_speed  (step 2) pairs approaching, separating, sliding past each other, moving together and at
+                  rest, with normals along the axes and slanted, and two pairs drawn for this run; beside
+                  the lesson's answer, what each known wrong form gives (checks.NORMAL_MISTAKES)
+
+The lesson's answers are added in the grader only (`judging`, checker/judging/probe_kit.py). Units: px, s.
+"""
+import math
+
+from pygame import Vector2
+
+from checker.judging.common import real, value_text
+from checker.judging.probe_kit import judging, reference
+from checker.judging.tape import run_rng
+
+REQUIRED = ("normal_speed", "main")
+
+CASES = (
+    # (what, vA px/s, vB px/s, unit normal from A to B)
+    ("head-on along x", (240, 0), (-240, 0), (1, 0)),
+    ("B falling onto A at rest", (0, 0), (0, 300), (0, -1)),
+    ("B catching up with A from behind", (50, 0), (200, 0), (-1, 0)),
+    ("a slanted normal", (30, 80), (-60, 10), (0.6, 0.8)),
+    ("separating along y", (0, -50), (0, 120), (0, 1)),
+    ("sliding past each other", (100, 0), (-100, 0), (0, 1)),
+    ("moving together", (75, -20), (75, -20), (0.8, -0.6)),
+    ("both at rest", (0, 0), (0, 0), (1, 0)),
+)
+
+
+def _number(value):
+    try:
+        return real(value)
+    except (TypeError, ValueError):
+        return value_text(value)
+
+
+@reference
+def reference_normal_speed(va, vb, normal):
+    """The lesson's speed along the normal (px/s): (vB - vA) · n."""
+    return (Vector2(vb) - Vector2(va)).dot(Vector2(normal))
+
+
+@reference
+def reference_approach(va, vb, normal):
+    """How the pair moves along the normal: "approaching", "separating" or "level" (the case's words)."""
+    speed = reference_normal_speed(va, vb, normal)
+    return "approaching" if speed < 0 else "separating" if speed > 0 else "level"
+
+
+@reference
+def normal_mistakes(va, vb, normal):
+    """{name: what a known wrong normal_speed gives} for one case (names: checks.NORMAL_MISTAKES)."""
+    va, vb, n = Vector2(va), Vector2(vb), Vector2(normal)
+    right = (vb - va).dot(n)
+    return {"sign": (va - vb).dot(n), "only_b": vb.dot(n), "only_a": va.dot(n), "length": (vb - va).length(),
+            "sum": (vb + va).dot(n), "cross": (vb - va).cross(n), "abs": abs(right), "halved": right / 2,
+            "clamped": min(0.0, right), "x_only": (vb - va).x}
+
+
+def probe_normal_speed(module, lab_path):
+    """The student's normal_speed on every case beside the lesson's answer and the known wrong forms."""
+    rng = run_rng(module, "normal_speed")   # two pairs drawn for this run, one approaching and one separating
+    drawn = []
+    for what, sign in (("a pair drawn for this run, approaching", -1), ("a pair drawn for this run, separating", 1)):
+        angle = rng.uniform(0, 2 * math.pi)
+        normal = (math.cos(angle), math.sin(angle))
+        va = (rng.uniform(-200, 200), rng.uniform(-200, 200))
+        along = sign * rng.uniform(20, 300)
+        drawn.append((what, va, (va[0] + along * normal[0] + rng.uniform(-50, 50) * normal[1],
+                                 va[1] + along * normal[1] - rng.uniform(-50, 50) * normal[0]), normal))
+    cases = []
+    for what, va, vb, normal in CASES + tuple(drawn):
+        got = module.normal_speed(Vector2(va), Vector2(vb), Vector2(normal))
+        cases.append({"case": what, "va": list(va), "vb": list(vb), "normal": list(normal), "got": _number(got)})
+        if judging(module):
+            cases[-1]["want"] = reference_normal_speed(va, vb, normal)
+            cases[-1]["how"] = reference_approach(va, vb, normal)
+            cases[-1]["mistakes"] = normal_mistakes(va, vb, normal)
+    return cases
+
+
+# the step functions that answer a question and must leave their arguments as they got them
+PURE = ("normal_speed",)
+
+# probe name -> (the lab function it needs, the probe)
+PROBES = {"normal_speed": ("normal_speed", probe_normal_speed)}
+'''
+
+SCENES = '''"""The $title scene: two crates dropped onto the floor (new-lab's template).
+
+The floor's top face is at y = 560 px; y grows downward. Scenario items are the lab's own crate
+descriptions ({"w", "h", "pos", "angle", "vel"}), made by the lab's build().
+"""
+from lesson11 import records as metrics
+
+FRAMES = 72   # 1.2 s at 60 fps: the solution's crates land at 0.78 s and 0.92 s (frames 47 and 55)
+
+
+def drop():
+    """Two 60 x 40 crates dropped from 300 px and 400 px above the floor."""
+    crates = [{"w": 60, "h": 40, "pos": [300, 240]}, {"w": 60, "h": 40, "pos": [600, 140]}]
+    return {"frames": FRAMES, "fps": metrics.FPS, "seed": metrics.SEED, "record_every": 1, "scenario": crates}
+
+
+SCENARIOS = {"drop": drop}
+'''
+
+CORPUS = '''"""The $title mistake corpus: plausible student files and the verdict the checker owes each one.
+
+Every entry is a whole student file built from the CURRENT starter (starters/${lab_id}_starter.py): the
+lines strictly between a step's markers are replaced by the student's code for that step; a step the
+entry does not give gets the solution's code, so the corpus follows the lab when the lab changes. An
+entry that changes code OUTSIDE the steps lists exact (old, new) edits (tests/mutants.py).
+
+Verdicts (tests/corpus_verdicts.py): a CORRECT entry passes every check; a WRONG one fails `check`,
+naming `step`, with a first message holding the words of `says` and the mistake id of MISTAKE_IDS.
+"""
+import os
+import sys
+import textwrap
+from typing import NamedTuple
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STARTER = os.path.join(ROOT, "starters", "${lab_id}_starter.py")
+SOLUTION = os.path.join(ROOT, "solutions", "${lab_id}.py")
+
+STEPS = (2,)
+CHECK_STEP = {"loads": None, "handout_unchanged": None, "runtime_lines": None, "normal_speed_right": 2, "runs": None}
+FUNCTION_CHECKS = ("normal_speed_right",)
+
+
+class Entry(NamedTuple):
+    name: str
+    what: str            # what the student did, one line
+    steps: dict          # {step: code} (dedented)
+    edits: tuple         # ((old, new), ...) outside the steps, applied after the steps are filled
+    check: str           # "pass" for a correct completion, else the id of the check that must fail
+    step: object         # the lesson step the failing check's hint names (None for a correct entry)
+    status: tuple        # accepted statuses of that check
+    also: tuple          # other checks this mistake may fail too
+    why: str             # the input that shows the mistake, or why a correct variant is correct
+    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
+
+
+def _code(text):
+    return textwrap.dedent(text).strip("\\n")
+
+
+def wrong(name, what, check, steps=None, edits=(), status=("fail",), also=(), why=""):
+    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
+                 CHECK_STEP[check], tuple(status), tuple(also), why)
+
+
+def correct(name, what, steps=None, why=""):
+    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, (), "pass", None, ("pass",), (), why)
+
+
+CORRECT = [
+    correct("correct_solution_steps", "the solution's own step", why="the reference build"),
+    correct("correct_components", "writes the dot product out by components", {2: """
+        return (vb.x - va.x) * normal.x + (vb.y - va.y) * normal.y
+    """}, why="the same sums in the same order"),
+    correct("correct_two_dots", "projects each velocity, then subtracts", {2: """
+        return vb.dot(normal) - va.dot(normal)
+    """}, why="equal up to rounding, within the check's 1e-9 relative tolerance"),
+    correct("correct_vector_product", "Vector2 * Vector2, pygame's dot product", {2: """
+        relative = vb - va
+        return relative * normal
+    """}, why="pygame's Vector2 * Vector2 is the dot product"),
+]
+
+WRONG = [
+    wrong("sign_flipped", "takes vA - vB", "normal_speed_right", {2: "return (va - vb).dot(normal)"},
+          why="head-on along x reads +480 instead of -480"),
+    wrong("only_b", "projects vB only", "normal_speed_right", {2: "return vb.dot(normal)"},
+          why="B catching up with A reads -200 instead of -150"),
+    wrong("only_a", "projects vA only", "normal_speed_right", {2: "return va.dot(normal)"},
+          why="B falling onto A at rest reads 0"),
+    wrong("length", "the length of the relative velocity", "normal_speed_right", {2: "return (vb - va).length()"},
+          why="sliding past each other reads 200 instead of 0"),
+    wrong("sum", "projects vB + vA", "normal_speed_right", {2: "return (vb + va).dot(normal)"},
+          why="head-on along x reads 0"),
+    wrong("cross", "a cross product instead of the dot product", "normal_speed_right",
+          {2: "return (vb - va).cross(normal)"}, why="head-on along x reads 0"),
+    wrong("absolute", "abs() of the projection", "normal_speed_right", {2: "return abs((vb - va).dot(normal))"},
+          why="an approaching pair reads positive"),
+    wrong("halved", "half the projection", "normal_speed_right", {2: "return (vb - va).dot(normal) / 2"},
+          why="head-on along x reads -240"),
+    wrong("clamped", "keeps only approaching speeds", "normal_speed_right",
+          {2: "return min(0.0, (vb - va).dot(normal))"}, why="separating along y reads 0 instead of 170"),
+    wrong("x_only", "the x part of the relative velocity", "normal_speed_right", {2: "return vb.x - va.x"},
+          why="B falling onto A reads 0"),
+    wrong("returns_none", "computes the speed but returns nothing", "normal_speed_right", {2: """
+        speed = (vb - va).dot(normal)
+    """}, why="the function returns None: the checker must say it needs a number, not crash"),
+    wrong("outside_scene_changed", "edits make_scene(): the first crate starts on the floor", "handout_unchanged",
+          edits=[('"pos": [300, 240]})', '"pos": [300, 540]})')],
+          why="code outside the steps differs from the handout"),
+]
+
+SAYS = {
+    "sign_flipped": ("A's velocity relative to B's",), "only_b": ("only B's velocity",),
+    "only_a": ("only A's velocity",), "length": ("the length of vB - vA",), "sum": ("vB + vA",),
+    "cross": ("cross product",), "absolute": ("lost its sign",), "halved": ("halved",),
+    "clamped": ("separating pair reads 0",), "x_only": ("only the x part",), "returns_none": ("a number",),
+    "outside_scene_changed": ('"pos": [300, 540]',),
+}
+WRONG = with_says(WRONG, SAYS)
+
+# the mistake id each entry's failing check must carry (--json's "mistake")
+MISTAKE_IDS = {"sign_flipped": "normal_sign", "only_b": "normal_only_b", "only_a": "normal_only_a",
+               "length": "normal_length", "sum": "normal_sum", "cross": "normal_cross", "absolute": "normal_abs",
+               "halved": "normal_halved", "clamped": "normal_clamped", "x_only": "normal_x_only"}
+
+ENTRIES = CORRECT + WRONG
+BY_NAME = {entry.name: entry for entry in ENTRIES}
+assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
+
+FILES = CorpusFiles(STARTER, SOLUTION, STEPS, BY_NAME, "tests/corpus_${lab_id}.py")
+regions, step_code, fill, build, write_corpus = FILES.regions, FILES.step_code, FILES.fill, FILES.build, FILES.write
+'''
+
+CORPUS_TEST = '''"""The checker owes every entry of the $title mistake corpus its verdict: no false pass, no false fail.
+
+tests/corpus_${lab_id}.py builds plausible student files from the current starter; they are graded in ONE run
+of `python -m checker --json`, one test per entry, by the rules in tests/corpus_verdicts.py.
+"""
+import pytest
+
+import corpus_${lab_id} as corpus
+import corpus_verdicts as verdicts
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory):
+    """{entry name: {check id: the check's JSON}}, from one checker run over the whole corpus."""
+    return verdicts.grade(corpus.write_corpus(tmp_path_factory.mktemp("${lab_id}_corpus")), "${lab_id}")
+
+
+def test_the_corpus_is_big_enough_and_covers_every_step():
+    verdicts.assert_big_enough(corpus, per_step=3)
+
+
+@pytest.mark.parametrize("entry", corpus.ENTRIES, ids=lambda e: e.name)
+def test_each_entry_is_well_formed_and_builds(entry):
+    verdicts.assert_builds(entry, corpus, "$title")
+
+
+def test_the_reference_build_is_the_solution():
+    verdicts.assert_reference_build_is_the_solution(corpus)
+
+
+@pytest.mark.parametrize("entry", corpus.ENTRIES, ids=lambda e: e.name)
+def test_the_checker_gives_each_entry_its_verdict(entry, graded):
+    verdicts.assert_verdict(entry, graded[entry.name], corpus)
+'''
+
+# path under the project -> text (string.Template: $lab_id, $title)
+FILES = {
+    "solutions/${lab_id}.py": SOLUTION,
+    "checker/labs/${lab_id}/__init__.py": INIT,
+    "checker/labs/${lab_id}/checks.py": CHECKS,
+    "checker/labs/${lab_id}/probes.py": PROBES,
+    "checker/labs/${lab_id}/scenes.py": SCENES,
+    "tests/corpus_${lab_id}.py": CORPUS,
+    "tests/test_corpus_${lab_id}.py": CORPUS_TEST,
+}
