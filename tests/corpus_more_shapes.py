@@ -33,6 +33,7 @@ STARTER = os.path.join(ROOT, "starters", "more_shapes_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "more_shapes.py")
 
 STEPS = (2, 3, 4, 5)
+PER_STEP = 3   # wrong entries each step needs at least (tests/corpus_verdicts.py)
 
 CHECK_STEP = {
     "loads": None, "handout_unchanged": None, "runtime_lines": None,

@@ -32,6 +32,7 @@ STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
 
 STEPS = (2, 3, 4)
+PER_STEP = 3   # wrong entries each step needs at least (tests/corpus_verdicts.py)
 
 CHECK_STEP = {
     "loads": None, "handout_unchanged": None, "runtime_lines": None,

@@ -46,6 +46,7 @@ STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
 
 STEPS = (2, 3, 4, 5, 6)
+PER_STEP = 3   # wrong entries each step needs at least (tests/corpus_verdicts.py)
 START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+): .*---[ \t]*$")
 END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---[ \t]*$")
 
@@ -464,7 +465,8 @@ OUTSIDE_WRONG = [
 # ================================================================ correct completions in other styles
 
 CORRECT = [
-    correct("correct_solution_steps", "the solution's code in every step (the reference build)"),
+    correct("correct_solution_steps", "the solution's code in every step (the reference build)",
+            why="it is the solution, byte for byte (test_the_reference_build_is_the_solution)"),
     correct("correct_lever_turned_copy", "r × P written as a turned copy of r dotted with P (ra.rotate(90))", {6: """
         a.omega -= ra.rotate(90).dot(impulse) * a.inv_inertia
         b.omega += rb.rotate(90).dot(impulse) * b.inv_inertia
