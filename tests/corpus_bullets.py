@@ -30,7 +30,7 @@ import textwrap
 from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_files import CorpusFiles, second_mistake, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
 
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -360,6 +360,19 @@ MISTAKE_IDS = {
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}
+
+# Two known mistakes at once (tests/test_named_causes.py): the first message names the step and the values and
+# neither cause. {name: (the check that fails first, {step: code}, the causes' words it must not say)}
+COMBINED = {
+    "b_sign_without_the_two": (   # b = -2 dp·dv and a for 2a
+        "toi_matches_root", second_mistake(ENTRIES, "toi_b_sign", 2, "/ (2 * a)", "/ a"),
+        ("b = -2 dp·dv", "the 2 of 2a")),
+    "falsy_zero_with_a_point_bullet": ("broad_test", {4: _code("""
+        if not circle_toi(bullet.pos, bullet.vel, 0, other.pos, Vector2(), bounding_radius(points, other.pos), dt):
+            return None
+    """)}, ("t = 0.0 as no contact", "as a point", "wrong way round")),
+}
+
 
 # ================================================================ building the files (tests/corpus_files.py)
 

@@ -39,7 +39,7 @@ from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
-from corpus_files import with_says  # noqa: E402
+from corpus_files import second_mistake, with_says  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
@@ -725,6 +725,20 @@ MISTAKE_IDS = {
     "friction_always_full": "friction_always_full", "friction_abs_loses_sign": "friction_sign",
     "friction_if_clamp_loses_sign": "friction_clamp_loses_sign", "spin_missing": "spin_missing",
     "spin_assigned": "spin_assigned",
+}
+
+
+# Two known mistakes of one step at once (tests/test_named_causes.py): neither formula alone gives the file's
+# answers, so the first message names the step and the values and neither cause (a cause the file does not have
+# alone is a false lead). {name: (the check that fails first, {step: code}, the causes' words it must not say)}
+COMBINED = {
+    "union_on_unnormalised_axes": (   # unnormalised axes and both shadows together
+        "sat_axes", second_mistake(ENTRIES, "sat_unnormalised_axes", 2, "min(max_a, max_b) - max(min_a, min_b)",
+                                   "max(max_a, max_b) - min(min_a, min_b)"),
+        ("both shadows together", "not divided by their length")),
+    "reversed_test_on_first_corners": (   # the first corners and the test reversed
+        "sat_normal", second_mistake(ENTRIES, "normal_first_vertices", 3, "< 0", "> 0"),
+        ("wrong way round", "first corners", "every time", "never turned round")),
 }
 
 
