@@ -348,6 +348,10 @@ SAYS = {
 }
 WRONG = with_says(WRONG, SAYS)
 
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'swept_whole_step_after', 'SweptCase'
+
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
 MISTAKE_IDS = {
     "toi_twice": "toi_no_two", "toi_a_not_squared": "toi_a_unsquared", "toi_b_sign": "toi_b_sign",

@@ -391,6 +391,10 @@ SAYS = {
 }
 WRONG = with_says(WRONG, SAYS)
 
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'inertia_missing_six', 'PolygonCase'
+
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
 MISTAKE_IDS = {
     "inertia_missing_six": "polygon_inertia_no_six", "inertia_ignores_mass": "polygon_inertia_no_mass",

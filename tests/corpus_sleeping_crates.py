@@ -251,6 +251,10 @@ SAYS = {
 }
 WRONG = with_says(WRONG, SAYS)
 
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'timer_counts_frames', 'TimerCase'
+
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
 MISTAKE_IDS = {
     "timer_never_resets": "timer_never_resets", "timer_counts_frames": "timer_counts_frames",

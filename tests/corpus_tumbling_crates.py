@@ -712,6 +712,10 @@ ENTRIES = with_says(ENTRIES, SAYS)
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 WRONG = [entry for entry in ENTRIES if entry.check != "pass"]
 
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'spin_missing', 'ImpulseCase'
+
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake"); the friction ones are
 # Ball on the Ramp's (the same mistake, the same id and words: checker/causes.SHARED)
 MISTAKE_IDS = {
