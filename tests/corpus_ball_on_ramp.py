@@ -426,6 +426,18 @@ SAYS = {
 }
 WRONG = with_says(WRONG, SAYS)
 
+# What tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself (each key optional):
+# short (its entries' name prefix), mechanisms (the issue-35 mechanisms that apply; tests/corpus_attacks.py
+# says why), library_name / library_owner (the library's answer to the first step where it is not the first
+# STEP_LIBRARY name), world_call, hidden, forger and side (the attacks' code where the default does not fit).
+ATTACK = {
+    "short": "br",
+    "mechanisms": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10),
+    "world_call": "return World().circle_point and p",
+    "forger": (7, ("closest_point", "push_out_split", "ball_inertia", "contact_on_surface")),
+    "side": (5, "disc_inertia", "def found(mass, radius):\n    return 0.5 * mass * radius ** 2", "ball_inertia"),
+}
+
 # The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
 # whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
 SHOW_ENTRY, SHOW_CASE = 'inertia_ring', 'PolygonCase'

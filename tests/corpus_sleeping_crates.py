@@ -251,6 +251,16 @@ SAYS = {
 }
 WRONG = with_says(WRONG, SAYS)
 
+# What tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself (each key optional):
+# short (its entries' name prefix), mechanisms (the issue-35 mechanisms that apply; tests/corpus_attacks.py
+# says why), library_name / library_owner (the library's answer to the first step where it is not the first
+# STEP_LIBRARY name), world_call, hidden, forger and side (the attacks' code where the default does not fit).
+ATTACK = {
+    "short": "sc",
+    "mechanisms": (1, 2, 5, 6, 7, 8, 10),
+    "library_name": "sleep_timer_of_world", "library_owner": "World()",   # the library's timer is World's
+}
+
 # The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
 # whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
 SHOW_ENTRY, SHOW_CASE = 'timer_counts_frames', 'TimerCase'

@@ -712,6 +712,18 @@ ENTRIES = with_says(ENTRIES, SAYS)
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 WRONG = [entry for entry in ENTRIES if entry.check != "pass"]
 
+# What tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself (each key optional):
+# short (its entries' name prefix), mechanisms (the issue-35 mechanisms that apply; tests/corpus_attacks.py
+# says why), library_name / library_owner (the library's answer to the first step where it is not the first
+# STEP_LIBRARY name), world_call, hidden, forger and side (the attacks' code where the default does not fit).
+ATTACK = {
+    "short": "tc",
+    "mechanisms": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10),
+    # a step function no probe splices, hidden under `coding: unicode_escape` (mechanism 2)
+    "hidden": (6, "from lesson11.physics2d import apply_impulse", "apply_impulse_spin"),
+    "forger": (4, ("sat_axes", "apply_impulse_spin")),   # resolve() forges; the other functions' checks
+}
+
 # The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
 # whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
 SHOW_ENTRY, SHOW_CASE = 'spin_missing', 'ImpulseCase'
