@@ -84,6 +84,12 @@ Issue 35's mechanisms (entry.mechanism = the item number; MECHANISMS_BY_LAB says
 honest(entry), the same file with the attack removed (the steps the entry wrote put back to the
 starter's placeholder, no edit, side file or extra text), graded in the same run.
 
+The labs are every lab in checker/labs/ with a mistake corpus (tests/labs_found.py). The first round's seven
+kinds and mechanisms 1, 2, 5, 6 and 7 are built for every lab from the lab itself (its first and last step
+regions, the function holding each, its STEP_LIBRARY, its corpus's CHECK_STEP); what a lab needs beyond that
+(another name for the library's answer, a World call, the step that forges, a side module, which mechanisms
+apply) is its corpus's ATTACK dict; the other attacks and controls are written per lab below.
+
     ENTRIES: [Entry]; BY_LAB: {lab: [Entry]}; LABS: {lab: its mistake-corpus module}; HONEST: {name: Entry}
     build(entry) -> source text; write(directory, entries=None) -> {name: path}
 """
