@@ -31,6 +31,7 @@ from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from wrong_kinds import AS_TEXT, HIT, MOTION, NUMBER, PLACES, VECTOR, after_solution, returns, substituted, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -437,6 +438,15 @@ ATTACK = {
     "forger": (7, ("closest_point", "push_out_split", "ball_inertia", "contact_on_surface")),
     "side": (5, "disc_inertia", "def found(mass, radius):\n    return 0.5 * mass * radius ** 2", "ball_inertia"),
 }
+
+# The wrong-kind values its step functions must fail on, never the checker (tests/test_wrong_kinds.py):
+# [(function, step, [case, ...])], the cases written as tests/wrong_kinds.py says.
+WRONG_KINDS = [("closest_on_segment", 2, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])), ("circle_polygon", 3, returns(HIT)),
+               ("separate", 4, after_solution(PLACES)), ("disc_inertia", 5, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
+               ("contact_point", 6, returns(VECTOR) + wrapped(AS_TEXT)), ("resolve", 7, after_solution(MOTION[:4]) + substituted(
+                   "apply_impulse(a, b, t * jt, ra, rb)",
+                   ["apply_impulse(a, b, (t * jt).x, ra, rb)", "apply_impulse(a, b, tuple(t * jt), ra, rb)",
+                    "apply_impulse(a, b, t * jt, tuple(ra), rb)", "apply_impulse(a, b, t * jt, ra, 'rb')"]))]
 
 # The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
 # whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.

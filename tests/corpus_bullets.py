@@ -31,6 +31,7 @@ from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_files import CorpusFiles, second_mistake, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from wrong_kinds import AS_TEXT, NUMBER, TOI, V, after_solution, before_solution, returns, substituted, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -358,6 +359,19 @@ ATTACK = {
     "world_call": "return World().swept_move and None",
     "side": (2, "circle_toi", "from lesson11.physics2d import circle_toi as found", "toi_matches_root"),
 }
+
+# The wrong-kind values its step functions must fail on, never the checker (tests/test_wrong_kinds.py):
+# [(function, step, [case, ...])], the cases written as tests/wrong_kinds.py says.
+WRONG_KINDS = [("circle_toi", 2, returns(NUMBER) + wrapped(["None if answer is None else str(answer)",
+                                                            "None if answer is None else [answer]"])),
+               ("bounding_radius", 3, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
+               ("time_of_impact", 4, returns(TOI) + before_solution(["bullet.vel = (1.0, 2.0)", "other.omega = 'x'"])),
+               ("swept_move", 5, after_solution(["bullet.pos = (1.0, 2.0)", "bullet.vel = 'fast'",
+                                                 f"bullet.pos = {V}(float('nan'), 0)",
+                                                 f"bullet.omega = {V}(1, 0)", "bullet.vel = None"])
+                + substituted("normal, bullet.pos + normal * bullet.radius)",
+                              ["normal, 'here')",
+                               "normal, None)", "tuple(normal), bullet.pos + normal * bullet.radius)"]))]
 
 # The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
 # whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.

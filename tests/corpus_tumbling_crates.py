@@ -40,6 +40,7 @@ from typing import NamedTuple
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
 from corpus_files import second_mistake, with_says  # noqa: E402
+from wrong_kinds import HIT, MOTION, V, after_solution, returns  # noqa: E402  (tests/wrong_kinds.py)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
@@ -723,6 +724,14 @@ ATTACK = {
     "hidden": (6, "from lesson11.physics2d import apply_impulse", "apply_impulse_spin"),
     "forger": (4, ("sat_axes", "apply_impulse_spin")),   # resolve() forges; the other functions' checks
 }
+
+# The wrong-kind values its step functions must fail on, never the checker (tests/test_wrong_kinds.py):
+# [(function, step, [case, ...])], the cases written as tests/wrong_kinds.py says.
+WRONG_KINDS = [("sat", 2, returns(HIT)), ("apply_impulse", 6, after_solution(MOTION)),
+               ("resolve", 4, after_solution(MOTION[:3] + ["a.pos = 'x'", f"k += {V}(1, 0)", "k = float('nan')",
+                                                           "k = '1'"])),
+               ("resolve", 5, after_solution([f"jt = {V}(1, 0)", "jt = (1.0, 0.0)", "jt = float('inf')",
+                                              "jt = 10 ** 400", "jt = None"]))]
 
 # The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
 # whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
