@@ -101,11 +101,3 @@ def step_functions(lab, path=None):
             out[step] = (node.name, tuple(a.arg for a in node.args.args))
     return out
 
-
-def solution_module(lab, name=None):
-    """The lab's solution imported as a module (its main() does not run)."""
-    import importlib.util
-    spec = importlib.util.spec_from_file_location(name or f"solution_of_{lab.id}", lab.solution)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
