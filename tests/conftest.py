@@ -25,7 +25,7 @@ LONGEST_FIRST = (
     "test_checker_portable.py",         # every corpus graded again through the portable path (no zygote)
     "test_corpus_attacks.py",           # 166 attacks and their honest files, two grading modes
     "test_stability_long.py",           # the 10⁵-step busy scene (slow): one process, nothing parallel inside
-    "test_corpus_tumbling_crates.py",   # 73 files graded by one checker run (the checker's own 2 jobs)
+    "test_corpus_labs.py",              # every lab's corpus, one checker run a lab (Tumbling Crates: 73 files)
     "test_stability_dynamics.py",       # the base-8 pyramid (slow), the resting pile, the 10-box stack
     "test_checker.py",                  # the solutions, mutants, hostile files
     "test_stability_grid.py",           # 3 solvers × 7 settings × 5 scenes, energy books (~30 s)

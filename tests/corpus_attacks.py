@@ -84,6 +84,12 @@ Issue 35's mechanisms (entry.mechanism = the item number; MECHANISMS_BY_LAB says
 honest(entry), the same file with the attack removed (the steps the entry wrote put back to the
 starter's placeholder, no edit, side file or extra text), graded in the same run.
 
+The labs are every lab in checker/labs/ with a mistake corpus (tests/labs_found.py). The first round's seven
+kinds and mechanisms 1, 2, 5, 6 and 7 are built for every lab from the lab itself (its first and last step
+regions, the function holding each, its STEP_LIBRARY, its corpus's CHECK_STEP); what a lab needs beyond that
+(another name for the library's answer, a World call, the step that forges, a side module, which mechanisms
+apply) is its corpus's ATTACK dict; the other attacks and controls are written per lab below.
+
     ENTRIES: [Entry]; BY_LAB: {lab: [Entry]}; LABS: {lab: its mistake-corpus module}; HONEST: {name: Entry}
     build(entry) -> source text; write(directory, entries=None) -> {name: path}
 """
@@ -99,18 +105,14 @@ for _path in (TESTS, ROOT):
         sys.path.insert(0, _path)
 
 import corpus_attacks_judge  # noqa: E402  (issue 39's entries on the judging)
-import corpus_ball_on_ramp  # noqa: E402  (each lab's STARTER, SOLUTION, STEPS, CHECK_STEP, FUNCTION_CHECKS)
-import corpus_bullets  # noqa: E402
-import corpus_more_shapes  # noqa: E402
-import corpus_sleeping_crates  # noqa: E402
-import corpus_tumbling_crates  # noqa: E402
+import labs_found  # noqa: E402  (every lab in checker/labs/ and its mistake corpus)
 import mutants  # noqa: E402
 from corpus_files import CorpusFiles  # noqa: E402  (starter + steps + edits, as the mistake corpora build)
 
-LABS = {"tumbling_crates": corpus_tumbling_crates, "more_shapes": corpus_more_shapes,
-        "ball_on_ramp": corpus_ball_on_ramp, "bullets": corpus_bullets, "sleeping_crates": corpus_sleeping_crates}
-TITLES = {"tumbling_crates": "Tumbling Crates", "more_shapes": "More Shapes", "ball_on_ramp": "Ball on the Ramp",
-          "bullets": "Bullets", "sleeping_crates": "Sleeping Crates"}
+# every lab in checker/labs/ with a mistake corpus (each corpus's STARTER, SOLUTION, STEPS, CHECK_STEP,
+# FUNCTION_CHECKS; a lab without one fails tests/test_corpus_labs.py), and each lab's title, from the lab
+LABS = {lab.id: labs_found.corpus(lab) for lab in labs_found.with_corpus()}
+TITLES = {lab.id: lab.title for lab in labs_found.LABS}
 LISTED_KINDS = ("import", "world", "dunder", "forge", "rebind", "solution", "detect", "table")
 MECHANISM_KINDS = ("line_breaks", "coding", "changed_inputs", "frame_read", "foreign_hook", "star_import",
                    "grader_stdout", "wrong_answer")   # issue 35
@@ -916,20 +918,41 @@ SLEEPING = [
 # library's); its forge, rebind and solution entries add code outside the steps (keeps_handout False),
 # and its four controls must get every check, the scenes included (all_checks).
 
-FIRST_TARGETS = {   # lab: (step, the call with its own arguments, the library's name for it, the step's check)
-    "tumbling_crates": (2, "sat(pa, pb)", "sat", "sat_axes"),
-    "more_shapes": (2, "regular_polygon(sides, radius)", "regular_polygon", "polygon_corners"),
-    "ball_on_ramp": (2, "closest_on_segment(p, a, b)", "closest_on_segment", "closest_point"),
-    "bullets": (2, "circle_toi(p1, v1, r1, p2, v2, r2, dt)", "circle_toi", "toi_matches_root"),
-    "sleeping_crates": (2, "sleep_timer(timer, speed, spin, dt)", "sleep_timer_of_world", "timer_rule"),
-}
-FIRST_WORLD_CALLS = {   # the World method doing (or standing in for) each attacked step's job
-    "tumbling_crates": "return World().sat(pa, pb)",
-    "sleeping_crates": "return World().sleep_timer_of_world(timer, speed, spin, dt)",
-    "ball_on_ramp": "return World().circle_point and p",
-    "more_shapes": "return [p for p in World().bodies] or Polygon(box_points(2 * radius, radius)).points",
-    "bullets": "return World().swept_move and None",
-}
+def _attack_data(lab):
+    """What this corpus needs of `lab` beyond what it reads from the lab itself: its corpus's ATTACK dict (the
+    keys used below; each is optional where the lab itself gives the value)."""
+    return getattr(LABS[lab], "ATTACK", {})
+
+
+def _check_of_step(lab, step):
+    """The first of the lab's function checks whose hint names `step` (its corpus's CHECK_STEP)."""
+    module = LABS[lab]
+    return next(check for check in module.FUNCTION_CHECKS if module.CHECK_STEP[check] == step)
+
+
+def first_target(lab):
+    """(step, the call with its own arguments, the library's name for it, the step's check) of the lab's first
+    step: read from the lab (its solution's first step region, the function holding it and its parameters, the
+    first name its STEP_LIBRARY lists for it); ATTACK["library_name"] names the library's answer where that is
+    another name (Sleeping Crates: World's sleep_timer_of_world)."""
+    found = labs_found.by_id(lab)
+    step = min(labs_found.steps(found))
+    function, parameters = labs_found.step_functions(found)[step]
+    call = f"{function}({', '.join(p for p in parameters if p != 'self')})"
+    name = _attack_data(lab).get("library_name", found.module.STEP_LIBRARY[step][0])
+    return step, call, name, _check_of_step(lab, step)
+
+
+def _owner(lab):
+    """What the library's answer is an attribute of ("World()" for a World method), or "" for a function."""
+    return _attack_data(lab).get("library_owner", "")
+
+
+def first_world_call(lab):
+    """Step code asking World to do (or stand in for) the first step's job: ATTACK["world_call"], else World's
+    method of the library's name on the step's own arguments."""
+    _, call, name, _ = first_target(lab)
+    return _attack_data(lab).get("world_call", f"return World().{name}{call[call.index('('):]}")
 
 
 def _outside(code):
@@ -938,29 +961,29 @@ def _outside(code):
 
 
 def library_code(lab, call, name):
-    """Step code returning the library's answer for `call` (Sleeping Crates: World's sleep timer)."""
+    """Step code returning the library's answer for `call` (a World method where the lab's ATTACK says so)."""
     args = call[call.index("("):]
-    if lab == "sleeping_crates":
-        return f"from lesson11.physics2d import World as _W\nreturn _W().sleep_timer_of_world{args}"
+    if _owner(lab) == "World()":
+        return f"from lesson11.physics2d import World as _W\nreturn _W().{name}{args}"
     return f"from lesson11.physics2d import {name} as _library\nreturn _library{args}"
 
 
 def first_round(lab):
     """The seven kinds of tests/attack_corpus.py against step 2 of `lab`."""
-    step, call, name, check = FIRST_TARGETS[lab]
+    step, call, name, check = first_target(lab)
     args = call[call.index("("):]
     function = call[:call.index("(")]
     library = library_code(lab, call, name)
     undone = {step: starter_steps(lab)[step]}
     probes = f"checker.labs.{lab}.probes"
-    rebind = (f"from lesson11.physics2d import World as _W\n{function} = lambda *a: _W().sleep_timer_of_world(*a)"
-              if lab == "sleeping_crates" else f"from lesson11.physics2d import {name} as _library\n"
+    rebind = (f"from lesson11.physics2d import World as _W\n{function} = lambda *a: _W().{name}(*a)"
+              if _owner(lab) == "World()" else f"from lesson11.physics2d import {name} as _library\n"
                                                f"{function} = _library")
     solution = os.path.join(ROOT, "solutions", lab + ".py")
-    world = "World()." if lab == "sleeping_crates" else ""
+    world = f"{_owner(lab)}." if _owner(lab) else ""
     return [
         attack(f"{lab}_import", lab, "import", {step: library}, [check], "the step imports the library's answer"),
-        attack(f"{lab}_world", lab, "world", {step: FIRST_WORLD_CALLS[lab]}, [check],
+        attack(f"{lab}_world", lab, "world", {step: first_world_call(lab)}, [check],
                "the step asks World, which runs on the library's functions"),
         attack(f"{lab}_dunder", lab, "dunder", {step: f"return __import__('lesson11.physics2d', fromlist=['x']).{world}"
                                                       f"{name}{args}"}, [check],
@@ -1006,7 +1029,7 @@ def _first_timer_table():
     return "table = " + repr(table) + "\nreturn table.get((timer, speed, spin, round(dt, 9)), 0.0)"
 
 
-FIRST_ROUND = [entry for lab in FIRST_TARGETS for entry in first_round(lab)] + [
+FIRST_ROUND = [entry for lab in LABS for entry in first_round(lab)] + [
     attack("tumbling_crates_table", "tumbling_crates", "table", {2: _first_sat_table()}, ["sat_axes"],
            "answers copied for the fixed pairs only", needs_random_inputs=True),
     attack("sleeping_crates_table", "sleeping_crates", "table", {2: _first_timer_table()},
@@ -1058,7 +1081,7 @@ for _lab, _module in LABS.items():
 
 # the library's function each lab's step 2 hands over to: (step, the step's code, its check)
 LIBRARY_STEP = {lab: (step, library_code(lab, call, name), check)
-                for lab, (step, call, name, check) in FIRST_TARGETS.items()}
+                for lab, (step, call, name, check) in ((lab, first_target(lab)) for lab in LABS)}
 
 # 1: characters str.splitlines() breaks at and the compiler does not, 60 of each in one comment
 BREAKS = "\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029" * 60
@@ -1066,13 +1089,18 @@ IMPORT_RANDOM = "\nimport random\n"
 
 # 2: what each lab's file hides in a comment under `# -*- coding: unicode_escape -*-`: a line rebinding a
 # step function (one no probe splices) to the library's, and the step and check it takes
-HIDDEN = {
-    "tumbling_crates": (6, "from lesson11.physics2d import apply_impulse", "apply_impulse_spin"),
-    "more_shapes": (2, "from lesson11.physics2d import regular_polygon", "polygon_corners"),
-    "ball_on_ramp": (2, "from lesson11.physics2d import closest_on_segment", "closest_point"),
-    "bullets": (2, "from lesson11.physics2d import circle_toi", "toi_matches_root"),
-    "sleeping_crates": (2, "sleep_timer = World().sleep_timer_of_world", "timer_rule"),
-}
+def hidden(lab):
+    """(step, the hidden line, its check): ATTACK["hidden"], else the first step's function rebound to the
+    library's answer."""
+    if "hidden" in _attack_data(lab):
+        return _attack_data(lab)["hidden"]
+    step, call, name, check = first_target(lab)
+    function = call[:call.index("(")]
+    if _owner(lab):
+        return step, f"{function} = {_owner(lab)}.{name}", check
+    return step, f"from lesson11.physics2d import {name}" + ("" if name == function else f" as {function}"), check
+
+
 BACKSLASH_N = "\\" + "n"   # the two characters a unicode_escape file decodes to a line break
 
 # 5: the child's tapes (those taken, through run_probe's frame, and those to come, through tape.Recorder.take)
@@ -1108,11 +1136,15 @@ if tape is not None and not hasattr(tape.Recorder.take, "forged"):
     take.forged = True
     tape.Recorder.take = take
 """
-FORGER = {"tumbling_crates": (4, ("sat_axes", "apply_impulse_spin")),
-          "more_shapes": (5, ("polygon_corners", "centroid", "inertia_sum")),
-          "ball_on_ramp": (7, ("closest_point", "push_out_split", "ball_inertia", "contact_on_surface")),
-          "bullets": (5, ("toi_matches_root", "bounding_circle", "broad_test")),
-          "sleeping_crates": (4, ("timer_rule", "skips_sleepers"))}
+def forger(lab):
+    """(the step that forges, the checks that must not pass): ATTACK["forger"], else the last step forging and the
+    checks of every other step."""
+    if "forger" in _attack_data(lab):
+        return _attack_data(lab)["forger"]
+    module = LABS[lab]
+    step = max(module.STEPS)
+    return step, tuple(check for check in module.FUNCTION_CHECKS if module.CHECK_STEP[check] != step)
+
 
 # 7: a forged --json document written to the grader's own stdout: the child's parent is the zygote (or the
 # grader), whose parent is the grader; as root /proc/<pid>/fd/1 opens the grader's stdout pipe
@@ -1143,22 +1175,18 @@ _forge_grades()
 
 # 8: a side module beside the lab, imported by one added line: it binds the step function's name in
 # the lab's globals to the library's
-SIDE = {"more_shapes": (2, "regular_polygon", "from lesson11.physics2d import regular_polygon as found",
-                        "polygon_corners"),
-        "ball_on_ramp": (5, "disc_inertia", "def found(mass, radius):\n    return 0.5 * mass * radius ** 2",
-                         "ball_inertia"),
-        "bullets": (2, "circle_toi", "from lesson11.physics2d import circle_toi as found", "toi_matches_root")}
+# (step, function, the side file's code binding `found`, check) of the labs whose ATTACK has a "side"
+SIDE = {lab: _attack_data(lab)["side"] for lab in LABS if "side" in _attack_data(lab)}
 CRATE_UTILS = ((MAIN_GUARD, "\n\nimport crate_utils  # noqa: E402, F401\n" + MAIN_GUARD),)
 
 
 def _issue35(lab):
     """Mechanisms 1, 2, 5, 6, 7 (and 8 where the first round has no side module) against `lab`."""
-    short = {"tumbling_crates": "tc", "more_shapes": "ms", "ball_on_ramp": "br", "bullets": "bu",
-             "sleeping_crates": "sc"}[lab]
+    short = _attack_data(lab).get("short", lab)   # the entries' name prefix
     module, undone = LABS[lab], starter_steps(lab)
     step, library, check = LIBRARY_STEP[lab]
-    hidden_step, hidden, hidden_check = HIDDEN[lab]
-    forger, forged = FORGER[lab]
+    hidden_step, hidden_line, hidden_check = hidden(lab)
+    forging_step, forged = forger(lab)
     out = [
         attack(f"{short}_m1_line_breaks", lab, "line_breaks", {step: library}, [check],
                "a comment of 480 \\x0b \\x0c \\x1c-\\x1e \\x85 U+2028 U+2029 shifts the checker's line numbers off the "
@@ -1168,11 +1196,11 @@ def _issue35(lab):
                "the file declares `coding: unicode_escape`: a comment to a UTF-8 reader holds `\\n` and a line "
                "rebinding the undone step's function to the library's, module code to Python",
                extra_text=(("", "# -*- coding: unicode_escape -*-\n"),
-                           (MAIN_GUARD, f"\n\n# see my notes{BACKSLASH_N}{hidden}  # (mine)\n" + MAIN_GUARD)),
+                           (MAIN_GUARD, f"\n\n# see my notes{BACKSLASH_N}{hidden_line}  # (mine)\n" + MAIN_GUARD)),
                mechanism=2),
         attack(f"{short}_m5_foreign_hook", lab, "foreign_hook",
-               {forger: _code(FOREIGN_EVENT) + "\n" + FILES_SOLUTION_STEPS[lab][forger]}, forged,
-               f"step {forger} (the solution's, flagged) patches the child's tape.Recorder.take to add to every tape "
+               {forging_step: _code(FOREIGN_EVENT) + "\n" + FILES_SOLUTION_STEPS[lab][forging_step]}, forged,
+               f"step {forging_step} (the solution's, flagged) patches the child's tape.Recorder.take to add to every tape "
                "an event naming draw_text, a handout function no probe installs: the solution's other steps must "
                "come out as a tape mismatch, never data or a call in the grader", mechanism=5, message="could not replay"),
         attack(f"{short}_m6_star_solution", lab, "star_import", undone, module.FUNCTION_CHECKS,
@@ -1310,9 +1338,9 @@ ISSUE35 = [entry for lab in LABS for entry in _issue35(lab)] + [
 #     Bullets and Sleeping Crates compare every case's answer (none skips a case it cannot see);
 #   10 (wrong answers) are More Shapes' and Ball on the Ramp's; the stdlib controls are where a step reads
 #     naturally with cmath or itertools (More Shapes, Tumbling Crates, Sleeping Crates).
-MECHANISMS_BY_LAB = {"tumbling_crates": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10), "more_shapes": (1, 2, 5, 6, 7, 8, 10),
-                     "ball_on_ramp": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10), "bullets": (1, 2, 5, 6, 7, 8),
-                     "sleeping_crates": (1, 2, 5, 6, 7, 8, 10)}
+# every lab's issue-35 mechanisms: its corpus's ATTACK["mechanisms"], else those _issue35 builds for any lab
+MECHANISMS_BY_LAB = {lab: _attack_data(lab).get("mechanisms", (1, 2, 5, 6, 7) + ((8,) if lab in SIDE else ()))
+                     for lab in LABS}
 
 
 # issue 39's attacks on the judging (items 2-4): tests/corpus_attacks_judge.py

@@ -31,6 +31,7 @@ from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from wrong_kinds import AS_TEXT, HIT, MOTION, NUMBER, PLACES, VECTOR, after_solution, returns, substituted, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -425,6 +426,31 @@ SAYS = {
     "slop_zeroed": ("SLOP = 0.0",),
 }
 WRONG = with_says(WRONG, SAYS)
+
+# What tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself (each key optional):
+# short (its entries' name prefix), mechanisms (the issue-35 mechanisms that apply; tests/corpus_attacks.py
+# says why), library_name / library_owner (the library's answer to the first step where it is not the first
+# STEP_LIBRARY name), world_call, hidden, forger and side (the attacks' code where the default does not fit).
+ATTACK = {
+    "short": "br",
+    "mechanisms": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10),
+    "world_call": "return World().circle_point and p",
+    "forger": (7, ("closest_point", "push_out_split", "ball_inertia", "contact_on_surface")),
+    "side": (5, "disc_inertia", "def found(mass, radius):\n    return 0.5 * mass * radius ** 2", "ball_inertia"),
+}
+
+# The wrong-kind values its step functions must fail on, never the checker (tests/test_wrong_kinds.py):
+# [(function, step, [case, ...])], the cases written as tests/wrong_kinds.py says.
+WRONG_KINDS = [("closest_on_segment", 2, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])), ("circle_polygon", 3, returns(HIT)),
+               ("separate", 4, after_solution(PLACES)), ("disc_inertia", 5, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
+               ("contact_point", 6, returns(VECTOR) + wrapped(AS_TEXT)), ("resolve", 7, after_solution(MOTION[:4]) + substituted(
+                   "apply_impulse(a, b, t * jt, ra, rb)",
+                   ["apply_impulse(a, b, (t * jt).x, ra, rb)", "apply_impulse(a, b, tuple(t * jt), ra, rb)",
+                    "apply_impulse(a, b, t * jt, tuple(ra), rb)", "apply_impulse(a, b, t * jt, ra, 'rb')"]))]
+
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'inertia_ring', 'PolygonCase'
 
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake"); an entry not listed may
 # carry none

@@ -30,7 +30,8 @@ import textwrap
 from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_files import CorpusFiles, second_mistake, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from wrong_kinds import AS_TEXT, NUMBER, TOI, V, after_solution, before_solution, returns, substituted, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -348,6 +349,34 @@ SAYS = {
 }
 WRONG = with_says(WRONG, SAYS)
 
+# What tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself (each key optional):
+# short (its entries' name prefix), mechanisms (the issue-35 mechanisms that apply; tests/corpus_attacks.py
+# says why), library_name / library_owner (the library's answer to the first step where it is not the first
+# STEP_LIBRARY name), world_call, hidden, forger and side (the attacks' code where the default does not fit).
+ATTACK = {
+    "short": "bu",
+    "mechanisms": (1, 2, 5, 6, 7, 8),
+    "world_call": "return World().swept_move and None",
+    "side": (2, "circle_toi", "from lesson11.physics2d import circle_toi as found", "toi_matches_root"),
+}
+
+# The wrong-kind values its step functions must fail on, never the checker (tests/test_wrong_kinds.py):
+# [(function, step, [case, ...])], the cases written as tests/wrong_kinds.py says.
+WRONG_KINDS = [("circle_toi", 2, returns(NUMBER) + wrapped(["None if answer is None else str(answer)",
+                                                            "None if answer is None else [answer]"])),
+               ("bounding_radius", 3, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
+               ("time_of_impact", 4, returns(TOI) + before_solution(["bullet.vel = (1.0, 2.0)", "other.omega = 'x'"])),
+               ("swept_move", 5, after_solution(["bullet.pos = (1.0, 2.0)", "bullet.vel = 'fast'",
+                                                 f"bullet.pos = {V}(float('nan'), 0)",
+                                                 f"bullet.omega = {V}(1, 0)", "bullet.vel = None"])
+                + substituted("normal, bullet.pos + normal * bullet.radius)",
+                              ["normal, 'here')",
+                               "normal, None)", "tuple(normal), bullet.pos + normal * bullet.radius)"]))]
+
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'swept_whole_step_after', 'SweptCase'
+
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
 MISTAKE_IDS = {
     "toi_twice": "toi_no_two", "toi_a_not_squared": "toi_a_unsquared", "toi_b_sign": "toi_b_sign",
@@ -360,6 +389,19 @@ MISTAKE_IDS = {
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}
+
+# Two known mistakes at once (tests/test_named_causes.py): the first message names the step and the values and
+# neither cause. {name: (the check that fails first, {step: code}, the causes' words it must not say)}
+COMBINED = {
+    "b_sign_without_the_two": (   # b = -2 dp·dv and a for 2a
+        "toi_matches_root", second_mistake(ENTRIES, "toi_b_sign", 2, "/ (2 * a)", "/ a"),
+        ("b = -2 dp·dv", "the 2 of 2a")),
+    "falsy_zero_with_a_point_bullet": ("broad_test", {4: _code("""
+        if not circle_toi(bullet.pos, bullet.vel, 0, other.pos, Vector2(), bounding_radius(points, other.pos), dt):
+            return None
+    """)}, ("t = 0.0 as no contact", "as a point", "wrong way round")),
+}
+
 
 # ================================================================ building the files (tests/corpus_files.py)
 

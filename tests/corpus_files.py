@@ -79,3 +79,12 @@ def with_says(entries, says):
     names = {entry.name for entry in entries if entry.check != "pass"}
     assert names == set(says), f"SAYS and the wrong entries differ: {sorted(names ^ set(says))}"
     return [entry._replace(says=tuple(says[entry.name])) if entry.name in says else entry for entry in entries]
+
+
+def second_mistake(entries, entry, step, old, new):
+    """{step: code}: corpus entry `entry`'s step (one known mistake) with `old` changed to `new` (a second one).
+
+    For a corpus's COMBINED (two known mistakes of one step at once, tests/test_named_causes.py)."""
+    code = next(e for e in entries if e.name == entry).steps[step]
+    assert code.count(old) == 1, (entry, old)
+    return {step: code.replace(old, new)}

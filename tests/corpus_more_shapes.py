@@ -27,12 +27,14 @@ from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from wrong_kinds import AS_TEXT, NUMBER, POINTS, VECTOR, returns, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "more_shapes_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "more_shapes.py")
 
 STEPS = (2, 3, 4, 5)
+PER_STEP = 3   # wrong entries each step needs at least (tests/corpus_verdicts.py)
 
 CHECK_STEP = {
     "loads": None, "handout_unchanged": None, "runtime_lines": None,
@@ -389,6 +391,28 @@ SAYS = {
     "outside_parallel_tolerance": ("PARALLEL = 0.1",),
 }
 WRONG = with_says(WRONG, SAYS)
+
+# What tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself (each key optional):
+# short (its entries' name prefix), mechanisms (the issue-35 mechanisms that apply; tests/corpus_attacks.py
+# says why), library_name / library_owner (the library's answer to the first step where it is not the first
+# STEP_LIBRARY name), world_call, hidden, forger and side (the attacks' code where the default does not fit).
+ATTACK = {
+    "short": "ms",
+    "mechanisms": (1, 2, 5, 6, 7, 8, 10),
+    "world_call": "return [p for p in World().bodies] or Polygon(box_points(2 * radius, radius)).points",
+    "side": (2, "regular_polygon", "from lesson11.physics2d import regular_polygon as found", "polygon_corners"),
+}
+
+# The wrong-kind values its step functions must fail on, never the checker (tests/test_wrong_kinds.py):
+# [(function, step, [case, ...])], the cases written as tests/wrong_kinds.py says.
+WRONG_KINDS = [("regular_polygon", 2, returns(POINTS) + wrapped(AS_TEXT + ["[str(p) for p in answer]"])),
+               ("polygon_centroid", 3, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])),
+               ("polygon_inertia", 4, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]", "(answer,)"])),
+               ("separating_axes", 5, returns(POINTS))]
+
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'inertia_missing_six', 'PolygonCase'
 
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
 MISTAKE_IDS = {

@@ -26,12 +26,14 @@ from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from wrong_kinds import AS_TEXT, FLAGS, NUMBER, before_solution, returns, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "sleeping_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "sleeping_crates.py")
 
 STEPS = (2, 3, 4)
+PER_STEP = 3   # wrong entries each step needs at least (tests/corpus_verdicts.py)
 
 CHECK_STEP = {
     "loads": None, "handout_unchanged": None, "runtime_lines": None,
@@ -249,6 +251,29 @@ SAYS = {
     "outside_no_sleep_effect": ('{"sleep"}',),
 }
 WRONG = with_says(WRONG, SAYS)
+
+# What tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself (each key optional):
+# short (its entries' name prefix), mechanisms (the issue-35 mechanisms that apply; tests/corpus_attacks.py
+# says why), library_name / library_owner (the library's answer to the first step where it is not the first
+# STEP_LIBRARY name), world_call, hidden, forger and side (the attacks' code where the default does not fit).
+ATTACK = {
+    "short": "sc",
+    "mechanisms": (1, 2, 5, 6, 7, 8, 10),
+    "library_name": "sleep_timer_of_world", "library_owner": "World()",   # the library's timer is World's
+}
+
+# The wrong-kind values its step functions must fail on, never the checker (tests/test_wrong_kinds.py):
+# [(function, step, [case, ...])], the cases written as tests/wrong_kinds.py says.
+WRONG_KINDS = [("sleep_timer", 2, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
+               ("moves", 3, returns(FLAGS) + wrapped(["[answer]"])
+                + before_solution(["body.asleep = 'no'", "body.vel = None", "body.sleep_time = 'x'"])),
+               ("wake_on_contact", 4, returns(["a", "(a, b)", "[a, 'b']", "'ab'", "[a, b, a] * 400",
+                                               "5", "{'a': a}"])
+                + before_solution(["a.asleep = [1]", "b.omega = 'x'"]))]
+
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'timer_counts_frames', 'TimerCase'
 
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake")
 MISTAKE_IDS = {

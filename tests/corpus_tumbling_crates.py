@@ -39,13 +39,15 @@ from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
-from corpus_files import with_says  # noqa: E402
+from corpus_files import second_mistake, with_says  # noqa: E402
+from wrong_kinds import HIT, MOTION, V, after_solution, returns  # noqa: E402  (tests/wrong_kinds.py)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
 
 STEPS = (2, 3, 4, 5, 6)
+PER_STEP = 3   # wrong entries each step needs at least (tests/corpus_verdicts.py)
 START = re.compile(r"^(?P<indent>[ \t]*)# --- step (?P<step>\d+): .*---[ \t]*$")
 END = re.compile(r"^[ \t]*# --- end of step (?P<step>\d+) ---[ \t]*$")
 
@@ -464,7 +466,8 @@ OUTSIDE_WRONG = [
 # ================================================================ correct completions in other styles
 
 CORRECT = [
-    correct("correct_solution_steps", "the solution's code in every step (the reference build)"),
+    correct("correct_solution_steps", "the solution's code in every step (the reference build)",
+            why="it is the solution, byte for byte (test_the_reference_build_is_the_solution)"),
     correct("correct_lever_turned_copy", "r × P written as a turned copy of r dotted with P (ra.rotate(90))", {6: """
         a.omega -= ra.rotate(90).dot(impulse) * a.inv_inertia
         b.omega += rb.rotate(90).dot(impulse) * b.inv_inertia
@@ -710,6 +713,30 @@ ENTRIES = with_says(ENTRIES, SAYS)
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 WRONG = [entry for entry in ENTRIES if entry.check != "pass"]
 
+# What tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself (each key optional):
+# short (its entries' name prefix), mechanisms (the issue-35 mechanisms that apply; tests/corpus_attacks.py
+# says why), library_name / library_owner (the library's answer to the first step where it is not the first
+# STEP_LIBRARY name), world_call, hidden, forger and side (the attacks' code where the default does not fit).
+ATTACK = {
+    "short": "tc",
+    "mechanisms": (1, 2, 3, 4, 5, 6, 7, 8, 9, 10),
+    # a step function no probe splices, hidden under `coding: unicode_escape` (mechanism 2)
+    "hidden": (6, "from lesson11.physics2d import apply_impulse", "apply_impulse_spin"),
+    "forger": (4, ("sat_axes", "apply_impulse_spin")),   # resolve() forges; the other functions' checks
+}
+
+# The wrong-kind values its step functions must fail on, never the checker (tests/test_wrong_kinds.py):
+# [(function, step, [case, ...])], the cases written as tests/wrong_kinds.py says.
+WRONG_KINDS = [("sat", 2, returns(HIT)), ("apply_impulse", 6, after_solution(MOTION)),
+               ("resolve", 4, after_solution(MOTION[:3] + ["a.pos = 'x'", f"k += {V}(1, 0)", "k = float('nan')",
+                                                           "k = '1'"])),
+               ("resolve", 5, after_solution([f"jt = {V}(1, 0)", "jt = (1.0, 0.0)", "jt = float('inf')",
+                                              "jt = 10 ** 400", "jt = None"]))]
+
+# The wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py): one wrong step
+# whose scene differs visibly from the solution's, and the kind of failing case --show draws for it.
+SHOW_ENTRY, SHOW_CASE = 'spin_missing', 'ImpulseCase'
+
 # the mistake id each entry's failing check must carry (issue 40: --json's "mistake"); the friction ones are
 # Ball on the Ramp's (the same mistake, the same id and words: checker/causes.SHARED)
 MISTAKE_IDS = {
@@ -723,6 +750,20 @@ MISTAKE_IDS = {
     "friction_always_full": "friction_always_full", "friction_abs_loses_sign": "friction_sign",
     "friction_if_clamp_loses_sign": "friction_clamp_loses_sign", "spin_missing": "spin_missing",
     "spin_assigned": "spin_assigned",
+}
+
+
+# Two known mistakes of one step at once (tests/test_named_causes.py): neither formula alone gives the file's
+# answers, so the first message names the step and the values and neither cause (a cause the file does not have
+# alone is a false lead). {name: (the check that fails first, {step: code}, the causes' words it must not say)}
+COMBINED = {
+    "union_on_unnormalised_axes": (   # unnormalised axes and both shadows together
+        "sat_axes", second_mistake(ENTRIES, "sat_unnormalised_axes", 2, "min(max_a, max_b) - max(min_a, min_b)",
+                                   "max(max_a, max_b) - min(min_a, min_b)"),
+        ("both shadows together", "not divided by their length")),
+    "reversed_test_on_first_corners": (   # the first corners and the test reversed
+        "sat_normal", second_mistake(ENTRIES, "normal_first_vertices", 3, "< 0", "> 0"),
+        ("wrong way round", "first corners", "every time", "never turned round")),
 }
 
 

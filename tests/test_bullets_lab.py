@@ -2,7 +2,7 @@
 the solution's pass it with sub-steps x8 and never with CCD.
 
 That the starter is the solution with steps 2-5 left to write is tested with every lab's in
-test_lab_starter.py; the checker's verdicts in test_corpus_bullets.py.
+test_lab_starter.py; the checker's verdicts in test_corpus_labs.py.
 """
 import importlib.util
 import os

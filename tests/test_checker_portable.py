@@ -6,9 +6,10 @@ with threads, kills the whole tree from the parent at the wall-clock limit, and 
 apply its own limits (checker/isolation/sandbox.py `_run_portable`, checker/isolation/child.py `Watchdog`).
 CHECKER_PORTABLE=1 makes Linux take that path, so it runs here on every test run:
 
-  - the five solutions and five starters get the same verdict per check as on the POSIX path;
-  - every entry of the mistake corpora and the attack corpus gets its asserted verdict (one
-    checker run over all of them, judged by each corpus module's own verdict test);
+  - every lab's solution and starter (every lab in checker/labs/, tests/labs_found.py) get the same
+    verdict per check as on the POSIX path;
+  - every entry of every lab's mistake corpus and of the attack corpus gets its asserted verdict (one
+    checker run over all of them, judged by tests/corpus_verdicts.py's rules and the attack corpus's own test);
   - an endless loop, a 2 GB allocation, a crash and output floods get their clear 0, as on POSIX.
 
 Then the two systems this machine can only emulate, each in a fresh interpreter whose
@@ -46,32 +47,20 @@ pytestmark = pytest.mark.skipif(sys.platform != "linux", reason="emulates Window
                                 "systems the rest of the suite runs the checker's real portable or POSIX path")
 
 import corpus_attacks
-import corpus_ball_on_ramp
-import corpus_bullets
-import corpus_more_shapes
-import corpus_sleeping_crates
-import corpus_tumbling_crates
+import corpus_verdicts
+import labs_found
 import mutants
 import test_corpus_attacks as attacks_verdicts
-import test_corpus_ball_on_ramp as ball_on_ramp_verdicts
-import test_corpus_bullets as bullets_verdicts
-import test_corpus_more_shapes as more_shapes_verdicts
-import test_corpus_sleeping_crates as sleeping_crates_verdicts
-import test_corpus_tumbling_crates as tumbling_crates_verdicts
 from checker.isolation import confine, sandbox
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LABS = ("tumbling_crates", "more_shapes", "ball_on_ramp", "bullets", "sleeping_crates")
-SOLUTIONS = [os.path.join(ROOT, "solutions", f"{lab}.py") for lab in LABS]
-STARTERS = [os.path.join(ROOT, "starters", f"{lab}_starter.py") for lab in LABS]
+SOLUTIONS = [lab.solution for lab in labs_found.LABS]
+STARTERS = [lab.starter for lab in labs_found.LABS]
 SEED = "7"   # the same probe inputs on every path, so the verdicts can be compared check by check
+HOSTILE_LAB = labs_found.by_id("tumbling_crates")   # the hostile files below are written against its step 2
 
-# corpus module and the test module whose verdict test judges an entry, per lab
-CORPORA = {"tumbling_crates": (corpus_tumbling_crates, tumbling_crates_verdicts),
-           "more_shapes": (corpus_more_shapes, more_shapes_verdicts),
-           "ball_on_ramp": (corpus_ball_on_ramp, ball_on_ramp_verdicts),
-           "bullets": (corpus_bullets, bullets_verdicts),
-           "sleeping_crates": (corpus_sleeping_crates, sleeping_crates_verdicts)}
+# the mistake corpus of every lab that has one (a lab without one fails tests/test_corpus_labs.py)
+CORPORA = {lab.id: labs_found.corpus(lab) for lab in labs_found.with_corpus()}
 
 
 def run_checker(*args, env_extra=(), python=sys.executable, timeout=3600):
@@ -329,7 +318,7 @@ def hostile(tmp_path_factory):
         files.append(folder / f"{name}.py")
         files[-1].write_text(f'"""Tumbling Crates (a hostile file: {name})."""\n' + source)
     looping = folder / "looping_sat.py"
-    with open(SOLUTIONS[0], encoding="utf-8") as handle:
+    with open(HOSTILE_LAB.solution, encoding="utf-8") as handle:
         looping.write_text(mutants.apply_edits(handle.read(), [LOOPING_SAT], "looping_sat"))
     out = {}
     for path, env in (("posix", {}), ("portable", {"CHECKER_PORTABLE": "1"})):
@@ -354,7 +343,7 @@ def test_a_hostile_file_gets_its_clear_zero(hostile, path, name):
 def test_an_endless_loop_in_a_function_is_stopped_at_its_line(hostile, path):
     checks = {c["id"]: c for c in hostile[path]["looping_sat.py"]["criteria"]}
     assert checks["sat_axes"]["status"] in ("fail", "error")
-    lines = open(SOLUTIONS[0], encoding="utf-8").read().splitlines()
+    lines = open(HOSTILE_LAB.solution, encoding="utf-8").read().splitlines()
     loop = lines.index(LOOPING_SAT[0].rstrip("\n")) + 2   # the line after the step's marker
     message = checks["sat_axes"]["message"]
     assert "sat() was still running after 3 s of CPU time (it was at looping_sat.py, line " in message, message
@@ -365,7 +354,7 @@ def test_an_endless_loop_in_a_function_is_stopped_at_its_line(hostile, path):
 # ---------------------------------------------------------------- every corpus through the portable path
 
 def _corpus_entries():
-    return [pytest.param(lab, entry, id=f"{lab}-{entry.name}") for lab, (corpus, _) in CORPORA.items()
+    return [pytest.param(lab, entry, id=f"{lab}-{entry.name}") for lab, corpus in CORPORA.items()
             for entry in corpus.ENTRIES]
 
 
@@ -383,7 +372,7 @@ def corpora(tmp_path_factory):
     folder = tmp_path_factory.mktemp("corpora")
     for lab in CORPORA:
         (folder / lab).mkdir()
-    written = {(lab, name): path for lab, (corpus, _) in CORPORA.items()
+    written = {(lab, name): path for lab, corpus in CORPORA.items()
                for name, path in corpus.write_corpus(folder / lab).items()}
     # generous limits, as the corpus tests give: no entry loops, and a busy machine must not fail a scene
     rows = graded_json("--jobs", "2", "--timeout", "120", "--total-timeout", "7000", *map(str, written.values()),
@@ -399,9 +388,10 @@ def corpora(tmp_path_factory):
 
 @pytest.mark.parametrize("lab, entry", _corpus_entries())
 def test_each_corpus_entry_gets_its_verdict_on_the_portable_path(corpora, lab, entry):
-    """The corpus module's own verdict test, on the portable path's grades."""
-    graded = {name: {c["id"]: c for c in row["criteria"]} for name, row in corpora[lab].items()}
-    CORPORA[lab][1].test_the_checker_gives_each_entry_its_verdict(entry, graded)
+    """Every corpus's verdict rules (tests/corpus_verdicts.py, as tests/test_corpus_labs.py), on the portable path's
+    grades."""
+    row = corpora[lab][entry.name]
+    corpus_verdicts.assert_verdict(entry, {c["id"]: c for c in row["criteria"]}, CORPORA[lab])
 
 
 @pytest.fixture(scope="module")

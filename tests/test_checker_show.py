@@ -6,7 +6,8 @@ pygame.event.get() delivers the keys. For every lab one file of its mistake corp
 with one wrong step is shown: --show opens on that step's check, the student's replayed run is the
 graded record frame for frame, the ghost is the solution's run (a run of solutions/<lab>.py made here
 independently), and the failing frame the summary names is the first frame where the student's bodies
-are visibly (> 1 px) away from the solution's, which J lands on. Each lab costs one grading (probe and
+are visibly (> 1 px) away from the solution's, which J lands on. The labs are every lab in checker/labs/
+(tests/labs_found.py); the file shown is its corpus's SHOW_ENTRY. Each lab costs one grading (probe and
 one scene), one grading more to compare with and the solution's scene: about 5-15 CPU s.
 """
 import importlib
@@ -33,16 +34,18 @@ from checker.grade import Grader  # noqa: E402
 from checker.isolation.sandbox import Limits, run_child   # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import labs_found  # noqa: E402  (every lab in checker/labs/)
 
 SEED = 3
-# lab id -> (corpus entry with one wrong step, the check --show must open on)
-WRONG_STEP = {
-    "tumbling_crates": ("spin_missing", "apply_impulse_spin"),
-    "more_shapes": ("inertia_missing_six", "inertia_sum"),
-    "ball_on_ramp": ("inertia_ring", "ball_inertia"),
-    "bullets": ("swept_whole_step_after", "swept_move_resolves"),
-    "sleeping_crates": ("timer_counts_frames", "timer_rule"),
-}
+
+
+def show_entry(lab):
+    """The corpus entry with one wrong step that --show is tried on: the lab's corpus's SHOW_ENTRY."""
+    corpus = labs_found.need_corpus(lab)
+    name = getattr(corpus, "SHOW_ENTRY", None)
+    assert name, (f"{lab.id}: set SHOW_ENTRY in tests/corpus_{lab.id}.py to a wrong entry with one wrong step "
+                  "whose scene differs visibly from the solution's (the file --show is tested on)")
+    return next(e for e in corpus.WRONG if e.name == name)
 
 
 def key(k):
@@ -55,18 +58,15 @@ def scripted(*frames):
     return lambda: queue.pop(0) if queue else []
 
 
-def lab_of(lab_id):
-    return next(lab for lab in labs.LABS if lab.id == lab_id)
+lab_of = labs_found.by_id
 
 
 def wrong_file(folder, lab_id):
-    corpus = importlib.import_module(f"corpus_{lab_id}")
-    name, check = WRONG_STEP[lab_id]
-    entry = next(e for e in corpus.WRONG if e.name == name)
-    assert entry.check == check   # the corpus's own verdict for this file
+    lab = lab_of(lab_id)
+    entry = show_entry(lab)
     path = os.path.join(folder, f"{lab_id}.py")
     with open(path, "w", encoding="utf-8") as handle:
-        handle.write(corpus.build(name))
+        handle.write(labs_found.corpus(lab).build(entry.name))
     return path
 
 
@@ -78,7 +78,7 @@ def distance(frame, other):
                for a, b in zip(frame["bodies"], other["bodies"]))
 
 
-@pytest.fixture(scope="module", params=sorted(WRONG_STEP))
+@pytest.fixture(scope="module", params=labs_found.IDS)
 def shown(request, tmp_path_factory):
     lab = lab_of(request.param)
     path = wrong_file(str(tmp_path_factory.mktemp(request.param)), request.param)
@@ -89,7 +89,7 @@ def shown(request, tmp_path_factory):
 
 def test_opens_on_the_wrong_steps_check(shown):
     lab, path, row, replay = shown
-    expected = WRONG_STEP[lab.id][1]
+    expected = show_entry(lab).check   # the corpus's own verdict for this file
     first_failed = next(r for r in row.results if r.status in ("fail", "error"))
     assert replay.check.id == expected == first_failed.id
     assert replay.seed == row.seed == SEED
@@ -256,17 +256,13 @@ def test_centroid_case_draws_both_points(tmp_path):
     assert show_cases.STUDENT in colours and show_cases.LESSON in colours
 
 
-CASE_KIND = {"tumbling_crates": show_cases.ImpulseCase, "more_shapes": show_cases.PolygonCase,
-             "bullets": bullets_show.SweptCase, "ball_on_ramp": show_cases.PolygonCase,
-             "sleeping_crates": sleeping_crates_show.TimerCase}
-
-
 def test_failing_cases_draw_both_answers(shown):
-    """Each lab's failed function check (impulse, inertia, swept move, sleep timer) opens on its cases, and
-    each case shows the student's answer (magenta) and the lesson's (yellow)."""
+    """Each lab's failed function check (impulse, inertia, swept move, sleep timer) opens on its cases, of the kind
+    its corpus's SHOW_CASE names, and each case shows the student's answer (magenta) and the lesson's (yellow)."""
     lab, path, row, replay = shown
-    kind = CASE_KIND[lab.id]
-    assert replay.cases and all(isinstance(c, kind) for c in replay.cases)
+    kind = getattr(labs_found.corpus(lab), "SHOW_CASE", None)
+    assert kind, f"{lab.id}: set SHOW_CASE in tests/corpus_{lab.id}.py to the class name of the case --show draws"
+    assert replay.cases and all(type(c).__name__ == kind for c in replay.cases), (kind, replay.cases[:1])
     for case in replay.cases[:3]:
         surface = pygame.Surface(show_view.SCENE)
         case.draw(surface)
@@ -293,7 +289,7 @@ def test_time_of_impact_case_shows_both_times(tmp_path):
     assert show_cases.STUDENT in colours and show_cases.LESSON in colours
 
 
-@pytest.mark.parametrize("lab_id", sorted(WRONG_STEP))
+@pytest.mark.parametrize("lab_id", labs_found.IDS)
 def test_every_behaviour_check_has_a_quantity_the_solution_keeps(lab_id):
     """Each behaviour check with a scene has a quantity for the timeline; where it has a bound, the solution's
     own run of that scene never passes it (so a failing frame found by the bound is never a false mark)."""

@@ -1,4 +1,4 @@
-"""Every lab's starter is its solution with the student's steps left to write (one table, LABS).
+"""Every lab's starter is its solution with the student's steps left to write (every lab in checker/labs/).
 
 Step regions are the lines between `# --- step N: ... ---` and
 `# --- end of step N ---`. The solution is the lab's one source: each region
@@ -6,7 +6,9 @@ opens with its prompt block, and `python -m checker assign` (checker/authoring/a
 writes the starter from it; the committed starter must be byte for byte what
 it writes. Outside the regions the two files are then identical line by line
 (module docstring included); inside, the solution has code and the starter
-only comments and the one-line placeholders that keep it running.
+only comments and the one-line placeholders that keep it running (each marked "until you write step N").
+The labs are the registry's (tests/labs_found.py); each lab's steps are its solution's step regions, and its
+comments number them 1 (run it) to the last step + 1 (click and watch).
 How each starter runs as handed out is tested here for Tumbling Crates and
 in test_more_shapes_starter.py / test_ball_on_ramp_starter.py for the others.
 """
@@ -15,9 +17,10 @@ import re
 
 import pytest
 
+import labs_found
 from checker.authoring import assign
 from checker.reading import source
-from lab_run import HEIGHT, ROOT, SOLUTION, STARTER, clicks, run_lab
+from lab_run import HEIGHT, ROOT, STARTER, clicks, run_lab
 
 START = re.compile(r"^\s*# --- step (\d): .+ ---$")
 END = re.compile(r"^\s*# --- end of step (\d) ---$")
@@ -57,56 +60,32 @@ def code_lines(lines):
     return out
 
 
-# Each lab: its solution, its starter, the steps the student writes, the only code a starter region
-# may hold per step (placeholders that keep the starter running), and how many numbered steps its
-# comments name (the steps to write plus "run it" first and "click and watch" last).
-LABS = {
-    "tumbling_crates": (SOLUTION, STARTER, {step: {"return None"} if step == "2" else set()
-                                            for step in ("2", "3", "4", "5", "6")}, 7),
-    "more_shapes": (os.path.join(ROOT, "solutions", "more_shapes.py"),
-                    os.path.join(ROOT, "starters", "more_shapes_starter.py"),
-                    {"2": {"return box_points(radius, radius)"}, "3": {"return Vector2()"}, "4": {"return 1e9"},
-                     "5": {"axes = edge_normals(pa) + edge_normals(pb)"}}, 6),
-    "ball_on_ramp": (os.path.join(ROOT, "solutions", "ball_on_ramp.py"),
-                     os.path.join(ROOT, "starters", "ball_on_ramp_starter.py"),
-                     {step: {"return pygame.Vector2(math.inf, math.inf)", "return math.inf", "return center"}
-                      for step in ("2", "3", "4", "5", "6", "7")}, 8),
-    "bullets": (os.path.join(ROOT, "solutions", "bullets.py"), os.path.join(ROOT, "starters", "bullets_starter.py"),
-                {"2": {"return None"}, "3": {"return math.inf"}, "4": set(), "5": {"bullet.pos += bullet.vel * dt"}}, 6),
-    "sleeping_crates": (os.path.join(ROOT, "solutions", "sleeping_crates.py"),
-                        os.path.join(ROOT, "starters", "sleeping_crates_starter.py"),
-                        {"2": {"return 0.0"}, "3": {"return body.inv_mass != 0"}, "4": {"return []"}}, 5),
-}
-STEPS = [(lab, step) for lab, (_, _, placeholders, _) in LABS.items() for step in sorted(placeholders)]
-
-
-def test_every_registered_lab_is_in_the_table():
-    from checker.labs import LABS as REGISTERED
-    assert {lab.id for lab in REGISTERED} == set(LABS)
-    for lab in REGISTERED:
-        assert (lab.solution, lab.starter) == LABS[lab.id][:2]
+LABS = labs_found.params()
+STEPS = [pytest.param(lab, str(step), id=f"{lab.id}-{step}") for lab in labs_found.LABS
+         for step in sorted(labs_found.steps(lab))]
+PLACEHOLDER = re.compile(r"  # until you write step (\d), .*: replace this placeholder$")
+MAX_PLACEHOLDER_LINES = 1   # a placeholder keeps the starter running: one line, never a part of the answer
 
 
 @pytest.mark.parametrize("lab", LABS)
 def test_the_committed_starter_is_exactly_what_assign_writes(lab):
-    solution, starter = LABS[lab][:2]
-    with open(starter, "rb") as handle:
+    with open(lab.starter, "rb") as handle:
         committed = handle.read()
-    written = assign.starter_text(source.read(solution), os.path.relpath(solution, ROOT)).encode("utf-8")
-    assert committed == written, (f"{os.path.relpath(starter, ROOT)} drifted from its solution: edit "
-                                  f"{os.path.relpath(solution, ROOT)} and run `python -m checker assign`")
+    written = assign.starter_text(source.read(lab.solution), os.path.relpath(lab.solution, ROOT)).encode("utf-8")
+    assert committed == written, (f"{os.path.relpath(lab.starter, ROOT)} drifted from its solution: edit "
+                                  f"{os.path.relpath(lab.solution, ROOT)} and run `python -m checker assign`")
 
 
 @pytest.mark.parametrize("lab", LABS)
-def test_both_files_mark_the_same_student_steps(lab):
-    solution, starter, placeholders, _ = LABS[lab]
-    assert set(split_regions(solution)[1]) == set(placeholders)
-    assert set(split_regions(starter)[1]) == set(placeholders)
+def test_both_files_mark_the_same_student_steps_numbered_from_2(lab):
+    steps = set(split_regions(lab.solution)[1])
+    assert steps and steps == set(split_regions(lab.starter)[1])
+    assert sorted(map(int, steps)) == list(range(2, len(steps) + 2)), "step 1 is running the file; then 2, 3, ..."
 
 
 @pytest.mark.parametrize("lab", LABS)
 def test_files_are_identical_outside_the_step_regions(lab):
-    solution, starter = (split_regions(path)[0] for path in LABS[lab][:2])
+    solution, starter = (split_regions(path)[0] for path in (lab.solution, lab.starter))
     for number, (a, b) in enumerate(zip(solution, starter), 1):
         assert a == b, f"outside-region line {number} differs:\n solution: {a!r}\n starter:  {b!r}"
     assert len(solution) == len(starter)
@@ -114,11 +93,12 @@ def test_files_are_identical_outside_the_step_regions(lab):
 
 @pytest.mark.parametrize("lab, step", STEPS)
 def test_starter_regions_hold_no_solution_code(lab, step):
-    solution_path, starter_path, placeholders, _ = LABS[lab]
-    region = split_regions(starter_path)[1][step]
-    solution = code_lines(split_regions(solution_path)[1][step])
+    region = split_regions(lab.starter)[1][step]
+    solution = code_lines(split_regions(lab.solution)[1][step])
     assert solution, f"the solution's step {step} is empty"
-    assert set(code_lines(region)) <= placeholders[step]
+    code = [line for line in region if line.strip() and not line.strip().startswith("#")]
+    assert len(code) <= MAX_PLACEHOLDER_LINES, f"the starter's step {step} holds code beyond a placeholder: {code}"
+    assert all(PLACEHOLDER.search(line) and PLACEHOLDER.search(line)[1] == step for line in code), code
     assert set(solution) - set(code_lines(region)), "the starter's region holds the whole solution"
     comments = [line.strip() for line in region if line.strip().startswith("#")]
     assert comments and comments[0].startswith(f"# Step {step} "), "the region's comment names its step"
@@ -140,10 +120,9 @@ def lesson_headings(lab=None):
 def test_step_comments_cite_sections_the_lesson_has(lab):
     """Each step's comment names a heading of lesson11/README.md or of the lab's page, as written there (not the
     seed's names)."""
-    _, starter, placeholders, _ = LABS[lab]
-    regions = split_regions(starter)[1]
-    headings = lesson_headings(lab)
-    for step in placeholders:
+    regions = split_regions(lab.starter)[1]
+    headings = lesson_headings(lab.id)
+    for step in regions:
         cited = re.findall(r'lesson: "([^"]+)"', " ".join(line.strip("# ") for line in regions[step]))
         assert cited, f"step {step}'s comment cites no section of the lesson"
         assert set(cited) <= headings, f"step {step} cites {set(cited) - headings}, not a heading of the lesson"
@@ -151,19 +130,18 @@ def test_step_comments_cite_sections_the_lesson_has(lab):
 
 @pytest.mark.parametrize("lab, step", STEPS)
 def test_every_placeholder_says_to_replace_it(lab, step):
-    _, starter, placeholders, _ = LABS[lab]
-    with open(starter, encoding="utf-8") as handle:
+    with open(lab.starter, encoding="utf-8") as handle:
         header = handle.read().split('"""')[1]
     assert "replace that line with your code" in header and "wasted" in " ".join(header.split())
-    for line in split_regions(starter)[1][step]:
+    for line in split_regions(lab.starter)[1][step]:
         if line.strip() and not line.strip().startswith("#"):   # a placeholder: what it stands in for, and to replace it
             assert f"  # until you write step {step}, " in line and line.endswith(": replace this placeholder"), line
 
 
 @pytest.mark.parametrize("lab", LABS)
 def test_starter_comments_number_every_step(lab):
-    _, starter, _, steps = LABS[lab]
-    with open(starter, encoding="utf-8") as handle:
+    steps = len(split_regions(lab.starter)[1]) + 2   # run it first, the steps to write, click and watch last
+    with open(lab.starter, encoding="utf-8") as handle:
         text = handle.read()
     for step in range(1, steps + 1):
         assert re.search(rf"# Step {step}\b", text), f"no comment for step {step}"

@@ -73,8 +73,7 @@ def test_the_limits_are_the_tests_own():
 def copy(tmp_path):
     """A Subject for a copy of Sleeping Crates under tmp_path: its solution, starter, corpus and corpus test, and
     a copy of its modules' folder (the modules imported are still the real ones)."""
-    for rel in (f"solutions/{LAB}.py", f"starters/{LAB}_starter.py", f"tests/corpus_{LAB}.py",
-                f"tests/test_corpus_{LAB}.py"):
+    for rel in (f"solutions/{LAB}.py", f"starters/{LAB}_starter.py", f"tests/corpus_{LAB}.py"):
         (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(os.path.join(ROOT, rel), tmp_path / rel)
     folder = tmp_path / "labs" / LAB
@@ -186,7 +185,6 @@ SOURCE_BREAKS = {   # rule -> (file, old, new): one edit of the copy (a solution
     "lesson_citations": (f"solutions/{LAB}.py", '    # Step 2 (lesson: "', '    # Step 2 (lesson: "Nowhere'),
     "numbered_steps": (f"solutions/{LAB}.py", "\nimport ", "\n# Step 6: nothing more.\nimport "),
     "title_names_the_file": (f"solutions/{LAB}.py", '"""Sleeping Crates:', '"""Sleepy Boxes:'),
-    "corpus_test": (f"tests/test_corpus_{LAB}.py", "verdicts.assert_verdict(", "verdicts.show("),
     "no_flags": (f"solutions/{LAB}.py", "    # END PROMPT\n", "    # END PROMPT\n    _ = getattr(body, 'x', 0)\n"),
 }
 

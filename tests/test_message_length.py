@@ -1,9 +1,10 @@
 """A checker message is two short lines and a hint is short, in every lab (issue 40, item 1).
 
-The labs are found by listing checker/labs/ (not a hand list), so a new lab is held to the same limits:
+The labs are the registry's (tests/labs_found.py: every folder of checker/labs/ holding a checks.py), so a new
+lab is held to the same limits:
   - every hint a lab can give, as the student reads it ("[step N: title] text"), is at most 250 characters;
-  - every lab has a mistake corpus (tests/corpus_<lab>.py) with wrong entries, and its verdict test holds each
-    wrong file's first message to the limits (tests/corpus_verdicts.message_problem: at most two lines, the first
+  - every lab has a mistake corpus (tests/corpus_<lab>.py) with wrong entries, and the verdict test of every
+    lab's corpus (tests/test_corpus_labs.py) holds each wrong file's first message to the limits (tests/corpus_verdicts.message_problem: at most two lines, the first
     <= 160 characters, the second <= 200; graded there, in the corpus's one checker run, not again here);
   - the rule itself fails a message over the limits (a test that cannot fail is no test).
 """
@@ -13,16 +14,19 @@ import os
 import pytest
 
 import corpus_verdicts as verdicts
+import labs_found
 from checker.judging.causes import SHARED
 from checker.judging.lab_checks import RUNTIME_HINT
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LABS = sorted(name for name in os.listdir(os.path.join(ROOT, "checker", "labs"))
-              if os.path.isfile(os.path.join(ROOT, "checker", "labs", name, "checks.py")))
+LABS = labs_found.IDS
 
 
 def test_the_labs_are_found_by_listing_their_folder():
-    assert {"tumbling_crates", "more_shapes", "ball_on_ramp", "sleeping_crates", "bullets"} <= set(LABS)
+    """The registry the tests read holds every folder of checker/labs/ with a checks.py (listed here again)."""
+    listed = {name for name in os.listdir(os.path.join(ROOT, "checker", "labs"))
+              if os.path.isfile(os.path.join(ROOT, "checker", "labs", name, "checks.py"))}
+    assert listed and set(LABS) == listed
 
 
 @pytest.mark.parametrize("lab", LABS)
@@ -39,12 +43,12 @@ def test_the_shared_hint_and_sentences_are_short():
 
 @pytest.mark.parametrize("lab", LABS)
 def test_every_lab_has_a_corpus_whose_verdicts_hold_the_limits(lab):
-    corpus = importlib.import_module(f"corpus_{lab}")
+    corpus = labs_found.need_corpus(labs_found.by_id(lab))
     assert corpus.WRONG, f"tests/corpus_{lab}.py holds no wrong file"
-    with open(os.path.join(ROOT, "tests", f"test_corpus_{lab}.py"), encoding="utf-8") as handle:
-        text = handle.read()
-    assert "verdicts.assert_verdict(" in text or "verdicts.assert_first_message(" in text, \
-        f"tests/test_corpus_{lab}.py does not hold its wrong files' first messages to the limits"
+    import test_corpus_labs   # grades every lab's corpus; its verdict rule holds the first message to the limits
+    assert lab in {param.values[0].id for param in test_corpus_labs._entries()}
+    with open(test_corpus_labs.__file__, encoding="utf-8") as handle:
+        assert "verdicts.assert_verdict(" in handle.read()
 
 
 def check(message, hint=""):

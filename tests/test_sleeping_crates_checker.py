@@ -36,9 +36,9 @@ def test_the_lab_is_registered_and_recognised():
         source = handle.read()
     assert labs.identify("student.py", source).id == "sleeping_crates"
     assert labs.identify("sleeping_crates.py", "").id == "sleeping_crates"
-    for other in ("tumbling_crates", "more_shapes", "ball_on_ramp"):
-        with open(os.path.join(ROOT, "solutions", other + ".py"), encoding="utf-8") as handle:
-            assert labs.identify("student.py", handle.read()).id == other
+    for other in labs.LABS:   # and every other lab's solution is its own lab's
+        with open(other.solution, encoding="utf-8") as handle:
+            assert labs.identify("student.py", handle.read()).id == other.id
 
 
 def test_the_solution_passes_every_check(graded):

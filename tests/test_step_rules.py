@@ -2,11 +2,12 @@
 
   - every corpus entry of every lab (correct completions in many styles and honest mistakes),
     every solution and every starter: no flag at all (a false flag fails a step that is right);
+  - every name of every lab's STEP_LIBRARY, called in its step: flagged there (the labs are those in
+    checker/labs/, tests/labs_found.py; the library is the lab's own, never a copy kept here);
   - each attack, written into a real step: flagged with its step, line and rule;
   - a flagged step fails its check through the command line, with the line and the lab's advice.
 """
 import ast
-import importlib
 import json
 import os
 import subprocess
@@ -15,37 +16,14 @@ import sys
 import pytest
 
 from checker.reading import handout, step_rules
-from checker import labs
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-
-# The library functions each step asks the student to write, as the step rules' `library` argument: a step
-# that uses one (by its imported name or as an attribute) is flagged. Each lab module's STEP_LIBRARY row must
-# be within its row here (test below). Proposed beyond today's STEP_LIBRARY: More Shapes steps 3 and 4 and
-# Ball on Ramp step 5 also name the handed classes whose constructors run the library's answer
-# (Polygon(points) recentres on the library's centroid, Body(...).inertia is the library's inertia), and
-# Ball on Ramp step 6 and Sleeping Crates step 4 the World's hook attributes (circle_point, wake_pair).
-LAB_LIBRARY_NAMES = {
-    "tumbling_crates": {2: ("sat",), 3: ("sat",), 4: ("resolve", "lesson_resolve", "effective_mass_inverse"),
-                        5: ("resolve", "lesson_resolve"), 6: ("apply_impulse",)},
-    "more_shapes": {2: ("regular_polygon",),
-                    3: ("polygon_centroid", "polygon_area", "convex_polygon", "Polygon", "Body", "from_world_points"),
-                    4: ("polygon_inertia", "inertia", "inv_inertia", "Polygon", "Body", "from_world_points"),
-                    5: ("sat", "separating_axes")},
-    "ball_on_ramp": {2: ("closest_on_segment",), 3: ("circle_polygon",), 4: ("separate", "lesson_separate"),
-                     5: ("inertia", "inv_inertia", "Circle", "Body"), 6: ("circle_contact_point", "circle_point"),
-                     7: ("resolve", "lesson_resolve")},
-    "bullets": {2: ("circle_toi",), 3: ("bounding_radius",), 4: ("time_of_impact", "circle_toi"),
-                5: ("swept_move", "time_of_impact")},
-    "sleeping_crates": {2: ("sleep_timer", "sleep_timer_of_world", "update_sleep"), 3: ("moves", "moves_of_world"),
-                        4: ("wake_on_contact", "wake_of_world", "wake", "wake_pair")},
-}
+import labs_found  # noqa: E402  (tests/labs_found.py: every lab in checker/labs/)
 
 
-def lab_by_id(lab_id):
-    return next(lab for lab in labs.LABS if lab.id == lab_id)
+lab_by_id = labs_found.by_id
 
 
 def read(rel):
@@ -53,36 +31,42 @@ def read(rel):
         return handle.read()
 
 
-@pytest.mark.parametrize("lab_id", [lab.id for lab in labs.LABS])
-def test_no_corpus_entry_solution_or_starter_is_flagged(lab_id):
-    lab = lab_by_id(lab_id)
-    corpus = importlib.import_module(f"corpus_{lab_id}")
+@pytest.mark.parametrize("lab", labs_found.params())
+def test_no_corpus_entry_solution_or_starter_is_flagged(lab):
+    """Every lab (checker/labs/): its corpus's files (tests/corpus_<id>.py), its solution and its starter."""
+    corpus = labs_found.need_corpus(lab)
     sources = {e.name: corpus.build(e.name) for e in corpus.ENTRIES}
-    sources["solution"] = read(f"solutions/{lab_id}.py")
-    sources["starter"] = read(f"starters/{lab_id}_starter.py")
+    sources["solution"] = read(lab.solution)
+    sources["starter"] = read(lab.starter)
     flagged = {name: [(b.line, b.rule, b.text) for b in step_rules.scan_lab(text, lab)]
                for name, text in sources.items()}
     assert len(sources) >= 10
     assert {name: found for name, found in flagged.items() if found} == {}
 
 
-@pytest.mark.parametrize("lab_id", [lab.id for lab in labs.LABS])
-def test_no_corpus_entry_solution_or_starter_is_flagged_with_the_proposed_library_names(lab_id):
-    corpus = importlib.import_module(f"corpus_{lab_id}")
-    starter = read(f"starters/{lab_id}_starter.py")
-    sources = {e.name: corpus.build(e.name) for e in corpus.ENTRIES}
-    sources["solution"] = read(f"solutions/{lab_id}.py")
-    sources["starter"] = starter
-    flagged = {name: [(b.line, b.rule, b.text) for b in step_rules.scan(text, LAB_LIBRARY_NAMES[lab_id], starter)]
-               for name, text in sources.items()}
-    assert {name: found for name, found in flagged.items() if found} == {}
+@pytest.mark.parametrize("lab", labs_found.params())
+def test_the_solution_and_starter_of_every_lab_are_not_flagged(lab):
+    """Without a corpus too: a lab's own two files break no rule (a false flag fails a step that is right)."""
+    assert step_rules.scan_lab(read(lab.solution), lab) == []
+    assert step_rules.scan_lab(read(lab.starter), lab) == []
 
 
-@pytest.mark.parametrize("lab_id", [lab.id for lab in labs.LABS])
-def test_each_labs_step_library_is_within_the_proposed_table(lab_id):
-    rows = lab_by_id(lab_id).module.STEP_LIBRARY
-    assert set(rows) == set(LAB_LIBRARY_NAMES[lab_id])
-    assert all(set(names) <= set(LAB_LIBRARY_NAMES[lab_id][step]) for step, names in rows.items())
+@pytest.mark.parametrize("lab", labs_found.params())
+def test_each_steps_library_names_are_flagged_in_that_step(lab):
+    """Every lab's STEP_LIBRARY, read from the lab: each name it lists, called as an attribute in its step of the
+    solution (on the step's function's own arguments), is flagged there as "library"; its steps are the solution's
+    step regions. (Its own name called bare is the student's own function, which the rules leave alone.)"""
+    library = lab.module.STEP_LIBRARY
+    assert library, f"{lab.id}: its checks.py's STEP_LIBRARY names no library function a step asks for"
+    assert set(library) <= set(labs_found.steps(lab)), "STEP_LIBRARY names a step the solution does not mark"
+    functions = labs_found.step_functions(lab)
+    for step, names in library.items():
+        args = ", ".join(a for a in functions.get(step, ("", ()))[1] if a != "self")
+        for name in names:
+            code = f"helper = None\nreturn helper.{name}({args})"
+            source, first = in_step(read(lab.solution), step, code)
+            found = step_rules.scan_lab(source, lab)
+            assert (step, first + 1, "library") in [(b.step, b.line, b.rule) for b in found], (lab.id, step, name)
 
 
 def in_step(source, step, code):
@@ -165,7 +149,7 @@ def test_an_attack_is_flagged_with_its_step_line_and_rule(lab_id, step, code, ru
     assert breach.message.startswith(f"line {breach.line} (step {step}) ")
 
 
-PROPOSED_ATTACKS = [   # flagged with LAB_LIBRARY_NAMES (the rows proposed beyond today's STEP_LIBRARY)
+LIBRARY_ATTACKS = [   # a handed class or World hook that runs the library's answer: flagged by the lab's STEP_LIBRARY
     ("more_shapes", 3, "return Body.from_world_points(points).pos"),
     ("more_shapes", 3, "return Vector2(points[0]) - Polygon(points).points[0]"),
     ("more_shapes", 3, "return Vector2(points[0]) - Body(points).shape.points[0]"),
@@ -176,10 +160,11 @@ PROPOSED_ATTACKS = [   # flagged with LAB_LIBRARY_NAMES (the rows proposed beyon
 ]
 
 
-@pytest.mark.parametrize("lab_id, step, code", PROPOSED_ATTACKS)
-def test_a_handed_class_that_runs_the_library_s_answer_is_flagged_with_the_proposed_names(lab_id, step, code):
-    source, first = in_step(read(f"solutions/{lab_id}.py"), step, code)
-    found = step_rules.scan(source, LAB_LIBRARY_NAMES[lab_id], read(f"starters/{lab_id}_starter.py"))
+@pytest.mark.parametrize("lab_id, step, code", LIBRARY_ATTACKS)
+def test_a_handed_class_that_runs_the_library_s_answer_is_flagged_as_library(lab_id, step, code):
+    lab = lab_by_id(lab_id)
+    source, first = in_step(read(lab.solution), step, code)
+    found = step_rules.scan(source, lab.module.STEP_LIBRARY, read(lab.starter))
     assert [(b.step, b.line, b.rule) for b in found] == [(step, first, "library")]
 
 
@@ -223,8 +208,9 @@ def test_describe_names_the_line_the_step_and_the_lab_s_hint():
 
 def test_a_file_that_does_not_parse_or_has_broken_markers_has_no_breach():
     solution = read("solutions/tumbling_crates.py")
-    assert step_rules.scan(solution + "\ndef (:\n", LAB_LIBRARY_NAMES["tumbling_crates"]) == []
-    assert step_rules.scan(solution.replace("# --- end of step 2 ---", ""), LAB_LIBRARY_NAMES["tumbling_crates"]) == []
+    library = lab_by_id("tumbling_crates").module.STEP_LIBRARY
+    assert step_rules.scan(solution + "\ndef (:\n", library) == []
+    assert step_rules.scan(solution.replace("# --- end of step 2 ---", ""), library) == []
 
 
 def test_an_import_added_outside_the_steps_and_used_inside_is_flagged_but_math_is_free():

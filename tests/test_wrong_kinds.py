@@ -1,6 +1,7 @@
 """A step function that returns, or leaves in its arguments, a value of the wrong kind is the file's failure.
 
-For each lab and each step function the checker probes, this module writes student files whose step region
+For each lab in checker/labs/ with a corpus (tests/labs_found.py) and each step function its corpus's WRONG_KINDS
+names (else each step that returns its function's answer: tests/wrong_kinds.py derived_cases), this module writes student files whose step region
 returns a wrong-kind value (a tuple where a Vector2 belongs, a Vector2 where a number belongs, a string, a
 3-tuple, NaN, a bool, an int too big for a float, a dict, ...) or, for a function that changes its arguments,
 leaves a body's field of the wrong kind. The other steps hold the solution's code. Each lab's files are graded in
@@ -11,97 +12,22 @@ OverflowError) and the file got "this is a bug in the checker".
 
 The plausible mistakes among these are in the lab corpora too (tests/corpus_<lab>.py, with their SAYS words).
 """
-import importlib
 import os
 from types import SimpleNamespace
 
 import pytest
 
 import corpus_verdicts as verdicts
+import labs_found
 from corpus_files import CorpusFiles
+from wrong_kinds import derived_cases
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-V = "pygame.Vector2"   # the one module attribute a step may use (checker/reading/step_rules.py)
 
-# wrong kinds by the kind the function returns
-NUMBER = [f"{V}(1, 0)", "'1.5'", "[1.5]", "float('nan')", "True", "10 ** 400", "{'x': 1.0}", "10 ** 5000", "-float('inf')"]
-VECTOR = ["(1.0, 2.0)", "[1.0, 2.0]", "3.0", f"{V}(float('nan'), 0)", "'v'", "{'x': 1.0}"]
-POINTS = ["[(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0)]", f"{V}(1, 0)", "[1.0, 2.0, 3.0]", "'abc'",
-          f"[{V}(float('nan'), 0)] * 3", "5", "[{V}(1, 0), 'x', None]".replace("{V}", V)]
-HIT = [f"({V}(1, 0), (1.0, 2.0))", "((1.0, 0.0), 2.0)", f"({V}(1, 0), 2.0, 3.0)", "2.0",
-       f"({V}(1, 0), {V}(1, 0))", f"({V}(1, 0), float('nan'))", f"({V}(1, 0), '3')", f"({V}(1, 0), 10 ** 400)",
-       "{'normal': 1}", f"({V}(1, 0), True)", f"({V}(0, float('inf')), 2.0)", "[[1.0, 0.0], 2.0]"]
-TOI = ["(0.5, (1.0, 0.0))", f"({V}(1, 0), 0.5)", f"(0.5, {V}(1, 0), 1)", "0.5", f"('0.5', {V}(1, 0))",
-       f"(float('nan'), {V}(1, 0))", f"(10 ** 400, {V}(1, 0))", f"(True, {V}(1, 0))"]
-AS_TEXT = ["str(answer)"]
-FLAGS = ["'yes'", f"{V}(1, 0)", "[True]", "float('nan')"]
-
-
-def returns(values):
-    """Each value as a step region's whole code: `return value`."""
-    return [f"return {value}" for value in values]
-
-
-def after_solution(statements):
-    """Each statement run after the solution's own code of the step (a body left of the wrong kind)."""
-    return [("+", statement) for statement in statements]
-
-
-def wrapped(wraps):
-    """Each wrap of the solution's own answer (`answer`), for a step region that holds its function's return: the
-    right value in the wrong kind (a string, a one-item list) must fail as surely as a wrong value."""
-    return [("wrap", wrap) for wrap in wraps]
-
-
-def substituted(old, news):
-    """The solution's code with `old` replaced by each of `news` (a hook called with a wrong-kind argument)."""
-    return [("sub", old, new) for new in news]
-
-
-def before_solution(statements):
-    """Each statement run before the solution's own code of the step (for a step region that returns)."""
-    return [("pre", statement) for statement in statements]
-
-
-MOTION = ["a.omega = 'spin'", "b.omega = float('nan')", "a.omega = [0.5]", "b.omega = 10 ** 400",
-          f"a.vel = {V}(float('nan'), 0)", "b.vel = (0.0, 0.0)"]
-PLACES = ["a.pos = (1.0, 2.0)", "b.pos = 'here'", f"b.pos = {V}(float('nan'), 0)", "a.angle = [0.5]",
-          f"b.angle = {V}(1, 0)", "b.pos = None"]
-
-# lab -> [(function, step, [step code or ("+", statement)])]
-CASES = {
-    "tumbling_crates": [("sat", 2, returns(HIT)), ("apply_impulse", 6, after_solution(MOTION)),
-                        ("resolve", 4, after_solution(MOTION[:3] + ["a.pos = 'x'", f"k += {V}(1, 0)", "k = float('nan')",
-                                                                    "k = '1'"])),
-                        ("resolve", 5, after_solution([f"jt = {V}(1, 0)", "jt = (1.0, 0.0)", "jt = float('inf')",
-                                                       "jt = 10 ** 400", "jt = None"]))],
-    "more_shapes": [("regular_polygon", 2, returns(POINTS) + wrapped(AS_TEXT + ["[str(p) for p in answer]"])),
-                    ("polygon_centroid", 3, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])),
-                    ("polygon_inertia", 4, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]", "(answer,)"])),
-                    ("separating_axes", 5, returns(POINTS))],
-    "ball_on_ramp": [("closest_on_segment", 2, returns(VECTOR) + wrapped(AS_TEXT + ["[answer]"])), ("circle_polygon", 3, returns(HIT)),
-                     ("separate", 4, after_solution(PLACES)), ("disc_inertia", 5, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
-                     ("contact_point", 6, returns(VECTOR) + wrapped(AS_TEXT)), ("resolve", 7, after_solution(MOTION[:4]) + substituted(
-                         "apply_impulse(a, b, t * jt, ra, rb)",
-                         ["apply_impulse(a, b, (t * jt).x, ra, rb)", "apply_impulse(a, b, tuple(t * jt), ra, rb)",
-                          "apply_impulse(a, b, t * jt, tuple(ra), rb)", "apply_impulse(a, b, t * jt, ra, 'rb')"]))],
-    "sleeping_crates": [("sleep_timer", 2, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
-                        ("moves", 3, returns(FLAGS) + wrapped(["[answer]"])
-                         + before_solution(["body.asleep = 'no'", "body.vel = None", "body.sleep_time = 'x'"])),
-                        ("wake_on_contact", 4, returns(["a", "(a, b)", "[a, 'b']", "'ab'", "[a, b, a] * 400",
-                                                        "5", "{'a': a}"])
-                         + before_solution(["a.asleep = [1]", "b.omega = 'x'"]))],
-    "bullets": [("circle_toi", 2, returns(NUMBER) + wrapped(["None if answer is None else str(answer)",
-                                                             "None if answer is None else [answer]"])),
-                ("bounding_radius", 3, returns(NUMBER) + wrapped(AS_TEXT + ["[answer]"])),
-                ("time_of_impact", 4, returns(TOI) + before_solution(["bullet.vel = (1.0, 2.0)", "other.omega = 'x'"])),
-                ("swept_move", 5, after_solution(["bullet.pos = (1.0, 2.0)", "bullet.vel = 'fast'",
-                                                  f"bullet.pos = {V}(float('nan'), 0)",
-                                                  f"bullet.omega = {V}(1, 0)", "bullet.vel = None"])
-                 + substituted("normal, bullet.pos + normal * bullet.radius)",
-                               ["normal, 'here')",
-                                "normal, None)", "tuple(normal), bullet.pos + normal * bullet.radius)"]))],
-}
+# lab -> [(function, step, [step code or ("+", statement), ...])]: each lab's corpus's WRONG_KINDS, else the cases
+# derived from the lab itself (tests/wrong_kinds.py)
+CASES = {lab.id: getattr(labs_found.corpus(lab), "WRONG_KINDS", None) or derived_cases(lab)
+         for lab in labs_found.with_corpus()}
 
 
 def _entries(lab):
@@ -132,8 +58,8 @@ def _code(solution, code):
 
 def _build(lab, directory):
     """Write the lab's wrong-kind files; {path: (function, step, code)}."""
-    files = CorpusFiles(os.path.join(ROOT, "starters", f"{lab}_starter.py"), os.path.join(ROOT, "solutions", f"{lab}.py"),
-                        [step for _, step, _ in CASES[lab]], {}, "test_wrong_kinds")
+    found = labs_found.by_id(lab)
+    files = CorpusFiles(found.starter, found.solution, [step for _, step, _ in CASES[lab]], {}, "test_wrong_kinds")
     solution = open(files.solution, encoding="utf-8").read()
     solved = files.step_code(solution)
     built = {}
@@ -149,7 +75,15 @@ def _build(lab, directory):
 
 def _step_of(check, lab):
     """The step a check's hint names, read from the lab's corpus module (CHECK_STEP)."""
-    return importlib.import_module(f"corpus_{lab}").CHECK_STEP.get(check)
+    return labs_found.corpus(labs_found.by_id(lab)).CHECK_STEP.get(check)
+
+
+@pytest.mark.parametrize("lab", labs_found.params(labs_found.with_corpus()))
+def test_every_lab_has_wrong_kind_cases(lab):
+    """From its corpus or derived from the lab: no lab with a corpus goes without (one without a corpus fails
+    tests/test_corpus_labs.py)."""
+    assert CASES[lab.id], (f"{lab.id}: no step of its solution returns its function's answer: list its wrong-kind "
+                           f"cases as WRONG_KINDS in tests/corpus_{lab.id}.py (tests/wrong_kinds.py)")
 
 
 @pytest.fixture(scope="module", params=sorted(CASES))

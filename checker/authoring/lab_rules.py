@@ -92,7 +92,7 @@ STATED = (
     Stated("The step rules flag no wrong corpus entry either (an honest mistake is graded, not flagged).",
            "tests/test_step_rules.py"),
     Stated("The checker gives every corpus entry its verdict: correct ones pass, each wrong one fails its check "
-           "naming its step and mistake, in a message of two short lines.", "tests/test_corpus_<id>.py"),
+           "naming its step and mistake, in a message of two short lines.", "tests/test_corpus_labs.py"),
 )
 
 
@@ -567,7 +567,7 @@ def numbered_steps(s):
 
 
 @rule("solutions/{id}.py", needs=("checks_names", "solution_and_starter"),
-      tests="test_corpus_<id>.py (corpus_verdicts.assert_builds), test_lab_convention.py")
+      tests="test_corpus_labs.py (corpus_verdicts.assert_builds), test_lab_convention.py")
 def title_names_the_file(s):
     """The solution's docstring names the lab's `TITLE`, and the lab recognises its own solution."""
     parts = s.solution.split('"""')
@@ -581,7 +581,7 @@ def title_names_the_file(s):
 # ---------------------------------------------------------------- tests/
 
 @rule("tests/corpus_{id}.py", needs=("solution_and_starter",),
-      tests="test_message_length.py, test_step_rules.py, test_corpus_<id>.py")
+      tests="test_message_length.py, test_step_rules.py, test_corpus_labs.py")
 def corpus(s):
     """`tests/corpus_<id>.py` builds the lab's mistake corpus: `ENTRIES` = `CORRECT` (at least 3) + `WRONG` (at
     least 10), each built by `build(name)` from the current starter."""
@@ -595,16 +595,6 @@ def corpus(s):
     if len(module.CORRECT) < 3 or len(module.WRONG) < 10:
         return broken(f"{len(module.CORRECT)} correct and {len(module.WRONG)} wrong entries",
                       "add entries: at least 3 correct ones in other styles and 10 plausible mistakes")
-
-
-@rule("tests/test_corpus_{id}.py", needs=("corpus",), tests="test_message_length.py")
-def corpus_test(s):
-    """`tests/test_corpus_<id>.py` grades the corpus and holds each entry to its verdict (`corpus_verdicts`)."""
-    path = s.path("tests", f"test_corpus_{s.id}.py")
-    text = open(path, encoding="utf-8").read() if os.path.isfile(path) else ""
-    if "verdicts.assert_verdict(" not in text and "verdicts.assert_first_message(" not in text:
-        return broken("does not hold the corpus's verdicts" if text else "no such file",
-                      "call verdicts.assert_verdict(entry, graded[entry.name], corpus) per entry")
 
 
 @rule("solutions/{id}.py", needs=("corpus", "checks_names"), tests="test_step_rules.py")

@@ -447,41 +447,6 @@ FILES = CorpusFiles(STARTER, SOLUTION, STEPS, BY_NAME, "tests/corpus_${lab_id}.p
 regions, step_code, fill, build, write_corpus = FILES.regions, FILES.step_code, FILES.fill, FILES.build, FILES.write
 '''
 
-CORPUS_TEST = '''"""The checker owes every entry of the $title mistake corpus its verdict: no false pass, no false fail.
-
-tests/corpus_${lab_id}.py builds plausible student files from the current starter; they are graded in ONE run
-of `python -m checker --json`, one test per entry, by the rules in tests/corpus_verdicts.py.
-"""
-import pytest
-
-import corpus_${lab_id} as corpus
-import corpus_verdicts as verdicts
-
-
-@pytest.fixture(scope="module")
-def graded(tmp_path_factory):
-    """{entry name: {check id: the check's JSON}}, from one checker run over the whole corpus."""
-    return verdicts.grade(corpus.write_corpus(tmp_path_factory.mktemp("${lab_id}_corpus")), "${lab_id}")
-
-
-def test_the_corpus_is_big_enough_and_covers_every_step():
-    verdicts.assert_big_enough(corpus, per_step=3)
-
-
-@pytest.mark.parametrize("entry", corpus.ENTRIES, ids=lambda e: e.name)
-def test_each_entry_is_well_formed_and_builds(entry):
-    verdicts.assert_builds(entry, corpus, "$title")
-
-
-def test_the_reference_build_is_the_solution():
-    verdicts.assert_reference_build_is_the_solution(corpus)
-
-
-@pytest.mark.parametrize("entry", corpus.ENTRIES, ids=lambda e: e.name)
-def test_the_checker_gives_each_entry_its_verdict(entry, graded):
-    verdicts.assert_verdict(entry, graded[entry.name], corpus)
-'''
-
 # path under the project -> text (string.Template: $lab_id, $title)
 FILES = {
     "solutions/${lab_id}.py": SOLUTION,
@@ -490,5 +455,4 @@ FILES = {
     "checker/labs/${lab_id}/probes.py": PROBES,
     "checker/labs/${lab_id}/scenes.py": SCENES,
     "tests/corpus_${lab_id}.py": CORPUS,
-    "tests/test_corpus_${lab_id}.py": CORPUS_TEST,
 }

@@ -3,7 +3,7 @@
     python -m checker new-lab billiards --title "Billiards"
 
 writes solutions/ID.py, checker/labs/ID/ (checks, probes, scenes), starters/ID_starter.py (as `assign` writes
-it), tests/corpus_ID.py and tests/test_corpus_ID.py. At once the solution passes, the starter fails step 2, and
+it) and tests/corpus_ID.py (tests/test_corpus_labs.py finds it). At once the solution passes, the starter fails step 2, and
 `python -m checker lint-lab ID` passes; then make the lab yours, one file at a time, with lint-lab and the
 corpus test after each change. Nothing is ever written over: if any of those paths exists, or the ID is not a
 Python name or is a lab already, it is one line naming that and nothing is written (exit 2).
@@ -76,5 +76,5 @@ def main(argv, stdout=None, stderr=None, root=PROJECT_ROOT):
     for path in write(args.id, args.title, root):
         print(f"{path}: written", file=stdout)
     print(f"next: python -m checker solutions/{args.id}.py (passes), python -m checker lint-lab {args.id}, "
-          f"python -m pytest -n 0 tests/test_corpus_{args.id}.py", file=stdout)
+          f"python -m pytest -n 0 tests/test_corpus_labs.py -k {args.id}", file=stdout)
     return 0
