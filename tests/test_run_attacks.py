@@ -137,9 +137,6 @@ def small_tmp():
     os.rmdir(folder)
 
 
-@pytest.mark.xfail(strict=True, reason="open: a run may fill the shared temporary folder (64 MB files without a "
-                   "count limit) while a classmate is graded; needs a per-run quota (a size-limited tmpfs on out/ "
-                   "where root may mount, or a disk quota for the run uids)")
 def test_a_run_filling_the_disk_changes_no_classmates_row(tmp_path, small_tmp):
     """`fill`: top-level code writes 60 MB files into its out/ folder until the disk is full and keeps its run
     alive 25 s. Graded beside a solution with TMPDIR on a 300 MB tmpfs, the solution's runs cannot write their
