@@ -9,6 +9,8 @@ dummy video and audio drivers, in its own process group, with:
     whole group is killed when it runs out, its stack dumped half a second earlier;
   - RLIMIT_AS (`memory_mb`): a memory hog gets MemoryError or dies;
   - RLIMIT_FSIZE: no file the lab writes can grow past 64 MB;
+  - a disk quota (`disk_mb`) on its out/ folder: a tmpfs of that size where root may mount, else watched
+    by the parent, which stops the run past it (checker/disk.py);
   - an output cap (`max_output` bytes over stdout + stderr): the child raises at the print() that
     crosses it (so the report names the line); past FLOOD_SLACK more the parent kills the group.
 
