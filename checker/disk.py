@@ -21,6 +21,7 @@ import functools
 import os
 import sys
 import threading
+import time
 
 DEFAULT_MB = 64        # measured: the five solutions' runs leave at most 1.4 MB in out/ (a scene's record.json);
                        # 64 MB is also the largest file a run may write (sandbox.FILE_LIMIT)
@@ -100,9 +101,8 @@ def release(out):
         if out not in _mounted:
             return
         _mounted.discard(out)
-    import ctypes
     libc = _libc()
-    if libc.umount2(os.fsencode(out), UMOUNT_NOFOLLOW) != 0 and ctypes.get_errno() == errno.EBUSY:
+    if libc.umount2(os.fsencode(out), UMOUNT_NOFOLLOW) != 0:   # busy: a process of the run still holds it
         libc.umount2(os.fsencode(out), UMOUNT_NOFOLLOW | MNT_DETACH)
 
 
@@ -139,7 +139,7 @@ def usage(folder, max_entries=MAX_ENTRIES):
 
 class Quota:
     """One run's quota on its out/ folder: mounted where mount_wanted(), else watched. over() says whether the
-    run went past it; close() unmounts (call it in a finally, after the run's files were read)."""
+    run went past it; release(out) unmounts (sandbox.run_child, in a finally, after the run's files were read)."""
 
     def __init__(self, out, mb, portable):
         self.out, self.mb = out, mb
@@ -159,11 +159,19 @@ class Quota:
     def over(self, now=None):
         """True when the run went past its quota. Mounted: the tmpfs is full (its blocks or its inodes). Watched:
         out/ holds more than mb MB, or more than MAX_ENTRIES entries, or cannot be measured. `now`
-        (time.monotonic()): look only when POLL_SECONDS have passed since the last look; None: look now."""
+        (time.monotonic()): look only when POLL_SECONDS have passed since the last look, or ten times what the
+        last look took of CPU (a walk of MAX_ENTRIES files took 6 ms: the watcher keeps under a tenth of a core);
+        None: look now."""
+        if now is not None and now < self.next_look:
+            return False
+        cost = time.thread_time()
+        over = self._look()
+        cost = time.thread_time() - cost   # CPU time of this look (a busy machine's waits do not count)
         if now is not None:
-            if now < self.next_look:
-                return False
-            self.next_look = now + POLL_SECONDS
+            self.next_look = time.monotonic() + max(POLL_SECONDS, 10 * cost)
+        return over
+
+    def _look(self):
         if self.mounted:
             try:
                 info = os.statvfs(self.out)
@@ -172,8 +180,3 @@ class Quota:
             return info.f_bavail == 0 or info.f_favail == 0
         used = usage(self.out)
         return used is None or used > self.mb * 1024 * 1024
-
-    def close(self):
-        if self.mounted:
-            release(self.out)
-            self.mounted = False

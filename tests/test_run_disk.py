@@ -16,7 +16,7 @@ import sys
 
 import pytest
 
-from checker import disk, sandbox, users
+from checker import disk, users
 from checker.sandbox import Limits, run_child
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -141,6 +141,32 @@ def test_mounted_a_write_past_the_quota_fails_in_the_run_and_stops_it(lab):
     assert run.status == "disk" and run.notes == [], run
     assert run.seconds < 10   # stopped once full, not left to sleep to its wall-clock limit
     assert checker_mounts() == []
+
+
+DAEMON = '''
+import os as _os, signal as _signal, time as _time
+_pid = _os.fork()
+if _pid == 0:
+    _os.setsid()   # out of the run's process group: its kill misses this one, which keeps out/ busy
+    _time.sleep(60)
+    _os.kill(_os.getpid(), _signal.SIGKILL)
+raise RuntimeError(f"DAEMON {_pid}")
+'''
+
+
+@mounting
+def test_mounted_a_tmpfs_still_busy_is_unmounted_lazily(lab):
+    """As root with no child user (--child-user root), nothing kills a process that left the run's process
+    group: it keeps its working folder, the tmpfs, busy. The tmpfs is detached all the same."""
+    run = run_child(lab(DAEMON), "probe", SETTINGS, Limits(timeout=5))
+    pid = int(run.result["error"]["message"].split("DAEMON ")[1])
+    try:
+        import tempfile
+        held = os.stat(f"/proc/{pid}/cwd")   # the daemon lives, its working folder on a file system of its own
+        assert held.st_dev != os.stat(tempfile.gettempdir()).st_dev and held.st_mode & 0o777 == 0o700, held
+        assert checker_mounts() == [], "a run's tmpfs is left mounted"
+    finally:
+        os.kill(pid, 9)
 
 
 # ---------------------------------------------------------------- watched (the mount refused; portable)
