@@ -115,7 +115,8 @@ def usage(folder, max_entries=MAX_ENTRIES):
     total, entries, stack = 0, 0, [folder]
     while stack:
         try:
-            found = list(os.scandir(stack.pop()))
+            with os.scandir(stack.pop()) as listing:
+                found = list(listing)
         except FileNotFoundError:
             continue   # removed between two looks
         except OSError:
@@ -144,9 +145,8 @@ class Quota:
     def __init__(self, out, mb, portable):
         self.out, self.mb = out, mb
         self.mounted = mount_wanted(portable) and mount(out, mb)
-        self.tried = False   # a mount was tried and refused: the run's notes say it is watched instead
-        if not self.mounted and refused() is not None and not portable:
-            self.tried = True
+        # a root grader's mount was refused (this run's or an earlier one's): the run's notes say it is watched
+        self.tried = not self.mounted and not portable and refused() is not None
         self.next_look = 0.0
 
     def notes(self):
