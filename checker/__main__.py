@@ -4,7 +4,7 @@ import sys
 
 from lesson11.console import safe_output
 
-from . import sandbox
+from checker.isolation import sandbox
 
 safe_output()  # reports use θ, ×, ², ≤: a console that is not UTF-8 gets stand-ins, never a UnicodeEncodeError
 
@@ -12,7 +12,7 @@ if any(not arg.startswith("-") and os.path.exists(arg) for arg in sys.argv[1:]) 
         and sys.argv[1:2] not in (["package"], ["assign"]):
     sandbox.start_zygote()  # there is something to grade: warm the children's zygote while the labs import
 
-from .cli import main  # noqa: E402 (imports every lab: numpy, pygame, lesson11)
+from checker.cli import main   # noqa: E402 (imports every lab: numpy, pygame, lesson11)
 
 try:
     sys.exit(main())

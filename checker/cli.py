@@ -15,13 +15,15 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor, as_completed
 
-from . import disk, html_report, outputs, pictures, report, sandbox, users
-from . import show as show_mode
-from .entries import discover, graded_folders
-from .grade import Grader
-from . import labs
-from .report import NotGraded
-from .sandbox import Limits
+from checker.reporting import html_report, outputs, report
+from checker.replay import pictures
+from checker.isolation import disk, sandbox, users
+from checker.replay import show as show_mode
+from checker.entries import discover, graded_folders
+from checker.grade import Grader
+from checker import labs
+from checker.reporting.report import NotGraded
+from checker.isolation.sandbox import Limits
 
 FULL = tuple(getattr(errno, name) for name in ("ENOSPC", "EDQUOT") if hasattr(errno, name))   # a full disk
 
@@ -88,7 +90,7 @@ def parse_args(argv):
     parser.add_argument("--show", nargs="?", const="", default=None, metavar="CHECK",
                         help="grade one FILE, then replay the first failed check (or CHECK) in a window: the scene "
                              "as graded beside the solution's, or a failed function check's cases drawn "
-                             "(checker/show.py); with --seed N the probes draw the same inputs again")
+                             "(checker/replay/show.py); with --seed N the probes draw the same inputs again")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     parser.add_argument("--allow-edits", action="store_true",
                         help="code changed outside the steps is a warning, not a failure (the scenes still run)")
@@ -238,11 +240,11 @@ def write_outputs(args, rows):
 def main(argv=None):
     """Grade the paths; returns the exit status (see the module docstring)."""
     argv = sys.argv[1:] if argv is None else argv
-    if argv[:1] == ["package"]:  # python -m checker package PLATFORM --out ...: see checker/package.py
-        from . import package
+    if argv[:1] == ["package"]:  # python -m checker package PLATFORM --out ...: see checker/platforms/package.py
+        from checker.platforms import package
         return package.main(argv[1:])
-    if argv[:1] == ["assign"]:  # python -m checker assign [--check] [--out DIR]: see checker/assign.py
-        from . import assign
+    if argv[:1] == ["assign"]:  # python -m checker assign [--check] [--out DIR]: see checker/authoring/assign.py
+        from checker.authoring import assign
         return assign.main(argv[1:])
     try:
         args = parse_args(argv)

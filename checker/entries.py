@@ -16,8 +16,9 @@ import os
 import stat
 from dataclasses import dataclass
 
-from . import labs, source
-from .labs import identify
+from checker import labs
+from checker.reading import source
+from checker.labs import identify
 
 SKIP_DIRS = {"__pycache__", ".git", ".venv", "venv", "node_modules", "__MACOSX"}
 MAX_BYTES = 2_000_000  # a lab file is ~15 KB; anything past this is not one
@@ -73,7 +74,7 @@ def examine(path):
             raw = handle.read(MAX_BYTES + 1)
     except OSError as exc:
         return Entry(path, by_name, f"cannot read: {exc.strerror}", real, counted=True)
-    try:   # the compiler's reading (checker/source.py): a coding other than UTF-8 or uncounted line breaks refused
+    try:   # the compiler's reading (checker/reading/source.py): a coding other than UTF-8 or uncounted line breaks refused
         text = source.decode(raw, "the file")
         source.check(text, "the file")
     except source.SourceError as exc:

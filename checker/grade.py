@@ -7,7 +7,7 @@ A lab file is graded in two stages, each in isolated child processes:
 All children of all files share one pool of `jobs` worker slots, so a class
 folder keeps every core busy; a freed slot goes to the waiting run expected
 to take longest (probes first, then scenes by their lab's SCENE_SECONDS). A file's source is read once (the checker never
-writes to it), as the compiler reads it (checker/source.py: a file declaring another coding than UTF-8 is an
+writes to it), as the compiler reads it (checker/reading/source.py: a file declaring another coding than UTF-8 is an
 error); if the file changes while it is graded the result is an error.
 """
 import ast
@@ -23,11 +23,12 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field, replace
 
-from . import budget, handout, probing, source, step_rules
-from .checks import ERROR, FAIL, PASS, skipped_all
-from .common import checked_result
-from .lab_checks import record_problem
-from .sandbox import Limits, run_child, wall_limit
+from checker.judging import budget, probing
+from checker.reading import handout, source, step_rules
+from checker.judging.checks import ERROR, FAIL, PASS, skipped_all
+from checker.judging.common import checked_result
+from checker.judging.lab_checks import record_problem
+from checker.isolation.sandbox import Limits, run_child, wall_limit
 
 
 @dataclass
@@ -42,7 +43,7 @@ class Submission:
     name: str
     source: str
     probe: object = None
-    flags: list = field(default_factory=list)   # what the step rules flagged (checker/step_rules.py Breach)
+    flags: list = field(default_factory=list)   # what the step rules flagged (checker/reading/step_rules.py Breach)
     function_steps: dict = field(default_factory=dict)   # step function name -> its steps (the starter's)
     scenarios: dict = field(default_factory=dict)
     options: dict = field(default_factory=dict)
@@ -228,7 +229,7 @@ class Grader:
         if sub.probe is None:
             return LabReport(given, lab, skipped_all(lab.checks, self._late_message()), time.monotonic() - start,
                              seed=settings["seed"], flags=[asdict(b) for b in sub.flags])
-        try:   # the grader's own work on what the child reported runs under a budget (checker/budget.py)
+        try:   # the grader's own work on what the child reported runs under a budget (checker/judging/budget.py)
             with self._budget():
                 if sub.probe.status == "done":   # the verdicts' data: the child's tapes replayed and judged here
                     sub.probe.result["probe"] = probing.judge(lab, path, settings, sub.probe.result.get("probe"))
@@ -264,8 +265,8 @@ class Grader:
         preview, preview_note = "", ""
         if self.keep_records and not sub.scenarios and self._wants_preview(results):
             # a function check failed, so no scene ran: run a scene anyway, for a picture only (not graded):
-            # the failing step with the solution's others, where it differs from the solution (checker/preview.py)
-            from . import preview as previews
+            # the failing step with the solution's others, where it differs from the solution (checker/replay/preview.py)
+            from checker.replay import preview as previews
             self.preview_started()
             name, record, note = previews.scene_for(self.run, path, sub.source, lab, previews.failing_step(results),
                                                     previews.reference_record)

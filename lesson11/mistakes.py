@@ -1,7 +1,7 @@
 """The words for a student's mistake that the checker and the lab window share (one place, the same sentences).
 
 A value of the wrong kind left on a body (motion_problem), and the meaning of a known mistake from the
-error it raised or the value it left (meaning). The checker (checker/common.py, checker/tape.py) and the
+error it raised or the value it left (meaning). The checker (checker/judging/common.py, checker/judging/tape.py) and the
 lab window's pause on an error (lesson11/breakdown.py) both import them. Nothing here draws or imports
 a window: only pygame's Vector2.
 """

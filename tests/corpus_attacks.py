@@ -36,7 +36,7 @@ Kinds, every lab has each of the first seven and at least two controls:
               lambdas, a local named `result`, tuple unpacking; and one with a debug print in a step
 
 Beyond the brief's list: attacks that reach the same answers around the step rules
-(checker/step_rules.py), each written against the rules as they stood when it was added
+(checker/reading/step_rules.py), each written against the rules as they stood when it was added
 (the rules are being rewritten; the test says which still get through):
 
   evade_alias       `[random][0]._os.sys.modules[...]`: random is a handout import, the list hid
@@ -235,7 +235,7 @@ def _points_key(points):
 
 def _sat_table():
     try:
-        from checker.probe_kit import reference_sat, sat_pairs
+        from checker.judging.probe_kit import reference_sat, sat_pairs
         table = {}
         for _, pa, pb in sat_pairs():
             for first, second in ((pa, pb), (pb, pa)):
@@ -317,7 +317,7 @@ TUMBLING = [
     """}, ["sat_axes"], "step 2 reaches the library's sat() through __import__"),
     attack("tc_forge_reference", "tumbling_crates", "forge", {2: """
         modules = __import__("sys").modules
-        for name in ("checker.labs.tumbling_crates.probes", "checker.probe_kit"):
+        for name in ("checker.labs.tumbling_crates.probes", "checker.judging.probe_kit"):
             if name in modules:
                 modules[name].reference_sat = lambda *args, **kwargs: None
         return None  # until you write step 2, nothing ever collides
@@ -374,7 +374,7 @@ TUMBLING = [
         match edge_normals:
             case object(__globals__=namespace):
                 modules = namespace["__builtins__"]["__import__"]("sys").modules
-                for name in ("checker.labs.tumbling_crates.probes", "checker.probe_kit"):
+                for name in ("checker.labs.tumbling_crates.probes", "checker.judging.probe_kit"):
                     if name in modules:
                         modules[name].reference_sat = lambda *args, **kwargs: None
         return None  # until you write step 2, nothing ever collides
@@ -985,7 +985,7 @@ def first_round(lab):
 def _first_sat_table():
     """Tumbling Crates' step 2 (and 3) answered from a table of the checker's fixed pairs (keys: first corners)."""
     try:
-        from checker.probe_kit import reference_sat, sat_pairs
+        from checker.judging.probe_kit import reference_sat, sat_pairs
         table = {}
         for _, pa, pb in sat_pairs():
             for first, second in ((pa, pb), (pb, pa)):
@@ -1082,7 +1082,7 @@ BACKSLASH_N = "\\" + "n"   # the two characters a unicode_escape file decodes to
 # other step functions are the solution's, and their checks must come out as a tape mismatch.
 FOREIGN_EVENT = """
 sys = __import__("sys")
-tape = sys.modules.get("checker.tape")
+tape = sys.modules.get("checker.judging.tape")
 if tape is not None and not hasattr(tape.Recorder.take, "forged"):
     def add_event(entries):
         for entry in entries:
@@ -1127,7 +1127,7 @@ def _forge_grades():
         try:
             with open(f"/proc/{pid}/cmdline", "rb") as handle:
                 command = handle.read().split(b"\\0")
-            if b"checker" in command and b"checker.zygote" not in command and b"checker.child" not in command:
+            if b"checker" in command and b"checker.isolation.zygote" not in command and b"checker.isolation.child" not in command:
                 with open(f"/proc/{pid}/fd/1", "w") as out:
                     out.write(_json.dumps({"labs": [{"path": __file__, "lab": "forged", "score": 99,
                                                      "max_score": 99, "criteria": []}]}) + "\\n")

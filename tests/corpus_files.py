@@ -4,13 +4,13 @@ An entry's file is the lab's current starter with each step region filled:
 with the entry's own code for the steps it names (entry.steps {step: code}),
 else with the solution's code; then the entry's exact edits outside the steps
 (entry.edits, applied by tests/mutants.py, each must fit exactly once). Step
-regions are found by the checker's own marker parser (checker/handout.py).
+regions are found by the checker's own marker parser (checker/reading/handout.py).
 """
 import os
 import textwrap
 
 import mutants
-from checker.handout import step_regions
+from checker.reading.handout import step_regions
 
 
 def _read(path):

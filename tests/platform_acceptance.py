@@ -459,7 +459,7 @@ def dockerfile(path):
 
 def workflow(path):
     """The classroom workflow's job env, its run steps [(name, script, env)] and its command-grader steps
-    [(name, command, max-score)] (the file is ours, written by checker/package.py: a line parser is enough)."""
+    [(name, command, max-score)] (the file is ours, written by checker/platforms/package.py: a line parser is enough)."""
     lines = open(path, encoding="utf-8").read().splitlines()
     found = {"env": {}, "runs": [], "graders": []}
     step = None

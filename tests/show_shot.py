@@ -9,7 +9,7 @@ clear of the crates) shows the settings the run recorded, "replay" in place of t
 keeping the largest overlap (sat_largest_overlap), its first failing case drawn as the SAT explorer draws
 it, the student's depth in magenta against the lesson's MTV in yellow. Both are graded as
 `python -m checker FILE --show --seed 3` grades them (the student's code in the isolated child) and drawn by
-checker/show_view.py into a surface saved with pygame.image.save.
+checker/replay/show_view.py into a surface saved with pygame.image.save.
 """
 import os
 import sys
@@ -24,7 +24,8 @@ sys.path.insert(0, os.path.dirname(HERE))
 import pygame  # noqa: E402
 
 import corpus_tumbling_crates  # noqa: E402
-from checker import labs, show, show_view  # noqa: E402
+from checker import labs
+from checker.replay import show, show_view   # noqa: E402
 
 ASSETS = os.path.join(os.path.dirname(HERE), "assets")
 SEED = 3

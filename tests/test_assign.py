@@ -1,4 +1,4 @@
-"""python -m checker assign: each lab's starter is written from its annotated solution (checker/assign.py).
+"""python -m checker assign: each lab's starter is written from its annotated solution (checker/authoring/assign.py).
 
 The committed starters must be exactly what assign writes (the drift test is
 in test_lab_starter.py); here: what a prompt block turns into, that assign
@@ -13,7 +13,8 @@ import sys
 
 import pytest
 
-from checker import assign, cli
+from checker.authoring import assign
+from checker import cli
 
 SOLUTION = '''"""A lab."""
 

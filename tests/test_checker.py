@@ -15,7 +15,7 @@ import sys
 import pytest
 
 import mutants
-from checker.sandbox import Limits, wall_limit
+from checker.isolation.sandbox import Limits, wall_limit
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FIXTURES = os.path.join(ROOT, "tests", "fixtures", "checker")

@@ -17,8 +17,9 @@ import sys
 
 import pytest
 
-from checker import cli, entries, outputs, report
-from checker.report import NotGraded
+from checker import cli, entries
+from checker.reporting import outputs, report
+from checker.reporting.report import NotGraded
 from checker.labs.tumbling_crates.checks import CHECKS
 
 MAX = CHECKS.max_score  # Tumbling Crates' points
@@ -274,7 +275,7 @@ class FakeGrader:
     def grade(self, path, lab):
         if os.path.basename(path).startswith("boom"):
             raise KeyError("a bug of ours")
-        from checker.checks import Result
+        from checker.judging.checks import Result
         from checker.grade import LabReport
         return LabReport(path, lab, [Result(c.id, c.description, "pass", score=c.max_score, max_score=c.max_score)
                                      for c in lab.checks.checks], 0.1)

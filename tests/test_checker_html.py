@@ -136,8 +136,8 @@ def test_html_refuses_bad_paths(tmp_path):
 
 
 def test_a_file_not_graded_is_a_row_too():
-    from checker import html_report
-    from checker.report import NotGraded
+    from checker.reporting import html_report
+    from checker.reporting.report import NotGraded
     text = html_report.html_text([NotGraded("/x/notes/readme.py", None, "not a lab file <b>")])
     assert "readme" in text and "not a lab file &lt;b&gt;" in text and 'class="error"' in text
 
@@ -157,8 +157,9 @@ def test_the_csv_has_a_student_column_and_fractions(tmp_path):
     """One row per file with the student's folder, the lab, and the score as a share of that lab's points; a
     check column per lab when several labs are graded, and a file that is not a lab counted apart."""
     import csv
-    from checker import labs, report
-    from checker.checks import Result
+    from checker import labs
+    from checker.reporting import report
+    from checker.judging.checks import Result
     from checker.grade import LabReport
     by_id = {lab.id: lab for lab in labs.LABS}
     crates, bullets = by_id["tumbling_crates"], by_id["bullets"]

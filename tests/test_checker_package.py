@@ -15,7 +15,8 @@ import zipfile
 
 import pytest
 
-from checker import labs, package
+from checker import labs
+from checker.platforms import package
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GRADESCOPE_VISIBILITY = {"hidden", "after_due_date", "after_published", "visible"}
@@ -444,7 +445,7 @@ def test_prairielearn_failed_scene_has_images(tmp_path):
 
 def grading_script():
     spec = importlib.util.spec_from_file_location("grade_submission",
-                                                  os.path.join(ROOT, "checker", "templates", "grade_submission.py"))
+                                                  os.path.join(ROOT, "checker", "platforms", "templates", "grade_submission.py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module

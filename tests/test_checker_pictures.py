@@ -1,4 +1,4 @@
-"""Pictures of failed behaviour checks (issue 14 §2): checker/pictures.py and --pictures.
+"""Pictures of failed behaviour checks (issue 14 §2): checker/replay/pictures.py and --pictures.
 
 One Ball on the Ramp file fails one scene cheaply: the solution with the
 push-out's SLOP raised from 0.5 to 6 px (graded with allow_edits), so a ball
@@ -17,7 +17,9 @@ import sys
 import pygame
 import pytest
 
-from checker import labs, pictures, report
+from checker import labs
+from checker.replay import pictures, show_series
+from checker.reporting import report
 from checker.grade import Grader
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -85,7 +87,7 @@ def test_base64_and_prairielearn_images(failing):
 def test_marked_frame_is_read_from_the_message():
     class R:
         message = "the ball sank 3.2 px into the ramp (at frame 42; bound 1 px)."
-    assert pictures.marked_frame(R) == 42
+    assert show_series.marked_frame(R) == 42
     frames = [{"frame": k, "bodies": [], "touching": []} for k in range(1, 101)]
     picked = pictures._pick(frames, 42)
     assert len(picked) == pictures.FRAMES and any(f["frame"] == 42 for f in picked)
@@ -202,11 +204,11 @@ def test_a_file_that_does_not_load_gets_no_picture():
 def test_pictures_follow_the_failure(failing, monkeypatch):
     """Issue 30 item 4: the filmstrip starts a little before the failing frame and ends after it, frames the
     bodies the check is about, and its caption names the frame and the quantity; the HTML report links it."""
-    from checker import html_report, show
+    from checker.reporting import html_report
     frames = failing.records["inside"]["records"]
     result = next(r for r in failing.results if r.id == "pushed_out_of_crate")
     reference = pictures.reference_record(LAB, "inside")["records"]
-    fail_frame, why, quantity, values = show.failure(LAB, result, frames, reference, True)
+    fail_frame, why, quantity, values = show_series.failure(LAB, result, frames, reference, True)
     assert fail_frame == frames[-1]["frame"] and quantity.bound == LAB.module.INSIDE_DEPTH   # judged at the end
     drawn = {}
     original = pictures.filmstrip

@@ -3,7 +3,7 @@
 The test writes a toy lab's checks, probes and scenes modules into a fresh folder of checker/labs/,
 as a real lab is added, and its solution and starter where the lab's id puts them, under a temporary root
 (solutions/<id>.py; starters/<id>_starter.py, the handout, written from the toy's annotated solution by
-checker/assign.py as every lab's is: the parent replays the probe's calls of the step functions through it);
+checker/authoring/assign.py as every lab's is: the parent replays the probe's calls of the step functions through it);
 it adds the lab, found from its id, to checker.labs.LABS for this process only, and grades the
 toy file with the command line in-process: the probe runs in the child (which imports the
 lab's probe module by the name its id gives), a scene runs under the lab runtime, and the
@@ -18,9 +18,10 @@ import uuid
 
 import pytest
 
-from checker import assign, cli, labs
+from checker.authoring import assign
+from checker import cli, labs
 
-# the toy lab's one source, annotated as a real lab's solution is (checker/assign.py); the student hands it in
+# the toy lab's one source, annotated as a real lab's solution is (checker/authoring/assign.py); the student hands it in
 SOLUTION = '''
 """Toy Lab: a made-up exercise for the plug-in test."""
 from lesson11 import runtime as lab
@@ -71,7 +72,7 @@ SCENARIOS = {"short": short}
 
 CHECKS = '''
 """The toy lab's checks."""
-from checker.checks import Fail, Passed, Registry
+from checker.judging.checks import Fail, Passed, Registry
 
 TITLE = "Toy Lab"
 CHECKS = Registry()

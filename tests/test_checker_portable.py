@@ -3,7 +3,7 @@
 Where fork, preexec_fn, pass_fds or process groups are missing (Windows), the checker starts
 its child with plain subprocess, reads the result from the child's own stdout, reads its pipes
 with threads, kills the whole tree from the parent at the wall-clock limit, and lets the child
-apply its own limits (checker/sandbox.py `_run_portable`, checker/child.py `Watchdog`).
+apply its own limits (checker/isolation/sandbox.py `_run_portable`, checker/isolation/child.py `Watchdog`).
 CHECKER_PORTABLE=1 makes Linux take that path, so it runs here on every test run:
 
   - the five solutions and five starters get the same verdict per check as on the POSIX path;
@@ -58,7 +58,7 @@ import test_corpus_bullets as bullets_verdicts
 import test_corpus_more_shapes as more_shapes_verdicts
 import test_corpus_sleeping_crates as sleeping_crates_verdicts
 import test_corpus_tumbling_crates as tumbling_crates_verdicts
-from checker import sandbox
+from checker.isolation import confine, sandbox
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LABS = ("tumbling_crates", "more_shapes", "ball_on_ramp", "bullets", "sleeping_crates")
@@ -160,7 +160,7 @@ socket.socketpair = socketpair
 """
 
 # A student's Mac: the checker runs under the student's own account, never as root, so there is no user to
-# switch to (checker/users.py). This machine's tests run as root: the grader is told it is not.
+# switch to (checker/isolation/users.py). This machine's tests run as root: the grader is told it is not.
 MACOS_STUDENT = """
 import os
 os.geteuid = lambda: 501
@@ -234,7 +234,7 @@ def test_every_solution_passes_and_every_starter_gets_the_linux_verdicts(linux, 
 
 def test_the_emulated_windows_grader_never_asks_for_posix_only_parts(paths):
     rows, started = paths["windows"]
-    assert started and {module for module, _ in started} == {"checker.child"}   # no zygote, children only
+    assert started and {module for module, _ in started} == {"checker.isolation.child"}   # no zygote, children only
     for row in rows.values():   # the limits it cannot set are noted in the run's record
         assert any("no resource module" in note for note in row["notes"]), row["notes"]
 
@@ -244,9 +244,9 @@ def test_a_refused_memory_limit_is_a_note_in_the_record_never_a_message(paths, p
     rows, started = paths[path]
     modules = {module for module, _ in started}
     if path == "macos":   # no SOCK_SEQPACKET: the zygote cannot start, children start with subprocess
-        assert ("checker.child", "preexec") in started and "checker.zygote" not in modules
+        assert ("checker.isolation.child", "preexec") in started and "checker.isolation.zygote" not in modules
     else:
-        assert modules == {"checker.zygote"}, modules   # the zygote forks every child
+        assert modules == {"checker.isolation.zygote"}, modules   # the zygote forks every child
     for row in rows.values():
         assert any(note.startswith("RLIMIT_AS (memory 768 MB) refused by this system (ValueError: current limit "
                                    "exceeds maximum limit)") for note in row["notes"]), row["notes"]
@@ -287,12 +287,12 @@ def test_refused_limits_are_skipped_with_a_note_each(monkeypatch):
         applied.append(kind)
 
     monkeypatch.setattr(resource, "setrlimit", setrlimit)
-    notes = sandbox.set_rlimits(sandbox.Limits(timeout=2.5, memory_mb=300))
+    notes = confine.set_rlimits(confine.Limits(timeout=2.5, memory_mb=300))
     assert applied == [resource.RLIMIT_CPU, resource.RLIMIT_FSIZE]
     assert [note.split(" (")[0] for note in notes] == ["RLIMIT_AS", "RLIMIT_CORE"]
     assert "memory 300 MB" in notes[0] and notes[0].endswith("not applied")
     applied.clear()
-    assert sandbox.set_rlimits(sandbox.Limits(), cpu=False)[0].startswith("RLIMIT_AS")
+    assert confine.set_rlimits(confine.Limits(), cpu=False)[0].startswith("RLIMIT_AS")
     assert resource.RLIMIT_CPU not in applied
 
 

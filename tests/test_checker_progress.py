@@ -11,7 +11,7 @@ import sys
 
 import pytest
 
-from checker.handout import step_regions
+from checker.reading.handout import step_regions
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")

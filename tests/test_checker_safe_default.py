@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from checker import sandbox, users
+from checker.isolation import sandbox, users
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOLUTION = os.path.join(ROOT, "solutions", "tumbling_crates.py")
@@ -215,7 +215,7 @@ def test_an_error_naming_a_module_the_child_had_warm_is_the_files_even_where_its
     path = [str(tmp_path / "venv")]
     assert users.unreadable_import(error, "nobody", path, warm=frozenset({"warmpkg"})) is None
     assert users.unreadable_import(error, "nobody", path).startswith("the checker cannot import 'warmpkg' as user")
-    from checker import zygote
+    from checker.isolation import zygote
     assert {"pygame", "numpy", "lesson11.physics2d", "checker.labs.tumbling_crates.probes"} <= zygote.warm_names()
 
 
@@ -359,7 +359,7 @@ def test_the_packages_pass_their_user_or_root_when_asked_and_never_fall_back_to_
     checker (nobody), where it used to fall back to running the student's code as root."""
     import importlib.util
     spec = importlib.util.spec_from_file_location(
-        "grade_submission_35", os.path.join(ROOT, "checker", "templates", "grade_submission.py"))
+        "grade_submission_35", os.path.join(ROOT, "checker", "platforms", "templates", "grade_submission.py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     monkeypatch.setenv("AUTOGRADER_USER", "")

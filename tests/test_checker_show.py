@@ -1,7 +1,7 @@
 """python -m checker FILE --show (issue 30), driven headless as a student would use it.
 
 The tests set SDL's dummy video and audio drivers themselves and script the keys through the viewer's
-event source (checker/show_view.py run(events=...)); a real desktop window differs only in that
+event source (checker/replay/show_view.py run(events=...)); a real desktop window differs only in that
 pygame.event.get() delivers the keys. For every lab one file of its mistake corpus (tests/corpus_<lab>.py)
 with one wrong step is shown: --show opens on that step's check, the student's replayed run is the
 graded record frame for frame, the ghost is the solution's run (a run of solutions/<lab>.py made here
@@ -20,10 +20,17 @@ os.environ["SDL_VIDEODRIVER"] = "dummy"
 os.environ["SDL_AUDIODRIVER"] = "dummy"
 import pygame  # noqa: E402
 
-from checker import cli, lab_checks, labs, pictures, show, show_cases, show_cases_labs, show_view  # noqa: E402
+from checker import cli, labs
+from checker.judging import lab_checks
+from checker.replay import pictures, show, show_cases, show_kit, show_series, show_view   # noqa: E402
+from checker.labs.ball_on_ramp import show as ball_on_ramp_show  # noqa: E402
+from checker.labs.bullets import show as bullets_show  # noqa: E402
+from checker.labs.more_shapes import show as more_shapes_show  # noqa: E402
+from checker.labs.sleeping_crates import show as sleeping_crates_show  # noqa: E402
+from checker.labs.tumbling_crates import show as tumbling_crates_show  # noqa: E402
 from lesson11 import records  # noqa: E402
 from checker.grade import Grader  # noqa: E402
-from checker.sandbox import Limits, run_child  # noqa: E402
+from checker.isolation.sandbox import Limits, run_child   # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
@@ -251,8 +258,8 @@ def test_centroid_case_draws_both_points(tmp_path):
 
 
 CASE_KIND = {"tumbling_crates": show_cases.ImpulseCase, "more_shapes": show_cases.PolygonCase,
-             "bullets": show_cases.SweptCase, "ball_on_ramp": show_cases.PolygonCase,
-             "sleeping_crates": show_cases_labs.TimerCase}
+             "bullets": bullets_show.SweptCase, "ball_on_ramp": show_cases.PolygonCase,
+             "sleeping_crates": sleeping_crates_show.TimerCase}
 
 
 def test_failing_cases_draw_both_answers(shown):
@@ -293,14 +300,14 @@ def test_every_behaviour_check_has_a_quantity_the_solution_keeps(lab_id):
     own run of that scene never passes it (so a failing frame found by the bound is never a false mark)."""
     lab = lab_of(lab_id)
     for check_id, scenes in lab.picture_scenes.items():
-        quantity = show.series_for(lab, check_id)
+        quantity = show_series.series_for(lab, check_id)
         assert quantity is not None, (lab_id, check_id)
         if quantity.bound is None:
             continue
         result = type("R", (), {"id": check_id, "message": ""})()
         for scene in scenes:
             frames = pictures.reference_record(lab, scene)["records"]
-            fail_frame, why, _, values = show.failure(lab, result, frames, frames, True)
+            fail_frame, why, _, values = show_series.failure(lab, result, frames, frames, True)
             assert fail_frame is None, (lab_id, check_id, scene, why, max(values))
 
 
@@ -326,7 +333,7 @@ def test_resolve_case_draws_both_impulses(tmp_path):
     row, replay, problem = show.prepare(str(path), lab_of("tumbling_crates"), seed=SEED)
     assert replay.check.id == "resolve_k" and replay.cases
     case = replay.cases[0]
-    assert isinstance(case, show_cases.ResolveCase) and case.case["case"] in replay.check.message
+    assert isinstance(case, tumbling_crates_show.ResolveCase) and case.case["case"] in replay.check.message
     assert f"j = {case.case['j']:.4g}" in case.lines()[1] and not math.isclose(case.case["j"], case.lesson_j())
     surface = pygame.Surface(show_view.SCENE)
     case.draw(surface)
@@ -396,20 +403,20 @@ def test_replay_title_fits_the_window(shown):
 
 # lab id, corpus entry with one wrong step, the check it fails, the kind of case --show draws for it
 STEP_CASES = [
-    ("more_shapes", "corners_in_degrees", "polygon_corners", show_cases_labs.CornersCase),
-    ("more_shapes", "axes_same_way_only", "parallel_axes", show_cases_labs.AxesCase),
-    ("bullets", "bounding_squared", "bounding_circle", show_cases_labs.BoundingCase),
-    ("bullets", "broad_without_bullet_radius", "broad_test", show_cases_labs.BroadCase),
-    ("bullets", "broad_test_missing", "broad_test", show_cases_labs.BroadCase),
-    ("ball_on_ramp", "closest_not_clamped", "closest_point", show_cases_labs.ClosestCase),
-    ("ball_on_ramp", "inside_not_flipped", "inside_case", show_cases_labs.CircleCase),
-    ("ball_on_ramp", "push_not_split", "push_out_split", show_cases_labs.SeparateCase),
+    ("more_shapes", "corners_in_degrees", "polygon_corners", more_shapes_show.CornersCase),
+    ("more_shapes", "axes_same_way_only", "parallel_axes", more_shapes_show.AxesCase),
+    ("bullets", "bounding_squared", "bounding_circle", bullets_show.BoundingCase),
+    ("bullets", "broad_without_bullet_radius", "broad_test", bullets_show.BroadCase),
+    ("bullets", "broad_test_missing", "broad_test", bullets_show.BroadCase),
+    ("ball_on_ramp", "closest_not_clamped", "closest_point", ball_on_ramp_show.ClosestCase),
+    ("ball_on_ramp", "inside_not_flipped", "inside_case", ball_on_ramp_show.CircleCase),
+    ("ball_on_ramp", "push_not_split", "push_out_split", ball_on_ramp_show.SeparateCase),
     ("ball_on_ramp", "inertia_ring", "ball_inertia", show_cases.PolygonCase),
-    ("ball_on_ramp", "contact_halfway", "contact_on_surface", show_cases_labs.ContactCase),
+    ("ball_on_ramp", "contact_halfway", "contact_on_surface", ball_on_ramp_show.ContactCase),
     ("ball_on_ramp", "friction_not_clamped", "friction_rolls", show_cases.ImpulseCase),
-    ("sleeping_crates", "timer_or", "timer_rule", show_cases_labs.TimerCase),
-    ("sleeping_crates", "moves_ignores_sleep", "skips_sleepers", show_cases_labs.MovesCase),
-    ("sleeping_crates", "wake_one_order", "wakes_on_contact", show_cases_labs.WakeCase),
+    ("sleeping_crates", "timer_or", "timer_rule", sleeping_crates_show.TimerCase),
+    ("sleeping_crates", "moves_ignores_sleep", "skips_sleepers", sleeping_crates_show.MovesCase),
+    ("sleeping_crates", "wake_one_order", "wakes_on_contact", sleeping_crates_show.WakeCase),
 ]
 
 
@@ -433,7 +440,7 @@ def test_a_wrong_step_opens_on_its_case_with_both_answers(tmp_path, lab_id, entr
         surface = pygame.Surface(show_view.SCENE)
         case.draw(surface)
         lines = case.lines()
-        drawing = show_cases._footer_top(len(lines))   # the text band starts here: look above it only
+        drawing = show_kit.footer_top(len(lines))   # the text band starts here: look above it only
         colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, drawing, 2)}
         assert show_cases.STUDENT in colours and show_cases.LESSON in colours, lines
         assert lines[1].startswith("yours") and lines[2].startswith("the lesson")
@@ -464,7 +471,7 @@ def test_a_drawn_time_of_impact_case_has_its_geometry(tmp_path):
         case.draw(surface)
         colours = {tuple(surface.get_at((x, y)))[:3] for x in range(0, 900) for y in range(0, 390, 2)}
         assert show_cases.STUDENT in colours and show_cases.LESSON in colours   # both circles at both times
-    other = show_cases._toi_geometry(drawn[0].case, SEED + 1)   # another seed draws other paths: not used
+    other = bullets_show._toi_geometry(drawn[0].case, SEED + 1)   # another seed draws other paths: not used
     assert other is None
 
 
@@ -473,7 +480,7 @@ def test_more_shapes_sat_on_the_students_axes_is_drawn_as_a_sat_case():
     pairs are drawn as SAT cases with the pair's shapes from the probe's own list, both answers on the picture.
     The probe data here are made by hand (no corpus file fails that way): the lesson's answer from the grader's
     reference_sat, the student's with the depth doubled."""
-    from checker import probe_kit
+    from checker.judging import probe_kit
     from checker.labs.more_shapes import probes
     name, a, b = probes.axis_pairs()[0]   # two aligned boxes, overlapping
     normal, depth = probe_kit.reference_sat(a, b)

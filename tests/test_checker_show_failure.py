@@ -1,7 +1,7 @@
 """What a student sees of a failed function check (issue 40): --pictures and --show show the failure.
 
   * The scene drawn for a failed function check is one where the student's run visibly differs from the
-    solution's (--pictures and --show choose it the same way, in the grader: checker/preview.py).
+    solution's (--pictures and --show choose it the same way, in the grader: checker/replay/preview.py).
   * The scene runs the student's failing step with the lesson's other steps (spliced as text in the parent,
     run in the isolated child) and says so: a student working in order (step 5 wrong, step 6 not written) sees
     step 5's symptom, not step 6's crates frozen on their corners.
@@ -25,7 +25,8 @@ os.environ["SDL_AUDIODRIVER"] = "dummy"
 import pygame  # noqa: E402
 from pygame import Vector2  # noqa: E402
 
-from checker import labs, pictures, preview, show, show_cases, show_view  # noqa: E402
+from checker import labs
+from checker.replay import pictures, preview, show, show_cases, show_kit, show_view   # noqa: E402
 from checker.grade import Grader  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -39,7 +40,7 @@ def lab_of(lab_id):
 
 def apart(frame, other):
     """(px, degrees): the largest distance and angle difference of moving bodies of the same index (computed
-    here, not with checker/preview.py)."""
+    here, not with checker/replay/preview.py)."""
     pairs = [(a, b) for a, b in zip(frame["bodies"], other["bodies"]) if not a["static"]]
     return (max([math.dist(a["pos"], b["pos"]) for a, b in pairs] + [0.0]),
             max([abs(math.degrees(a["angle"] - b["angle"])) for a, b in pairs] + [0.0]))
@@ -215,7 +216,7 @@ def arc_pixels(spin, largest, radius=40):
     pygame.font.init()
     surface = pygame.Surface((200, 200))
     surface.fill((0, 0, 0))
-    show_cases._spin_arc(surface, (255, 0, 255), Vector2(100, 100), radius, spin, largest)
+    show_kit.spin_arc(surface, (255, 0, 255), Vector2(100, 100), radius, spin, largest)
     return [(x, y) for x in range(200) for y in range(200) if surface.get_at((x, y))[:3] == (255, 0, 255)]
 
 
@@ -242,7 +243,7 @@ def test_friction_case_draws_the_slip_and_the_impulses_on_the_boxes(working_in_o
     surface = pygame.Surface(show_cases.SIZE)
     case.draw(surface)
     corners = [p for body in (a, b) for p in body.world_points()]
-    scale, offset = show_cases._fit([(p.x, p.y) for p in corners], (260, 150, 380, 200))
+    scale, offset = show_kit.fit([(p.x, p.y) for p in corners], (260, 150, 380, 200))
     contact = Vector2(point) * scale + offset
     bound = case.case["mu"] * case.case["j"]
     lesson_jt = max(-bound, min(bound, case.case["friction"]["stop"]))

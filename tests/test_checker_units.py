@@ -5,9 +5,9 @@ import os
 
 import pytest
 
-from checker import handout
-from checker.checks import FAIL, PASS, SKIP, Fail, Hint, Passed, Registry
-from checker.common import shown
+from checker.reading import handout
+from checker.judging.checks import FAIL, PASS, SKIP, Fail, Hint, Passed, Registry
+from checker.judging.common import shown
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = open(os.path.join(ROOT, "starters", "tumbling_crates_starter.py"), encoding="utf-8").read()
@@ -337,7 +337,7 @@ def test_each_lab_declares_what_its_scenes_cost_and_an_unknown_scene_costs_its_s
 
 
 def test_messages_never_show_a_negative_zero():
-    from checker import lab_checks
+    from checker.judging import lab_checks
     assert lab_checks.vec_text((1.0, -0.0001)) == "(1.00, 0.00)"     # was "(1.00, -0.00)"
     assert lab_checks.vec_text((-0.0, -2.5)) == "(0.00, -2.50)"
     assert lab_checks.number_text(-0.006) == "-0.01" and lab_checks.number_text(-0.004, 2) == "0.00"
@@ -345,8 +345,8 @@ def test_messages_never_show_a_negative_zero():
 
 def test_the_shared_checks_name_a_missing_function_with_the_labs_own_words():
     from types import SimpleNamespace
-    from checker import lab_checks
-    from checker.checks import ERROR
+    from checker.judging import lab_checks
+    from checker.judging.checks import ERROR
     registry = Registry()
     hints = {"crash": Hint(1, "run the file", "Run it."), "handout": None, "runtime": None}
     lab_checks.register_common(registry, hints, ("Wall", "main"), kind="names")

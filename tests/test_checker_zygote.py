@@ -1,4 +1,4 @@
-"""The zygote (checker/zygote.py) changes how children start, never what the checker reports.
+"""The zygote (checker/isolation/zygote.py) changes how children start, never what the checker reports.
 
 The same files are graded with CHECKER_ZYGOTE on and off and must get the same JSON (but for
 the seconds taken); limits (CPU time, output) still end runs the same way when the child was
@@ -15,9 +15,9 @@ import uuid
 
 import pytest
 
-from checker import sandbox
-from checker import users
-from checker.sandbox import Limits, run_child
+from checker.isolation import sandbox
+from checker.isolation import users
+from checker.isolation.sandbox import Limits, run_child
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FIXTURES = os.path.join(ROOT, "tests", "fixtures", "checker")

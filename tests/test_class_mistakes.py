@@ -17,10 +17,10 @@ import os
 import subprocess
 import sys
 
-from checker import report
-from checker.checks import FAIL, PASS, Mistake, Result
+from checker.reporting import report
+from checker.judging.checks import FAIL, PASS, Mistake, Result
 from checker.grade import LabReport
-from checker.html_report import html_text
+from checker.reporting.html_report import html_text
 
 import corpus_ball_on_ramp
 
@@ -91,7 +91,7 @@ def test_the_html_report_shows_the_mistakes_per_check():
 
 def grading_script():
     spec = importlib.util.spec_from_file_location("grade_submission",
-                                                  os.path.join(ROOT, "checker", "templates", "grade_submission.py"))
+                                                  os.path.join(ROOT, "checker", "platforms", "templates", "grade_submission.py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module

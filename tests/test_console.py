@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from checker import outputs
+from checker.reporting import outputs
 from lesson11.console import HANDLER, readable, safe_output
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

@@ -35,7 +35,7 @@ import tempfile
 import pytest
 
 import corpus_attacks as corpus
-from checker import handout
+from checker.reading import handout
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 NON_FUNCTION = ("loads", "handout_unchanged", "runtime_lines")
@@ -239,7 +239,8 @@ def test_without_the_step_rules_the_replay_still_fails_tables_and_forgery(tmp_pa
     """(Was tests/test_attack_corpus.py's.) In-process, the step rules turned off: the attacks that need no
     forbidden construct in a step (the tables) or that work on the child (the forgeries) still fail on the
     grader's own replay and drawn inputs. The real procedure has the rules on; this shows the replay holds alone."""
-    from checker import cli, step_rules
+    from checker import cli
+    from checker.reading import step_rules
     monkeypatch.setattr(step_rules, "scan_lab", lambda source, module, path=None: [])
     chosen = [e for e in corpus.ENTRIES if e.kind in ("table", "forge")]
     paths = corpus.write(tmp_path, chosen)

@@ -50,7 +50,7 @@ def test_on_gradescopes_procedure_the_judging_attacks_gain_nothing(tmp_path):
     import pytest
 
     import gradescope_procedure as gradescope
-    from checker import users
+    from checker.isolation import users
     if not users.is_root() or users.choose(None)[0] is None:
         pytest.skip("needs a grader running as root and a user nobody")
     chosen = list(corpus.ISSUE39_JUDGE)

@@ -208,7 +208,7 @@ def test_a_windows_checkout_keeps_lf_line_endings():
     leaves pictures alone. Read through `git check-attr`, as git itself applies it at checkout."""
     if not os.path.isdir(os.path.join(ROOT, ".git")) and not os.path.isfile(os.path.join(ROOT, ".git")):
         pytest.skip("not a git checkout")
-    files = ["starters/tumbling_crates_starter.py", "checker/templates/gradescope_setup.sh", "README.md",
+    files = ["starters/tumbling_crates_starter.py", "checker/platforms/templates/gradescope_setup.sh", "README.md",
              ".ci/run", "assets/bullets.png"]
     done = subprocess.run(["git", "check-attr", "text", "eol", "--", *files], cwd=ROOT, capture_output=True,
                           text=True, encoding="utf-8", timeout=60)
@@ -224,7 +224,7 @@ def test_a_windows_checkout_keeps_lf_line_endings():
 def test_the_packages_scripts_have_lf_endings_even_from_a_crlf_checkout(tmp_path, monkeypatch):
     """A checkout that has CRLF anyway (a zip unpacked on Windows, an editor's conversion): the shell scripts
     a package ships for Linux graders are still written with LF (bash reads a CR as part of each command)."""
-    from checker import package
+    from checker.platforms import package
     crlf = tmp_path / "templates"
     crlf.mkdir()
     for name in os.listdir(package.TEMPLATES):

@@ -19,9 +19,11 @@ import pytest
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 
-from checker import labs, probing, sandbox  # noqa: E402
-from checker.checks import Error, Fail  # noqa: E402
-from checker.sandbox import RunResult  # noqa: E402
+from checker import labs
+from checker.judging import probing
+from checker.isolation import sandbox   # noqa: E402
+from checker.judging.checks import Error, Fail   # noqa: E402
+from checker.isolation.sandbox import RunResult   # noqa: E402
 from test_probe_tape import ROOT, lab_by_id, recorded  # noqa: E402
 
 DONE = b'{"task": "probe", "phase": "run"}\n'

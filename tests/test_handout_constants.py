@@ -1,4 +1,4 @@
-"""The constants a probe reads are the handout's (issue 39 item 2), on both sides of the tape (checker/tape.py).
+"""The constants a probe reads are the handout's (issue 39 item 2), on both sides of the tape (checker/judging/tape.py).
 
 The child puts the handout's values back before each probe and notes a call that leaves one changed; the grader's
 replay serves the handout's value whatever the child read, and notes a reading that differs. End to end (a step
@@ -6,7 +6,7 @@ that sets PERCENT or BULLET_RADIUS) is tests/corpus_attacks_judge.py's.
 """
 import types
 
-from checker import tape
+from checker.judging import tape
 
 LAB = '''
 PERCENT = 0.4

@@ -17,7 +17,8 @@ import zipfile
 
 import pytest
 
-from checker import handout, labs, source
+from checker.reading import handout, source
+from checker import labs
 from checker.grade import Grader, checked_names
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

@@ -1,4 +1,4 @@
-"""The grader's own work on a file (the replay of its tapes, its checks) runs under a budget (checker/budget.py).
+"""The grader's own work on a file (the replay of its tapes, its checks) runs under a budget (checker/judging/budget.py).
 
 Issue 39 item 3: a Bullets step that set BULLET_RADIUS = 1e9 during the last CCD shot made the grader's
 replay take about 2e7 World steps per shot, with no limit: `python -m checker` never ended and wrote no
@@ -14,10 +14,11 @@ import time
 
 import pytest
 
-from checker import budget, cli, probing, tape
+from checker.judging import budget, probing, tape
+from checker import cli
 from checker.grade import Grader
 from checker.labs import Lab
-from checker.sandbox import Limits
+from checker.isolation.sandbox import Limits
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STEP_5 = ("    bullet.pos += bullet.vel * t\n"

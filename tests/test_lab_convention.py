@@ -13,6 +13,7 @@ from checker import labs
 
 ROOT = labs.PROJECT_ROOT
 LAB_FILES = ("__init__.py", "checks.py", "probes.py", "scenes.py")
+OPTIONAL_FILES = ("show.py",)   # what --show and --pictures draw for its checks (Lab.replay)
 
 
 def test_every_folder_holding_checks_is_a_registered_lab_in_the_lessons_order():
@@ -36,13 +37,15 @@ def test_a_lab_folder_not_in_the_lessons_order_is_found_after_the_others(tmp_pat
 def test_every_lab_has_the_same_files_found_from_its_id():
     for lab in labs.LABS:
         folder = os.path.join(labs.HERE, lab.id)
-        assert sorted(name for name in os.listdir(folder) if name.endswith(".py")) == sorted(LAB_FILES), lab.id
+        present = {name for name in os.listdir(folder) if name.endswith(".py")}
+        assert set(LAB_FILES) <= present <= set(LAB_FILES + OPTIONAL_FILES), lab.id
         assert lab.starter == os.path.join(ROOT, "starters", f"{lab.id}_starter.py") and os.path.isfile(lab.starter)
         assert lab.solution == os.path.join(ROOT, "solutions", f"{lab.id}.py") and os.path.isfile(lab.solution)
         assert lab.probes == f"checker.labs.{lab.id}.probes"
         assert lab.module.__name__ == f"checker.labs.{lab.id}.checks"
         assert lab.scenes.__name__ == f"checker.labs.{lab.id}.scenes" and lab.scenarios()
         assert set(lab.scenarios()) == set(lab.scenes.SCENARIOS), lab.id
+        assert lab.replay is None if "show.py" not in present else lab.replay.__name__ == f"checker.labs.{lab.id}.show"
 
 
 def test_no_lab_spells_a_path_of_its_own():

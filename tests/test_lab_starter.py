@@ -2,7 +2,7 @@
 
 Step regions are the lines between `# --- step N: ... ---` and
 `# --- end of step N ---`. The solution is the lab's one source: each region
-opens with its prompt block, and `python -m checker assign` (checker/assign.py)
+opens with its prompt block, and `python -m checker assign` (checker/authoring/assign.py)
 writes the starter from it; the committed starter must be byte for byte what
 it writes. Outside the regions the two files are then identical line by line
 (module docstring included); inside, the solution has code and the starter
@@ -15,7 +15,8 @@ import re
 
 import pytest
 
-from checker import assign, source
+from checker.authoring import assign
+from checker.reading import source
 from lab_run import HEIGHT, ROOT, SOLUTION, STARTER, clicks, run_lab
 
 START = re.compile(r"^\s*# --- step (\d): .+ ---$")

@@ -13,8 +13,8 @@ import os
 import pytest
 
 import corpus_verdicts as verdicts
-from checker.causes import SHARED
-from checker.lab_checks import RUNTIME_HINT
+from checker.judging.causes import SHARED
+from checker.judging.lab_checks import RUNTIME_HINT
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LABS = sorted(name for name in os.listdir(os.path.join(ROOT, "checker", "labs"))

@@ -37,35 +37,37 @@ POPEN_POSIX_ARGS = {"preexec_fn", "pass_fds", "user", "group", "extra_groups", "
 SOCKET_METHODS = {"send_fds", "recv_fds", "sendmsg", "recvmsg"}  # methods of a socket object: no Windows
 
 # The places that are the POSIX path: {file: {function (qualified, or "<module>"): {names used}}}.
-# checker/sandbox.py, zygote.py and child.py are the checker's POSIX child (issue 32: a portable path beside it
+# checker/isolation/sandbox.py, zygote.py and child.py are the checker's POSIX child (issue 32: a portable path beside it
 # is branch i32-portable's); the lead refines these three entries after that branch is merged.
 ALLOWED = {
-    "checker/sandbox.py": {
-        "<module>": {"import selectors"},
+    "checker/isolation/confine.py": {
         # the portable path calls it too: `import resource` failing (Windows) and a refused limit (macOS) are notes
         "set_rlimits": {"import resource", "resource.setrlimit"},
-        "_limit_child.apply": {"os.setsid"},
+        "limit_child.apply": {"os.setsid"},
+        "leave_root": {"import resource", "resource.setrlimit", "resource.RLIMIT_NPROC"},   # a child user only
+    },
+    "checker/isolation/sandbox.py": {
+        "<module>": {"import selectors"},
         "_start": {"Popen(pass_fds=)", "Popen(preexec_fn=)"},
         "ZygoteClient.__init__": {"Popen(pass_fds=)", "socket.AF_UNIX", "socket.SOCK_SEQPACKET"},
         "ZygoteClient.spawn": {"socket.AF_UNIX", "socket.SOCK_SEQPACKET", "socket.send_fds"},
         "_kill_group": {"os.killpg", "signal.SIGKILL"},   # the portable path calls it only where both exist
         "_run_in": {"import pwd", "os.chown", "pwd.getpwnam"},   # with a child user only (a root grader)
-        "_leave_root": {"import resource", "resource.setrlimit", "resource.RLIMIT_NPROC"},   # a child user only
         "_run_posix": {"selectors.DefaultSelector", "selectors.EVENT_READ"},
     },
-    "checker/zygote.py": {
+    "checker/isolation/zygote.py": {
         "<module>": {"import selectors"},
         "_child": {"os.sysconf", "signal.SIGCHLD"},
         "serve": {"os.fork", "os.killpg", "os.set_blocking", "selectors.DefaultSelector", "selectors.EVENT_READ",
                   "signal.SIGCHLD", "signal.SIGKILL", "socket.recv_fds"},
         "_reap": {"os.WNOHANG"},
     },
-    "checker/child.py": {
+    "checker/isolation/child.py": {
         "call_limited": {"signal.ITIMER_PROF", "signal.SIGPROF", "signal.setitimer"},   # the Watchdog otherwise
         "main": {"signal.SIGXCPU"},   # the POSIX path only (the portable child has its Watchdog)
     },
     # the child's user: consulted only by a root grader (is_root() is hasattr-guarded and False on Windows)
-    "checker/users.py": {
+    "checker/isolation/users.py": {
         "is_root": {"os.geteuid"},
         "choose": {"import pwd", "pwd.getpwnam"},
         "_entry": {"import pwd", "pwd.getpwnam"},
@@ -81,10 +83,10 @@ ALLOWED = {
         "python_problem": {"Popen(preexec_fn=)"},
     },
     # shipped into the graders' Linux containers only (Gradescope, GitHub Classroom, PrairieLearn)
-    "checker/templates/grade_submission.py": {"<module>": {"import pwd"}, "run_as": {"os.geteuid", "pwd.getpwnam"}},
+    "checker/platforms/templates/grade_submission.py": {"<module>": {"import pwd"}, "run_as": {"os.geteuid", "pwd.getpwnam"}},
     # the no-follow writer: used only where os.supports_dir_fd has what it needs (_can_use_dir_fd), and the
     # owner test only where os.geteuid exists; Windows writes by path with the same checks
-    "checker/outputs.py": {"_own": {"os.geteuid"}, "write_below": {"os.O_NOFOLLOW"}},
+    "checker/reporting/outputs.py": {"_own": {"os.geteuid"}, "write_below": {"os.O_NOFOLLOW"}},
 }
 
 

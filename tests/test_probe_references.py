@@ -1,10 +1,10 @@
 """The probes compute no reference where the student's code runs, and judge from the inputs as given (issue 35).
 
-Each lab's solution is probed in this process as checker/child.py does it (a
+Each lab's solution is probed in this process as checker/isolation/child.py does it (a
 tape.Recorder, tests/test_probe_tape.py `recorded`) and the tape is replayed by
 checker/probing.judge as the grading parent does. The real child is a sandboxed
 process; what matters here is which code runs on which side of the tape.
-  - mechanism 4: no reference helper (`@reference`, checker/probe_kit.py) runs in the child;
+  - mechanism 4: no reference helper (`@reference`, checker/judging/probe_kit.py) runs in the child;
     all of them run in the grader, so the verdicts still have their answers;
   - mechanism 5: a tape event may only call a hook the probe itself installed;
   - mechanism 3: a step function that changes a body's mass, inertia, material or shape fails
@@ -23,8 +23,9 @@ import pytest
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 
-from checker import labs, probe_kit, probing, tape  # noqa: E402
-from checker.checks import FAIL, PASS  # noqa: E402
+from checker import labs
+from checker.judging import probe_kit, probing, tape   # noqa: E402
+from checker.judging.checks import FAIL, PASS   # noqa: E402
 from test_probe_tape import ROOT, function_results, lab_by_id, recorded  # noqa: E402
 
 LAB_IDS = [lab.id for lab in labs.LABS]
@@ -54,7 +55,7 @@ def test_every_reference_helper_is_marked(lab_id):
     probes = importlib.import_module(lab_by_id(lab_id).probes)
     named = [name for name, value in vars(probes).items()
              if inspect.isfunction(value) and REFERENCE_NAME.match(name) and value.__module__ in (
-                 probes.__name__, "checker.probe_kit", "checker.tape")]
+                 probes.__name__, "checker.judging.probe_kit", "checker.judging.tape")]
     unmarked = [name for name in named if not getattr(getattr(probes, name), "__reference__", False)]
     assert named and not unmarked, f"{lab_id}: reference helpers not marked @reference: {unmarked}"
 
@@ -220,7 +221,7 @@ def test_sat_normal_fails_when_no_pair_is_a_hit():
 
 
 def test_an_empty_probe_is_an_error_not_a_pass():
-    from checker import lab_checks
+    from checker.judging import lab_checks
     from types import SimpleNamespace
     sub = SimpleNamespace(flags=(), function_steps={}, name="lab.py")
     with pytest.raises(lab_checks.Error, match="nothing was graded"):

@@ -1,6 +1,6 @@
-"""The probe's tape (checker/tape.py): the parent's replay judges, and the inputs drawn per run are fair.
+"""The probe's tape (checker/judging/tape.py): the parent's replay judges, and the inputs drawn per run are fair.
 
-Each lab's solution is probed in this process the way checker/child.py does it
+Each lab's solution is probed in this process the way checker/isolation/child.py does it
 (a tape.Recorder over the loaded file), the tape goes through JSON, and
 checker/probing.judge replays it with the starter as the module, as the
 grading parent does. Then:
@@ -22,10 +22,12 @@ import pytest
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
 
-from checker import child, labs, probing  # noqa: E402
-from checker.checks import PASS  # noqa: E402
+from checker.isolation import child
+from checker import labs
+from checker.judging import probing   # noqa: E402
+from checker.judging.checks import PASS   # noqa: E402
 from checker.grade import Submission  # noqa: E402
-from checker.sandbox import RunResult  # noqa: E402
+from checker.isolation.sandbox import RunResult   # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SEEDS = range(40)

@@ -21,7 +21,7 @@ import tempfile
 
 import pytest
 
-from checker import users
+from checker.isolation import users
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PROJECT = ("checker", "lesson11", "solutions", "starters", "tests", "pyproject.toml", "README.md")

@@ -147,7 +147,7 @@ def test_every_error_account_from_the_child_is_checked_before_use(forged):
     """common.checked_result: a result line's error, and each probe tape's, whatever the child wrote, becomes an
     account the describers read without an exception; only the grader writes kinds "report" and "value"."""
     from types import SimpleNamespace
-    from checker.common import CHILD_KINDS, checked_result, describe_function_error, describe_run_failure
+    from checker.judging.common import CHILD_KINDS, checked_result, describe_function_error, describe_run_failure
     result = checked_result({"phase": "run", "error": forged, "probe": {"tapes": {"p": {"tape": [], "error": forged}}}})
     errors = [result["error"]] + [e for e in [result["probe"]["tapes"]["p"]["error"]] if e is not None]
     assert len(errors) == (1 if forged is None else 2)   # no error on a tape stays no error

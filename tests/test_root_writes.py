@@ -10,7 +10,7 @@ only root may read or write, outside every work folder (in pytest's root-only tm
   student's user is `nobody` (this machine has no `student`), and TMPDIR is a private world-enterable folder,
   so the payload reaches no other test's folders. The planted links would point at VICTIM; the file must
   score what the same file without the payload scores, and VICTIM must be untouched.
-- test_write_pictures_follows_no_link: the writing itself (checker/outputs.py), with the links already
+- test_write_pictures_follows_no_link: the writing itself (checker/reporting/outputs.py), with the links already
   planted (a link as the picture, a link as the submission's folder, a folder of another user): none is
   followed, the other rows' pictures are written.
 """
@@ -25,8 +25,9 @@ import zipfile
 
 import pytest
 
-from checker import outputs, pictures, report
-from checker.report import NotGraded
+from checker.reporting import outputs, report
+from checker.replay import pictures
+from checker.reporting.report import NotGraded
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 AS_ROOT = hasattr(os, "geteuid") and os.geteuid() == 0

@@ -15,7 +15,7 @@ import sys
 
 import pytest
 
-from checker import users
+from checker.isolation import users
 from test_run_isolation import SOLUTION, STARTER, with_attack
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

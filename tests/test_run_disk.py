@@ -1,4 +1,4 @@
-"""A run's disk quota (checker/disk.py, issue 39): out/ is a tmpfs of --disk MB where root may mount, else the
+"""A run's disk quota (checker/isolation/disk.py, issue 39): out/ is a tmpfs of --disk MB where root may mount, else the
 parent watches it and stops the run past its quota.
 
 The modes: "mounted" (root on Linux, this machine), "watched" (the mount refused, as in a container without
@@ -16,8 +16,8 @@ import sys
 
 import pytest
 
-from checker import disk, users
-from checker.sandbox import Limits, run_child
+from checker.isolation import disk, users
+from checker.isolation.sandbox import Limits, run_child
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SETTINGS = {"probes": "checker.labs.tumbling_crates.probes"}
@@ -113,7 +113,7 @@ def test_the_disk_option_refuses_a_bad_value_in_one_line(value, said):
 
 def test_the_row_of_a_run_over_its_quota_names_the_quota():
     from types import SimpleNamespace
-    from checker.common import describe_run_failure
+    from checker.judging.common import describe_run_failure
     run = SimpleNamespace(status="disk", result={}, disk_mb=64, returncode=-9, stderr="", stdout="")
     said = describe_run_failure(run, "lab.py", "The file")
     assert said == "The file wrote more than 64 MB (or 1000 files) into its working folder and was stopped."

@@ -28,7 +28,7 @@ import sys
 import pytest
 
 import gradescope_procedure as gradescope
-from checker import users
+from checker.isolation import users
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "tumbling_crates_starter.py")

@@ -1,4 +1,4 @@
-"""One reading of a lab file, the compiler's (checker/source.py), and what it closes (issue 35, items 1 and 4).
+"""One reading of a lab file, the compiler's (checker/reading/source.py), and what it closes (issue 35, items 1 and 4).
 
   - lines(): the lines Python counts (\\n, \\r\\n, \\r), checked against the compiler's own line numbers on
     text full of the characters str.splitlines() also breaks at (\\x0b \\x0c \\x1c-\\x1e \\x85 U+2028 U+2029);
@@ -17,7 +17,9 @@ import sys
 
 import pytest
 
-from checker import handout, probing, source, step_rules, users
+from checker.reading import handout, source, step_rules
+from checker.judging import probing
+from checker.isolation import users
 from checker.labs import LABS
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -120,8 +122,8 @@ def test_a_file_that_does_not_parse_passes_the_guard():
 
 
 def test_the_child_compiles_the_text_the_grader_read(tmp_path, monkeypatch):
-    """checker/child.py load_lab: a BOM and \r line ends read as the grader reads them; another coding never runs."""
-    from checker import child
+    """checker/isolation/child.py load_lab: a BOM and \r line ends read as the grader reads them; another coding never runs."""
+    from checker.isolation import child
     monkeypatch.setitem(sys.modules, child.MODULE_NAME, None)   # load_lab's module is gone after the test
     path, copy = tmp_path / "lab.py", tmp_path / "copy.py"    # the child reads the copy in its work folder
     copy.write_bytes(b"\xef\xbb\xbfa = 1\rb = '\x0c'\r\nc = 3  # \xe2\x80\xa8 \x1c\n")

@@ -1,4 +1,4 @@
-"""The step rules (checker/step_rules.py): they flag reaching around the exercise, never a way of writing it.
+"""The step rules (checker/reading/step_rules.py): they flag reaching around the exercise, never a way of writing it.
 
   - every corpus entry of every lab (correct completions in many styles and honest mistakes),
     every solution and every starter: no flag at all (a false flag fails a step that is right);
@@ -14,7 +14,8 @@ import sys
 
 import pytest
 
-from checker import handout, labs, step_rules
+from checker.reading import handout, step_rules
+from checker import labs
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -270,7 +271,7 @@ def test_a_flagged_step_fails_its_check_through_the_command_line(tmp_path):
     ("from lesson11.physics2d import sat as _ref\nsat = _ref\n", {2, 3, 4, 5, 6}),
     ("globals()['sat'] = None\n", {2, 3, 4, 5, 6}),
     ("import sys\nsys.modules[__name__].resolve = None\n", {2, 3, 4, 5, 6}),
-    ("import checker.tape\n", {2, 3, 4, 5, 6}),                      # to rewrite what the child records
+    ("import checker.judging.tape\n", {2, 3, 4, 5, 6}),                      # to rewrite what the child records
     ("import json\njson.dumps = str\n", {2, 3, 4, 5, 6}),            # to forge the child's report
     ("from lesson11.physics2d import sat as library_sat\n", {2, 3, 4, 5, 6}),
 ])

@@ -21,7 +21,7 @@ import corpus_verdicts as verdicts
 from corpus_files import CorpusFiles
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-V = "pygame.Vector2"   # the one module attribute a step may use (checker/step_rules.py)
+V = "pygame.Vector2"   # the one module attribute a step may use (checker/reading/step_rules.py)
 
 # wrong kinds by the kind the function returns
 NUMBER = [f"{V}(1, 0)", "'1.5'", "[1.5]", "float('nan')", "True", "10 ** 400", "{'x': 1.0}", "10 ** 5000", "-float('inf')"]
@@ -185,7 +185,7 @@ def test_a_wrong_kind_is_the_files_failure_never_the_checkers(graded):
 # ---------------------------------------------------------------- the helpers, on the values above
 
 def test_real_reads_numbers_only():
-    from checker.common import real
+    from checker.judging.common import real
     assert real(3) == 3.0 and real(-0.5) == -0.5 and real(float("inf")) == float("inf")
     for value in ("1.5", True, [1.5], None, {"x": 1.0}):
         with pytest.raises(TypeError):
@@ -196,7 +196,7 @@ def test_real_reads_numbers_only():
 
 def test_a_body_left_with_a_non_finite_or_non_number_motion_is_named():
     from pygame import Vector2
-    from checker.tape import motion_problem
+    from checker.judging.tape import motion_problem
 
     def body(**fields):
         return SimpleNamespace(**{"pos": Vector2(1, 2), "vel": Vector2(), "angle": 0.5, "omega": 0, **fields})
@@ -209,8 +209,8 @@ def test_a_body_left_with_a_non_finite_or_non_number_motion_is_named():
 
 
 def test_an_int_beyond_json_crosses_the_tape_as_a_named_stand_in():
-    from checker.common import value_text
-    from checker.tape import decode, encode
+    from checker.judging.common import value_text
+    from checker.judging.tape import decode, encode
     assert encode(2 ** 1000, None) == 2 ** 1000
     back = decode(encode(10 ** 5000, None), None)
     assert value_text(back) == "<an int of 16610 bits: too large for a float>"

@@ -8,19 +8,25 @@ A lab is its id and the files named from it (Lab below finds each one; no lab sp
                                scenes first);
   checker/labs/<id>/probes.py  the inputs and references of its probes (REQUIRED, PROBES {name: (function,
                                probe)}, SPLICES): they run in the child to record a tape and again in the
-                               grader to judge it (checker/tape.py, checker/probing.py);
+                               grader to judge it (checker/judging/tape.py, checker/judging/probing.py);
   checker/labs/<id>/scenes.py  its scenes: SCENARIOS {name: settings builder}, and what they measure;
+  checker/labs/<id>/show.py    optional, what --show and --pictures draw for its checks: SERIES {check id:
+                               checker.replay.show_series.Quantity} (a behaviour check's quantity per frame) and
+                               CASES {check id: cases(functions, seed) -> [case]} (a failed function check's
+                               failing cases, drawn with checker/replay/show_kit.py); a check it does not name gets
+                               no plot and no case drawing;
   starters/<id>_starter.py     the handout: its functions holding a step region are the student's, and the
                                grader replays the probes' calls of them through its code;
   solutions/<id>.py            the reference solution (probes splice its steps in; --pictures draws its runs).
 To add a lab, add those files: every folder here holding a checks.py is a lab. Helpers several labs share are
-in checker/probe_kit.py and checker/lab_checks.py.
+in checker/judging/probe_kit.py and checker/judging/lab_checks.py.
 """
 import importlib
+import importlib.util
 import os
 from dataclasses import dataclass
 
-from ..sandbox import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
+from checker.project import PROJECT_ROOT   # the folder holding checker/, starters/ and solutions/
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STARTERS, SOLUTIONS = "starters", "solutions"   # the project's folders of the handouts and of the solutions
@@ -47,6 +53,12 @@ class Lab:
     def scenes(self):
         """The module holding the lab's scenes (checker/labs/<id>/scenes.py)."""
         return self._module("scenes")
+
+    @property
+    def replay(self):
+        """The module saying what --show draws for the lab's checks (checker/labs/<id>/show.py), or None."""
+        name = f"{__name__}.{self.id}.show"
+        return importlib.import_module(name) if importlib.util.find_spec(name) is not None else None
 
     @property
     def probes(self):

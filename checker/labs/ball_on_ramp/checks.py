@@ -13,7 +13,7 @@ formulas on the configurations of checker/labs/ball_on_ramp/probes.py and name t
 configuration that differs (and the mistake, when it is a known one). The
 scenes (checker/labs/ball_on_ramp/scenes.py) run only when every function check passes,
 so a mistake is reported once, under its own step. handout_unchanged and
-runtime_lines are the bodies every lab shares (checker/common.py).
+runtime_lines are the bodies every lab shares (checker/judging/common.py).
 
 Every bound of the criteria comes from the issue (rolling within 2 % and 3 %,
 sliding within 1 %, sinking at most 1 px) or was set from what
@@ -22,14 +22,14 @@ solutions/ball_on_ramp.py measures in the same scene, noted beside it.
 import math
 
 from . import scenes
-from ... import lab_checks
-from ...causes import arguments_hint, consistent_mistake, fitting_mistakes, mistake
-from ...checks import Fail, Hint, Passed, Registry
-from ...common import shown
+from checker.judging import lab_checks
+from checker.judging.causes import arguments_hint, consistent_mistake, fitting_mistakes, mistake
+from checker.judging.checks import Fail, Hint, Passed, Registry
+from checker.judging.common import shown
 from lesson11.records import finite
 
 TITLE = "Ball on the Ramp"
-# the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
+# the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
 STEP_LIBRARY = {2: ("closest_on_segment",), 3: ("circle_polygon",), 4: ("separate", "lesson_separate"),
                 5: ("inertia", "inv_inertia", "Circle", "Body"), 6: ("circle_contact_point", "circle_point"),
                 7: ("resolve", "lesson_resolve")}
@@ -103,7 +103,7 @@ HINTS = {
                   "Run the file yourself (python ball_on_ramp.py) and fix the error at the line shown."),
 }
 
-# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+# The scenes each behaviour check reads, by check id (checker/replay/pictures.py draws them when one fails).
 PICTURE_SCENES = {"runs": ("ramp", "knock", "inside"), "rolls_without_slipping": ("ramp",),
                   "slides_without_friction": ("ramp",), "knocks_crate_over": ("knock",), "pushed_out_of_crate": ("inside",)}
 

@@ -4,7 +4,7 @@ Each probe calls one of the student's functions on configurations chosen so
 that together they exercise every term of the lesson's formula, and returns
 plain data: the student's answer beside the lesson's on the same inputs
 (checker/labs/ball_on_ramp/checks.py compares them and names the first that differs).
-The lesson's answers are added in the grader only (`judging`, checker/probe_kit.py),
+The lesson's answers are added in the grader only (`judging`, checker/judging/probe_kit.py),
 from the inputs as they were before the student's function got them.
 
     closest_on_segment  (step 2) points beside an edge, beyond either end, slanted and reversed edges
@@ -29,9 +29,9 @@ from pygame import Vector2
 from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
-from ...common import real, value_text
-from ...probe_kit import box, changed_vectors, judging, ngon, reference, twin, with_reference_steps
-from ...tape import run_rng
+from checker.judging.common import real, value_text
+from checker.judging.probe_kit import box, changed_vectors, judging, ngon, reference, twin, with_reference_steps
+from checker.judging.tape import run_rng
 
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
 RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0

@@ -24,13 +24,13 @@ solutions/bullets.py measures is noted beside each.
 import math
 
 from . import scenes
-from ... import lab_checks
-from ...causes import consistent_mistake, mistake
-from ...checks import Fail, Hint, Passed, Registry
+from checker.judging import lab_checks
+from checker.judging.causes import consistent_mistake, mistake
+from checker.judging.checks import Fail, Hint, Passed, Registry
 from lesson11.records import finite
 
 TITLE = "Bullets"
-# the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
+# the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
 STEP_LIBRARY = {2: ("circle_toi",), 3: ("bounding_radius",), 4: ("time_of_impact", "circle_toi"),
                 5: ("swept_move", "time_of_impact")}
 STEP_ADVICE = {2: "solve the quadratic for the earlier root yourself",
@@ -80,7 +80,7 @@ HINTS = {
     "crash": Hint(1, "run the file", "Run the file yourself (python bullets.py) and fix the error at the line shown."),
 }
 
-# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+# The scenes each behaviour check reads, by check id (checker/replay/pictures.py draws them when one fails).
 PICTURE_SCENES = {"runs": ("scene",)}   # the criteria step the lab's BulletWorld in the probe: no scene to show
 
 CHECKS = Registry()

@@ -3,7 +3,7 @@
 Each probe calls the student's functions and returns plain data: the
 student's answer beside the analytic one (checker/labs/bullets/checks.py compares them
 and names the first case that differs). The analytic answers are added in the grader
-only (`judging`, checker/probe_kit.py); the lesson's functions that stand in for the
+only (`judging`, checker/judging/probe_kit.py); the lesson's functions that stand in for the
 student's other steps (lesson_circle_toi, ...) run in the child too, as the student's code calls them.
 
     circle_toi      (step 2) head-on, glancing, both moving, already touching, moving apart,
@@ -28,9 +28,9 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
-from ...common import real, value_text
-from ...probe_kit import box, judging, ngon, reference, twin
-from ...tape import clock, run_rng
+from checker.judging.common import real, value_text
+from checker.judging.probe_kit import box, judging, ngon, reference, twin
+from checker.judging.tape import clock, run_rng
 
 REQUIRED = ("circle_toi", "bounding_radius", "time_of_impact", "swept_move", "apply_mode", "make_wall", "make_bullet",
             "BulletWorld", "main")

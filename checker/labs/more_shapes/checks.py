@@ -20,15 +20,15 @@ measures in the same scene, with the measured value noted next to it.
 """
 import math
 
-from ... import lab_checks
-from ...causes import consistent_mistake, mistake
+from checker.judging import lab_checks
+from checker.judging.causes import consistent_mistake, mistake
 from lesson11 import records as metrics
 from . import scenes
-from ...checks import Fail, Hint, Passed, Registry
-from ...common import shown
+from checker.judging.checks import Fail, Hint, Passed, Registry
+from checker.judging.common import shown
 
 TITLE = "More Shapes"
-# the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
+# the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
 STEP_LIBRARY = {2: ("regular_polygon",),
                 3: ("polygon_centroid", "polygon_area", "convex_polygon", "Polygon", "Body", "from_world_points"),
                 4: ("polygon_inertia", "inertia", "inv_inertia", "Polygon", "Body", "from_world_points"),
@@ -87,7 +87,7 @@ HINTS = {
                   "Run the file yourself (python more_shapes.py) and fix the error at the line shown."),
 }
 
-# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+# The scenes each behaviour check reads, by check id (checker/replay/pictures.py draws them when one fails).
 PICTURE_SCENES = {"runs": ("solo", "pile"), "triangle_tips": ("solo",), "hexagon_tips": ("solo",), "pile_stable": ("pile",),
                   "ramp_holds": ("solo",)}
 

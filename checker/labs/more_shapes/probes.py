@@ -5,7 +5,7 @@ show the mistakes a student makes, and returns plain data: what the student's
 function gave, what the lesson's formula gives on the same inputs, and (where
 it helps name a mistake) what the usual wrong formulas give. The checks in
 checker/labs/more_shapes/checks.py compare them in the grading process. The lesson's
-answers are added in the grader only (`judging`, checker/probe_kit.py).
+answers are added in the grader only (`judging`, checker/judging/probe_kit.py).
 
     regular_polygon    (step 2) 3 to 12 sides, radii from 5 to 40 px
     polygon_centroid   (step 3) right triangles, a house, a trapezoid, irregular hexagons far from
@@ -26,14 +26,14 @@ from pygame import Vector2
 from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, polygon_area
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
-from ... import probe_kit
-from ...common import real, value_text
-from ...probe_kit import judging, reference
+from checker.judging import probe_kit
+from checker.judging.common import real, value_text
+from checker.judging.probe_kit import judging, reference
 
 reference_centroid = reference(polygon_centroid)
 reference_inertia = reference(polygon_inertia)
 reference_regular_polygon = reference(regular_polygon)
-from ...tape import run_rng
+from checker.judging.tape import run_rng
 
 REQUIRED = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes", "sat", "build", "main")
 PARALLEL = 1e-6   # |sin| below which two axes are parallel (the handout's PARALLEL)

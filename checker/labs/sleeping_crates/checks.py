@@ -18,15 +18,15 @@ Every bound of the criteria was set from what solutions/sleeping_crates.py
 measures in the same scene, with the measured value noted next to it.
 """
 
-from ... import lab_checks
-from ...causes import consistent_mistake, mistake
+from checker.judging import lab_checks
+from checker.judging.causes import consistent_mistake, mistake
 from lesson11 import records as metrics
 from . import scenes
-from ...checks import Fail, Hint, Passed, Registry
-from ...common import shown
+from checker.judging.checks import Fail, Hint, Passed, Registry
+from checker.judging.common import shown
 
 TITLE = "Sleeping Crates"
-# the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
+# the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
 STEP_LIBRARY = {2: ("sleep_timer", "sleep_timer_of_world", "update_sleep"), 3: ("moves", "moves_of_world"),
                 4: ("wake_on_contact", "wake_of_world", "wake", "wake_pair")}
 STEP_ADVICE = {2: "add dt while calm, else start from 0, yourself",
@@ -67,7 +67,7 @@ HINTS = {
                   "Run the file yourself (python sleeping_crates.py) and fix the error at the line shown."),
 }
 
-# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+# The scenes each behaviour check reads, by check id (checker/replay/pictures.py draws them when one fails).
 PICTURE_SCENES = {"runs": ("sleep",), "pile_sleeps": ("sleep",), "no_sleep_in_air": ("sleep",), "drop_wakes_pile": ("sleep",)}
 
 CHECKS = Registry()

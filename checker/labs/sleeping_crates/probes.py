@@ -2,7 +2,7 @@
 
 Each probe calls one of the student's functions on cases chosen to show the
 usual mistakes and returns plain data: what the student's function gave and
-what the lesson's rule gives (added in the grader only: `judging`, checker/probe_kit.py).
+what the lesson's rule gives (added in the grader only: `judging`, checker/judging/probe_kit.py).
 The checks in checker/labs/sleeping_crates/checks.py compare them in the grading process.
 
     sleep_timer      (step 2) calm and not calm crates: fast, spinning either way, both
@@ -17,9 +17,9 @@ Units: px, s, rad.
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
 
-from ...common import real, value_text
-from ...probe_kit import judging, reference
-from ...tape import clock, run_rng
+from checker.judging.common import real, value_text
+from checker.judging.probe_kit import judging, reference
+from checker.judging.tape import clock, run_rng
 
 REQUIRED = ("sleep_timer", "moves", "wake_on_contact", "build", "main")
 SLEEP_SPEED = 5.0   # px/s, the handout's thresholds

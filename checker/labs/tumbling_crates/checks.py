@@ -24,17 +24,17 @@ import re
 
 from . import probes
 from . import scenes
-from ... import lab_checks
-from ...causes import SHARED, arguments_hint, consistent_mistake, fitting_mistakes, mistake
+from checker.judging import lab_checks
+from checker.judging.causes import SHARED, arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from lesson11 import records as metrics
 from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TURN, PAIR_OVERLAP, PENETRATION,
                                    PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
                                    TIPPED_FLAT)
-from ...checks import Fail, Hint, Passed, Registry
-from ...common import shown
+from checker.judging.checks import Fail, Hint, Passed, Registry
+from checker.judging.common import shown
 
 TITLE = "Tumbling Crates"
-# the library functions each step asks the student to write: a step that calls one fails (checker/step_rules.py)
+# the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
 STEP_LIBRARY = {2: ("sat",), 3: ("sat",), 4: ("resolve", "lesson_resolve", "effective_mass_inverse"),
                 5: ("resolve", "lesson_resolve"), 6: ("apply_impulse",)}
 STEP_ADVICE = {2: "write the loop over both shapes' edge normals yourself (project, overlap, keep the smallest)",
@@ -101,7 +101,7 @@ HINTS = {
                   "Run the file yourself (python tumbling_crates.py) and fix the error at the line shown."),
 }
 
-# The scenes each behaviour check reads, by check id (checker/pictures.py draws them when one fails).
+# The scenes each behaviour check reads, by check id (checker/replay/pictures.py draws them when one fails).
 PICTURE_SCENES = {"runs": ("corner", "ramp", "pile", "own_scene"), "corner_tips": ("corner",), "ramp_holds": ("ramp",),
                   "pile_stable": ("pile",), "fast_movers_zero": ("own_scene",)}
 

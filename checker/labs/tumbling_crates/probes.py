@@ -5,7 +5,7 @@ chosen so that together they exercise every term of the lesson's formulas,
 and returns plain data: what the student's function gave and what the
 lesson's formula gives on the same inputs (the reference is exact arithmetic
 on the same numbers, so the checks compare with a tight tolerance). The
-lesson's answers are added in the grader only (`judging`, checker/probe_kit.py),
+lesson's answers are added in the grader only (`judging`, checker/judging/probe_kit.py),
 from the inputs as they were before the student's function got them. The checks
 in checker/labs/tumbling_crates/checks.py read this data in the grading process and name
 the first configuration that differs.
@@ -31,10 +31,11 @@ from lesson11.physics2d import Body, box_points, centre_of, cross, edge_normals,
 from lesson11.physics2d import project
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
-from ...probe_kit import _plain, drawn_sat_pairs, judging, reference, reference_sat, sat_answer, sat_pairs, twin
-from ...probe_kit import changed_vectors, with_reference_steps
-from ...probe_kit import axis_overlaps, box, ngon  # noqa: F401 (the checks and the corpora read them here)
-from ...tape import run_rng
+from checker.judging.probe_kit import (_plain, drawn_sat_pairs, judging, reference, reference_sat, sat_answer,
+                                       sat_pairs, twin)
+from checker.judging.probe_kit import changed_vectors, with_reference_steps
+from checker.judging.probe_kit import axis_overlaps, box, ngon   # noqa: F401 (the checks and the corpora read them here)
+from checker.judging.tape import run_rng
 
 REQUIRED = ("sat", "apply_impulse", "resolve", "main")
 RESTING_SPEED = 30.0   # px/s, the handout's cutoff below which e = 0
