@@ -144,7 +144,7 @@ def test_a_run_filling_the_disk_changes_no_classmates_row(tmp_path, small_tmp, m
     settings (or their records): measured before the quota, bob's row "not graded: the checker's temporary folder
     is full", 0/17, and mallory 2/17. Now each run's out/ holds at most --disk MB (64): "root" mounts a tmpfs of
     64 MB on it (the writer meets ENOSPC in its own run); "no_mount" (a system refusing the mount, as
-    CHECKER_NO_MOUNT=1 makes it) and "portable" watch it every 0.05 s (measured 3-63 MB past the quota,
+    CHECKER_NO_MOUNT=1 makes it) and "portable" watch it every 0.05 s (measured 1-63 MB past the quota,
     tests/test_run_disk.py): 64 MB + the overshoot stays well under 300 MB, so there too the solution keeps
     17/17. The fill run is stopped with a row naming the quota, and no tmpfs of a run is left mounted."""
     paths = {"a_mallory": with_attack(FILL), "b_bob": open(SOLUTION, encoding="utf-8").read()}

@@ -23,6 +23,8 @@ import sys
 import threading
 import time
 
+from checker.isolation import users
+
 DEFAULT_MB = 64        # measured: the five solutions' runs leave at most 1.4 MB in out/ (a scene's record.json);
                        # 64 MB is also the largest file a run may write (sandbox.FILE_LIMIT)
 MAX_ENTRIES = 1000     # files and folders out/ may hold (honest runs: 2 or 3); bounds the watcher's walk too
@@ -62,7 +64,7 @@ def _libc():
 def mount_wanted(portable):
     """True when a run's out/ should be a tmpfs: Linux, root, not the portable path (it stands for Windows and
     macOS), CHECKER_NO_MOUNT != "1" (the tests take the path of a system that refuses it), none refused yet."""
-    return (sys.platform.startswith("linux") and hasattr(os, "geteuid") and os.geteuid() == 0 and not portable
+    return (sys.platform.startswith("linux") and users.is_root() and not portable
             and os.environ.get("CHECKER_NO_MOUNT") != "1" and _refused is None)
 
 
