@@ -17,7 +17,7 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 
 from checker.reporting import html_report, outputs, report
 from checker.replay import pictures
-from checker.isolation import sandbox, users
+from checker.isolation import disk, sandbox, users
 from checker.replay import show as show_mode
 from checker.entries import discover, graded_folders
 from checker.grade import Grader
@@ -76,6 +76,9 @@ def parse_args(argv):
     parser.add_argument("--memory", type=int, default=768, help="address-space limit per run in MB (default 768)")
     parser.add_argument("--max-output", type=int, default=256,
                         help="KB of stdout + stderr a run may print before it is stopped (default 256)")
+    parser.add_argument("--disk", type=int, default=disk.DEFAULT_MB, metavar="MB",
+                        help="MB of files a run may write into its folder before it is stopped "
+                             f"(default {disk.DEFAULT_MB})")
     parser.add_argument("--seed", type=int, default=None, metavar="N",
                         help="draw the probes' per-run inputs with seed N (default: a fresh seed per file, shown in "
                              "--json as each file's \"seed\"; give it here to grade a file again with the same inputs)")
@@ -103,6 +106,8 @@ def parse_args(argv):
         parser.error(f"--memory must be >= 64 MB, got {args.memory}")
     if args.max_output < 1:
         parser.error(f"--max-output must be >= 1 KB, got {args.max_output}")
+    if args.disk < 1:
+        parser.error(f"--disk must be >= 1 MB, got {args.disk}")
     args.child_user, problem = users.choose(args.child_user)   # root: an unprivileged user unless told otherwise
     if problem:
         parser.error(problem)
@@ -271,7 +276,8 @@ def main(argv=None):
         return USAGE
     if args.show is not None:
         return show_mode.main(args, entries)
-    grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024, args.child_user), args.jobs,
+    grader = Grader(Limits(args.timeout, args.memory, args.max_output * 1024, args.child_user, disk_mb=args.disk),
+                    args.jobs,
                     args.total_timeout,
                     options={"allow_edits": args.allow_edits}, keep_records=bool(args.pictures or args.html),
                     seed=args.seed)

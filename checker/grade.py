@@ -21,7 +21,7 @@ import tempfile
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 
 from checker.judging import budget, probing
 from checker.reading import handout, source, step_rules
@@ -154,7 +154,7 @@ class Grader:
             limits = self.limits
             if self.deadline is not None:
                 left = self.deadline - time.monotonic()
-                limits = Limits(min(limits.timeout, max(left, 0.5)), limits.memory_mb, limits.max_output, limits.user)
+                limits = replace(limits, timeout=min(limits.timeout, max(left, 0.5)))
             run = run_child(lab_path, task, settings, limits)
         finally:
             self.slots.release()
@@ -165,6 +165,7 @@ class Grader:
         run.total_timeout = self.total_timeout
         run.memory_mb = limits.memory_mb
         run.max_output = limits.max_output
+        run.disk_mb = limits.disk_mb
         return run
 
     def grade(self, path, lab):

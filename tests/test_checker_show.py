@@ -230,6 +230,7 @@ def test_a_file_that_does_not_load_gets_its_load_error(tmp_path, capsys):
 
     class Args:
         show, seed, timeout, memory, max_output, child_user, allow_edits = "", SEED, 20.0, 768, 256, None, False
+        disk = 64
 
     from checker.entries import discover
     entries, _ = discover([str(target)])

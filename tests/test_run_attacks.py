@@ -137,27 +137,34 @@ def small_tmp():
     os.rmdir(folder)
 
 
-@pytest.mark.xfail(strict=True, reason="open: a run may fill the shared temporary folder (64 MB files without a "
-                   "count limit) while a classmate is graded; needs a per-run quota (a size-limited tmpfs on out/ "
-                   "where root may mount, or a disk quota for the run uids)")
-def test_a_run_filling_the_disk_changes_no_classmates_row(tmp_path, small_tmp):
+@pytest.mark.parametrize("mode", ["root", "no_mount", "portable"])
+def test_a_run_filling_the_disk_changes_no_classmates_row(tmp_path, small_tmp, mode):
     """`fill`: top-level code writes 60 MB files into its out/ folder until the disk is full and keeps its run
-    alive 25 s. Graded beside a solution with TMPDIR on a 300 MB tmpfs, the solution's runs cannot write their
-    settings (or their records): measured, bob's row "cannot read: No space left on device", 0/17 (that line now
-    says the checker's temporary folder is full). The honest solution must keep 17/17."""
+    alive 25 s. Graded beside a solution with TMPDIR on a 300 MB tmpfs, the solution's runs could not write their
+    settings (or their records): measured before the quota, bob's row "not graded: the checker's temporary folder
+    is full", 0/17, and mallory 2/17. Now each run's out/ holds at most --disk MB (64): "root" mounts a tmpfs of
+    64 MB on it (the writer meets ENOSPC in its own run); "no_mount" (a system refusing the mount, as
+    CHECKER_NO_MOUNT=1 makes it) and "portable" watch it every 0.05 s (measured 1-63 MB past the quota,
+    tests/test_run_disk.py): 64 MB + the overshoot stays well under 300 MB, so there too the solution keeps
+    17/17. The fill run is stopped with a row naming the quota, and no tmpfs of a run is left mounted."""
     paths = {"a_mallory": with_attack(FILL), "b_bob": open(SOLUTION, encoding="utf-8").read()}
     for name, text in paths.items():
         (tmp_path / name).mkdir()
         (tmp_path / name / "tumbling_crates.py").write_text(text, encoding="utf-8")
     environment = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
-                       TMPDIR=small_tmp)
+                       TMPDIR=small_tmp, **{"root": {}, "no_mount": {"CHECKER_NO_MOUNT": "1"},
+                                            "portable": {"CHECKER_PORTABLE": "1"}}[mode])
     proc = subprocess.run([sys.executable, "-m", "checker", *(str(tmp_path / n / "tumbling_crates.py") for n in paths),
                            "--json", "--quiet", "--jobs", "2", "--timeout", "10"], cwd=ROOT, env=environment,
                           capture_output=True, text=True, timeout=600)
     rows = {os.path.basename(os.path.dirname(row["path"])): row for row in json.loads(proc.stdout)["labs"]}
     assert rows["a_mallory"]["score"] <= 3, rows["a_mallory"]
+    loads = next(c["message"] for c in rows["a_mallory"]["criteria"] if c["id"] == "loads")
+    assert loads == "The file wrote more than 64 MB (or 1000 files) into its working folder and was stopped.", loads
     assert "cannot read" not in rows["b_bob"]["message"], rows["b_bob"]["message"]   # never the file's fault
     assert (rows["b_bob"]["score"], rows["b_bob"]["status"]) == (17, "pass"), rows["b_bob"]["message"]
+    with open("/proc/self/mounts", encoding="utf-8") as handle:
+        assert not [line for line in handle if small_tmp + "/" in line], "a run's tmpfs was left mounted"
 
 
 SYSV = '''

@@ -6,7 +6,7 @@ import os
 import sys
 from dataclasses import dataclass
 
-from checker.isolation import users
+from checker.isolation import disk, users
 
 FILE_LIMIT = 64 * 1024 * 1024   # bytes: largest file a child may write
 OUT = "out"   # the run's own sub-folder of its work folder: the only place its user may write
@@ -27,6 +27,10 @@ class Limits:
     user: str | None = None
     uid: int | None = None    # the run's own uid (users.RUN_UIDS, set by run_child): user's group, this uid
     jail: str | None = None   # the run's work folder, chrooted into before the switch where the system allows it
+    disk_mb: int = disk.DEFAULT_MB   # MB of files the run may write into its out/ folder (disk.Quota)
+
+    def __post_init__(self):
+        disk.check_mb(self.disk_mb)
 
 
 def set_rlimits(limits, cpu=True):

@@ -9,6 +9,8 @@ dummy video and audio drivers, in its own process group, with:
     whole group is killed when it runs out, its stack dumped half a second earlier;
   - RLIMIT_AS (`memory_mb`): a memory hog gets MemoryError or dies;
   - RLIMIT_FSIZE: no file the lab writes can grow past 64 MB;
+  - a disk quota (`disk_mb`) on its out/ folder: a tmpfs of that size where root may mount, else watched
+    by the parent, which stops the run past it (checker/isolation/disk.py);
   - an output cap (`max_output` bytes over stdout + stderr): the child raises at the print() that
     crosses it (so the report names the line); past FLOOD_SLACK more the parent kills the group.
 
@@ -44,7 +46,7 @@ import threading
 import time
 from dataclasses import asdict, dataclass, field
 
-from checker.isolation import users
+from checker.isolation import disk, users
 from checker.project import PROJECT_ROOT
 from checker.isolation.confine import OUT, STDOUT_FILE, Limits, copy_name, limit_child
 
@@ -60,7 +62,7 @@ ZYGOTE_REPLY_SECONDS = 10.0      # s the zygote may take to fork a child before 
 @dataclass
 class RunResult:
     """What one child run produced."""
-    status: str                     # "done", "error" (the lab raised), "timeout", "flood", "crash"
+    status: str                     # "done", "error" (the lab raised), "timeout", "flood", "disk", "crash"
     result: dict = field(default_factory=dict)   # the child's result JSON
     record: dict | None = None      # the runtime's record, if the run wrote one
     stdout: str = ""
@@ -479,6 +481,7 @@ def run_child(lab_path, task, settings, limits):
         try:
             return _run_in(work, lab_path, task, settings, limits, run_uid)
         finally:
+            disk.release(os.path.join(work, OUT))   # the run's tmpfs, once its files were read (lazily if busy)
             remove_work(work)
     finally:
         if run_uid is not None:
@@ -614,8 +617,9 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
     deadline = start + wall_limit(limits)
     collect = _run_portable if portable() else _run_posix
     settings_path = os.path.join(os.pardir, "settings.json")   # from OUT, inside a jail or not
+    quota = disk.Quota(out, limits.disk_mb, portable())   # out/ a tmpfs of disk_mb where root may mount, else watched
     try:
-        outcome = collect(lab_path, task, settings_path, out, env, limits, deadline, settings.get("probes"))
+        outcome = collect(lab_path, task, settings_path, out, env, limits, deadline, settings.get("probes"), quota)
     finally:
         if run_uid is not None:
             run_uid.kill()   # nothing of the run is left to write its files while they are read (or after)
@@ -624,7 +628,7 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
     status = outcome.status
     seconds = time.monotonic() - start
     result, notes = _read_channel(outcome.channel) if outcome.channel is not None else ({}, [])
-    notes = outcome.notes + notes
+    notes = outcome.notes + quota.notes() + notes
     record = _read_json(os.path.join(out, settings["record"]), RECORD_LIMIT) if task == "scenario" else None
     trace = ""
     data = _read_work_file(os.path.join(out, "timeout_traceback.txt"), 1 << 20)
@@ -646,8 +650,9 @@ def _run_in(work, lab_path, task, settings, limits, run_uid):
                      returncode=outcome.returncode, seconds=seconds, timeout_trace=trace, notes=notes)
 
 
-def _run_posix(lab_path, task, settings_path, work, env, limits, deadline, probes=None):
-    """Start the child (zygote or subprocess) with a result pipe and read its three pipes with a selector."""
+def _run_posix(lab_path, task, settings_path, work, env, limits, deadline, probes=None, quota=None):
+    """Start the child (zygote or subprocess) with a result pipe and read its three pipes with a selector;
+    stop it past its output cap, its wall-clock limit or its disk quota (quota.over(), looked at between reads)."""
     result_read, result_write = os.pipe()   # the child's result comes over a pipe we opened, not a file
     try:
         proc = _start(lab_path, task, settings_path, result_write, work, env, limits, (probes,) if probes else ())
@@ -676,7 +681,10 @@ def _run_posix(lab_path, task, settings_path, work, env, limits, deadline, probe
             break
         if not ended and isinstance(proc, _Subprocess) and proc.popen.poll() is not None:
             ended = _ended(proc, limits)
-        for key, _ in selector.select(timeout=min(remaining, 0.5)):
+        if quota is not None and quota.over(time.monotonic()):
+            status = "disk"
+            break
+        for key, _ in selector.select(timeout=min(remaining, disk.POLL_SECONDS if quota is not None else 0.5)):
             if key.data == "exit":
                 selector.unregister(key.fileobj)
                 proc.wait(timeout=0)
@@ -700,6 +708,8 @@ def _run_posix(lab_path, task, settings_path, work, env, limits, deadline, probe
                 break
         if status:
             break
+    if not status and quota is not None and quota.over():
+        status = "disk"   # it ended (or closed its pipes) between two looks
     if status:
         _kill_group(proc)
     try:
@@ -761,12 +771,13 @@ class _Drain(threading.Thread):
             self.stream.close()
 
 
-def _run_portable(lab_path, task, settings_path, work, env, limits, deadline, probes=None):
+def _run_portable(lab_path, task, settings_path, work, env, limits, deadline, probes=None, quota=None):
     """Start `python -m checker.isolation.child` with plain subprocess and watch it from here.
 
     The child's real stdout is its result channel (the child moves the lab's stdout to STDOUT_FILE
     before the lab loads); its stderr is the lab's. Both pipes are read by threads. The parent stops
-    the whole process tree at the wall-clock limit or past max_output + FLOOD_SLACK bytes of output;
+    the whole process tree at the wall-clock limit, past max_output + FLOOD_SLACK bytes of output or past its
+    disk quota (quota.over());
     the child applies its own resource limits and watches its CPU time (checker/isolation/child.py).
     """
     out_path = os.path.join(work, STDOUT_FILE)
@@ -788,7 +799,7 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline, pr
     status = None
     while status is None:
         try:
-            popen.wait(timeout=0.1)
+            popen.wait(timeout=disk.POLL_SECONDS if quota is not None else 0.1)
             break
         except subprocess.TimeoutExpired:
             pass
@@ -796,8 +807,12 @@ def _run_portable(lab_path, task, settings_path, work, env, limits, deadline, pr
             status = "timeout"
         elif _flooded(errors, out_path, limits):
             status = "flood"
+        elif quota is not None and quota.over(time.monotonic()):
+            status = "disk"
     if status is None and _flooded(errors, out_path, limits):
         status = "flood"   # it ended (the file-size limit, say) between two looks
+    if status is None and quota is not None and quota.over():
+        status = "disk"
     _kill_tree(popen, job)   # a stopped run, and anything the lab left running
     if limits.uid is not None:
         users.kill_uid(limits.uid)   # as root: what left the process group too, before its pipes are waited for

@@ -5,6 +5,7 @@ import re
 
 from lesson11.mistakes import VALUE_RULE, meaning, number_problem, value_text, vector_problem  # noqa: F401
 
+from checker.isolation import disk
 from checker.reading import source
 
 
@@ -77,6 +78,8 @@ def describe_run_failure(run, lab_name, what):
                 f"printing at {at}{text}.")
     if run.status == "flood":
         return f"{what} printed more than {run.max_output // 1024} KB of output and was stopped."
+    if run.status == "disk":
+        return disk.message(what, run.disk_mb)
     if error.get("kind") == "exit":
         return f"{what} ended the program: {_cut(error['message'])}.\nat {_cut(at + text, 190)}."
     if error.get("kind") == "memory" or (run.returncode or 0) in (-9,) and not error:

@@ -233,7 +233,7 @@ def main(args, entries, events=None, frames=None, out=None, err=None):
         print(f"checker: {entry.path}: not graded: {entry.problem}", file=err)
         return 1
     from checker.isolation.sandbox import Limits
-    limits = Limits(args.timeout, args.memory, args.max_output * 1024, args.child_user)
+    limits = Limits(args.timeout, args.memory, args.max_output * 1024, args.child_user, disk_mb=args.disk)
     check_id = args.show or None
     if check_id and check_id not in [c.id for c in entry.lab.checks.checks]:
         known = ", ".join(c.id for c in entry.lab.checks.checks)
