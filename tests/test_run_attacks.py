@@ -223,6 +223,55 @@ def test_a_run_leaves_no_shared_memory_behind(tmp_path, mode):
     assert row["score"] == 0, row
 
 
+MQUEUE = '''
+import ctypes as _ct
+import os as _os
+_rt = _ct.CDLL(None, use_errno=True)   # glibc 2.34+ has mq_open in libc (librt is not in the jail)
+_made = []
+for _k in range(3):
+    _q = _rt.mq_open(("/l11-left-%d" % _k).encode(), _os.O_CREAT | _os.O_RDWR, 0o666, None)
+    _made.append(_q if _q >= 0 else -_ct.get_errno())
+raise RuntimeError(f"MQUEUE {_made}")
+'''
+
+
+def message_queues_of_runs():
+    """[(name, owner uid)] of the POSIX message queues a run's uid owns, read from a private mount of the mqueue
+    file system (Linux, root), or None where it cannot be mounted here."""
+    import tempfile
+    where = tempfile.mkdtemp(prefix="l11-mqueue-")
+    try:
+        if subprocess.run(["mount", "-t", "mqueue", "mqueue", where], capture_output=True).returncode:
+            return None
+        try:
+            return [(name, os.stat(os.path.join(where, name)).st_uid) for name in os.listdir(where)
+                    if os.stat(os.path.join(where, name)).st_uid in users.RUN_UIDS]
+        finally:
+            subprocess.run(["umount", where], capture_output=True)
+    finally:
+        os.rmdir(where)
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux") or not users.is_root(), reason="Linux's mqueue, as root")
+def test_a_run_makes_no_message_queue_that_outlives_it(tmp_path):
+    """`mqueue`: top-level code (jailed: ctypes is in memory) opens three POSIX message queues, mode 666. Like System
+    V objects they outlive every process of the run. The child's RLIMIT_MSGQUEUE is 0: each mq_open fails (EMFILE),
+    none is left, and the row is its twin's (a top-level error: 0/17)."""
+    (tmp_path / "a_mallory").mkdir()
+    (tmp_path / "a_mallory" / "tumbling_crates.py").write_text(with_attack(MQUEUE), encoding="utf-8")
+    environment = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy")
+    proc = subprocess.run([sys.executable, "-m", "checker", str(tmp_path / "a_mallory" / "tumbling_crates.py"),
+                           "--json", "--quiet", "--timeout", "10"], cwd=ROOT, env=environment, capture_output=True,
+                          text=True, timeout=600)
+    row = json.loads(proc.stdout)["labs"][0]
+    message = next(c["message"] for c in row["criteria"] if c["id"] == "loads")
+    made = message.split("MQUEUE [", 1)[1].split("]", 1)[0]
+    assert made and all(int(value) < 0 for value in made.split(", ")), message   # every mq_open refused
+    left = message_queues_of_runs()
+    assert not left, f"message queues of a run's uid outlived the batch: {left}"
+    assert row["score"] == 0, row
+
+
 LEAVE = '''
 import os as _os
 _made = []

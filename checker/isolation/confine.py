@@ -52,6 +52,8 @@ def set_rlimits(limits, cpu=True):
               ("RLIMIT_CPU", (seconds, seconds + 1), f"CPU time {seconds} s"),
               ("RLIMIT_FSIZE", (FILE_LIMIT, FILE_LIMIT), f"file size {FILE_LIMIT >> 20} MB"),
               ("RLIMIT_CORE", (0, 0), "no core dumps")]
+    if hasattr(resource, "RLIMIT_MSGQUEUE"):   # Linux: no POSIX message queue, which would outlive the run
+        wanted.append(("RLIMIT_MSGQUEUE", (0, 0), "no message queues"))
     notes = []
     for name, value, what in wanted if cpu else [w for w in wanted if w[0] != "RLIMIT_CPU"]:
         try:
