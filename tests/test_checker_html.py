@@ -177,3 +177,20 @@ def test_the_csv_has_a_student_column_and_fractions(tmp_path):
     assert table[0]["bullets:loads"] == "" and table[1]["bullets:loads"] == "pass"
     assert report._summary_line(rows) == ("1 of 2 lab file(s) pass every check. 1 other file(s) could not be "
                                           "graded as a lab (not counted; see their rows).")
+
+
+def test_a_csv_cell_that_starts_like_a_formula_is_text(tmp_path):
+    """A student's folder named like a spreadsheet formula (`=HYPERLINK(...)`) or a message starting with one
+    becomes a cell that starts with an apostrophe: opening the grades in a spreadsheet runs nothing. A plain
+    name and the numbers are unchanged."""
+    import csv
+    from checker.reporting import report
+    evil = '=HYPERLINK("x"&A1,"open")'
+    rows = [report.NotGraded(f"/class/{evil}/notes.py", None, "@SUM(1+1) is not a lab file"),
+            report.NotGraded("/class/dave/notes.py", None, "not a lab file")]
+    table = list(csv.DictReader(report.csv_text(rows).splitlines()))
+    assert table[0]["student"] == "'" + evil and table[0]["message"].startswith("'@SUM")
+    assert table[0]["path"].startswith("'=") or not table[0]["path"].startswith(report.FORMULA_STARTS)
+    assert table[1]["student"] == "dave" and table[1]["message"] == "not a lab file" and table[1]["score"] == "0"
+    assert all(not cell.startswith(report.FORMULA_STARTS) for row in table for cell in row.values())
+    assert report.inert("-3") == "'-3" and report.inert("alice") == "alice"

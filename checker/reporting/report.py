@@ -252,6 +252,15 @@ def summary_table(reports, stream, root=None):
     stream.write(_summary_line(reports) + "\n")
 
 
+FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")   # what a spreadsheet reads as a formula at a cell's start
+
+
+def inert(text):
+    """A CSV cell a spreadsheet shows as text: a cell from a student's folder name, path or message that starts
+    like a formula (`=HYPERLINK(...)`) gets a leading apostrophe, so opening the grades runs nothing."""
+    return "'" + text if text.startswith(FORMULA_STARTS) else text
+
+
 def csv_text(reports, root=None):
     """One row per entry: student (the submission's folder), path, lab, status, score, max_score, fraction (of
     its own lab's points; 0 for a file that scores 0 of no lab's points, such as an empty one), each check's
@@ -273,9 +282,9 @@ def csv_text(reports, root=None):
         lab = r.lab.id if r.lab is not None else ""
         by_id = {(lab, c.id): c.status for c in r.results}
         fraction = f"{r.score / r.max_score:.3f}" if r.max_score else ("0.000" if getattr(r, "counted", False) else "")
-        writer.writerow([student_of(names[r.path]), _rel(r.path, root), lab, r.status, f"{r.score:g}",
-                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns], mistakes_text(r),
-                         reason(r)])
+        writer.writerow([inert(student_of(names[r.path])), inert(_rel(r.path, root)), lab, r.status, f"{r.score:g}",
+                         f"{r.max_score:g}", fraction, *[by_id.get(key, "") for key in columns],
+                         inert(mistakes_text(r)), inert(reason(r))])
     return out.getvalue()
 
 
@@ -329,7 +338,7 @@ def mistakes_csv_text(reports, root=None):
         rows = [(mid, text, paths) for mid, text, paths in named] + ([("(not named)", "", unnamed)] if unnamed else [])
         for mid, text, paths in rows:
             writer.writerow([title, label, step if step is not None else "", failing, graded, mid, text, len(paths),
-                             "; ".join(_rel(p, root) for p in paths)])
+                             inert("; ".join(_rel(p, root) for p in paths))])
     return out.getvalue()
 
 
