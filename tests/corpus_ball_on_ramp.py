@@ -26,11 +26,10 @@ the lesson's formula in another style (correct).
 """
 import os
 import sys
-import textwrap
-from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_entries import makers  # noqa: E402  (tests/corpus_entries.py: Entry, wrong, correct)
 from wrong_kinds import AS_TEXT, HIT, MOTION, NUMBER, PLACES, VECTOR, after_solution, returns, substituted, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 
@@ -51,29 +50,7 @@ FUNCTION_CHECKS = ("closest_point", "inside_case", "push_out_split", "ball_inert
                    "friction_rolls")
 
 
-class Entry(NamedTuple):
-    name: str
-    what: str            # what the student did, one line
-    steps: dict          # {step: code} (dedented)
-    edits: tuple         # ((old, new), ...) outside the steps
-    check: str           # "pass", or the id of the check that must fail
-    step: object         # the lesson step the failing check's hint names (None for correct / outside)
-    status: tuple        # accepted statuses of that check
-    why: str
-    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
-
-
-def _code(text):
-    return textwrap.dedent(text).strip("\n")
-
-
-def wrong(name, what, check, steps=None, edits=(), status=("fail",), why=""):
-    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
-                 CHECK_STEP[check], tuple(status), why)
-
-
-def correct(name, what, steps, why):
-    return Entry(name, what, {k: _code(v) for k, v in steps.items()}, (), "pass", None, ("pass",), why)
+wrong, correct = makers(CHECK_STEP)
 
 
 WRONG = [

@@ -26,11 +26,10 @@ the lesson's formula in another style (correct).
 """
 import os
 import sys
-import textwrap
-from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_files import CorpusFiles, second_mistake, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_entries import code, makers  # noqa: E402  (tests/corpus_entries.py: Entry, wrong, correct)
 from wrong_kinds import AS_TEXT, NUMBER, TOI, V, after_solution, before_solution, returns, substituted, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 
@@ -48,29 +47,7 @@ CHECK_STEP = {
 FUNCTION_CHECKS = ("toi_matches_root", "bounding_circle", "broad_test", "swept_move_resolves")
 
 
-class Entry(NamedTuple):
-    name: str
-    what: str            # what the student did, one line
-    steps: dict          # {step: code} (dedented)
-    edits: tuple         # ((old, new), ...) outside the steps
-    check: str           # "pass", or the id of the check that must fail
-    step: object         # the lesson step the failing check's hint names (None for correct / outside)
-    status: tuple        # accepted statuses of that check
-    why: str
-    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
-
-
-def _code(text):
-    return textwrap.dedent(text).strip("\n")
-
-
-def wrong(name, what, check, steps=None, edits=(), status=("fail",), why=""):
-    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
-                 CHECK_STEP[check], tuple(status), why)
-
-
-def correct(name, what, steps, why):
-    return Entry(name, what, {k: _code(v) for k, v in steps.items()}, (), "pass", None, ("pass",), why)
+wrong, correct = makers(CHECK_STEP)
 
 
 # the first lines of step 2 as the lesson writes them, indented like the entries' code below
@@ -396,7 +373,7 @@ COMBINED = {
     "b_sign_without_the_two": (   # b = -2 dp·dv and a for 2a
         "toi_matches_root", second_mistake(ENTRIES, "toi_b_sign", 2, "/ (2 * a)", "/ a"),
         ("b = -2 dp·dv", "the 2 of 2a")),
-    "falsy_zero_with_a_point_bullet": ("broad_test", {4: _code("""
+    "falsy_zero_with_a_point_bullet": ("broad_test", {4: code("""
         if not circle_toi(bullet.pos, bullet.vel, 0, other.pos, Vector2(), bounding_radius(points, other.pos), dt):
             return None
     """)}, ("t = 0.0 as no contact", "as a point", "wrong way round")),

@@ -21,11 +21,10 @@ Verdicts:
 """
 import os
 import sys
-import textwrap
-from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_entries import makers  # noqa: E402  (tests/corpus_entries.py: Entry, wrong, correct)
 from wrong_kinds import AS_TEXT, FLAGS, NUMBER, before_solution, returns, wrapped  # noqa: E402  (tests/wrong_kinds.py)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -44,31 +43,7 @@ FUNCTION_CHECKS = ("timer_rule", "skips_sleepers", "wakes_on_contact")
 NEEDS_STEPS_2_TO_4 = ("narrow_work",)
 
 
-class Entry(NamedTuple):
-    name: str
-    what: str            # what the student did, one line
-    steps: dict          # {step: code} (dedented)
-    edits: tuple         # ((old, new), ...) outside the steps, applied after the steps are filled
-    check: str           # "pass" for a correct completion, else the id of the check that must fail
-    step: object         # the lesson step the failing check's hint names (None for a correct entry)
-    status: tuple        # accepted statuses of that check
-    also: tuple          # other checks this mistake may fail too
-    why: str             # the input that shows the mistake, or why a correct variant is correct
-    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
-
-
-def _code(text):
-    return textwrap.dedent(text).strip("\n")
-
-
-def wrong(name, what, check, steps=None, edits=(), status=("fail",), also=(), why=""):
-    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
-                 CHECK_STEP[check], tuple(status), tuple(also), why)
-
-
-def correct(name, what, steps=None, edits=(), why=""):
-    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), "pass", None,
-                 ("pass",), (), why)
+wrong, correct = makers(CHECK_STEP)
 
 
 WRONG = [

@@ -35,11 +35,11 @@ import os
 import re
 import sys
 import textwrap
-from typing import NamedTuple
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mutants  # noqa: E402  (tests/mutants.py: exact edits that must fit once)
 from corpus_files import second_mistake, with_says  # noqa: E402
+from corpus_entries import makers  # noqa: E402  (tests/corpus_entries.py: Entry, wrong, correct)
 from wrong_kinds import HIT, MOTION, V, after_solution, returns  # noqa: E402  (tests/wrong_kinds.py)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -63,31 +63,7 @@ SAME_FUNCTION = {"sat_axes": "sat_normal", "sat_normal": "sat_axes",
                  "resolve_k": "resolve_friction", "resolve_friction": "resolve_k"}
 
 
-class Entry(NamedTuple):
-    name: str
-    what: str            # what the student did, one line
-    steps: dict          # {step: code} (dedented; "" leaves the step empty)
-    edits: tuple         # ((old, new), ...) outside the steps, applied after the steps are filled
-    check: str           # "pass" for a correct completion, else the id of the check that must fail
-    step: object         # the lesson step the failing check's hint names (None for a correct entry)
-    status: tuple        # accepted statuses of that check: ("fail",), ("error",) or both
-    also: tuple          # other non-function checks this mistake may fail too (e.g. runtime_lines)
-    why: str             # the input that shows the mistake, or why a correct variant is correct
-    says: tuple = ()     # wrong entries: the words the first message must contain (it names the mistake)
-
-
-def _code(text):
-    return textwrap.dedent(text).strip("\n")
-
-
-def wrong(name, what, check, steps=None, edits=(), status=("fail",), also=(), why=""):
-    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), check,
-                 CHECK_STEP[check], tuple(status), tuple(also), why)
-
-
-def correct(name, what, steps=None, edits=(), why=""):
-    return Entry(name, what, {k: _code(v) for k, v in (steps or {}).items()}, tuple(edits), "pass", None,
-                 ("pass",), (), why)
+wrong, correct = makers(CHECK_STEP)
 
 
 # ================================================================ step 2: the SAT loop (sat_axes)
@@ -795,7 +771,7 @@ def regions(source, where="file"):
     return found
 
 
-def step_code(source, where="file"):
+def stepcode(source, where="file"):
     """{step: the dedented code strictly between the step's markers}."""
     lines = source.split("\n")
     return {step: textwrap.dedent("\n".join(lines[start + 1:end])).strip("\n")
@@ -828,7 +804,7 @@ def build(name, starter=None, solution=None):
     entry = BY_NAME[name]
     starter = _read(STARTER) if starter is None else starter
     solution = _read(SOLUTION) if solution is None else solution
-    codes = step_code(solution, "solutions/tumbling_crates.py")
+    codes = stepcode(solution, "solutions/tumbling_crates.py")
     unknown = set(entry.steps) - set(STEPS)
     if unknown:
         raise AssertionError(f"{name}: no step {sorted(unknown)} in the lab (steps are {STEPS})")
