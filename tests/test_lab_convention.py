@@ -141,3 +141,18 @@ def test_a_lab_without_its_own_recognise_knows_its_files_by_id_or_title():
         assert labs.identify(os.path.join("class", "A", lab.id + "_v2.py"), "") == lab
         assert labs.identify(os.path.join("class", "A", "lab.py"), f'"""{lab.title.upper()}: my file"""') == lab
     assert labs.identify(os.path.join("class", "A", "lab.py"), "print('hello')") is None
+
+
+def test_a_file_opening_with_one_labs_title_is_that_labs_though_it_names_another():
+    """The strongest evidence wins: a file's name, then the title its docstring opens with, then a title anywhere.
+    A renamed file that opens with one lab's title and mentions an earlier lab's in a comment is the first lab's
+    (checked first in the lesson's order, the earlier lab used to take it); a file naming a lab only in passing
+    is still that lab's."""
+    convention = [lab for lab in labs.LABS if not hasattr(lab.module, "recognise")]
+    assert len(convention) >= 2
+    earlier, later = convention[0], convention[-1]
+    text = f'"""{later.title}: my copy."""\n# this builds on {earlier.title}\n'
+    assert labs.identify(os.path.join("class", "A", "lab.py"), text) == later
+    assert labs.identify(os.path.join("class", "A", f"{earlier.id}.py"), text) == earlier   # the name is stronger
+    assert labs.identify(os.path.join("class", "A", "lab.py"), f"# notes on {later.title}\n") == later
+    assert later.evidence("lab.py", text) == 2 and earlier.evidence("lab.py", text) == 1

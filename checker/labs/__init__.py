@@ -95,13 +95,23 @@ class Lab:
         return self.module.CHECKS
 
     def recognise(self, path, source):
-        """True if the file is this lab's: its module's recognise(path, source) if it has one, else by convention
-        the file's name holds the lab's id or its text the lab's title (any case)."""
+        """True if the file is this lab's: evidence(path, source) above 0."""
+        return self.evidence(path, source) > 0
+
+    def evidence(self, path, source):
+        """How strongly the file says it is this lab's: 3 if its module's recognise(path, source) says so or, by
+        convention, the file's name holds the lab's id; 2 if the file opens with a docstring starting with the
+        lab's title; 1 if its text holds the title anywhere (any case); else 0."""
         own = getattr(self.module, "recognise", None)
         if own is not None:
-            return own(path, source)
+            return 3 if own(path, source) else 0
         name = path.replace("\\", "/").rsplit("/", 1)[-1].lower()
-        return self.id in name or self.title.lower() in source.lower()
+        if self.id in name:
+            return 3
+        text = source.lower()
+        if text.lstrip().startswith(('"""' + self.title.lower(), "'''" + self.title.lower())):
+            return 2
+        return 1 if self.title.lower() in text else 0
 
     def scenarios(self):
         """The scenario runs this lab needs, by name (settings for lesson11.runtime.configure)."""
@@ -141,8 +151,11 @@ LABS = tuple(Lab(lab_id) for lab_id in found())
 
 
 def identify(path, source):
-    """The Lab a file belongs to, or None."""
+    """The Lab a file belongs to, or None: the lab with the strongest evidence (Lab.evidence), the first in the
+    lesson's order on a tie; so a file that opens with one lab's title and names another in a comment is the first's."""
+    best, strength = None, 0
     for lab in LABS:  # read at each call, so a lab added to LABS later is known
-        if lab.recognise(path, source):
-            return lab
-    return None
+        found = lab.evidence(path, source)
+        if found > strength:
+            best, strength = lab, found
+    return best
