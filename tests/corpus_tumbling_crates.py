@@ -771,7 +771,7 @@ def regions(source, where="file"):
     return found
 
 
-def stepcode(source, where="file"):
+def step_code(source, where="file"):
     """{step: the dedented code strictly between the step's markers}."""
     lines = source.split("\n")
     return {step: textwrap.dedent("\n".join(lines[start + 1:end])).strip("\n")
@@ -804,7 +804,7 @@ def build(name, starter=None, solution=None):
     entry = BY_NAME[name]
     starter = _read(STARTER) if starter is None else starter
     solution = _read(SOLUTION) if solution is None else solution
-    codes = stepcode(solution, "solutions/tumbling_crates.py")
+    codes = step_code(solution, "solutions/tumbling_crates.py")
     unknown = set(entry.steps) - set(STEPS)
     if unknown:
         raise AssertionError(f"{name}: no step {sorted(unknown)} in the lab (steps are {STEPS})")

@@ -322,7 +322,9 @@ def test_missing_path_gets_a_one_line_error():
     assert err.strip().count("\n") == 0 and "no/such/lab.py" in err and "Traceback" not in err
 
 
-def test_file_that_is_not_a_lab_gets_a_one_line_error():
-    status, out, err = run_checker("tests/conftest.py")
+def test_file_that_is_not_a_lab_gets_a_one_line_error(tmp_path):
+    """A Python file of no lab (its name holds no lab's id, its text no lab's title) is one line, never graded."""
+    (tmp_path / "helpers.py").write_text('"""Plotting helpers."""\nimport pytest\n', encoding="utf-8")
+    status, out, err = run_checker(str(tmp_path / "helpers.py"))
     assert status == 1  # an entry that cannot be graded is a row of the report (status 2 is for usage errors)
     assert err.strip().count("\n") == 0 and "not a lab" in err

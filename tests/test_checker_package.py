@@ -418,7 +418,9 @@ def test_gradescope_another_labs_file_scores_zero(ramp_bundle, tmp_path):
 def test_gradescope_pictures_that_cannot_be_drawn_cost_nothing(ramp_bundle, tmp_path):
     broken = tmp_path / "source"
     shutil.copytree(ramp_bundle, broken)
-    with open(broken / "project" / "checker" / "pictures.py", "a", encoding="utf-8") as handle:
+    pictures = broken / "project" / "checker" / "replay" / "pictures.py"
+    assert pictures.is_file()   # the bug goes into the module that draws, not into a new file beside it
+    with open(pictures, "a", encoding="utf-8") as handle:
         handle.write("\n\ndef filmstrip(*args, **kwargs):\n    raise RuntimeError('a drawing bug')\n")
     doc = grade_gradescope(broken, tmp_path, {"ball_on_ramp.py": slop_six()})
     assert doc["score"] == MAX["ball_on_ramp"] - 2.0

@@ -206,11 +206,12 @@ def test_checker_zygote_0_means_subprocess(monkeypatch, lab):
 def test_the_zygote_leaves_when_its_grader_does(tmp_path):
     """A grader killed outright (no atexit) still takes its zygote with it: EOF on the zygote's socket."""
     mark = uuid.uuid4().hex
-    script = ("import os, signal\nfrom checker import sandbox\n"
+    script = ("import os, signal\nfrom checker.isolation import sandbox\n"
               "assert sandbox._zygote_client() is not None\nos.kill(os.getpid(), signal.SIGKILL)\n")
     env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
                CHECKER_ZYGOTE="1", CHECKER_TEST_MARK=mark)
-    subprocess.run([sys.executable, "-c", script], env=env, cwd=str(tmp_path), timeout=120)
+    done = subprocess.run([sys.executable, "-c", script], env=env, cwd=str(tmp_path), timeout=120)
+    assert done.returncode == -signal.SIGKILL   # it got as far as killing itself, its zygote started
     for _ in range(100):
         if not processes_marked(mark):
             break

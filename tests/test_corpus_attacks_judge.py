@@ -21,7 +21,7 @@ def test_without_the_step_rules_the_judging_still_fails_them(tmp_path):
     chosen = list(corpus.ISSUE39_JUDGE)
     paths = corpus.write(tmp_path, chosen + [corpus.HONEST[e.name] for e in chosen])
     # the checker in a process of its own (no state of earlier tests in this one), its step rules turned off
-    without_rules = ("import sys; from checker import cli, step_rules; "
+    without_rules = ("import sys; from checker import cli; from checker.reading import step_rules; "
                      "step_rules.scan_lab = lambda source, module, path=None: []; sys.exit(cli.main(sys.argv[1:]))")
     done = subprocess.run([sys.executable, "-c", without_rules, *paths.values(), "--json", "--quiet", "--jobs", "2"],
                           cwd=ROOT, capture_output=True, text=True, timeout=900,

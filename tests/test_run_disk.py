@@ -99,10 +99,30 @@ def left(monkeypatch):
     return sizes
 
 
+@pytest.fixture(autouse=True)
+def own_temp(monkeypatch, tmp_path_factory):
+    """This test's runs make their work folders in a temporary folder of its own (mode 755, as /tmp is for the
+    run's user), for this process and the checkers it starts: under pytest-xdist another worker's runs have
+    their tmpfs mounted in /tmp meanwhile, and checker_mounts() must not count them."""
+    import shutil
+    import tempfile
+    tmp_path_factory.getbasetemp()   # pytest's own temporary folders stay where they are
+    folder = tempfile.mkdtemp(prefix="l11-disk-", dir="/tmp" if os.path.isdir("/tmp") else None)
+    os.chmod(folder, 0o755)
+    monkeypatch.setattr(tempfile, "tempdir", folder)
+    monkeypatch.setenv("TMPDIR", folder)
+    yield folder
+    monkeypatch.undo()
+    shutil.rmtree(folder, ignore_errors=True)
+
+
 def checker_mounts():
-    """The mount points of runs' work folders (…/checker-*/out) this machine has now."""
+    """The mount points of this test's runs' work folders (…/checker-*/out, in own_temp) this machine has now."""
+    import tempfile
+    mine = tempfile.gettempdir() + os.sep
     with open("/proc/self/mounts", encoding="utf-8") as handle:
-        return [line.split()[1] for line in handle if "/checker-" in line.split()[1]]
+        return [line.split()[1] for line in handle
+                if "/checker-" in line.split()[1] and line.split()[1].startswith(mine)]
 
 
 # ---------------------------------------------------------------- the setting
