@@ -1,0 +1,152 @@
+"""A function step declared as data: its cases, the lesson's answer, its known wrong forms and its words.
+
+A lab writes a Step once, in its probes.py; the framework makes both halves of the step's grading from it:
+  - the probe (Step.probe): in the child it calls the student's function on each case and records only the
+    answer; in the grading parent, replaying the tape, it adds the lesson's answer and every known wrong
+    form's answer (lesson_answers, a @reference: it raises if the child ever calls it), computed from the
+    case's own inputs and the handout's constants, never from anything the child sent back;
+  - the check (Step.register, from the lab's checks.py): compares each case with the lesson's answer, names a
+    wrong form only when it alone gives the student's answer in every case (causes.consistent_mistake), and
+    words the failure as every lab does: two lines, what is wrong (the form's sentence, else the step's own
+    words), then the evidence of the first case that differs.
+A step whose mistakes need more than a table (a whole scene, a spliced step) stays a hand-written check.
+"""
+from dataclasses import dataclass, field
+
+from . import lab_checks
+from .causes import consistent_mistake, mistake
+from .checks import Fail, Passed
+from .tape import judging, reference
+
+
+@dataclass(frozen=True)
+class Form:
+    """A known wrong form of a step: its mistake id, the sentence that names it (in the student's terms; None:
+    the shared sentence of causes.SHARED), the function that computes its answer from a case, the key of the
+    hint it gives (None: the step's) and the message's first line when it says more than the sentence."""
+    id: str | None
+    text: str | None
+    answer: object = None
+    hint: str | None = None
+    line: str | None = None
+
+
+def forms_of(table, answers, prefix=""):
+    """Forms from a table {name: sentence} whose answers one function computes together, answers(case) ->
+    {name: answer} (a name it leaves out: None, no answer there); each mistake's id is prefix + name."""
+    return tuple(Form(prefix + name, text, lambda case, name=name: answers(case).get(name))
+                 for name, text in table.items())
+
+
+def words(text):
+    """`text` as a function of a case: a lab gives its words either as a fixed sentence or as a function."""
+    return text if callable(text) else (lambda case: text)
+
+
+@dataclass
+class Step:
+    """One function step of a lab, as data (see the module docstring).
+
+    check, doc: the check's id and its description (Step N: ...); step: the lesson step; function: the
+    student's function; probe_name: the probe's name in PROBES (default: the function's); cases(module): the
+    cases, each a dict of inputs with a "case" label (drawn ones from tape.run_rng); call(function, case): the
+    student's raw answer; answer(raw): it as plain data; lesson(case): the lesson's answer, in the grader only;
+    wrong: the Forms; same(got, want): True when an answer counts as the lesson's (a malformed one never does);
+    bad(got): True when the answer is malformed, and malformed(case) words it (both lines); evidence(case): the
+    message's second line; diagnose(cases, case): a Form that this case's answer shows by itself (its id None:
+    words and a hint, no mistake named), tried before the wrong forms; stand_ins(module): the lesson's functions
+    that stand in for the student's other steps while this one is probed, so a mistake is graded once, under its
+    own step; unnamed: the first line when no form is named; hint: the key of the step's hint in the lab's
+    HINTS; passed: the passing message, "{n}" the number of cases (or a function of the cases).
+    """
+    check: str
+    doc: str
+    step: int
+    function: str
+    cases: object
+    call: object
+    lesson: object
+    same: object
+    evidence: object
+    unnamed: object
+    hint: str
+    passed: object
+    wrong: tuple = ()
+    answer: object = None     # answer(raw): the student's answer as plain data (None: as the call returned it)
+    bad: object = None
+    malformed: object = None
+    diagnose: object = None   # diagnose(cases, case): a Form read from this case alone, before the one-formula rule
+    stand_ins: object = None  # stand_ins(module): {name: the lesson's function} put in place while the step is probed
+    probe_name: str | None = None
+    extra: dict = field(default_factory=dict)   # more grader-only data per case: {key: function of a case}
+
+    @property
+    def probe_id(self):
+        return self.probe_name or self.function
+
+    # ------------------------------------------------------------ the probe (child records, parent judges)
+
+    def probe(self, module, lab_path):
+        """The student's answer in every case; in the grader also the lesson's and the wrong forms' answers."""
+        stand_ins = self.stand_ins(module) if self.stand_ins else {}
+        own = {name: getattr(module, name) for name in stand_ins}
+        try:
+            for name, function in stand_ins.items():
+                setattr(module, name, function)
+            out = []
+            for case in self.cases(module):
+                raw = self.call(getattr(module, self.function), case)
+                record = dict(case, got=raw if self.answer is None else self.answer(raw))
+                if judging(module):
+                    record.update(lesson_answers(self, case))
+                out.append(record)
+            return out
+        finally:
+            for name, function in own.items():
+                setattr(module, name, function)
+
+    def probes(self):
+        """This step's entry of a lab's PROBES: {probe name: (the function it needs, the probe)}."""
+        return {self.probe_id: (self.function, self.probe)}
+
+    # ------------------------------------------------------------ the check (in the grading parent)
+
+    def register(self, registry, hints, depends=("loads",), after=(), max_score=1.0):
+        """Register this step's check in `registry`, in the order of the call; `hints`: the lab's HINTS."""
+        def check(sub, functions):
+            return self.judge(lab_checks.function_data(sub, functions, self.probe_id, self.function, self.step,
+                                                       hints["crash"]), hints)
+        check.__name__ = check.__qualname__ = self.check
+        check.__doc__ = self.doc
+        registry.check(depends=list(depends), after=list(after), max_score=max_score)(check)
+        return check
+
+    def judge(self, cases, hints):
+        """Passed with the cases when every one is the lesson's, else Fail for the first that is not."""
+        for case in cases:
+            if self.bad is not None and self.bad(case["got"]):
+                raise Fail(self.malformed(case), hints[self.hint])
+            if not self.same(case["got"], case["want"]):
+                form = (self.diagnose and self.diagnose(cases, case)) or self.named(cases, case)
+                found = mistake(form.id, form.text) if form and form.id else None
+                first = (form and form.line) or (found.text if found else form.text if form else
+                                                 words(self.unnamed)(case))
+                raise Fail(f"{first}.\n{self.evidence(case)}", hints[(form and form.hint) or self.hint], found)
+        passed = self.passed(cases) if callable(self.passed) else self.passed.format(n=len(cases))
+        return passed if isinstance(passed, Passed) else Passed(passed, value=cases)
+
+    def named(self, cases, case):
+        """The one wrong Form that gives the student's answer in every case, or None; only forms whose answer
+        differs from the lesson's in `case` can be named (causes.consistent_mistake)."""
+        differs = [form for form in self.wrong if not self.same(case["forms"][form.id], case["want"])]
+        return consistent_mistake(cases, lambda c, f: self.same(c["got"], c["forms"][f.id]), differs)
+
+
+@reference
+def lesson_answers(step, case):
+    """{"want": the lesson's answer, "forms": {id: each wrong form's answer}} for one case, and the step's extra
+    grader-only data: computed here, in the grading parent, from the case's inputs (a @reference: never in the
+    child, where the student's code could read it)."""
+    out = {"want": step.lesson(case), "forms": {form.id: form.answer(case) for form in step.wrong}}
+    out.update({key: compute(case) for key, compute in step.extra.items()})
+    return out
