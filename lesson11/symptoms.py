@@ -15,7 +15,7 @@ from typing import NamedTuple
 
 
 class Symptom(NamedTuple):
-    lab: str        # the lab's id: tumbling_crates, more_shapes, ball_on_ramp, sleeping_crates, bullets
+    lab: str        # the lab's id (its folder in checker/labs/)
     key: str        # the mistake's key (tests/test_symptoms.py has its edit and its measurement)
     step: int       # the step whose code holds the mistake
     mistake: str    # what the student wrote, in a few words
@@ -48,14 +48,6 @@ KINDS = {
     "zero_division": r"ZeroDivisionError",
     "explode": r"explode|shot (apart|away)",
     "never_tip": r"never tip",
-}
-
-LABS = {
-    "tumbling_crates": "Tumbling Crates",
-    "more_shapes": "More Shapes",
-    "ball_on_ramp": "Ball on the Ramp",
-    "sleeping_crates": "Sleeping Crates",
-    "bullets": "Bullets",
 }
 
 TABLE = (
@@ -171,6 +163,9 @@ TABLE = (
     Symptom("bullets", "whole_step_first", 5, "the whole step moved before resolving",
             "under CCD bullets tunnel: the bullet is already past the wall when it is resolved", "tunnel"),
 )
+
+# the labs of the lesson, which have a table (a lab an instructor adds has none until its rows are written)
+LABS = tuple(dict.fromkeys(row.lab for row in TABLE))
 
 
 def rows(lab):

@@ -225,8 +225,9 @@ def make_scene(rng):
     return [floor, make_wall()] + crates
 
 
-def make_world(rng, mode):
-    """A BulletWorld at 1/120 s steps in the given mode; bullets move by this file's swept_move() under CCD."""
+def make_world(rng, mode="plain"):
+    """A BulletWorld at 1/120 s steps in the given mode (the window starts in "plain"); bullets move by this
+    file's swept_move() under CCD."""
     world = BulletWorld(lab.scene(make_scene(rng), build=build), effects=LESSON_EFFECTS)  # lab runtime: scene()
     apply_mode(world, mode)
     return world

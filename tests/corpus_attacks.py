@@ -88,7 +88,8 @@ The labs are every lab in checker/labs/ with a mistake corpus (tests/labs_found.
 kinds and mechanisms 1, 2, 5, 6 and 7 are built for every lab from the lab itself (its first and last step
 regions, the function holding each, its STEP_LIBRARY, its corpus's CHECK_STEP); what a lab needs beyond that
 (another name for the library's answer, a World call, the step that forges, a side module, which mechanisms
-apply) is its corpus's ATTACK dict; the other attacks and controls are written per lab below.
+apply) is its corpus's ATTACK dict; its "table" attack and its controls are written per lab below for the
+lesson's labs, and by the lab's corpus itself (ATTACK["entries"], own_entries below) for a lab added later.
 
     ENTRIES: [Entry]; BY_LAB: {lab: [Entry]}; LABS: {lab: its mistake-corpus module}; HONEST: {name: Entry}
     build(entry) -> source text; write(directory, entries=None) -> {name: path}
@@ -1198,11 +1199,13 @@ def _issue35(lab):
                extra_text=(("", "# -*- coding: unicode_escape -*-\n"),
                            (MAIN_GUARD, f"\n\n# see my notes{BACKSLASH_N}{hidden_line}  # (mine)\n" + MAIN_GUARD)),
                mechanism=2),
+    ] + ([] if not forged else [   # a one-step lab has no other step whose checks a forged tape could reach
         attack(f"{short}_m5_foreign_hook", lab, "foreign_hook",
                {forging_step: _code(FOREIGN_EVENT) + "\n" + FILES_SOLUTION_STEPS[lab][forging_step]}, forged,
                f"step {forging_step} (the solution's, flagged) patches the child's tape.Recorder.take to add to every tape "
                "an event naming draw_text, a handout function no probe installs: the solution's other steps must "
                "come out as a tape mismatch, never data or a call in the grader", mechanism=5, message="could not replay"),
+    ]) + [
         attack(f"{short}_m6_star_solution", lab, "star_import", undone, module.FUNCTION_CHECKS,
                f"the steps are the starter's; `from solutions.{lab} import *` after the defs replaces every step "
                "function with the solution's", edits=((MAIN_GUARD, f"\n\nfrom solutions.{lab} import *  # noqa\n"
@@ -1338,16 +1341,27 @@ ISSUE35 = [entry for lab in LABS for entry in _issue35(lab)] + [
 #     Bullets and Sleeping Crates compare every case's answer (none skips a case it cannot see);
 #   10 (wrong answers) are More Shapes' and Ball on the Ramp's; the stdlib controls are where a step reads
 #     naturally with cmath or itertools (More Shapes, Tumbling Crates, Sleeping Crates).
-# every lab's issue-35 mechanisms: its corpus's ATTACK["mechanisms"], else those _issue35 builds for any lab
-MECHANISMS_BY_LAB = {lab: _attack_data(lab).get("mechanisms", (1, 2, 5, 6, 7) + ((8,) if lab in SIDE else ()))
-                     for lab in LABS}
+# every lab's issue-35 mechanisms: its corpus's ATTACK["mechanisms"], else those _issue35 builds for any lab (5
+# only where a step forges the tape against another step's check)
+MECHANISMS_BY_LAB = {lab: _attack_data(lab).get("mechanisms", (1, 2) + ((5,) if forger(lab)[1] else ()) + (6, 7)
+                                                + ((8,) if lab in SIDE else ())) for lab in LABS}
 
 
 # issue 39's attacks on the judging (items 2-4): tests/corpus_attacks_judge.py
 ISSUE39_JUDGE = corpus_attacks_judge.entries(attack)
 MECHANISM_KINDS += corpus_attacks_judge.KINDS
 
-ENTRIES = TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING + FIRST_ROUND + ISSUE35 + ISSUE39_JUDGE
+
+def own_entries(lab):
+    """The attacks and controls a lab's corpus writes for itself: ATTACK["entries"](attack, control), a function
+    given this module's two makers, so a lab added as one folder (and its corpus) needs nothing written here."""
+    make = _attack_data(lab).get("entries")
+    return list(make(attack, control)) if make else []
+
+
+OWN = [entry for lab in LABS for entry in own_entries(lab)]
+
+ENTRIES = TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING + FIRST_ROUND + ISSUE35 + ISSUE39_JUDGE + OWN
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
 BY_LAB = {lab: [entry for entry in ENTRIES if entry.lab == lab] for lab in LABS}

@@ -142,9 +142,14 @@ def turned(frame, other):
 
 def test_jump_lands_on_the_first_frame_that_differs_visibly_from_the_solution(shown):
     """J: the first frame where a body is 5 px from the solution's or turned 5 degrees differently (a difference
-    seen at the window's scale; 1-3 px is not), and no frame before it."""
+    seen at the window's scale; 1-3 px is not), and no frame before it; none where no frame differs (a step that
+    only reads the world, as new-lab's template's, changes no body)."""
     lab, path, row, replay = shown
     named = replay.fail_frame
+    if all(distance(f, replay.reference_at(f["frame"])) < 5 and turned(f, replay.reference_at(f["frame"])) < 5
+           for f in replay.frames):
+        assert named is None, f"failing frame {named} named where no body differs visibly from the solution's"
+        return
     assert named is not None and any(f"failing frame {named} " in line for line in replay.summary())
     before = [f for f in replay.frames if f["frame"] < named]
     at = next(f for f in replay.frames if f["frame"] == named)

@@ -135,10 +135,10 @@ def test_every_lab_has_every_listed_kind_and_two_controls(lab):
     """Every lab in checker/labs/ (with a mistake corpus; one without fails tests/test_corpus_labs.py). Also: it
     has an entry of each issue-35 mechanism that applies to it (MECHANISMS_BY_LAB). The first round's seven kinds
     and mechanisms 1, 2, 5, 6, 7 are built for any lab from the lab itself; a "table" attack and the controls are
-    written for it."""
+    written for it (by its corpus: ATTACK["entries"])."""
     entries = corpus.BY_LAB[lab.id]
-    where = (f"write them for {lab.id} in tests/corpus_attacks.py (as its TUMBLING, SLEEPING, ... lists and "
-             "FIRST_ROUND's tables and controls)")
+    where = (f"write them in tests/corpus_{lab.id}.py's ATTACK[\"entries\"] (corpus_attacks.own_entries; new-lab's "
+             "corpus has an example)")
     mechanisms = set(corpus.MECHANISMS_BY_LAB[lab.id]) - {entry.mechanism for entry in entries}
     assert not mechanisms, f"{lab.id}: no entry of issue-35 mechanisms {sorted(mechanisms)}: {where}"
     kinds = set(corpus.LISTED_KINDS) - {entry.kind for entry in entries}

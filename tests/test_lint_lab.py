@@ -185,6 +185,7 @@ SOURCE_BREAKS = {   # rule -> (file, old, new): one edit of the copy (a solution
     "lesson_citations": (f"solutions/{LAB}.py", '    # Step 2 (lesson: "', '    # Step 2 (lesson: "Nowhere'),
     "numbered_steps": (f"solutions/{LAB}.py", "\nimport ", "\n# Step 6: nothing more.\nimport "),
     "title_names_the_file": (f"solutions/{LAB}.py", '"""Sleeping Crates:', '"""Sleepy Boxes:'),
+    "world_factories": (f"solutions/{LAB}.py", "def make_world(rng):", "def make_world(rng, mode):"),
     "no_flags": (f"solutions/{LAB}.py", "    # END PROMPT\n", "    # END PROMPT\n    _ = getattr(body, 'x', 0)\n"),
 }
 

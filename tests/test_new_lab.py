@@ -43,8 +43,8 @@ def test_new_lab_writes_the_lab_s_files_and_nothing_else(project):
     copy, out = project
     written = sorted(line.split(": ")[0] for line in out.splitlines() if line.endswith(": written"))
     assert written == sorted(new_lab.planned(LAB_ID, TITLE)) == sorted([
-        f"solutions/{LAB_ID}.py", f"starters/{LAB_ID}_starter.py", f"tests/corpus_{LAB_ID}.py"] + [f"checker/labs/{LAB_ID}/{name}" for name in (
-            "__init__.py", "checks.py", "probes.py", "scenes.py")])
+        f"solutions/{LAB_ID}.py", f"starters/{LAB_ID}_starter.py", f"tests/corpus_{LAB_ID}.py"] + [
+        f"checker/labs/{LAB_ID}/{name}" for name in ("__init__.py", "checks.py", "probes.py", "scenes.py", "show.py")])
     assert all((copy / path).is_file() for path in written)
 
 

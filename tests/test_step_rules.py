@@ -72,8 +72,8 @@ def test_each_steps_library_names_are_flagged_in_that_step(lab):
 def in_step(source, step, code):
     """`source` with the inside of step `step` replaced by `code` (lines at the region's indent); and its first line."""
     lines = source.splitlines(keepends=True)
-    start = next(i for i, line in enumerate(lines) if f"# --- step {step}:" in line)
-    end = next(i for i, line in enumerate(lines) if f"# --- end of step {step} ---" in line)
+    start = next(i for i, line in enumerate(lines) if line.strip().startswith(f"# --- step {step}:"))
+    end = next(i for i, line in enumerate(lines) if line.strip().startswith(f"# --- end of step {step} ---"))
     indent = lines[start][:len(lines[start]) - len(lines[start].lstrip())]
     body = "".join(indent + line + "\n" for line in code.splitlines())
     return "".join(lines[:start + 1]) + body + "".join(lines[end:]), start + 2
@@ -227,8 +227,8 @@ def test_an_import_added_outside_the_steps_and_used_inside_is_flagged_but_math_i
 
 def step_code(source, step):
     lines = source.splitlines()
-    start = next(i for i, line in enumerate(lines) if f"# --- step {step}:" in line)
-    end = next(i for i, line in enumerate(lines) if f"# --- end of step {step} ---" in line)
+    start = next(i for i, line in enumerate(lines) if line.strip().startswith(f"# --- step {step}:"))
+    end = next(i for i, line in enumerate(lines) if line.strip().startswith(f"# --- end of step {step} ---"))
     indent = lines[start][:len(lines[start]) - len(lines[start].lstrip())]
     return "\n".join(line[len(indent):] for line in lines[start + 1:end])
 

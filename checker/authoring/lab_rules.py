@@ -578,6 +578,28 @@ def title_names_the_file(s):
         return broken("the lab does not recognise its own solution", "fix recognise(path, source) in checks.py")
 
 
+@rule("solutions/{id}.py", needs=("solution_and_starter",), tests="test_arbiter_fast.py, test_fast_paths.py")
+def world_factories(s):
+    """The solution defines `make_scene(rng)` (the scene's bodies) and `make_world(rng)` (the World the window
+    starts with) at the top level; any further parameter has a default, so a test builds both from the rng."""
+    try:
+        tree = ast.parse(s.solution)
+    except SyntaxError as exc:
+        return broken(f"does not parse (line {exc.lineno})", "fix the syntax error")
+    defined = {node.name: node for node in tree.body if isinstance(node, ast.FunctionDef)}
+    for name in ("make_scene", "make_world"):
+        if name not in defined:
+            return broken(f"defines no {name}(rng)", f"build the {'bodies' if name == 'make_scene' else 'World'} "
+                          f"in a top-level {name}(rng)")
+        params = defined[name].args
+        positional = params.posonlyargs + params.args
+        needed = len(positional) - len(params.defaults)
+        kw_needed = [arg for arg, default in zip(params.kwonlyargs, params.kw_defaults) if default is None]
+        if needed != 1 or kw_needed:
+            return broken(f"{name} needs {needed + len(kw_needed)} arguments", f"give {name} one parameter, the "
+                          "rng, and defaults to the others")
+
+
 # ---------------------------------------------------------------- tests/
 
 @rule("tests/corpus_{id}.py", needs=("solution_and_starter",),

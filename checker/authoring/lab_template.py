@@ -9,10 +9,11 @@ When checks become declarative (issue 42, part 2), only checks.py and probes.py 
 
 SOLUTION = '''"""$title: a Lesson 11 lab (written by `python -m checker new-lab`; make it yours).
 
-Two crates fall onto the floor. The HUD shows the fastest approach along a
-contact normal seen so far, read with normal_speed(): how fast B moves
-relative to A along the contact's normal (px/s), negative while the two
-approach, as the lesson's resolve() reads it before an impulse.
+Three crates fall onto the floor. At every contact point the World asks
+normal_speed() how fast B moves relative to A along the contact's normal
+(px/s): negative while the two approach, and only then does the contact get
+its impulse (the library's resolve()). The HUD shows the fastest approach
+seen so far.
 
 The comments "Step 1" to "Step 3" follow the exercise's steps. Step 2 is the
 code between the lines `# --- step 2: ... ---` and `# --- end of step 2 ---`:
@@ -33,7 +34,8 @@ import pygame
 
 from lesson11 import runtime as lab  # lab runtime
 from lesson11.panel import LabPanel  # solver panel
-from lesson11.physics2d import Body, World, box_points
+from lesson11.physics2d import Body, World, box_points, spin_velocity
+from lesson11.physics2d import resolve as library_resolve
 from lesson11.physics2d.draw import draw_text
 
 WIDTH, HEIGHT = 900, 600
@@ -42,7 +44,7 @@ STATIC_BODIES = 1    # the floor
 BACKGROUND = (24, 26, 34)
 GREY = (90, 96, 110)
 
-# Step 1: run this file. Until you write step 2 the HUD reads 0.0 px/s, however hard the crates land.
+# Step 1: run this file. Until you write step 2 no contact closes: the crates sink through the floor.
 
 
 def normal_speed(va, vb, normal):
@@ -56,7 +58,7 @@ def normal_speed(va, vb, normal):
     # BEGIN PROMPT
     # Step 2 (lesson: "5. Impulses that spin, and friction"): return B's velocity relative to A's,
     # projected on the normal (a dot product); it is negative while the two approach.
-    # starter: return 0.0  # until you write step 2, every contact reads 0.0 px/s: replace this placeholder
+    # starter: return 0.0  # until you write step 2, no contact closes: replace this placeholder
     # END PROMPT
     return (vb - va).dot(normal)
     # --- end of step 2 ---
@@ -69,10 +71,29 @@ def build(item):
                 color=item.get("color", (214, 150, 86)))
 
 
-def make_scene():
-    """The floor and two crates dropped onto it, from 300 px and 400 px above it."""
+def make_scene(rng):
+    """The floor and three crates dropped onto it, from 300 to 400 px above it, in colours drawn from rng."""
     floor = Body(box_points(WIDTH, 40), (WIDTH / 2, HEIGHT - 20), 0, color=GREY)
-    return [floor, build({"w": 60, "h": 40, "pos": [300, 240]}), build({"w": 60, "h": 40, "pos": [600, 140]})]
+    return [floor] + [build({"w": 60, "h": 40, "pos": pos, "color": (rng.randint(170, 240), 150, 86)})
+                      for pos in ([300, 240], [450, 190], [600, 140])]
+
+
+def resolve(a, b, normal, point):
+    """The World's contact impulse: the library's resolve(), given only while normal_speed() says the point closes.
+
+    The velocities are the contact point's on each body (px/s): the centre's plus the spin's, ω × r.
+    """
+    va = a.vel + spin_velocity(a.omega, point - a.pos)
+    vb = b.vel + spin_velocity(b.omega, point - b.pos)
+    if normal_speed(va, vb, normal) >= 0:
+        return 0.0   # separating, or sliding past: no impulse
+    return library_resolve(a, b, normal, point)
+
+
+def make_world(rng):
+    """The World the window starts with: the scene's bodies, the course's gravity, steps of 1/120 s, and this
+    file's resolve() at every contact point."""
+    return World(lab.scene(make_scene(rng), build=build), resolve=resolve)  # lab runtime: scene()
 
 
 def fastest_approach(world):
@@ -87,7 +108,7 @@ def main():
     clock = pygame.time.Clock()
     font = pygame.font.Font(None, 24)
     rng = random.Random(lab.seed(11))  # lab runtime: seed()
-    world = World(lab.scene(make_scene(), build=build))  # lab runtime: scene()
+    world = make_world(rng)
     panel = LabPanel()  # solver panel
     fastest = 0.0
     running = True
@@ -102,7 +123,7 @@ def main():
                 if len(world.bodies) - STATIC_BODIES < MAX_CRATES:
                     world.add(build({"w": rng.randint(36, 56), "h": rng.randint(28, 44), "pos": list(event.pos)}))
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_r:
-                world = World(make_scene())
+                world = make_world(rng)
                 fastest = 0.0
         panel.advance(world, dt)  # solver panel: fixed steps, long frames clamped
         lab.record(world.bodies, world.contacts)  # lab runtime: record()
@@ -123,7 +144,8 @@ if __name__ == "__main__":
     main()
 '''
 
-INIT = '''"""The $title lab: checks.py (its checks), probes.py (its probes), scenes.py (its scenes)."""
+INIT = '''"""The $title lab: checks.py (its checks), probes.py (its probes), scenes.py (its scenes), show.py (what
+--show draws)."""
 '''
 
 CHECKS = '''"""$title: the checks and the hints (written by `python -m checker new-lab`; make them yours).
@@ -317,16 +339,68 @@ descriptions ({"w", "h", "pos", "angle", "vel"}), made by the lab's build().
 """
 from lesson11 import records as metrics
 
-FRAMES = 72   # 1.2 s at 60 fps: the solution's crates land at 0.78 s and 0.92 s (frames 47 and 55)
+FRAMES = 72   # 1.2 s at 60 fps: the solution's crates fall 300, 350 and 400 px: they land at 0.78, 0.85 and 0.90 s
 
 
 def drop():
-    """Two 60 x 40 crates dropped from 300 px and 400 px above the floor."""
-    crates = [{"w": 60, "h": 40, "pos": [300, 240]}, {"w": 60, "h": 40, "pos": [600, 140]}]
+    """Three 60 x 40 crates dropped from 300 to 400 px above the floor."""
+    crates = [{"w": 60, "h": 40, "pos": [300, 240]}, {"w": 60, "h": 40, "pos": [450, 190]},
+              {"w": 60, "h": 40, "pos": [600, 140]}]
     return {"frames": FRAMES, "fps": metrics.FPS, "seed": metrics.SEED, "record_every": 1, "scenario": crates}
 
 
 SCENARIOS = {"drop": drop}
+'''
+
+SHOW = '''"""What --show and --pictures draw for $title's checks (new-lab's template; checker/labs/__init__.py says how
+it is found). SERIES: the quantity each behaviour check is plotted by; CASES: a failed function check's failing
+cases, from the probe's judged data:
+
+  SpeedCase  normal_speed(): both velocities and the normal as arrows, the two answers as bars from 0
+"""
+from pygame import Vector2
+
+from checker.replay.show_kit import BACK, GREY, LESSON, STUDENT, TEXT, Case, arrow, close, data, numbered, text_font
+from checker.replay.show_series import FASTEST
+
+SERIES = {"runs": FASTEST}
+SCALE = 0.5   # screen px per px/s
+
+
+class SpeedCase(Case):
+    """normal_speed(va, vb, normal): vA (white) and vB (grey) as arrows, the normal (white, between them), and
+    each answer as a bar from 0 (the lesson's yellow, the student's magenta)."""
+
+    kind = "speed"
+
+    def lines(self):
+        case, got = self.case, self.case["got"]
+        return [f"{self.head()}", f"yours (magenta): {got if isinstance(got, str) else f'{got:.4g} px/s'}",
+                f"the lesson's (yellow): {case['want']:.4g} px/s"]
+
+    def draw(self, surface):
+        surface.fill(BACK)
+        a, b = Vector2(300, 180), Vector2(600, 180)
+        arrow(surface, TEXT, a, a + Vector2(self.case["va"]) * SCALE)
+        arrow(surface, GREY, b, b + Vector2(self.case["vb"]) * SCALE)
+        arrow(surface, TEXT, (a + b) / 2, (a + b) / 2 + Vector2(self.case["normal"]) * 60, 2)
+        font = text_font(20)
+        for row, (value, colour) in enumerate(((self.case["want"], LESSON), (self.case["got"], STUDENT))):
+            y = 360 + 30 * row
+            if not isinstance(value, str):
+                width = max(-440.0, min(440.0, value * SCALE))
+                surface.fill(colour, (min(450, 450 + width), y, max(abs(width), 2), 16))
+            surface.blit(font.render("0", True, TEXT), (446, 410))
+        self.finish(surface, "bars: the speed along the normal")
+
+
+def speed_cases(functions, seed):
+    wrong = [c for c in data(functions, "normal_speed") or [] if "want" in c and
+             (isinstance(c["got"], str) or not close(c["got"], c["want"]))]
+    return numbered(SpeedCase, wrong)
+
+
+CASES = {"normal_speed_right": speed_cases}
 '''
 
 CORPUS = '''"""The $title mistake corpus: plausible student files and the verdict the checker owes each one.
@@ -397,7 +471,7 @@ WRONG = [
         speed = (vb - va).dot(normal)
     """}, why="the function returns None: the checker must say it needs a number, not crash"),
     wrong("outside_scene_changed", "edits make_scene(): the first crate starts on the floor", "handout_unchanged",
-          edits=[('"pos": [300, 240]})', '"pos": [300, 540]})')],
+          edits=[("([300, 240], [450, 190]", "([300, 540], [450, 190]")],
           why="code outside the steps differs from the handout"),
 ]
 
@@ -406,7 +480,7 @@ SAYS = {
     "only_a": ("only A's velocity",), "length": ("the length of vB - vA",), "sum": ("vB + vA",),
     "cross": ("cross product",), "absolute": ("lost its sign",), "halved": ("halved",),
     "clamped": ("separating pair reads 0",), "x_only": ("only the x part",), "returns_none": ("a number",),
-    "outside_scene_changed": ('"pos": [300, 540]',),
+    "outside_scene_changed": ("[300, 540]",),
 }
 WRONG = with_says(WRONG, SAYS)
 
@@ -419,6 +493,37 @@ ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
 
+
+def attack_entries(attack, control):
+    """This lab's entries of the attack corpus (tests/corpus_attacks.py builds the others from the lab itself): a
+    step answered from a table of the probe's fixed cases, and two honest controls in other styles."""
+    from checker.labs.${lab_id}.probes import CASES, reference_normal_speed
+    speeds = {(va, vb, n): reference_normal_speed(va, vb, n) for _, va, vb, n in CASES}
+    assert len(speeds) >= 5, "the probe's fixed cases moved: the table would test nothing"
+    return [
+        attack("${lab_id}_table", "${lab_id}", "table", {2: f"""
+            speeds = {speeds!r}
+            return speeds.get((tuple(va), tuple(vb), tuple(normal)), 0.0)  # not in the table: the placeholder
+        """}, ["normal_speed_right"], "step 2 answers the probe's fixed cases from a table; the pairs drawn for "
+               "this run are not in it", needs_random_inputs=True),
+        control("${lab_id}_control_zip", "${lab_id}", {2: """
+            return sum(a * b for a, b in zip(vb - va, normal))
+        """}, "the dot product as a sum over zip()"),
+        control("${lab_id}_control_print", "${lab_id}", {2: """
+            relative = vb - va
+            print("relative velocity", relative)
+            return relative.dot(normal)
+        """}, "a debug print inside the step"),
+    ]
+
+
+# what tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself
+ATTACK = {"entries": attack_entries}
+
+# the wrong entry `python -m checker FILE --show` is tried on (tests/test_checker_show.py), and the kind of
+# failing case --show draws for it (show.py)
+SHOW_ENTRY, SHOW_CASE = "sign_flipped", "SpeedCase"
+
 FILES = CorpusFiles(STARTER, SOLUTION, STEPS, BY_NAME, "tests/corpus_${lab_id}.py")
 regions, step_code, fill, build, write_corpus = FILES.regions, FILES.step_code, FILES.fill, FILES.build, FILES.write
 '''
@@ -430,5 +535,6 @@ FILES = {
     "checker/labs/${lab_id}/checks.py": CHECKS,
     "checker/labs/${lab_id}/probes.py": PROBES,
     "checker/labs/${lab_id}/scenes.py": SCENES,
+    "checker/labs/${lab_id}/show.py": SHOW,
     "tests/corpus_${lab_id}.py": CORPUS,
 }

@@ -2,7 +2,7 @@
 
     python -m checker new-lab billiards --title "Billiards"
 
-writes solutions/ID.py, checker/labs/ID/ (checks, probes, scenes), starters/ID_starter.py (as `assign` writes
+writes solutions/ID.py, checker/labs/ID/ (checks, probes, scenes, show), starters/ID_starter.py (as `assign` writes
 it) and tests/corpus_ID.py (tests/test_corpus_labs.py finds it). At once the solution passes, the starter fails step 2, and
 `python -m checker lint-lab ID` passes; then make the lab yours, one file at a time, with lint-lab and the
 corpus test after each change. Nothing is ever written over: if any of those paths exists, or the ID is not a
