@@ -8,6 +8,7 @@ venv: the commands run with this venv's Python and the copy first on the path.
 """
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -17,7 +18,7 @@ import pytest
 from checker.authoring import new_lab
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LAB_ID, TITLE = "billiards", "Billiards"
+LAB_ID, TITLE = "pendulum_demo", "Pendulum Demo"   # no lab of the bundle's
 
 
 def run(copy, *args, timeout=600):
@@ -75,6 +76,37 @@ def test_the_corpus_new_lab_wrote_gets_its_verdicts(project):
     assert passed >= 32 and " failed" not in out.splitlines()[-1], out[-500:]   # 16 entries, two tests each, and more
 
 
+# the tests that cover each of the lesson's labs but not a lab added later, and why
+NOT_FOR_ADDED_LABS = {
+    "tests/test_symptoms.py::test_the_window_shows_what_the_table_says":
+        "the lesson's Hint tables (lesson11/symptoms.py) have rows for the lesson's labs only",
+    "tests/test_step_rules.py::test_an_attack_is_flagged_with_its_step_line_and_rule":
+        "attacks written against the lesson's labs' step code; test_each_steps_library_names_... covers every lab",
+    "tests/test_corpus_attacks.py::test_every_table_holds_the_fixed_inputs_of_its_probe":
+        "an added lab's corpus asserts its own table as it builds it (new-lab's attack_entries)",
+}
+
+
+def _tests_of(lab_id, ids):
+    """The test functions (file::name) with a parameter naming `lab_id` among the collected `ids`."""
+    pattern = re.compile(rf"(^|[\[\-_]){lab_id}([\]\-_]|$)")
+    return {i.split("[")[0] for i in ids if "[" in i and pattern.search(i.split("[", 1)[1])}
+
+
+def test_every_test_that_covers_each_lab_covers_the_new_one(project):
+    """Part of "the tests find the labs": every test function run for each lab of the bundle is run for the new
+    lab too (collected in the copy, the new lab's files and nothing else added), but NOT_FOR_ADDED_LABS."""
+    from checker import labs
+    status, out, err = run(project[0], "-m", "pytest", "--collect-only", "-q", "-n", "0", "-o", "addopts=",
+                           "-p", "no:cacheprovider")
+    assert status == 0, (out + err)[-3000:]
+    ids = [line.strip() for line in out.splitlines() if "::" in line]
+    each = set.intersection(*[_tests_of(lab.id, ids) for lab in labs.LABS])
+    assert len(each) > 30 and set(NOT_FOR_ADDED_LABS) <= each, sorted(each)
+    missing = each - _tests_of(LAB_ID, ids) - set(NOT_FOR_ADDED_LABS)
+    assert not missing, f"tests that skip a lab added by new-lab: {sorted(missing)}"
+
+
 def test_new_lab_writes_over_nothing(project):
     copy = project[0]
     before = (copy / "solutions" / f"{LAB_ID}.py").read_bytes()
@@ -85,8 +117,8 @@ def test_new_lab_writes_over_nothing(project):
 
 
 @pytest.mark.parametrize("lab_id, title, words", [
-    ("Bad-Id", "Billiards", "'Bad-Id' is not a lab id"),
-    ("class", "Billiards", "'class' is not a lab id"),
+    ("Bad-Id", "Pendulum Demo", "'Bad-Id' is not a lab id"),
+    ("class", "Pendulum Demo", "'class' is not a lab id"),
     ("pool", "", "--title ''"),
     ("pool", 'say "hi"', "without"),
     ("pool", "Tumbling Crates", "a lab has that title already"),
