@@ -9,7 +9,7 @@ When checks become declarative (issue 42, part 2), only checks.py and probes.py 
 
 SOLUTION = '''"""$title: a Lesson 11 lab (written by `python -m checker new-lab`; make it yours).
 
-Three crates fall onto the floor. At every contact point the World asks
+Three crates are tossed onto the floor and slide to a stop. At every contact point the World asks
 normal_speed() how fast B moves relative to A along the contact's normal
 (px/s): negative while the two approach, and only then does the contact get
 its impulse (the library's resolve()). The HUD shows the fastest approach
@@ -44,7 +44,8 @@ STATIC_BODIES = 1    # the floor
 BACKGROUND = (24, 26, 34)
 GREY = (90, 96, 110)
 
-# Step 1: run this file. Until you write step 2 no contact closes: the crates sink through the floor.
+# Step 1: run this file. Until you write step 2 no contact closes: the crates get no impulse, so no friction
+# either, and slide on across the floor.
 
 
 def normal_speed(va, vb, normal):
@@ -72,10 +73,11 @@ def build(item):
 
 
 def make_scene(rng):
-    """The floor and three crates dropped onto it, from 300 to 400 px above it, in colours drawn from rng."""
+    """The floor and three crates tossed onto it (300 to 400 px above it, 120-160 px/s sideways), in colours
+    drawn from rng."""
     floor = Body(box_points(WIDTH, 40), (WIDTH / 2, HEIGHT - 20), 0, color=GREY)
-    return [floor] + [build({"w": 60, "h": 40, "pos": pos, "color": (rng.randint(170, 240), 150, 86)})
-                      for pos in ([300, 240], [450, 190], [600, 140])]
+    return [floor] + [build({"w": 60, "h": 40, "pos": pos, "vel": vel, "color": (rng.randint(170, 240), 150, 86)})
+                      for pos, vel in (([200, 240], [160, 0]), ([450, 190], [-120, 0]), ([600, 140], [140, 0]))]
 
 
 def resolve(a, b, normal, point):
@@ -339,13 +341,14 @@ descriptions ({"w", "h", "pos", "angle", "vel"}), made by the lab's build().
 """
 from lesson11 import records as metrics
 
-FRAMES = 72   # 1.2 s at 60 fps: the solution's crates fall 300, 350 and 400 px: they land at 0.78, 0.85 and 0.90 s
+FRAMES = 90   # 1.5 s at 60 fps: the solution's crates fall 300, 350 and 400 px, land at 0.78, 0.85 and 0.90 s
+              # and friction (0.6) stops their slide; with no impulse (a wrong step 2) nothing stops it
 
 
 def drop():
-    """Three 60 x 40 crates dropped from 300 to 400 px above the floor."""
-    crates = [{"w": 60, "h": 40, "pos": [300, 240]}, {"w": 60, "h": 40, "pos": [450, 190]},
-              {"w": 60, "h": 40, "pos": [600, 140]}]
+    """Three 60 x 40 crates tossed from 300 to 400 px above the floor, 120-160 px/s sideways."""
+    crates = [{"w": 60, "h": 40, "pos": [200, 240], "vel": [160, 0]}, {"w": 60, "h": 40, "pos": [450, 190],
+              "vel": [-120, 0]}, {"w": 60, "h": 40, "pos": [600, 140], "vel": [140, 0]}]
     return {"frames": FRAMES, "fps": metrics.FPS, "seed": metrics.SEED, "record_every": 1, "scenario": crates}
 
 
@@ -380,11 +383,12 @@ class SpeedCase(Case):
 
     def draw(self, surface):
         surface.fill(BACK)
-        a, b = Vector2(300, 180), Vector2(600, 180)
-        arrow(surface, TEXT, a, a + Vector2(self.case["va"]) * SCALE)
-        arrow(surface, GREY, b, b + Vector2(self.case["vb"]) * SCALE)
-        arrow(surface, TEXT, (a + b) / 2, (a + b) / 2 + Vector2(self.case["normal"]) * 60, 2)
         font = text_font(20)
+        a, b, middle = Vector2(230, 170), Vector2(670, 170), Vector2(450, 250)
+        for start, vector, colour, name in ((a, self.case["va"], TEXT, "vA"), (b, self.case["vb"], GREY, "vB"),
+                                            (middle, Vector2(self.case["normal"]) * 120, TEXT, "n")):
+            arrow(surface, colour, start, start + Vector2(vector) * (1 if name == "n" else SCALE))
+            surface.blit(font.render(name, True, colour), start + Vector2(-10, -28))
         for row, (value, colour) in enumerate(((self.case["want"], LESSON), (self.case["got"], STUDENT))):
             y = 360 + 30 * row
             if not isinstance(value, str):
@@ -471,7 +475,7 @@ WRONG = [
         speed = (vb - va).dot(normal)
     """}, why="the function returns None: the checker must say it needs a number, not crash"),
     wrong("outside_scene_changed", "edits make_scene(): the first crate starts on the floor", "handout_unchanged",
-          edits=[("([300, 240], [450, 190]", "([300, 540], [450, 190]")],
+          edits=[("(([200, 240], [160, 0])", "(([200, 540], [160, 0])")],
           why="code outside the steps differs from the handout"),
 ]
 
@@ -480,7 +484,7 @@ SAYS = {
     "only_a": ("only A's velocity",), "length": ("the length of vB - vA",), "sum": ("vB + vA",),
     "cross": ("cross product",), "absolute": ("lost its sign",), "halved": ("halved",),
     "clamped": ("separating pair reads 0",), "x_only": ("only the x part",), "returns_none": ("a number",),
-    "outside_scene_changed": ("[300, 540]",),
+    "outside_scene_changed": ("[200, 540]",),
 }
 WRONG = with_says(WRONG, SAYS)
 
