@@ -22,10 +22,10 @@ solutions/ball_on_ramp.py measures in the same scene, noted beside it.
 import math
 
 from . import scenes
-from checker.judging import lab_checks
+from checker.judging import criteria, lab_checks
+from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from checker.judging.common import shown
 from lesson11.records import finite
 
 TITLE = "Ball on the Ramp"
@@ -454,70 +454,43 @@ def runs(sub):
     return {name: run.record for name, run in runs.items()}
 
 
-def _sunk(depth, where, frame):
-    if depth > SINK:
-        raise Fail(f"the ball sank into {where}.\n{shown(depth, SINK)} px deep at frame {frame} (bound {SINK:g} px).",
-                   HINTS["settle"])
+def _roll(index, expected):
+    def measure(records):
+        roll = scenes.measure_roll(records["ramp"], index)
+        return dict(roll, accel_off=abs(roll["accel"] - expected) / expected)
+    return measure
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def rolls_without_slipping(records):
-    """On the 22° ramp (mu 0.6) the ball rolls without slipping, |ω r - v| <= 2 % of v, at a = ⅔ g sin θ (criterion 1)."""
-    roll = scenes.measure_roll(records["ramp"], 0)
-    if roll["left_ramp"]:
-        raise Fail("the ball let go on the ramp did not stay on it.\nIt bounced or flew off.", HINTS["settle"])
-    _sunk(roll["depth"], "the ramp", roll["depth_frame"])
-    off = abs(roll["accel"] - scenes.ROLLING) / scenes.ROLLING
-    if not off <= ROLL_ACCEL:
-        raise Fail(f"the ball does not roll down the ramp at ⅔ g sin θ, a rolling disc's acceleration.\n"
-                   f"{roll['accel']:.1f} px/s² against {scenes.ROLLING:.1f} (off by {off:.1%}; bound "
-                   f"{ROLL_ACCEL:.0%}).", HINTS["settle"])
-    if not roll["slip"] <= ROLL_SLIP:
-        raise Fail(f"the ball slips on the ramp instead of rolling.\nits rim moves {roll['slip']:.1%} faster or "
-                   f"slower than its center (|ω r - v| / v; bound {ROLL_SLIP:.0%}).", HINTS["settle"])
-    return (f"a = {roll['accel']:.2f} px/s² (⅔ g sin θ = {scenes.ROLLING:.2f}), slip {roll['slip']:.2%}, "
-            f"deepest {roll['depth']:.2f} px")
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def slides_without_friction(records):
-    """On a frictionless ramp the ball slides at a = g sin θ (within 1 %) and does not spin (criterion 2)."""
-    slide = scenes.measure_roll(records["ramp"], 1)
-    if slide["left_ramp"]:
-        raise Fail("the frictionless ball let go on the ramp did not stay on it.\nIt bounced or flew off.",
-                   HINTS["settle"])
-    _sunk(slide["depth"], "the ramp", slide["depth_frame"])
-    off = abs(slide["accel"] - scenes.SLIDING) / scenes.SLIDING
-    if not off <= SLIDE_ACCEL:
-        raise Fail(f"the frictionless ball does not slide at g sin θ.\n{slide['accel']:.1f} px/s² against "
-                   f"{scenes.SLIDING:.1f} (off by {off:.1%}; bound {SLIDE_ACCEL:.0%}).", HINTS["friction_clamp"])
-    if slide["omega"] > SLIDE_SPIN:
-        raise Fail(f"the frictionless ball spins: with mu = 0 nothing can turn it.\nup to "
-                   f"{shown(slide['omega'], SLIDE_SPIN)} rad/s (bound {SLIDE_SPIN:g}).", HINTS["friction_clamp"])
-    return f"a = {slide['accel']:.2f} px/s² (g sin θ = {scenes.SLIDING:.2f}), spin {slide['omega']:.2g} rad/s"
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def knocks_crate_over(records):
-    """The ball rolls off the ramp and knocks a tall crate over, never sinking more than 1 px into anything (criterion 3)."""
-    knock = scenes.measure_knock(records["knock"])
-    _sunk(knock["depth"], knock["depth_into"], knock["depth_frame"])
-    if knock["moved"] < KNOCK_MOVE or knock["turned"] < KNOCK_TURN:
-        raise Fail(f"the ball rolled off the ramp but did not knock the tall crate over.\nit turned "
-                   f"{math.degrees(knock['turned']):.0f}° and moved {knock['moved']:.1f} px (bounds: "
-                   f"{math.degrees(KNOCK_TURN):.0f}° and {KNOCK_MOVE:g} px).", HINTS["settle"])
-    return (f"the crate turned {math.degrees(knock['turned']):.0f}° and moved {knock['moved']:.0f} px; deepest "
-            f"overlap {knock['depth']:.2f} px")
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pushed_out_of_crate(records):
-    """A ball started with its center inside a crate is pushed out of the crate, not through it (criterion 4)."""
+def _inside(records):
     inside = scenes.measure_inside(records["inside"])
-    if inside["side"] == "far":
-        raise Fail("a ball with its center inside a crate was pushed through the crate, not out.\nstarted 15 px "
-                   "from the crate's left side, it came out on the right.", HINTS["inside"])
-    if inside["depth"] > INSIDE_DEPTH or inside["side"] != "near":
-        raise Fail(f"a ball started with its center inside a crate is not pushed out.\nstill "
-                   f"{inside['depth']:.1f} px into it after 0.5 s (bound {INSIDE_DEPTH:g} px).", HINTS["inside"])
-    return f"out on the near side after 0.5 s, {inside['depth']:.2f} px of overlap left"
+    return dict(inside, pushed_through=inside["side"] == "far", not_out=inside["side"] != "near")
+
+
+LEFT, SANK = "the ball let go on the ramp did not stay on it", "the ball sank into the ramp"
+INSIDE = "a ball started with its center inside a crate is not pushed out"
+criteria.register(CHECKS, HINTS, (
+    Criterion("rolls_without_slipping", "On the 22° ramp (mu 0.6) the ball rolls without slipping, |ω r - v| <= 2 % "
+              "of v, at a = ⅔ g sin θ (criterion 1).", _roll(0, scenes.ROLLING), (
+                  Bound("left_ramp", 0, LEFT, "settle"),
+                  Bound("depth", SINK, SANK, "settle", "px"),
+                  Bound("accel_off", ROLL_ACCEL, "the ball does not roll down the ramp at ⅔ g sin θ", "settle"),
+                  Bound("slip", ROLL_SLIP, "the ball slips on the ramp instead of rolling", "settle"))),
+    Criterion("slides_without_friction", "On a frictionless ramp the ball slides at a = g sin θ (within 1 %) and "
+              "does not spin (criterion 2).", _roll(1, scenes.SLIDING), (
+                  Bound("left_ramp", 0, LEFT, "settle"),
+                  Bound("depth", SINK, SANK, "settle", "px"),
+                  Bound("accel_off", SLIDE_ACCEL, "the frictionless ball does not slide at g sin θ", "friction_clamp"),
+                  Bound("omega", SLIDE_SPIN, "the frictionless ball spins: with mu = 0 nothing can turn it",
+                        "friction_clamp", "rad/s"))),
+    Criterion("knocks_crate_over", "The ball rolls off the ramp and knocks a tall crate over, never sinking more "
+              "than 1 px into anything (criterion 3).", lambda records: scenes.measure_knock(records["knock"]), (
+                  Bound("depth", SINK, "the ball sank into a body", "settle", "px"),
+                  Bound("moved", KNOCK_MOVE, "the ball did not knock the tall crate over", "settle", "px", True),
+                  Bound("turned", KNOCK_TURN, "the ball did not knock the tall crate over", "settle", "°", True,
+                        180 / math.pi))),
+    Criterion("pushed_out_of_crate", "A ball started with its center inside a crate is pushed out of the crate, not "
+              "through it (criterion 4).", _inside, (
+                  Bound("pushed_through", 0, "a ball with its center inside a crate was pushed through it", "inside"),
+                  Bound("depth", INSIDE_DEPTH, INSIDE, "inside", "px"),
+                  Bound("not_out", 0, INSIDE, "inside"))),
+))

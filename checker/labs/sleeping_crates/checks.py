@@ -18,7 +18,10 @@ Every bound of the criteria was set from what solutions/sleeping_crates.py
 measures in the same scene, with the measured value noted next to it.
 """
 
-from checker.judging import lab_checks
+import math
+
+from checker.judging import criteria, lab_checks
+from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import consistent_mistake, mistake
 from lesson11 import records as metrics
 from . import scenes
@@ -231,61 +234,42 @@ def runs(sub):
     return records
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pile_sleeps(records):
-    """A loose pile of four crates settles and falls asleep within 2 s of settling, without sinking."""
+def _loose(records):
     pile = scenes.measure_loose(records["sleep"].record)
-    if pile["settled"] is None:
-        raise Fail("four crates dropped a little above the floor never settled.\nsome crate stays faster than "
-                   f"{scenes.SLEEP_SPEED:g} px/s or spins faster than {scenes.SLEEP_SPIN:g} rad/s.", HINTS["settle"])
-    if pile["asleep"] is None or pile["asleep"] > SLEPT_BY or pile["asleep"] - pile["settled"] > SLEEP_WITHIN:
-        when = "were not all asleep at the end" if pile["asleep"] is None else f"were all asleep at {pile['asleep']:.2f} s"
-        raise Fail(f"a settled pile does not fall asleep in time.\nfour crates settled at {pile['settled']:.2f} s "
-                   f"but {when} (bound: by {SLEPT_BY:g} s, within {SLEEP_WITHIN:g} s).", HINTS["timer"])
-    if pile["penetration"] > PENETRATION or pile["overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the sleeping pile sank.\n{shown(pile['penetration'], PENETRATION)} px into the floor (bound "
-                   f"{PENETRATION:g}), {shown(pile['overlap'], PAIR_OVERLAP)} px into each other (bound "
-                   f"{PAIR_OVERLAP:g}).", HINTS["moves"])
-    return (f"settled at {pile['settled']:.2f} s, all asleep at {pile['asleep']:.2f} s "
-            f"({pile['asleep'] - pile['settled']:.2f} s later)")
+    return dict(pile, asleep_after=None if pile["asleep"] is None else pile["asleep"] - pile["settled"])
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def no_sleep_in_air(records):
-    """A crate thrown straight up does not fall asleep at the top of its flight (or anywhere in the air)."""
+def _throw(records):
     throw = scenes.measure_throw(records["sleep"].record)
-    if throw["height"] < THROW_HEIGHT:
-        raise Fail(f"a crate thrown up was stopped on its way up.\nthrown at {scenes.THROW_SPEED:g} px/s it rose "
-                   f"only {throw['height']:.1f} px (at least {THROW_HEIGHT:g} px expected).", HINTS["timer"])
-    if throw["asleep_in_air"]:
-        t, gap = throw["asleep_in_air"][0]
-        raise Fail(f"a thrown crate fell asleep in the air: at the top of a throw it is slow for an instant only.\n"
-                   f"thrown at {scenes.THROW_SPEED:g} px/s, asleep at {t:.2f} s, {gap:.1f} px above the floor.",
-                   HINTS["timer"])
-    return f"it rose {throw['height']:.0f} px and slept only on the floor"
+    return dict(throw, frames_asleep_in_air=len(throw["asleep_in_air"]))
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def drop_wakes_pile(records):
-    """A crate dropped on a sleeping pile wakes what it touches, and the pile settles and sleeps again without
-    sinking or jumping."""
+def _drop(records):
     drop = scenes.measure_drop(records["sleep"].record)
-    if drop["landed"] is None:
-        raise Fail("the crate dropped on the sleeping pile never touched it.\nIt should land on the pile.",
-                   HINTS["settle"])
-    if not drop["woke"]:
-        raise Fail(f"a crate landed on the sleeping pile and no crate of the pile woke: what it touches must wake.\n"
-                   f"landed at {drop['landed']:.2f} s.", HINTS["wake"])
-    if drop["sink"] > SINK or drop["penetration"] > PENETRATION or drop["overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the pile sank when a crate landed on it.\na pile crate ended {shown(drop['sink'], SINK)} px "
-                   f"lower (bound {SINK:g}), {shown(drop['penetration'], PENETRATION)} px in the floor, "
-                   f"{shown(drop['overlap'], PAIR_OVERLAP)} px in another (bounds {PENETRATION:g}, {PAIR_OVERLAP:g}).",
-                   HINTS["wake"])
-    if drop["jump"] > JUMP:
-        raise Fail(f"the pile jumped when a crate landed on it.\na pile crate rose {shown(drop['jump'], JUMP)} px "
-                   f"(bound {JUMP:g}).", HINTS["wake"])
-    if drop["asleep_again"] is None or drop["asleep_again"] > WAKE_AGAIN:
-        raise Fail(f"the pile and the dropped crate do not fall asleep again in time.\nlanded at "
-                   f"{drop['landed']:.2f} s, not all asleep by {WAKE_AGAIN:g} s.", HINTS["timer"])
-    return Passed(f"{len(drop['woke'])} pile crates woke at {drop['landed']:.2f} s; all asleep again at "
-                  f"{drop['asleep_again']:.2f} s, {drop['sink']:.2f} px lower at most", value=drop)
+    return dict(drop, pile_crates_woken=len(drop["woke"]))
+
+
+SANK, LANDED = "the sleeping pile sank", "the pile sank when a crate landed on it"
+criteria.register(CHECKS, HINTS, (
+    Criterion("pile_sleeps", "A loose pile of four crates settles and falls asleep within 2 s of settling, without "
+              "sinking.", _loose, (
+                  Bound("settled", math.inf, "four crates dropped a little above the floor never settled", "settle"),
+                  Bound("asleep", SLEPT_BY, "a settled pile does not fall asleep in time", "timer", "s"),
+                  Bound("asleep_after", SLEEP_WITHIN, "a settled pile does not fall asleep in time", "timer", "s"),
+                  Bound("penetration", PENETRATION, SANK, "moves", "px"),
+                  Bound("overlap", PAIR_OVERLAP, SANK, "moves", "px"))),
+    Criterion("no_sleep_in_air", "A crate thrown straight up does not fall asleep at the top of its flight (or "
+              "anywhere in the air).", _throw, (
+                  Bound("height", THROW_HEIGHT, "a crate thrown up was stopped on its way up", "timer", "px", True),
+                  Bound("frames_asleep_in_air", 0, "a thrown crate fell asleep in the air", "timer"))),
+    Criterion("drop_wakes_pile", "A crate dropped on a sleeping pile wakes what it touches, and the pile settles "
+              "and sleeps again without sinking or jumping.", _drop, (
+                  Bound("landed", math.inf, "the crate dropped on the sleeping pile never touched it", "settle"),
+                  Bound("pile_crates_woken", 1, "the crate landed on the sleeping pile woke none of it", "wake",
+                        least=True),
+                  Bound("sink", SINK, LANDED, "wake", "px"),
+                  Bound("penetration", PENETRATION, LANDED, "wake", "px"),
+                  Bound("overlap", PAIR_OVERLAP, LANDED, "wake", "px"),
+                  Bound("jump", JUMP, "the pile jumped when a crate landed on it", "wake", "px"),
+                  Bound("asleep_again", WAKE_AGAIN, "the pile does not fall asleep again in time", "timer", "s"))),
+))
