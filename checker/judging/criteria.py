@@ -3,8 +3,11 @@
 A lab lists its Criterion rows in checks.py and calls register(); each becomes a check that takes what the
 lab's `runs` check returned, measures it (a dict of metrics, or a list of them, one per body, checked in turn)
 and fails at the first Bound broken, in two lines: the bound's sentence (what is wrong), then the evidence,
-"<metric> <value> <unit> (bound <limit>)". A passing check lists the metrics it bounded.
+"<metric> <value> <unit> (bound <limit>)". A passing check lists the metrics it bounded
+(but those that must be 0 or only happen).
 """
+import inspect
+import math
 from dataclasses import dataclass
 
 from .checks import Fail, Passed
@@ -53,18 +56,18 @@ class Criterion:
     max_score: float = 2
 
 
-def register(registry, hints, criteria, depends=("runs",)):
-    """Register each Criterion as a check of `registry` taking the value of `depends` (the check that ran the
-    scenes)."""
+def register(registry, hints, criteria, depends=("runs",), after=(), needs_scenarios=True):
+    """Register each Criterion as a check of `registry` taking the values of `depends` (by default the check
+    that ran the scenes); its measure takes what the check takes (`sub` first to read the submission)."""
     for criterion in criteria:
-        registry.check(depends=list(depends), max_score=criterion.max_score,
-                       needs_scenarios=True)(_check(criterion, hints))
+        registry.check(depends=list(depends), after=list(after), max_score=criterion.max_score,
+                       needs_scenarios=needs_scenarios)(_check(criterion, hints))
 
 
 def _check(criterion, hints):
     """The check function of one criterion (named and described as the criterion)."""
-    def check(records):
-        measured = criterion.measure(records)
+    def check(*values):
+        measured = criterion.measure(*values)
         every = measured if isinstance(measured, list) else [measured]
         for metrics in every:
             for bound in criterion.bounds:
@@ -72,8 +75,24 @@ def _check(criterion, hints):
                     raise Fail(bound.message(metrics.get(bound.metric)), hints[bound.hint])
         if criterion.passed is not None:
             return Passed(criterion.passed(every[-1]), value=measured)
-        worst = {b.metric: b for b in criterion.bounds}.values()
-        return Passed(", ".join(b.shown(every[-1][b.metric], False) for b in worst), value=measured)
+        measures = {b.metric: b for b in criterion.bounds if b.limit not in (0, math.inf)}.values()
+        return Passed(", ".join(b.shown(every[-1][b.metric], False) for b in measures), value=measured)
     check.__name__ = check.__qualname__ = criterion.id
     check.__doc__ = criterion.doc
+    check.__signature__ = inspect.signature(criterion.measure)
     return check
+
+
+def escapes(summary, exploded=math.inf):
+    """How a scene's bodies escaped, from its lesson11.records.summary: flung (one rose 50 px above the screen, or
+    faster than `exploded` px/s some left the screen while not all fell through), how many fell through the floor
+    and how many left the screen; with escape_bounds, every criterion's first bounds."""
+    flung = summary["highest_y"] < -50 or (summary["peak_speed"] > exploded and summary["off_screen"] > 0
+                                           and summary["fell_through"] < summary["crates"])
+    return {"flung": flung, "fell_through": summary["fell_through"], "off_screen": summary["off_screen"]}
+
+
+def escape_bounds(what, hint):
+    """The Bounds of escapes(): none flung, none through the floor, none off the screen."""
+    return (Bound("flung", 0, f"{what} were flung apart", hint), Bound("fell_through", 0, f"{what} fell through the "
+            "floor", hint), Bound("off_screen", 0, f"{what} left the screen", hint))

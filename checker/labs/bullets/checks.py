@@ -24,7 +24,8 @@ solutions/bullets.py measures is noted beside each.
 import math
 
 from . import scenes
-from checker.judging import lab_checks
+from checker.judging import criteria, lab_checks
+from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import consistent_mistake, mistake
 from checker.judging.checks import Fail, Hint, Passed, Registry
 from lesson11.records import finite
@@ -383,44 +384,29 @@ def runs(sub):
     return f"{len(frames)} frames, {max(len(f['bodies']) for f in frames) - 5} bullets at most, none past the wall"
 
 
-@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
-def ccd_never_tunnels(sub, functions):
-    """With CCD no bullet tunnels through the 4 px wall at any speed from 3000 to 12000 px/s (>= 100 shots; criterion 1)."""
+def _shots(sub, functions):
     shots = _function(sub, functions, "shots", "swept_move", None)
-    total = shots["per_speed"] * len(shots["ccd"])
-    tunnelled = {speed: n for speed, n in shots["ccd"].items() if n}
-    if total < MIN_SHOTS:
-        raise Fail(f"too few shots were fired to grade tunnelling.\n{total} shots (at least {MIN_SHOTS}).",
-                   HINTS["watch"])
-    if tunnelled:
-        listed = ", ".join(f"{n} of {shots['per_speed']} at {speed} px/s" for speed, n in tunnelled.items())
-        raise Fail(f"with CCD, bullets tunnelled through the {shots['wall']:g} px wall.\n{listed} (bound: none).",
-                   HINTS["watch"])
-    return (f"0 of {total} shots tunnelled at {min(shots['ccd'], key=int)}-{max(shots['ccd'], key=int)} px/s "
-            f"({shots['ccd_seconds'] * 1000:.0f} ms of physics)")
+    return dict(shots, shots_fired=shots["per_speed"] * len(shots["ccd"]), tunnelled=sum(shots["ccd"].values()),
+                shots_tunnelled_with_substeps_x8=shots["x8"])
 
 
-@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
-def substeps_still_tunnel(sub, functions):
-    """With sub-stepping x8 alone some bullets still tunnel at 12000 px/s: the lab shows the lesson's point (criterion 2)."""
-    shots = _function(sub, functions, "shots", "swept_move", None)
-    if shots["x8"] == 0:
-        raise Fail(f"sub-stepping x8 stops every bullet, so the lab no longer shows what it misses.\nnone of "
-                   f"{shots['x8_shots']} shots at 12000 px/s tunnelled; the wall (4 px) and bullet (radius 3) stay "
-                   "as handed out.", HINTS["handout"])
-    return (f"{shots['x8']} of {shots['x8_shots']} shots tunnelled at 12000 px/s with sub-steps x8 "
-            f"({shots['x8_seconds'] * 1000:.0f} ms of physics for {shots['x8_shots']} shots; CCD: "
-            f"{shots['ccd_seconds'] * 1000:.0f} ms for {shots['per_speed'] * len(shots['ccd'])})")
-
-
-@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
-def crate_momentum(sub, functions):
-    """A bullet hitting a free crate with CCD gives it the lesson's momentum, M (1 + e) m v / (m + M), within 5 % (criterion 4)."""
+def _momentum(sub, functions):
     hit = _function(sub, functions, "crate_hit", "swept_move", None)
     got = math.hypot(*hit["got"])
-    off = abs(got - hit["want"]) / hit["want"]
-    if not off <= MOMENTUM:
-        raise Fail(f"a bullet hitting a free crate does not give it the lesson's momentum.\nbullet "
-                   f"{hit['bullet_momentum']:.0f}, crate {got:.1f}; the lesson's (e = {hit['e']:g}) {hit['want']:.1f} "
-                   f"(off by {off:.1%}; bound {MOMENTUM:.0%}).", HINTS["watch"])
-    return f"crate momentum {got:.1f} against {hit['want']:.1f} ({off:.2%} off; bound {MOMENTUM:.0%})"
+    return {"crate_momentum": got, "momentum_off": abs(got - hit["want"]) / hit["want"]}
+
+
+criteria.register(CHECKS, HINTS, (
+    Criterion("ccd_never_tunnels", "With CCD no bullet tunnels through the 4 px wall at any speed from 3000 to 12000 "
+              "px/s (>= 100 shots; criterion 1).", _shots, (
+                  Bound("shots_fired", MIN_SHOTS, "too few shots were fired to grade tunnelling", "watch", least=True),
+                  Bound("tunnelled", 0, "with CCD, bullets tunnelled through the wall", "watch"))),
+    Criterion("substeps_still_tunnel", "With sub-stepping x8 alone some bullets still tunnel at 12000 px/s: the lab "
+              "shows the lesson's point (criterion 2).", _shots, (
+                  Bound("shots_tunnelled_with_substeps_x8", 1, "sub-stepping x8 stops every bullet, so the lab no "
+                        "longer shows what it misses", "handout", least=True),)),
+    Criterion("crate_momentum", "A bullet hitting a free crate with CCD gives it the lesson's momentum, "
+              "M (1 + e) m v / (m + M), within 5 % (criterion 4).", _momentum, (
+                  Bound("momentum_off", MOMENTUM, "a bullet hitting a free crate does not give it the lesson's "
+                        "momentum", "watch"),)),
+), depends=("loads",), after=FUNCTION_CHECKS, needs_scenarios=False)

@@ -20,12 +20,12 @@ measures in the same scene, with the measured value noted next to it.
 """
 import math
 
-from checker.judging import lab_checks
+from checker.judging import criteria, lab_checks
+from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import consistent_mistake, mistake
 from lesson11 import records as metrics
 from . import scenes
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from checker.judging.common import shown
 
 TITLE = "More Shapes"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -437,80 +437,51 @@ def runs(sub):
     return records
 
 
-def _escaped(summary, what):
-    """Fail if shapes fell through the floor or left the screen."""
-    if summary["fell_through"]:
-        raise Fail(f"shapes fell through the floor.\n{what}: {summary['fell_through']} of {summary['crates']} "
-                   f"(top speed {summary['peak_speed']:.0f} px/s).", HINTS["settle"])
-    if summary["off_screen"] or summary["highest_y"] < -50:
-        raise Fail(f"shapes were flung off the screen.\n{what}: top speed {summary['peak_speed']:.0f} px/s.",
-                   HINTS["settle"])
+def _tipping(shape):
+    def measure(records):
+        record = records["solo"].record
+        tipped = scenes.measure_tipping(record, shape)
+        return dict(criteria.escapes(metrics.summary(record)), **tipped, sink=-tipped["floor_gap"])
+    return measure
 
 
-def _comes_to_rest(shape, what, turn, turn_words):
-    if -shape["floor_gap"] > PENETRATION:
-        raise Fail(f"{what} sank into the floor.\n{shown(-shape['floor_gap'], PENETRATION)} px deep (bound "
-                   f"{PENETRATION:g} px).", HINTS["sinking"])
-    if shape["turned"] < turn or shape["side_error"] > TIPPED_FLAT:
-        raise Fail(f"{what} did not {turn_words}.\nit turned {math.degrees(shape['turned']):.1f}° (at least "
-                   f"{math.degrees(turn):.0f}°); its lowest side ended {shown(math.degrees(shape['side_error']), 6)}° "
-                   f"from flat (bound {math.degrees(TIPPED_FLAT):.0f}°).", HINTS["settle"])
-    if shape["rest_speed"] > REST_SPEED or shape["rest_omega"] > REST_OMEGA:
-        raise Fail(f"{what} is still moving at the end.\n{shown(shape['rest_speed'], REST_SPEED)} px/s, "
-                   f"{shown(shape['rest_omega'], REST_OMEGA)} rad/s over the last 0.5 s (bounds {REST_SPEED:g} px/s, "
-                   f"{REST_OMEGA:g} rad/s).", HINTS["settle"])
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def triangle_tips(records):
-    """A triangle dropped on a corner falls onto a side and comes to rest."""
-    record = records["solo"].record
-    _escaped(metrics.summary(record), "a triangle dropped on its corner did not land")
-    shape = scenes.measure_tipping(record, scenes.TRIANGLE)
-    _comes_to_rest(shape, "the triangle dropped on its corner", TRIANGLE_TURN, "fall onto a side")
-    return f"it turned {math.degrees(shape['turned']):.0f}° and rests {math.degrees(shape['side_error']):.1f}° from flat"
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def hexagon_tips(records):
-    """A hexagon pushed along the floor tips over its corners and stops, on a side."""
-    record = records["solo"].record
-    _escaped(metrics.summary(record), "a hexagon pushed along the floor did not stay on it")
-    shape = scenes.measure_tipping(record, scenes.PUSHED)
-    _comes_to_rest(shape, f"the hexagon pushed at {scenes.PUSH_SPEED:g} px/s", HEXAGON_TURN,
-                   "tip over a corner onto the next side")
-    return (f"it tipped over {round(shape['turned'] / (math.pi / 3))} corner(s), {shape['travelled']:.0f} px, and "
-            "stopped on a side")
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pile_stable(records):
-    """Shapes of every kind piled together neither sink into the floor or each other nor jitter."""
+def _pile(records):
     record = records["pile"].record
-    _escaped(metrics.summary(record, scenes.PILE_TAIL), "the pile of seven shapes fell apart")
-    pile = metrics.measure_pile(record, scenes.PILE_TAIL)
-    if pile["floor_penetration"] > PENETRATION or pile["pair_overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the pile sinks.\nshapes end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
-                   f"floor (bound {PENETRATION:g} px), up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into "
-                   f"each other (bound {PAIR_OVERLAP:g} px).", HINTS["sinking"])
-    if pile["tail_speed"] > PILE_SPEED or pile["drift"] > PILE_DRIFT:
-        raise Fail(f"the pile jitters.\nin its last {scenes.PILE_TAIL:g} s a shape moves at "
-                   f"{shown(pile['tail_speed'], PILE_SPEED)} px/s (bound {PILE_SPEED:g}) and drifts "
-                   f"{shown(pile['drift'], PILE_DRIFT)} px (bound {PILE_DRIFT:g}).", HINTS["settle"])
-    return (f"deepest overlap {max(pile['floor_penetration'], pile['pair_overlap'], 0):.2f} px, top speed "
-            f"{pile['tail_speed']:.1f} px/s at the end")
+    return dict(criteria.escapes(metrics.summary(record, scenes.PILE_TAIL)),
+                **metrics.measure_pile(record, scenes.PILE_TAIL))
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def ramp_holds(records):
-    """A pentagon and a hexagon set on the 22° ramp stay put."""
+def _ramp(records):
     record = records["solo"].record
-    arrays = metrics.dynamic_arrays(record)
-    ramp = [metrics.measure_ramp(record)[i] for i in scenes.ON_RAMP]
-    tail_speed = float(arrays["speed"][-metrics.FPS:, list(scenes.ON_RAMP)].max())
-    worst = max(ramp, key=lambda shape: abs(shape["slid"]))
-    if abs(worst["slid"]) > RAMP_SLIDE or tail_speed > RAMP_SPEED:
-        raise Fail(f"a pentagon and a hexagon at rest on the 22° ramp did not stay put: friction 0.6 holds them.\n"
-                   f"one moved {shown(worst['slid'], RAMP_SLIDE)} px in 3 s (bound {RAMP_SLIDE:g} px); the faster "
-                   f"moves {shown(tail_speed, RAMP_SPEED)} px/s at the end (bound {RAMP_SPEED:g}).", HINTS["settle"])
-    return f"they moved at most {abs(worst['slid']):.2f} px along the slope in 3 s"
+    speed = metrics.dynamic_arrays(record)["speed"][-metrics.FPS:, list(scenes.ON_RAMP)]
+    return {"slid": max(abs(metrics.measure_ramp(record)[i]["slid"]) for i in scenes.ON_RAMP),
+            "tail_speed": float(speed.max())}
+
+
+def _rests(turn, what):
+    """The bounds of a shape that must tip over (turn at least `turn`), land on a side and rest."""
+    return (criteria.escape_bounds("shapes", "settle") + (
+        Bound("sink", PENETRATION, f"{what} sank into the floor", "sinking", "px"),
+        Bound("turned", turn, f"{what} did not tip over", "settle", "°", True, 180 / math.pi),
+        Bound("side_error", TIPPED_FLAT, f"{what} did not land on a side", "settle", "°", scale=180 / math.pi),
+        Bound("rest_speed", REST_SPEED, f"{what} is still moving at the end", "settle", "px/s"),
+        Bound("rest_omega", REST_OMEGA, f"{what} is still turning at the end", "settle", "rad/s")))
+
+
+criteria.register(CHECKS, HINTS, (
+    Criterion("triangle_tips", "A triangle dropped on a corner falls onto a side and comes to rest.",
+              _tipping(scenes.TRIANGLE), _rests(TRIANGLE_TURN, "the triangle dropped on its corner")),
+    Criterion("hexagon_tips", "A hexagon pushed along the floor tips over its corners and stops, on a side.",
+              _tipping(scenes.PUSHED), _rests(HEXAGON_TURN, f"the hexagon pushed at {scenes.PUSH_SPEED:g} px/s")),
+    Criterion("pile_stable", "Shapes of every kind piled together neither sink into the floor or each other nor "
+              "jitter.", _pile, criteria.escape_bounds("the pile's shapes", "settle") + (
+                  Bound("floor_penetration", PENETRATION, "the pile sinks", "sinking", "px"),
+                  Bound("pair_overlap", PAIR_OVERLAP, "the pile sinks", "sinking", "px"),
+                  Bound("tail_speed", PILE_SPEED, "the pile jitters", "settle", "px/s"),
+                  Bound("drift", PILE_DRIFT, "the pile jitters", "settle", "px"))),
+    Criterion("ramp_holds", "A pentagon and a hexagon set on the 22° ramp stay put.", _ramp, (
+        Bound("slid", RAMP_SLIDE, "shapes at rest on the 22° ramp did not stay put: friction 0.6 holds them",
+              "settle", "px"),
+        Bound("tail_speed", RAMP_SPEED, "shapes at rest on the 22° ramp did not stay put: friction 0.6 holds them",
+              "settle", "px/s"))),
+))
