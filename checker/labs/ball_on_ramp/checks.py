@@ -21,12 +21,11 @@ solutions/ball_on_ramp.py measures in the same scene, noted beside it.
 """
 import math
 
-from . import scenes
+from . import probes, scenes
 from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from lesson11.records import finite
 
 TITLE = "Ball on the Ramp"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -294,69 +293,10 @@ def push_out_split(sub, functions):
     return Passed(f"the push-out is split by inverse mass in all {len(cases)} cases", value=cases)
 
 
-# ---------------------------------------------------------------- step 5: the ball's inertia
+# ---------------------------------------------------------------- steps 5 and 6, declared in probes.py
 
-INERTIA_MISTAKES = {1.0: ("disc_ring", "m r², a thin ring's (all the mass at the rim)"),
-                    0.4: ("disc_sphere", "2/5 m r², a solid sphere's"),
-                    1 / 12: ("disc_rod", "m r² / 12, a thin rod's"), 0.25: ("disc_quarter", "m r² / 4")}
-
-
-@CHECKS.check(depends=["loads"])
-def ball_inertia(sub, functions):
-    """Step 5: disc_inertia() gives a solid disc's moment of inertia, I = ½ m r²."""
-    cases = _function(sub, functions, "disc_inertia", "disc_inertia", 5)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if not _bad(got) and _close(got, want):
-            continue
-        where = f"for mass {case['mass']:.4g} and radius {case['radius']:g} px"
-        if _bad(got):
-            raise Fail(f"disc_inertia() must return a number.\n{where}, it returned {got['bad']}; expected "
-                       f"the number {want:.4g}.", HINTS["inertia"])
-        factor = got / (case["mass"] * case["radius"] ** 2) if case["mass"] and case["radius"] else math.nan
-        named = next(((key, text) for f, (key, text) in INERTIA_MISTAKES.items() if _close(factor, f)), None)
-        if named is None and _close(got, 0.5 * case["mass"] * case["radius"]):
-            named = ("disc_radius_unsquared", "½ m r: the radius is not squared")
-        if named is None and not _close(case["mass"], 1.0) and _close(got, 0.5 * case["radius"] ** 2):
-            named = ("disc_no_mass", "½ r²: the mass is left out")
-        first = f"yours is {named[1]}; a solid disc has ½ m r²" if named else "disc_inertia() is not ½ m r²"
-        raise Fail(f"{first}.\n{where}, yours gives {got:.4g}; ½ m r² = {want:.4g}.", HINTS["inertia"],
-                   mistake(named[0], first) if named else None)
-    return Passed(f"I = ½ m r² in all {len(cases)} cases", value=cases)
-
-
-# ---------------------------------------------------------------- step 6: the contact point
-
-@CHECKS.check(depends=["loads"])
-def contact_on_surface(sub, functions):
-    """Step 6: contact_point() puts the contact on the ball's surface, center + normal * radius."""
-    cases = _function(sub, functions, "contact_point", "contact_point", 6)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if _same_point(got, want):
-            continue
-        where = f"for {case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}, normal " \
-                f"{_vec(case['normal'])}, depth {case['depth']:g})"
-        if _bad(got):
-            raise Fail(f"contact_point() must return a point.\n{where}, it returned {got['bad']}; expected "
-                       f"{_vec(want)}.", HINTS["contact"])
-        centre, radius = case["center"], case["radius"]
-        normal = case["normal"]
-        if _same_point(got, case["halfway"]):
-            name, text = "contact_halfway", ("your point is halfway into the overlap, radius - depth / 2 from the "
-                                             "center; the step asks for the ball's surface")
-        elif _same_point(got, centre):
-            name, text = "contact_at_centre", "your point is the ball's center, where friction cannot turn it"
-        elif _same_point(got, [centre[0] - normal[0] * radius, centre[1] - normal[1] * radius]):
-            name, text = "contact_far_side", ("your point is on the far side of the ball: the normal points out of "
-                                              "the ball, into the other body")
-        elif _same_point(got, [centre[0] + normal[0] * case["depth"], centre[1] + normal[1] * case["depth"]]):
-            name, text = "contact_depth", "your point is center + normal * depth; the surface is radius px out"
-        else:
-            name, text = None, "contact_point() is not on the ball's surface, center + normal * radius"
-        raise Fail(f"{text}.\n{where}: yours {_vec(got)}; expected {_vec(want)}.", HINTS["contact"],
-                   mistake(name, text) if name else None)
-    return Passed(f"the contact point is on the ball's surface in all {len(cases)} cases", value=cases)
+probes.INERTIA.register(CHECKS, HINTS)
+probes.CONTACT.register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- step 7: friction
@@ -443,15 +383,10 @@ def friction_rolls(sub, functions):
 
 # ---------------------------------------------------------------- the scenes and the lesson's criteria
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "closest_point", "inside_case", "push_out_split",
-                     "ball_inertia", "contact_on_surface", "friction_rolls"], needs_scenarios=True)
-def runs(sub):
-    """main() runs each of the checker's three scenes to the end."""
-    runs = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
-    for name, run in runs.items():
-        if not finite(run.record["records"]):
-            raise Fail(f"a body's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
-    return {name: run.record for name, run in runs.items()}
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, [
+    "loads", "handout_unchanged", "runtime_lines", "closest_point", "inside_case", "push_out_split", "ball_inertia",
+    "contact_on_surface", "friction_rolls"], "main() runs each of the checker's three scenes to the end.",
+    more=lambda records: {name: run.record for name, run in records.items()})
 
 
 def _roll(index, expected):

@@ -23,12 +23,11 @@ solutions/bullets.py measures is noted beside each.
 """
 import math
 
-from . import scenes
+from . import probes, scenes
 from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import consistent_mistake, mistake
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from lesson11.records import finite
 
 TITLE = "Bullets"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -202,43 +201,9 @@ def toi_matches_root(sub, functions):
                   f"{worst:.1e} s; bound {TOI_TOLERANCE:g} s)", value=cases)
 
 
-# ---------------------------------------------------------------- step 3: bounding_radius
+# ---------------------------------------------------------------- step 3: bounding_radius, declared in probes.py
 
-# the known wrong bounding radii, by the name the probe gives their values (probes._bounding_reference)
-BOUNDING_MISTAKES = {
-    "squared": "the radius is the squared distance: take its square root",
-    "from_origin": "the radius is the farthest corner's distance from (0, 0); measure from the centre, "
-                   "centre.distance_to(p)",
-    "half_side": "the radius is the largest |x| or |y| offset (half a side), not a distance: a corner is farther",
-    "half_width": "the radius is the largest |x - centre.x| (half the width), not a distance: a corner is farther",
-    "nearest": "the radius is the nearest corner's distance; the circle must reach the farthest (max, not min)",
-    "average": "the radius is the average distance to the corners; the circle must reach the farthest (max)",
-}
-
-
-@CHECKS.check(depends=["loads"])
-def bounding_circle(sub, functions):
-    """Step 3: bounding_radius() is the distance from the centre to the farthest point of the outline."""
-    cases = _function(sub, functions, "bounding_radius", "bounding_radius", 3)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if isinstance(got, float) and _close(got, want):
-            continue
-        evidence = f"for {case['case']}, bounding_radius() returned {_time(got).replace(' s', ' px')}; the " \
-                   f"farthest corner is {want:.3f} px away."
-        named = consistent_mistake(cases, lambda c, name: isinstance(c["got"], float)
-                                   and _close(c["got"], c["forms"][name]),
-                                   [name for name, value in case["forms"].items() if not _close(value, want)
-                                    and name in BOUNDING_MISTAKES])
-        found = mistake(f"bounding_{named}", BOUNDING_MISTAKES[named]) if named else None
-        if found:
-            first = found.text
-        elif isinstance(got, float) and got < want:
-            first = "corners stick out of your circle, so bullets aimed at them are skipped"
-        else:
-            first = "bounding_radius() is not the farthest corner's distance from the centre"
-        raise Fail(f"{first}.\n{evidence}", HINTS["bounding"], found)
-    return Passed(f"the bounding circle reaches the farthest corner in all {len(cases)} shapes", value=cases)
+probes.BOUNDING.register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- step 4: the broad test
@@ -367,21 +332,19 @@ FUNCTION_CHECKS = ["toi_matches_root", "bounding_circle", "broad_test", "swept_m
 
 # ---------------------------------------------------------------- the scene and the criteria
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines"] + FUNCTION_CHECKS, needs_scenarios=True)
-def runs(sub):
-    """main() runs the lab's scene in CCD mode with six bullets fired, and no bullet passes the wall."""
-    run = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])["scene"]
-    frames = run.record["records"]
-    if not finite(frames):
-        raise Fail("a body's position or speed became infinite or NaN.\nin the scene (CCD, six bullets).",
-                   HINTS["watch"])
-    wall_x = WALL_X
+def _past_the_wall(records):
+    frames = records["scene"].record["records"]
     beyond = [frame["frame"] for frame in frames for body in frame["bodies"]
-              if not body["static"] and not body["points"] and body["pos"][0] > wall_x + 2]
+              if not body["static"] and not body["points"] and body["pos"][0] > WALL_X + 2]
     if beyond:
         raise Fail(f"a bullet got through the wall in CCD mode.\nsix bullets fired at the wall and the crates: one "
                    f"was beyond the wall at frame {beyond[0]}.", HINTS["watch"])
     return f"{len(frames)} frames, {max(len(f['bodies']) for f in frames) - 5} bullets at most, none past the wall"
+
+
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, ["loads", "handout_unchanged", "runtime_lines"] + FUNCTION_CHECKS,
+                         "main() runs the lab's scene in CCD mode with six bullets fired, and no bullet passes the wall.",
+                         more=_past_the_wall, hint="watch")
 
 
 def _shots(sub, functions):

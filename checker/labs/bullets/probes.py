@@ -28,7 +28,8 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
-from checker.judging.common import real, value_text
+from checker.judging.common import close, real, value_text
+from checker.judging.declared import Form, Step
 from checker.judging.probe_kit import box, judging, ngon, reference, twin
 from checker.judging.tape import clock, run_rng
 
@@ -190,32 +191,53 @@ def bounding_cases():
     ]
 
 
-def probe_bounding(module, lab_path):
-    """The student's bounding_radius on each outline (and one crate drawn for this run) beside the farthest corner."""
+def _bounding_cases(module):
+    """The fixed outlines and one crate drawn for this run, as dicts."""
     rng = run_rng(module, "bounding_radius")
     centre = Vector2(rng.uniform(100, 700), rng.uniform(100, 500))
     drawn = [("a crate drawn for this run", box(rng.uniform(20, 90), rng.uniform(20, 90), centre, rng.uniform(0, 90)),
               centre)]
-    cases = []
-    for name, points, centre in bounding_cases() + drawn:
-        got = module.bounding_radius([Vector2(p) for p in points], Vector2(centre))
-        cases.append({"case": name, "got": answer_time(got)})
-        if judging(module):
-            cases[-1].update(_bounding_reference(points, centre))
-    return cases
+    return [{"case": name, "points": [list(p) for p in points], "centre": list(centre)}
+            for name, points, centre in bounding_cases() + drawn]
 
 
-@reference
-def _bounding_reference(points, centre):
-    """The farthest corner's distance, the nearest one's and the largest half side (to name mistakes)."""
-    half_sides = [abs(p.x - centre.x) for p in points] + [abs(p.y - centre.y) for p in points]
-    distances = [centre.distance_to(p) for p in points]
-    return {"want": reference_bounding_radius(points, centre), "smallest": min(distances),
-            "half_side": max(half_sides) if half_sides else 0.0,
-            "forms": {"squared": max(d * d for d in distances), "from_origin": max(p.length() for p in points),
-                      "half_side": max(half_sides), "half_width": max(abs(p.x - centre.x) for p in points),
-                      "nearest": min(distances),
-                      "average": sum(distances) / len(distances)}}
+def _distances(c):
+    return [Vector2(c["centre"]).distance_to(p) for p in c["points"]]
+
+
+def _bounding_form(name, text, answer):
+    return Form(f"bounding_{name}", text, answer)
+
+
+def _sticks_out(cases, c):
+    """A named wrong radius, else "corners stick out" for a radius short of the farthest corner."""
+    named = BOUNDING.named(cases, c)
+    if named is None and isinstance(c["got"], float) and c["got"] < c["want"]:
+        return Form(None, "corners stick out of your circle, so bullets aimed at them are skipped")
+    return named
+
+
+BOUNDING = Step(
+    "bounding_circle", "Step 3: bounding_radius() is the distance from the centre to the farthest point of the "
+    "outline.", 3, "bounding_radius", _bounding_cases,
+    lambda radius, c: answer_time(radius([Vector2(p) for p in c["points"]], Vector2(c["centre"]))),
+    lambda c: reference_bounding_radius([Vector2(p) for p in c["points"]], Vector2(c["centre"])), hint="bounding",
+    same=lambda got, want: isinstance(got, float) and close(got, want), diagnose=_sticks_out,
+    label=lambda c: f"bounding_radius() for {c['case']}", show=lambda r: "None" if r is None else f"{r:.6g} px",
+    unnamed="bounding_radius() is not the farthest corner's distance from the centre",
+    wrong=(_bounding_form("squared", "the radius is the squared distance: take its square root",
+                          lambda c: max(d * d for d in _distances(c))),
+           _bounding_form("from_origin", "the radius is the farthest corner's distance from (0, 0); measure from "
+                          "the centre, centre.distance_to(p)", lambda c: max(Vector2(p).length() for p in c["points"])),
+           _bounding_form("half_side", "the radius is the largest |x| or |y| offset (half a side), not a distance: a "
+                          "corner is farther", lambda c: max(abs(p[k] - c["centre"][k]) for p in c["points"]
+                                                             for k in (0, 1))),
+           _bounding_form("half_width", "the radius is the largest |x - centre.x| (half the width), not a distance: "
+                          "a corner is farther", lambda c: max(abs(p[0] - c["centre"][0]) for p in c["points"])),
+           _bounding_form("nearest", "the radius is the nearest corner's distance; the circle must reach the "
+                          "farthest (max, not min)", lambda c: min(_distances(c))),
+           _bounding_form("average", "the radius is the average distance to the corners; the circle must reach the "
+                          "farthest (max)", lambda c: sum(_distances(c)) / len(c["points"]))))
 
 
 # ---------------------------------------------------------------- step 4: time_of_impact
@@ -565,7 +587,7 @@ PURE = ("circle_toi", "bounding_radius", "time_of_impact")
 # probe name -> (the lab function it needs, the probe)
 PROBES = {
     "circle_toi": ("circle_toi", probe_toi),
-    "bounding_radius": ("bounding_radius", probe_bounding),
+    **BOUNDING.probes(),
     "time_of_impact": ("time_of_impact", probe_impact),
     "swept_move": ("swept_move", probe_swept),
     "shots": ("swept_move", probe_shots),

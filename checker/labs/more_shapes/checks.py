@@ -24,7 +24,7 @@ from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import consistent_mistake, mistake
 from lesson11 import records as metrics
-from . import scenes
+from . import probes, scenes
 from checker.judging.checks import Fail, Hint, Passed, Registry
 
 TITLE = "More Shapes"
@@ -247,47 +247,7 @@ def centroid(sub, functions):
 
 # ---------------------------------------------------------------- step 4: polygon_inertia
 
-INERTIA_MISTAKES = {
-    "inverse": "that is 1 / I: return the inertia I itself (the Body takes the inverse, inv_inertia, from it)",
-    "dot_weight": "the triangles are weighted by |a · b| where the formula weights them by |a × b| (their area)",
-    "no_six": "the sum is not divided by 6",
-    "twelve": "the sum is divided by 12 where the formula has 6",
-    "no_mass": "the mass factor is missing",
-    "times_mass_squared": "the mass is multiplied in twice",
-    "no_cross_term": "each triangle's term lacks a·b: it is a·a + a·b + b·b",
-    "unweighted": "the triangles are not weighted by |a × b| (their area)",
-    "corner_radii": "that is m × the mean squared corner distance, not the triangle-fan sum",
-    "no_abs": "the weights are the signed a × b; use abs(cross(a, b)) so that either winding works",
-    "precedence": "mass * num / 6 * den multiplies by the weights' sum: divide by (6 * den), brackets included",
-    "minus_cross_term": "the a·b term is subtracted; each triangle adds a·a + a·b + b·b",
-    "mass_from_area": "the mass argument is ignored: the mass is recomputed from the area (area / 1000); use the "
-                      "`mass` you are given",
-}
-
-
-@CHECKS.check(depends=["loads"])
-def inertia_sum(sub, functions):
-    """Step 4: polygon_inertia() is the triangle-fan sum m Σ |a × b|(a·a + a·b + b·b) / (6 Σ |a × b|)."""
-    cases = _function(sub, functions, "polygon_inertia", "polygon_inertia", 4)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if isinstance(got, str):
-            raise Fail(f"polygon_inertia must return a number; for {case['case']} it returned {got}.",
-                       HINTS["inertia"])
-        if _close(got, want):
-            continue
-        named = consistent_mistake(
-            cases, lambda c, key: not isinstance(c["got"], str) and c["forms"].get(key) is not None
-            and _close(c["got"], c["forms"][key]),
-            [key for key, value in case["forms"].items() if value is not None and not _close(want, value)
-             and key in INERTIA_MISTAKES])
-        found = mistake(f"polygon_inertia_{named}", INERTIA_MISTAKES[named]) if named else None
-        first = found.text if found else "polygon_inertia() is not the triangle-fan sum"
-        analytic = f" (analytic {case['analytic']:.6g})" if case["analytic"] is not None else ""
-        raise Fail(f"{first}.\nfor {case['case']}, yours gives {got:.6g}; the triangle-fan sum {want:.6g}{analytic}.",
-                   HINTS["inertia"], found)
-    regular = sum(1 for c in cases if c["analytic"] is not None)
-    return f"all {len(cases)} inertias match the lesson ({regular} of them the analytic value of a box or regular polygon)"
+probes.INERTIA.register(CHECKS, HINTS)   # declared in probes.py
 
 
 # ---------------------------------------------------------------- step 5: separating_axes (and sat on them)
@@ -422,19 +382,9 @@ def bodies_inertia(sub, functions):
 
 # ---------------------------------------------------------------- the scenes
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "parallel_axes", "bodies_inertia"],
-              needs_scenarios=True)
-def runs(sub):
-    """main() runs each of the checker's two scenes to the end, with the course's gravity."""
-    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
-    for name, run in records.items():
-        if not metrics.finite(run.record["records"]):
-            raise Fail(f"a shape's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
-    gravity = metrics.free_fall(records["pile"].record)
-    if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
-        raise Fail(f"shapes do not fall with the course's gravity, {GRAVITY:g} px/s².\nin the pile scene they fall "
-                   f"with {gravity:.1f} px/s².", HINTS["handout"])
-    return records
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, ["loads", "handout_unchanged", "runtime_lines",
+                         "parallel_axes", "bodies_inertia"], "main() runs each of the checker's two scenes to the end, "
+                         "with the course's gravity.", "a shape", ("pile", GRAVITY, GRAVITY_TOLERANCE))
 
 
 def _tipping(shape):

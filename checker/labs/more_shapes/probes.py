@@ -27,7 +27,8 @@ from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, 
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from checker.judging import probe_kit
-from checker.judging.common import real, value_text
+from checker.judging.common import close, real, value_text
+from checker.judging.declared import Step, forms_of
 from checker.judging.probe_kit import judging, reference
 
 reference_centroid = reference(polygon_centroid)
@@ -208,21 +209,43 @@ def inertia_cases():
     return cases
 
 
-def probe_polygon_inertia(module, lab_path):
-    """The student's polygon_inertia beside the lesson's triangle-fan sum, the analytic value and the mistakes' values."""
-    cases = []
+def _inertia_cases(module):
+    """inertia_cases() and an outline drawn for this run, as dicts."""
     rng = run_rng(module, "polygon_inertia")
     mass = rng.uniform(2.5, 9.0)
     drawn = [(f"an outline drawn for this run, centred, mass {mass:.3g}", convex_polygon(drawn_outline(rng)), mass,
               None)]
-    for name, points, mass, analytic in inertia_cases() + drawn:
-        got = module.polygon_inertia([Vector2(p) for p in points], mass)
-        cases.append({"case": name, "points": _plain(points), "mass": mass, "got": _number(got)})
-        if judging(module):
-            cases[-1].update(want=reference_inertia([Vector2(p) for p in points], mass),
-                             analytic=analytic_inertia(**analytic) if analytic else None,
-                             forms=_inertia_forms(points, mass))
-    return cases
+    return [{"case": name, "points": _plain(points), "mass": mass, "analytic_of": analytic}
+            for name, points, mass, analytic in inertia_cases() + drawn]
+
+
+# step 4's known wrong sums, by the name _inertia_forms gives their values
+INERTIA_MISTAKES = {
+    "inverse": "that is 1 / I: return the inertia I itself (the Body takes the inverse, inv_inertia, from it)",
+    "dot_weight": "the triangles are weighted by |a · b| where the formula weights them by |a × b| (their area)",
+    "no_six": "the sum is not divided by 6",
+    "twelve": "the sum is divided by 12 where the formula has 6",
+    "no_mass": "the mass factor is missing",
+    "times_mass_squared": "the mass is multiplied in twice",
+    "no_cross_term": "each triangle's term lacks a·b: it is a·a + a·b + b·b",
+    "unweighted": "the triangles are not weighted by |a × b| (their area)",
+    "corner_radii": "that is m × the mean squared corner distance, not the triangle-fan sum",
+    "no_abs": "the weights are the signed a × b; use abs(cross(a, b)) so that either winding works",
+    "precedence": "mass * num / 6 * den multiplies by the weights' sum: divide by (6 * den), brackets included",
+    "minus_cross_term": "the a·b term is subtracted; each triangle adds a·a + a·b + b·b",
+    "mass_from_area": "the mass argument is ignored: the mass is recomputed from the area (area / 1000); use the "
+                      "`mass` you are given",
+}
+
+INERTIA = Step(
+    "inertia_sum", "Step 4: polygon_inertia() is the triangle-fan sum m Σ |a × b|(a·a + a·b + b·b) / (6 Σ |a × b|).",
+    4, "polygon_inertia", _inertia_cases, lambda inertia, c: inertia([Vector2(p) for p in c["points"]], c["mass"]),
+    lambda c: reference_inertia([Vector2(p) for p in c["points"]], c["mass"]), answer=_number, hint="inertia",
+    same=lambda got, want: not isinstance(got, str) and want is not None and close(got, want),
+    bad=lambda got: isinstance(got, str), kind="a number", show=lambda value: f"{value:.6g}",
+    label=lambda c: f"polygon_inertia() for {c['case']}", unnamed="polygon_inertia() is not the triangle-fan sum",
+    wrong=forms_of(INERTIA_MISTAKES, lambda c: _inertia_forms(c["points"], c["mass"]), "polygon_inertia_"),
+    extra={"analytic": lambda c: analytic_inertia(**c["analytic_of"]) if c["analytic_of"] else None})
 
 
 # ---------------------------------------------------------------- step 5: separating_axes and sat
@@ -372,7 +395,7 @@ PURE = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_ax
 # probe name -> (the lab function it needs, the probe)
 PROBES = {"regular_polygon": ("regular_polygon", probe_regular_polygon),
           "polygon_centroid": ("polygon_centroid", probe_polygon_centroid),
-          "polygon_inertia": ("polygon_inertia", probe_polygon_inertia),
+          **INERTIA.probes(),
           "separating_axes": ("separating_axes", probe_separating_axes),
           "sat": ("sat", probe_sat),
           "bodies": ("build", probe_bodies)}

@@ -22,10 +22,8 @@ import math
 
 from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
-from checker.judging.causes import consistent_mistake, mistake
-from lesson11 import records as metrics
-from . import scenes
-from checker.judging.checks import Fail, Hint, Passed, Registry
+from . import probes, scenes
+from checker.judging.checks import Fail, Hint, Registry
 from checker.judging.common import shown
 
 TITLE = "Sleeping Crates"
@@ -36,7 +34,6 @@ STEP_ADVICE = {2: "add dt while calm, else start from 0, yourself",
                3: "return whether the body moves yourself",
                4: "return the sleeping body of an awake pair yourself"}
 
-ABS = 1e-9      # s: the timer against the rule (same arithmetic, timer + dt)
 
 # ---------------------------------------------------------------- bounds (measured on the solution)
 NARROW_SHARE = 0.1     # asleep / awake narrow tests in one step of the 40-crate pile; solution: 0 / 484 = 0
@@ -90,112 +87,10 @@ def _function(sub, functions, probe, function, step):
 lab_checks.register_common(CHECKS, HINTS, ("sleep_timer", "moves", "wake_on_contact", "build", "main"))
 
 
-# ---------------------------------------------------------------- step 2: sleep_timer
+# ---------------------------------------------------------------- steps 2 to 4, declared in probes.py
 
-# the known wrong rules of step 2, by the name the probe gives their answers (probes.timer_mistakes)
-TIMER_MISTAKES = {
-    "or": "calm when speed < SLEEP_SPEED `or` |spin| < SLEEP_SPIN; the rule needs both (`and`)",
-    "ignores_spin": "the timer looks at the speed only: a spinning crate must start again from 0 too",
-    "ignores_speed": "the timer looks at the spin only: a moving crate must start again from 0 too",
-    "signed_spin": "the spin is compared with its sign: a crate spinning backwards counts as calm; compare abs(spin)",
-    "speed_dt": "speed * dt (px per step) is compared with SLEEP_SPEED, which is in px/s",
-    "both_dt": "speed * dt and |spin| * dt (per step) are compared with SLEEP_SPEED and SLEEP_SPIN, which are per "
-               "second",
-    "thresholds_dt": "the thresholds are scaled to one step (SLEEP_SPEED * dt, SLEEP_SPIN * dt); they are per "
-                     "second, like speed and spin",
-    "spin_vs_speed": "|spin| is compared with SLEEP_SPEED (5 px/s) where its own threshold is SLEEP_SPIN (0.1 rad/s)",
-    "squared": "speed² and spin² are compared with SLEEP_SPEED and SLEEP_SPIN: compare speed and |spin| themselves",
-    "speed_squared": "speed² is compared with SLEEP_SPEED: compare the speed itself",
-    "never_resets": "the timer keeps its value when the crate moves: it must start again from 0",
-    "counts_frames": "the timer adds 1 (a frame) per step; it counts seconds: add dt",
-    "fixed_step": "the timer adds 1/120 s per step, not dt: a World stepping at another rate counts wrong",
-    "returns_dt": "you return dt, not timer + dt: the timer must grow from its value",
-    "no_growth": "the timer does not grow while the crate is calm: return timer + dt",
-}
-
-
-def _timer_mistake(cases, case):
-    """The Mistake of the known wrong rule that gives the student's answer in every case, or None."""
-    named = consistent_mistake(cases, lambda c, name: abs(c["got"] - c["mistakes"][name]) <= ABS,
-                               [name for name, value in case["mistakes"].items() if abs(value - case["want"]) > ABS
-                                and name in TIMER_MISTAKES])
-    return mistake(f"timer_{named}", TIMER_MISTAKES[named]) if named else None
-
-
-@CHECKS.check(depends=["loads"])
-def timer_rule(sub, functions):
-    """Step 2: sleep_timer() adds dt while speed < SLEEP_SPEED and |spin| < SLEEP_SPIN, else starts again from 0."""
-    cases = _function(sub, functions, "sleep_timer", "sleep_timer", 2)
-    for case in cases:
-        got = case["got"]
-        label = (f"sleep_timer({case['timer']:g}, {case['speed']:g}, {case['spin']:g}, {case['dt']:.4g}) "
-                 f"({case['case']})")
-        if isinstance(got, str):
-            raise Fail(f"sleep_timer() must return a number of seconds.\n{label} returned {got}.", HINTS["timer"])
-        if abs(got - case["want"]) <= ABS:
-            continue
-        numbers = all(not isinstance(c["got"], str) for c in cases)
-        found = _timer_mistake(cases, case) if numbers else None
-        first = found.text if found else "the timer does not follow the rule"
-        raise Fail(f"{first}.\n{label} returned {got:.6g} s; the timer should be {case['want']:.6g} s.",
-                   HINTS["timer"], found)
-    return f"all {len(cases)} cases (calm, fast, spinning either way) follow the rule"
-
-
-# ---------------------------------------------------------------- step 3: moves
-
-@CHECKS.check(depends=["loads"])
-def skips_sleepers(sub, functions):
-    """Step 3: moves(body) is True for an awake dynamic body only (False for static and sleeping bodies)."""
-    cases = _function(sub, functions, "moves", "moves", 3)
-    for case in cases:
-        got = case["got"]
-        if isinstance(got, str):
-            raise Fail(f"moves() must return True or False.\nfor {case['case']} it returned {got}.", HINTS["moves"])
-        if got == case["want"]:
-            continue
-        if case["want"]:
-            name, why = "moves_awake_false", "an awake crate must move, or nothing ever falls"
-        elif "static" in case["case"]:
-            name, why = "moves_static_true", ("a static body never moves: with moves() True for the floor, every "
-                                              "sleeping crate on it is still tested")
-        else:
-            name, why = "moves_sleeping_true", "a sleeping crate does not move, so its quiet pairs are not tested"
-        raise Fail(f"{why}.\nmoves() says {got} for {case['case']}; it should say {case['want']}.", HINTS["moves"],
-                   mistake(name, why))
-    return "awake crates move; static and sleeping bodies do not"
-
-
-# ---------------------------------------------------------------- step 4: wake_on_contact
-
-@CHECKS.check(depends=["loads"])
-def wakes_on_contact(sub, functions):
-    """Step 4: wake_on_contact(a, b) returns the sleeping body of a pair whose other body is dynamic and awake."""
-    cases = _function(sub, functions, "wake_on_contact", "wake_on_contact", 4)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        label = f"wake_on_contact(a, b) with a {case['a']} and b {case['b']}"
-        if isinstance(got, str):
-            raise Fail(f"wake_on_contact() must return a list of bodies (or []).\n{label} returned {got}.",
-                       HINTS["wake"])
-        if got == want:
-            continue
-        names = " and ".join(got) if got else "nothing"
-        if not want and "static" in (case["a"], case["b"]) and got:
-            name, why = "wake_by_floor", "the floor never wakes a crate: a crate sleeps on the floor"
-        elif not want and case["a"] == case["b"] == "asleep":
-            name, why = "wake_two_sleepers", "two sleeping crates leave each other asleep"
-        elif not want and case["a"] == case["b"] == "awake":
-            name, why = "wake_awake", "neither is asleep: there is nothing to wake"
-        elif want and not got:
-            order = "the sleeping body second" if want == ["b"] else "the sleeping body first"
-            name, why = "wake_one_order", f"an awake crate touching a sleeping one must wake it, with {order} " \
-                                          "too: check both orders"
-        else:
-            name, why = "wake_not_only_sleeper", "only the sleeping body of the pair is woken"
-        raise Fail(f"{why}.\n{label} wakes {names}; it should wake {' and '.join(want) or 'nothing'}.",
-                   HINTS["wake"], mistake(name, why))
-    return f"all {len(cases)} kinds of pair, both orders, wake the right body"
+for step in probes.STEPS:
+    step.register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- the cost criterion
@@ -223,15 +118,8 @@ def narrow_work(sub, functions):
 
 # ---------------------------------------------------------------- the scene
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "timer_rule", "skips_sleepers",
-                     "wakes_on_contact"], needs_scenarios=True)
-def runs(sub):
-    """main() runs the checker's scene to the end."""
-    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
-    for name, run in records.items():
-        if not metrics.finite(run.record["records"]):
-            raise Fail(f"a crate's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
-    return records
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, ["loads", "handout_unchanged", "runtime_lines", "timer_rule",
+                         "skips_sleepers", "wakes_on_contact"], "main() runs the checker's scene to the end.", "a crate")
 
 
 def _loose(records):
