@@ -39,7 +39,6 @@ STEP_ADVICE = {2: "solve the quadratic for the earlier root yourself",
                5: "move to the impact, resolve there and spend the rest of the step yourself"}
 
 # ---------------------------------------------------------------- tolerances and bounds
-TOI_TOLERANCE = 1e-9   # s (the issue); solution: at most 5e-16 s off the geometric answer
 REL, ABS = 1e-7, 1e-7  # relative and absolute (px, px/s) against the lesson's code on the same inputs
 MIN_SHOTS = 100        # the issue: >= 100 shots with CCD; the probe fires 7 speeds x 16 = 112
 WALL_X = 470.0         # px, the handout's wall (handout_unchanged keeps it)
@@ -115,14 +114,6 @@ def _function(sub, functions, probe, function, step):
     return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
 
 
-def _time(value):
-    if value is None:
-        return "None (no contact)"
-    if _bad(value):
-        return value["bad"]
-    return f"{value:.9g} s"
-
-
 _vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 
 
@@ -134,71 +125,7 @@ lab_checks.register_common(CHECKS, HINTS, ("circle_toi", "bounding_radius", "tim
 
 # ---------------------------------------------------------------- step 2: circle_toi (criterion 3)
 
-def _toi_ok(got, want):
-    if want is None:
-        return got is None
-    return isinstance(got, float) and abs(got - want) <= TOI_TOLERANCE
-
-
-# the known wrong roots of step 2, by the name the probe gives their times (probes._toi_reference)
-TOI_MISTAKES = {
-    "no_two": "the root is divided by a, not 2a: (-b - √disc) / a is twice the first-contact time",
-    "four": "the root is divided by 4a, not 2a: half the first-contact time",
-    "a_unsquared": "a = |dv|, not dv·dv = |dv|²",
-    "b_sign": "b = -2 dp·dv (as dp = p1 - p2 or dv = v1 - v2 give): time runs backwards; with dp = p2 - p1 and "
-              "dv = v2 - v1, b = 2 dp·dv",
-    "b_no_two": "b = dp·dv without its factor 2: b = 2 dp·dv",
-    "fixed_dt": "t is kept only up to 1/120 s, not up to the dt you are given",
-}
-def _toi_mistake(cases, case):
-    """The Mistake of the known wrong root that gives the student's time in every case, or None."""
-    named = consistent_mistake(cases, lambda c, name: _toi_ok(c["got"], c["forms"][name]),
-                               [name for name, value in case["forms"].items() if not _toi_ok(value, case["want"])
-                                and name in TOI_MISTAKES])
-    return mistake(f"toi_{named}", TOI_MISTAKES[named]) if named else None
-
-
-@CHECKS.check(depends=["loads"], max_score=2)
-def toi_matches_root(sub, functions):
-    """Step 2: circle_toi() equals the analytic first-contact time within 1e-9 s (head-on, glancing, already
-    touching, moving apart, parallel paths, missing), the lab's done-criterion 3."""
-    cases = _function(sub, functions, "circle_toi", "circle_toi", 2)
-    worst = 0.0
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if _toi_ok(got, want):
-            if want is not None:
-                worst = max(worst, abs(got - want))
-            continue
-        where = f"for {case['case']} (dt = {case['dt']:.4g} s)"
-        evidence = f"{where}, circle_toi() returned {_time(got)}; expected {_time(want)}."
-        hint, first, found = HINTS["toi"], "circle_toi() does not give the first-contact time", None
-        if _bad(got):
-            first = "circle_toi() must return a time in seconds or None"
-        elif want == 0.0 and case["c"] <= 0:
-            first, hint = "the circles already overlap, so the impact is now: return 0.0", HINTS["toi_touching"]
-            found = mistake("toi_touching_missed", first)
-        elif got is not None and case["later"] is not None and abs(got - case["later"]) <= TOI_TOLERANCE:
-            first, hint = "that is the later root, when the circles stop touching", HINTS["toi_later"]
-            found = mistake("toi_later_root", first)
-        elif want is None and got is not None and got < 0:
-            first, hint = "a negative time is in the past: the circles are moving apart", HINTS["toi_apart"]
-            found = mistake("toi_negative_time", first)
-        elif want is None and got is not None and got > case["dt"]:
-            first, hint = f"the time is later than this step's dt = {case['dt']:.4g} s", HINTS["toi_apart"]
-            found = mistake("toi_after_dt", "the time is later than this step's dt")
-        elif want is None and got is not None:
-            hint = HINTS["toi_apart"]
-        elif _toi_mistake(cases, case):
-            found = _toi_mistake(cases, case)
-            first = found.text
-            if found.id == "toi_fixed_dt":
-                hint = HINTS["toi_apart"]
-        elif want is not None and got is None:
-            first = "the circles do touch within the step, but circle_toi() found no contact"
-        raise Fail(f"{first}.\n{evidence}", hint, found)
-    return Passed(f"the time of impact matches the analytic root in all {len(cases)} cases (largest difference "
-                  f"{worst:.1e} s; bound {TOI_TOLERANCE:g} s)", value=cases)
+probes.TOI.register(CHECKS, HINTS, max_score=2)   # declared in probes.py
 
 
 # ---------------------------------------------------------------- step 3: bounding_radius, declared in probes.py

@@ -112,13 +112,6 @@ def _function(sub, functions, probe, function, step):
     return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
 
 
-def _bad(value, what, hint):
-    """Fail if a probe recorded a value the student's function returned that is not the right type."""
-    if isinstance(value, str):
-        raise Fail(f"{what.split(' (')[0]} must return {'a list of points' if 'list' in what else 'a number'}.\n"
-                   f"it returned {value}.", hint)
-
-
 # ---------------------------------------------------------------- loading and the handout
 
 lab_checks.register_common(CHECKS, HINTS, ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes",
@@ -127,65 +120,7 @@ lab_checks.register_common(CHECKS, HINTS, ("regular_polygon", "polygon_centroid"
 
 # ---------------------------------------------------------------- step 2: regular_polygon
 
-def _corner_mistake(case, got):
-    """(id, sentence) of a usual step-2 mistake the student's corners show in this case, or None."""
-    sides, radius = case["sides"], case["radius"]
-    want = case["want"]
-    if len(got) != sides:
-        return ("corners_count", f"your polygon has {len(got)} corners; a {sides}-gon has {sides}: k runs over "
-                                 "range(sides)")
-    distances = [math.hypot(*p) for p in got]
-    if not all(_close(d, radius, radius) for d in distances):
-        ratio = sum(distances) / len(distances) / radius
-        if all(_close(d / radius, ratio) for d in distances):
-            return ("corners_radius", f"every corner is {ratio:.4g} × radius from the centre; they belong on the "
-                                      "circle of `radius` px")
-        return ("corners_off_circle", "the corners are not all `radius` px from the centre (0, 0)")
-    same_set = all(any(_close(g[0], w[0], radius) and _close(g[1], w[1], radius) for w in want) for g in got)
-    if same_set:
-        return ("corners_order", "these are the right corners in another order: corner k at θk = 2πk / sides")
-    return ("corners_angles", "the corners lie on the circle but at other angles: corner 0 at (radius, 0), each "
-                              "next 2π / sides further")
-
-
-# the known wrong corner formulas, by the name the probe gives their corners (probes._corner_forms)
-CORNER_MISTAKES = {
-    "degrees": "θk = 360k / sides is in degrees; math.cos and math.sin take radians: θk = 2πk / sides",
-    "half_turn": "θk = πk / sides spreads the corners over half a turn: θk = 2πk / sides",
-    "sin_cos": "your x and y are swapped: x = radius cos θk, y = radius sin θk",
-}
-
-
-def _same_corners(got, want, radius):
-    return len(got) == len(want) and all(_close(g[0], w[0], radius) and _close(g[1], w[1], radius)
-                                         for g, w in zip(got, want))
-
-
-@CHECKS.check(depends=["loads"])
-def polygon_corners(sub, functions):
-    """Step 2: regular_polygon(sides, radius) puts corner k at radius (cos θk, sin θk), θk = 2πk / sides."""
-    cases = _function(sub, functions, "regular_polygon", "regular_polygon", 2)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        label = f"regular_polygon({case['sides']}, {case['radius']:g})"
-        _bad(got, f"{label} (a list of points)", HINTS["corners"])
-        if len(got) == len(want) and all(_close(g[0], w[0], case["radius"]) and _close(g[1], w[1], case["radius"])
-                                         for g, w in zip(got, want)):
-            continue
-        first = next((k for k, (g, w) in enumerate(zip(got, want)) if not (_close(g[0], w[0], case["radius"])
-                      and _close(g[1], w[1], case["radius"]))), min(len(got), len(want)))
-        shown_corner = f"corner {first} is {_vec(got[first])}, expected {_vec(want[first])}" \
-            if first < min(len(got), len(want)) else f"{len(got)} corners, expected {len(want)}"
-        named = consistent_mistake(
-            cases, lambda c, name: not isinstance(c["got"], str) and _same_corners(c["got"], c["forms"][name],
-                                                                                   c["radius"]),
-            [name for name, form in case["forms"].items() if not _same_corners(form, want, case["radius"])])
-        found = mistake(f"corners_{named}", CORNER_MISTAKES[named]) if named else None
-        if found is None and _corner_mistake(case, got):
-            found = mistake(*_corner_mistake(case, got))
-        first = found.text if found else "regular_polygon() does not put corner k at θk = 2πk / sides"
-        raise Fail(f"{first}.\n{label}: {shown_corner}.", HINTS["corners"], found)
-    return f"the corners of all {len(cases)} polygons (3 to 12 sides) are the lesson's"
+probes.CORNERS.register(CHECKS, HINTS)   # declared in probes.py
 
 
 # ---------------------------------------------------------------- step 3: polygon_centroid

@@ -1,21 +1,10 @@
 """Sleeping Crates (Lesson 11 "Going Further"): the checks, their bounds and the hints.
 
-Order of checks (stable), one per lesson step where a step is the student's:
-  loads, handout_unchanged, runtime_lines,
-  timer_rule (step 2), skips_sleepers (step 3), wakes_on_contact (step 4),
-  narrow_work (the cost criterion, on a 40-crate grid built by the lab's build()),
-  runs, then the scene's criteria: pile_sleeps, no_sleep_in_air, drop_wakes_pile.
-Checks are worth 1 point, the four criteria 2 points each.
-
-The function checks call the student's sleep_timer, moves and wake_on_contact
-on checker/labs/sleeping_crates/probes.py's cases and name the first that differs, and the
-mistake when it is a usual one. narrow_work counts World.counters' narrow-phase
-tests in one step of the same 40-crate pile awake and asleep (deterministic,
-unlike a time). The scene (checker/labs/sleeping_crates/scenes.py) runs only when every
-function check passes.
-
-Every bound of the criteria was set from what solutions/sleeping_crates.py
-measures in the same scene, with the measured value noted next to it.
+In order: loads, handout_unchanged, runtime_lines; steps 2-4 (timer_rule, skips_sleepers, wakes_on_contact), declared
+in probes.py with their cases and wrong forms; narrow_work (the cost criterion: one step of a 40-crate pile awake and
+asleep, World.counters' narrow-phase tests); runs; the scene's criteria (pile_sleeps, no_sleep_in_air,
+drop_wakes_pile), declared as bounds tables (checker/judging/criteria.py). Steps are worth 1 point, criteria 2; every
+bound was set from what solutions/sleeping_crates.py measures, noted beside it.
 """
 
 import math
@@ -23,8 +12,7 @@ import math
 from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
 from . import probes, scenes
-from checker.judging.checks import Fail, Hint, Registry
-from checker.judging.common import shown
+from checker.judging.checks import Hint, Registry
 
 TITLE = "Sleeping Crates"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -78,10 +66,6 @@ CHECKS = Registry()
 SCENE_SECONDS = {"sleep": 1.4}
 
 
-def _function(sub, functions, probe, function, step):
-    return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
-
-
 # ---------------------------------------------------------------- loading and the handout
 
 lab_checks.register_common(CHECKS, HINTS, ("sleep_timer", "moves", "wake_on_contact", "build", "main"))
@@ -95,25 +79,23 @@ for step in probes.STEPS:
 
 # ---------------------------------------------------------------- the cost criterion
 
-@CHECKS.check(depends=["loads"], after=["timer_rule", "skips_sleepers", "wakes_on_contact"], max_score=2)
-def narrow_work(sub, functions):
-    """With a 40-crate pile asleep a step does at most a tenth of the narrow-phase tests of the same pile awake."""
-    data = _function(sub, functions, "narrow_work", "build", None)
-    awake, asleep = data["awake"], data["asleep"]
-    if awake["narrow_tests"] == 0:
-        raise Fail("the 40-crate pile, awake, made no narrow-phase test at all.\nbuild() must make the crates it is "
-                   "given.", HINTS["handout"])
-    share = asleep["narrow_tests"] / awake["narrow_tests"]
-    if share > NARROW_SHARE:
-        raise Fail(f"a sleeping pile still costs narrow-phase tests: skip every pair in which neither body moves.\n"
-                   f"asleep, a step of the 40-crate pile made {asleep['narrow_tests']} tests, "
-                   f"{shown(share, NARROW_SHARE)} of the {awake['narrow_tests']} awake (bound {NARROW_SHARE:g}).",
-                   HINTS["moves"])
-    if asleep["still_asleep"] < 40:
-        raise Fail(f"one step woke the sleeping 40-crate pile, though nothing touched it.\n"
-                   f"{asleep['still_asleep']} of 40 still asleep.", HINTS["wake"])
-    return (f"{asleep['narrow_tests']} narrow tests asleep against {awake['narrow_tests']} awake "
-            f"({asleep['pair_tests']} against {awake['pair_tests']} pairs visited)")
+def _narrow(sub, functions):
+    data = lab_checks.function_data(sub, functions, "narrow_work", "build", None, HINTS["crash"])
+    awake, asleep = data["awake"]["narrow_tests"], data["asleep"]["narrow_tests"]
+    return {"narrow_tests_awake": awake, "asleep_share": asleep / awake if awake else None,
+            "crates_still_asleep": data["asleep"]["still_asleep"]}
+
+
+criteria.register(CHECKS, HINTS, (Criterion(
+    "narrow_work", "With a 40-crate pile asleep a step does at most a tenth of the narrow-phase tests of the same "
+    "pile awake.", _narrow, (
+        Bound("narrow_tests_awake", 1, "the 40-crate pile, awake, made no narrow-phase test: build() must make the "
+              "crates it is given", "handout", least=True),
+        Bound("asleep_share", NARROW_SHARE, "a sleeping pile still costs narrow-phase tests: skip every pair in "
+              "which neither body moves", "moves"),
+        Bound("crates_still_asleep", 40, "one step woke the sleeping 40-crate pile, though nothing touched it",
+              "wake", least=True))),
+), depends=("loads",), after=("timer_rule", "skips_sleepers", "wakes_on_contact"), needs_scenarios=False)
 
 
 # ---------------------------------------------------------------- the scene

@@ -1,18 +1,11 @@
-"""Probes of a Sleeping Crates file's own functions, run inside the checker's child process.
+"""Sleeping Crates' steps, declared (checker/judging/declared.py), and the cost criterion's probe.
 
-Each probe calls one of the student's functions on cases chosen to show the
-usual mistakes and returns plain data: what the student's function gave and
-what the lesson's rule gives (added in the grader only: `judging`, checker/judging/probe_kit.py).
-The checks in checker/labs/sleeping_crates/checks.py compare them in the grading process.
-
-    sleep_timer      (step 2) calm and not calm crates: fast, spinning either way, both
+    sleep_timer      (step 2) calm and not calm crates: fast, spinning either way, both; 15 known wrong rules
     moves            (step 3) static, awake, sleeping bodies (and a static body flagged asleep)
     wake_on_contact  (step 4) every kind of pair, in both orders
-    narrow_work      (the cost criterion) one step of a touching 40-crate grid built by the
-                     lab's build(), awake and then asleep, in a World running the lab's
-                     three functions; World.counters gives the pair and narrow-phase tests
-
-Units: px, s, rad.
+    narrow_work      (the cost criterion) one step of a touching 40-crate grid built by the lab's build(), awake
+                     and then asleep, in a World running the lab's three functions (World.counters)
+The lesson's answers are computed in the grader only (each reference_* is a @reference). Units: px, s, rad.
 """
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
