@@ -58,3 +58,10 @@ def test_a_list_of_bodies_is_checked_body_by_body():
     with pytest.raises(Fail) as failed:
         check(bodies)({})
     assert failed.value.rationale.startswith("the crate is still moving.")
+
+
+def test_a_sentence_may_name_another_metric_of_the_body():
+    bounds = (Bound("depth", 1.0, "the {kind} sank", "sink", "px"),)
+    with pytest.raises(Fail) as failed:
+        check([{"kind": "box", "depth": 0.5}, {"kind": "hexagon", "depth": 2.0}], bounds)({})
+    assert failed.value.rationale == "the hexagon sank.\ndepth 2.0 px (bound 1)."

@@ -17,7 +17,7 @@ from .common import shown
 @dataclass(frozen=True)
 class Bound:
     """One bound: metric (a key of the measure's dict) at most limit (least: at least); sentence: what is wrong
-    when it is broken; hint: the key of the lab's HINTS; unit, and scale (value and limit are shown times it,
+    when it is broken ("{name}": the value of metric `name`, e.g. which body); hint: the key of the lab's HINTS; unit, and scale (value and limit are shown times it,
     e.g. 180/pi for degrees). A value None (it never happened) or NaN breaks it."""
     metric: str
     limit: float
@@ -38,9 +38,11 @@ class Bound:
         number = shown(value * self.scale, self.limit * self.scale) if against else f"{value * self.scale:.3g}"
         return f"{name} {number}{' ' + self.unit if self.unit else ''}"
 
-    def message(self, value):
+    def message(self, metrics):
+        """The two lines of the failure: the sentence ("{name}" in it: that metric's value), then the evidence."""
+        value = metrics.get(self.metric)
         bound = "" if value is None or isinstance(value, bool) else f" (bound {self.limit * self.scale:g})"
-        return f"{self.sentence}.\n{self.shown(value)}{bound}."
+        return f"{self.sentence.format_map(metrics)}.\n{self.shown(value)}{bound}."
 
 
 @dataclass(frozen=True)
@@ -72,7 +74,7 @@ def _check(criterion, hints):
         for metrics in every:
             for bound in criterion.bounds:
                 if bound.broken(metrics.get(bound.metric)):
-                    raise Fail(bound.message(metrics.get(bound.metric)), hints[bound.hint])
+                    raise Fail(bound.message(metrics), hints[bound.hint])
         if criterion.passed is not None:
             return Passed(criterion.passed(every[-1]), value=measured)
         measures = {b.metric: b for b in criterion.bounds if b.limit not in (0, math.inf)}.values()

@@ -23,6 +23,7 @@ import math
 
 from . import probes, scenes
 from checker.judging import criteria, lab_checks
+from checker.judging.common import close as _close, same_point as _same_point   # 1e-7 relative and absolute
 from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from checker.judging.checks import Fail, Hint, Passed, Registry
@@ -40,8 +41,6 @@ STEP_ADVICE = {2: "clamp t to [0, 1] on the edge yourself",
                7: "write the friction impulse at the contact point yourself"}
 
 # ---------------------------------------------------------------- tolerances of the function checks
-REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
-ABS = 1e-7      # absolute floor of the same (px, px/s, rad/s, mass·px²)
 
 # ---------------------------------------------------------------- bounds of the criteria
 ROLL_ACCEL = 0.03      # relative to ⅔ g sin θ = 244.74 px/s² (the issue); solution: 244.743, off by 0.0000 %
@@ -115,14 +114,6 @@ SCENE_SECONDS = {"knock": 0.8, "ramp": 0.3, "inside": 0.3}
 
 
 # ---------------------------------------------------------------- helpers
-
-def _close(got, want):
-    return abs(got - want) <= ABS + REL * abs(want)
-
-
-def _same_point(got, want):
-    return isinstance(got, list) and all(_close(g, w) for g, w in zip(got, want))
-
 
 _vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 

@@ -25,6 +25,7 @@ import math
 
 from . import probes, scenes
 from checker.judging import criteria, lab_checks
+from checker.judging.common import close as _close, same_point as _same_point   # 1e-7 relative and absolute
 from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import consistent_mistake, mistake
 from checker.judging.checks import Fail, Hint, Passed, Registry
@@ -39,7 +40,6 @@ STEP_ADVICE = {2: "solve the quadratic for the earlier root yourself",
                5: "move to the impact, resolve there and spend the rest of the step yourself"}
 
 # ---------------------------------------------------------------- tolerances and bounds
-REL, ABS = 1e-7, 1e-7  # relative and absolute (px, px/s) against the lesson's code on the same inputs
 MIN_SHOTS = 100        # the issue: >= 100 shots with CCD; the probe fires 7 speeds x 16 = 112
 WALL_X = 470.0         # px, the handout's wall (handout_unchanged keeps it)
 MOMENTUM = 0.05        # the issue: the crate's momentum within 5 %; solution: 0.0000 % off
@@ -97,14 +97,6 @@ SCENE_SECONDS = {"scene": 0.2}
 
 
 # ---------------------------------------------------------------- helpers
-
-def _close(got, want):
-    return abs(got - want) <= ABS + REL * abs(want)
-
-
-def _same_point(got, want):
-    return isinstance(got, list) and len(got) == len(want) and all(_close(g, w) for g, w in zip(got, want))
-
 
 def _bad(got):
     return isinstance(got, dict) and "bad" in got
