@@ -65,3 +65,16 @@ def test_a_sentence_may_name_another_metric_of_the_body():
     with pytest.raises(Fail) as failed:
         check([{"kind": "box", "depth": 0.5}, {"kind": "hexagon", "depth": 2.0}], bounds)({})
     assert failed.value.rationale == "the hexagon sank.\ndepth 2.0 px (bound 1)."
+
+
+def test_every_lab_s_bounds_are_short_and_name_a_hint_the_lab_has():
+    """Every lab's declared criteria (found through the registry): a sentence fits a message's first line (with
+    another metric named in it, a long one) and its hint is the lab's."""
+    from checker import labs
+    from corpus_verdicts import FIRST_LINE
+    declared = [(lab, c.func.criterion) for lab in labs.LABS for c in lab.checks.checks if hasattr(c.func, "criterion")]
+    assert declared
+    for lab, criterion in declared:
+        for bound in criterion.bounds:
+            assert len(bound.sentence.replace("{kind}", "x" * 12)) + 1 <= FIRST_LINE, (lab.id, bound.sentence)
+            assert bound.hint in lab.module.HINTS, (lab.id, criterion.id, bound.hint)
