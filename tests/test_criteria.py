@@ -78,3 +78,12 @@ def test_every_lab_s_bounds_are_short_and_name_a_hint_the_lab_has():
         for bound in criterion.bounds:
             assert len(bound.sentence.replace("{kind}", "x" * 12)) + 1 <= FIRST_LINE, (lab.id, bound.sentence)
             assert bound.hint in lab.module.HINTS, (lab.id, criterion.id, bound.hint)
+
+
+def test_the_evidence_names_the_frame_the_replay_marks():
+    from checker.replay import show_series
+    bounds = (Bound("depth", 1.0, "the ball sank into the ramp", "sink", "px", frame="depth_frame"),)
+    with pytest.raises(Fail) as failed:
+        check({"depth": 3.2, "depth_frame": 42}, bounds)({})
+    assert failed.value.rationale == "the ball sank into the ramp.\ndepth 3.2 px at frame 42 (bound 1)."
+    assert show_series.marked_frame(type("R", (), {"message": failed.value.rationale})) == 42

@@ -26,6 +26,7 @@ class Bound:
     unit: str = ""
     least: bool = False
     scale: float = 1.0
+    frame: str | None = None   # a metric holding the frame it happened at: "... at frame N" (the replay marks it)
 
     def broken(self, value):
         return value is None or not (value >= self.limit if self.least else value <= self.limit)
@@ -42,7 +43,8 @@ class Bound:
         """The two lines of the failure: the sentence ("{name}" in it: that metric's value), then the evidence."""
         value = metrics.get(self.metric)
         bound = "" if value is None or isinstance(value, bool) else f" (bound {self.limit * self.scale:g})"
-        return f"{self.sentence.format_map(metrics)}.\n{self.shown(value)}{bound}."
+        at = f" at frame {metrics[self.frame]}" if self.frame and metrics.get(self.frame) is not None else ""
+        return f"{self.sentence.format_map(metrics)}.\n{self.shown(value)}{at}{bound}."
 
 
 @dataclass(frozen=True)

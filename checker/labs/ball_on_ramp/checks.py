@@ -398,19 +398,19 @@ criteria.register(CHECKS, HINTS, (
     Criterion("rolls_without_slipping", "On the 22° ramp (mu 0.6) the ball rolls without slipping, |ω r - v| <= 2 % "
               "of v, at a = ⅔ g sin θ (criterion 1).", _roll(0, scenes.ROLLING), (
                   Bound("left_ramp", 0, LEFT, "settle"),
-                  Bound("depth", SINK, SANK, "settle", "px"),
+                  Bound("depth", SINK, SANK, "settle", "px", frame="depth_frame"),
                   Bound("accel_off", ROLL_ACCEL, "the ball does not roll down the ramp at ⅔ g sin θ", "settle"),
                   Bound("slip", ROLL_SLIP, "the ball slips on the ramp instead of rolling", "settle"))),
     Criterion("slides_without_friction", "On a frictionless ramp the ball slides at a = g sin θ (within 1 %) and "
               "does not spin (criterion 2).", _roll(1, scenes.SLIDING), (
                   Bound("left_ramp", 0, LEFT, "settle"),
-                  Bound("depth", SINK, SANK, "settle", "px"),
+                  Bound("depth", SINK, SANK, "settle", "px", frame="depth_frame"),
                   Bound("accel_off", SLIDE_ACCEL, "the frictionless ball does not slide at g sin θ", "friction_clamp"),
                   Bound("omega", SLIDE_SPIN, "the frictionless ball spins: with mu = 0 nothing can turn it",
                         "friction_clamp", "rad/s"))),
     Criterion("knocks_crate_over", "The ball rolls off the ramp and knocks a tall crate over, never sinking more "
               "than 1 px into anything (criterion 3).", lambda records: scenes.measure_knock(records["knock"]), (
-                  Bound("depth", SINK, "the ball sank into a body", "settle", "px"),
+                  Bound("depth", SINK, "the ball sank into {depth_into}", "settle", "px", frame="depth_frame"),
                   Bound("moved", KNOCK_MOVE, "the ball did not knock the tall crate over", "settle", "px", True),
                   Bound("turned", KNOCK_TURN, "the ball did not knock the tall crate over", "settle", "°", True,
                         180 / math.pi))),
