@@ -401,7 +401,7 @@ def test_gradescope_failed_scene_has_a_picture(ramp_bundle, tmp_path):
     assert [t["name"].split(":")[0] for t in failed] == ["pushed_out_of_crate"]
     test = failed[0]
     assert test["output_format"] == "html" and test["output"].startswith("<pre>")
-    assert "still 5.9 px into it" in test["output"] and "ball&#x27;s center" in test["output"]  # escaped text
+    assert "depth 5.9 px" in test["output"] and "ball&#x27;s center" in test["output"]  # escaped text
     images = DATA_IMAGE.findall(test["output"])
     assert images and all(base64.b64decode(i).startswith(PNG) for i in images)
     passed = [t for t in doc["tests"] if t["status"] == "passed"]

@@ -152,7 +152,7 @@ def test_cli_writes_links_and_embeds_in_gradescope(tmp_path):
     tests = json.loads((tmp_path / "results.json").read_text())["tests"]
     pictured = [t for t in tests if t.get("output_format") == "html"]
     assert len(pictured) == 1 and 'src="data:image/png;base64,' in pictured[0]["output"]
-    assert "<pre>" in pictured[0]["output"] and "still 5.9 px into it" in pictured[0]["output"]
+    assert "<pre>" in pictured[0]["output"] and "depth 5.9 px" in pictured[0]["output"]
 
 
 def test_json_lists_picture_paths_only_with_pictures(failing):

@@ -119,3 +119,21 @@ def test_in_the_child_the_probe_records_answers_only_and_the_grader_adds_the_les
     assert judged[0]["forms"] == {"double_adds": 3, "double_squares": 1, "double_halves": 0}
     with pytest.raises(tape.ReferenceInChild):   # the framework's lesson_answers is a reference: never in the child
         recorder.run(lambda module, path: declared.lesson_answers(declared_step, {"x": 1}), "lab.py")
+
+
+def test_the_framework_words_what_a_lab_leaves_out():
+    """A step that gives only its label, how to show an answer and its kind: the evidence, the malformed answer,
+    the unnamed mistake and the passing message are the framework's."""
+    plain = declared.Step(
+        "doubles", "Step 2: double(x) is 2 x.", 2, "double", lambda module: [{"x": x} for x in (1, 2, 3)],
+        lambda double, c: double(c["x"]), lesson, hint="double", bad=lambda got: isinstance(got, str),
+        label=lambda c: f"double({c['x']})", show=lambda value: f"{value} units", kind="a number", wrong=FORMS)
+    assert graded(plain, lambda x: 2 * x).message == "all 3 cases match the lesson"
+    assert failure(plain, lambda x: x + 2).rationale == ("double() adds 2 instead of doubling.\n"
+                                                         "double(1) returned 3 units; expected 2 units.")
+    assert failure(plain, lambda x: 0).rationale == ("double() does not give the lesson's answer.\n"
+                                                     "double(1) returned 0 units; expected 2 units.")
+    assert failure(plain, lambda x: "two").rationale == ("double() must return a number.\n"
+                                                         "double(1) returned two; expected 2 units.")
+    with pytest.raises(AssertionError):   # the hint is the one thing a step must always name
+        declared.Step("doubles", "Step 2: double(x) is 2 x.", 2, "double", lambda module: [], None, lesson)

@@ -164,3 +164,21 @@ def real(value):
         return float(value)
     except OverflowError:
         raise ValueError(f"an int of {value.bit_length()} bits is too large for a float") from None
+
+
+def close(got, want, rel=1e-7, floor=1e-7):
+    """|got - want| within floor + rel·|want|: the same answer computed in another order of operations."""
+    return abs(got - want) <= floor + rel * abs(want)
+
+
+def same_point(got, want):
+    """got is a point (a list, as the probes record one) whose every coordinate is close to want's."""
+    return isinstance(got, list) and len(got) == len(want) and all(close(g, w) for g, w in zip(got, want))
+
+
+def answer_number(value):
+    """A returned number as a float, or {"bad": what it is} (a string, a bool, a tuple, ...)."""
+    try:
+        return real(value)
+    except (TypeError, ValueError):
+        return {"bad": value_text(value)}

@@ -51,9 +51,11 @@ class Step:
     student's function; probe_name: the probe's name in PROBES (default: the function's); cases(module): the
     cases, each a dict of inputs with a "case" label (drawn ones from tape.run_rng); call(function, case): the
     student's raw answer; answer(raw): it as plain data; lesson(case): the lesson's answer, in the grader only;
-    wrong: the Forms; same(got, want): True when an answer counts as the lesson's (a malformed one never does);
-    bad(got): True when the answer is malformed, and malformed(case) words it (both lines); evidence(case): the
-    message's second line; diagnose(cases, case): a Form that this case's answer shows by itself (its id None:
+    wrong: the Forms; same(got, want): True when an answer counts as the lesson's (a malformed one never does;
+    default ==); bad(got): True when the answer is malformed, and malformed(case) words it (both lines; default
+    "<function>() must return <kind>", then what the case returned and the lesson's answer); evidence(case):
+    the message's second line
+    (default "<label(case)> returned <show(got)>; expected <show(want)>"); diagnose(cases, case): a Form that this case's answer shows by itself (its id None:
     words and a hint, no mistake named), tried before the wrong forms; stand_ins(module): the lesson's functions
     that stand in for the student's other steps while this one is probed, so a mistake is graded once, under its
     own step; unnamed: the first line when no form is named; hint: the key of the step's hint in the lab's
@@ -66,11 +68,11 @@ class Step:
     cases: object
     call: object
     lesson: object
-    same: object
-    evidence: object
-    unnamed: object
-    hint: str
-    passed: object
+    same: object = None       # None: got == want
+    evidence: object = None   # None: "<label> returned <got>; expected <want>."
+    unnamed: object = None    # None: "<function>() does not give the lesson's answer"
+    hint: str = None          # required
+    passed: object = None     # None: "all <n> cases match the lesson"
     wrong: tuple = ()
     answer: object = None     # answer(raw): the student's answer as plain data (None: as the call returned it)
     bad: object = None
@@ -79,6 +81,29 @@ class Step:
     stand_ins: object = None  # stand_ins(module): {name: the lesson's function} put in place while the step is probed
     probe_name: str | None = None
     extra: dict = field(default_factory=dict)   # more grader-only data per case: {key: function of a case}
+    label: object = None      # label(case): the case as the messages name it (None: "for <case>")
+    show: object = None       # show(answer): an answer as the messages write it (None: as it is)
+    kind: str = "the lesson's kind of answer"   # what the function must return, for the default malformed
+
+    def __post_init__(self):
+        assert self.hint is not None, f"{self.check}: a Step needs the key of its hint"
+        self.same = self.same or (lambda got, want: got == want)
+        self.evidence = self.evidence or (lambda case: f"{self.named_case(case)} returned "
+                                                       f"{self.shown(case['got'])}; expected {self.shown(case['want'])}.")
+        self.unnamed = self.unnamed or f"{self.function}() does not give the lesson's answer"
+        self.passed = self.passed or "all {n} cases match the lesson"
+        self.malformed = self.malformed or (lambda case: f"{self.function}() must return {self.kind}.\n"
+                                                         f"{self.named_case(case)} returned {self.shown(case['got'])}; "
+                                                         f"expected {self.shown(case['want'])}.")
+
+    def named_case(self, case):
+        return self.label(case) if self.label else f"for {case.get('case')}"
+
+    def shown(self, answer):
+        """An answer as the messages write it: a malformed one as the probe described it (a str, or {"bad": str})."""
+        if isinstance(answer, dict) and "bad" in answer:
+            return answer["bad"]
+        return self.show(answer) if self.show and not isinstance(answer, str) else answer
 
     @property
     def probe_id(self):

@@ -348,3 +348,28 @@ def scene_records(sub, names, crash_hint, runtime_hint=RUNTIME_HINT):
                         f"{problem}.", runtime_hint)
         records[name] = run
     return records
+
+
+def register_runs(registry, hints, scenarios, after, doc, what="a body", gravity=None, more=None, hint="settle"):
+    """Register the lab's `runs` check (described by `doc`, after the checks in `after`): main() runs each scene of
+    `scenarios` to its end (scene_records) with finite positions and speeds ("<what>'s position ..."); given
+    gravity = (scene, g, relative tolerance), its bodies fall with g px/s²; more(records) may fail it further.
+    It hands on {scene name: its run}, or what `more` returns when that is not None."""
+    from lesson11 import records as measured   # the runtime's record format (a leaf module)
+
+    def runs(sub):
+        records = scene_records(sub, scenarios, hints["crash"], hints["runtime"])
+        for name, run in records.items():
+            if not measured.finite(run.record["records"]):
+                raise Fail(f"{what}'s position or speed became infinite or NaN.\nin the '{name}' scene.",
+                           hints[hint])
+        if gravity is not None:
+            scene, g, tolerance = gravity
+            fall = measured.free_fall(records[scene].record)
+            if fall is not None and abs(fall - g) > tolerance * g:
+                raise Fail(f"bodies do not fall with the course's gravity, {g:g} px/s².\nin the '{scene}' scene "
+                           f"they fall with {fall:.1f} px/s².", hints["handout"])
+        handed = more(records) if more is not None else None
+        return records if handed is None else handed
+    runs.__doc__ = doc
+    registry.check(after=list(after), needs_scenarios=True)(runs)

@@ -21,12 +21,12 @@ solutions/ball_on_ramp.py measures in the same scene, noted beside it.
 """
 import math
 
-from . import scenes
-from checker.judging import lab_checks
+from . import probes, scenes
+from checker.judging import criteria, lab_checks
+from checker.judging.common import close as _close, same_point as _same_point   # 1e-7 relative and absolute
+from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from checker.judging.common import shown
-from lesson11.records import finite
 
 TITLE = "Ball on the Ramp"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -41,8 +41,6 @@ STEP_ADVICE = {2: "clamp t to [0, 1] on the edge yourself",
                7: "write the friction impulse at the contact point yourself"}
 
 # ---------------------------------------------------------------- tolerances of the function checks
-REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
-ABS = 1e-7      # absolute floor of the same (px, px/s, rad/s, mass·px²)
 
 # ---------------------------------------------------------------- bounds of the criteria
 ROLL_ACCEL = 0.03      # relative to ⅔ g sin θ = 244.74 px/s² (the issue); solution: 244.743, off by 0.0000 %
@@ -116,14 +114,6 @@ SCENE_SECONDS = {"knock": 0.8, "ramp": 0.3, "inside": 0.3}
 
 
 # ---------------------------------------------------------------- helpers
-
-def _close(got, want):
-    return abs(got - want) <= ABS + REL * abs(want)
-
-
-def _same_point(got, want):
-    return isinstance(got, list) and all(_close(g, w) for g, w in zip(got, want))
-
 
 _vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 
@@ -294,69 +284,10 @@ def push_out_split(sub, functions):
     return Passed(f"the push-out is split by inverse mass in all {len(cases)} cases", value=cases)
 
 
-# ---------------------------------------------------------------- step 5: the ball's inertia
+# ---------------------------------------------------------------- steps 5 and 6, declared in probes.py
 
-INERTIA_MISTAKES = {1.0: ("disc_ring", "m r², a thin ring's (all the mass at the rim)"),
-                    0.4: ("disc_sphere", "2/5 m r², a solid sphere's"),
-                    1 / 12: ("disc_rod", "m r² / 12, a thin rod's"), 0.25: ("disc_quarter", "m r² / 4")}
-
-
-@CHECKS.check(depends=["loads"])
-def ball_inertia(sub, functions):
-    """Step 5: disc_inertia() gives a solid disc's moment of inertia, I = ½ m r²."""
-    cases = _function(sub, functions, "disc_inertia", "disc_inertia", 5)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if not _bad(got) and _close(got, want):
-            continue
-        where = f"for mass {case['mass']:.4g} and radius {case['radius']:g} px"
-        if _bad(got):
-            raise Fail(f"disc_inertia() must return a number.\n{where}, it returned {got['bad']}; expected "
-                       f"the number {want:.4g}.", HINTS["inertia"])
-        factor = got / (case["mass"] * case["radius"] ** 2) if case["mass"] and case["radius"] else math.nan
-        named = next(((key, text) for f, (key, text) in INERTIA_MISTAKES.items() if _close(factor, f)), None)
-        if named is None and _close(got, 0.5 * case["mass"] * case["radius"]):
-            named = ("disc_radius_unsquared", "½ m r: the radius is not squared")
-        if named is None and not _close(case["mass"], 1.0) and _close(got, 0.5 * case["radius"] ** 2):
-            named = ("disc_no_mass", "½ r²: the mass is left out")
-        first = f"yours is {named[1]}; a solid disc has ½ m r²" if named else "disc_inertia() is not ½ m r²"
-        raise Fail(f"{first}.\n{where}, yours gives {got:.4g}; ½ m r² = {want:.4g}.", HINTS["inertia"],
-                   mistake(named[0], first) if named else None)
-    return Passed(f"I = ½ m r² in all {len(cases)} cases", value=cases)
-
-
-# ---------------------------------------------------------------- step 6: the contact point
-
-@CHECKS.check(depends=["loads"])
-def contact_on_surface(sub, functions):
-    """Step 6: contact_point() puts the contact on the ball's surface, center + normal * radius."""
-    cases = _function(sub, functions, "contact_point", "contact_point", 6)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if _same_point(got, want):
-            continue
-        where = f"for {case['case']} (center {_vec(case['center'])}, radius {case['radius']:g}, normal " \
-                f"{_vec(case['normal'])}, depth {case['depth']:g})"
-        if _bad(got):
-            raise Fail(f"contact_point() must return a point.\n{where}, it returned {got['bad']}; expected "
-                       f"{_vec(want)}.", HINTS["contact"])
-        centre, radius = case["center"], case["radius"]
-        normal = case["normal"]
-        if _same_point(got, case["halfway"]):
-            name, text = "contact_halfway", ("your point is halfway into the overlap, radius - depth / 2 from the "
-                                             "center; the step asks for the ball's surface")
-        elif _same_point(got, centre):
-            name, text = "contact_at_centre", "your point is the ball's center, where friction cannot turn it"
-        elif _same_point(got, [centre[0] - normal[0] * radius, centre[1] - normal[1] * radius]):
-            name, text = "contact_far_side", ("your point is on the far side of the ball: the normal points out of "
-                                              "the ball, into the other body")
-        elif _same_point(got, [centre[0] + normal[0] * case["depth"], centre[1] + normal[1] * case["depth"]]):
-            name, text = "contact_depth", "your point is center + normal * depth; the surface is radius px out"
-        else:
-            name, text = None, "contact_point() is not on the ball's surface, center + normal * radius"
-        raise Fail(f"{text}.\n{where}: yours {_vec(got)}; expected {_vec(want)}.", HINTS["contact"],
-                   mistake(name, text) if name else None)
-    return Passed(f"the contact point is on the ball's surface in all {len(cases)} cases", value=cases)
+probes.INERTIA.register(CHECKS, HINTS)
+probes.CONTACT.register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- step 7: friction
@@ -443,81 +374,49 @@ def friction_rolls(sub, functions):
 
 # ---------------------------------------------------------------- the scenes and the lesson's criteria
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "closest_point", "inside_case", "push_out_split",
-                     "ball_inertia", "contact_on_surface", "friction_rolls"], needs_scenarios=True)
-def runs(sub):
-    """main() runs each of the checker's three scenes to the end."""
-    runs = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
-    for name, run in runs.items():
-        if not finite(run.record["records"]):
-            raise Fail(f"a body's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
-    return {name: run.record for name, run in runs.items()}
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, [
+    "loads", "handout_unchanged", "runtime_lines", "closest_point", "inside_case", "push_out_split", "ball_inertia",
+    "contact_on_surface", "friction_rolls"], "main() runs each of the checker's three scenes to the end.",
+    more=lambda records: {name: run.record for name, run in records.items()})
 
 
-def _sunk(depth, where, frame):
-    if depth > SINK:
-        raise Fail(f"the ball sank into {where}.\n{shown(depth, SINK)} px deep at frame {frame} (bound {SINK:g} px).",
-                   HINTS["settle"])
+def _roll(index, expected):
+    def measure(records):
+        roll = scenes.measure_roll(records["ramp"], index)
+        return dict(roll, accel_off=abs(roll["accel"] - expected) / expected)
+    return measure
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def rolls_without_slipping(records):
-    """On the 22° ramp (mu 0.6) the ball rolls without slipping, |ω r - v| <= 2 % of v, at a = ⅔ g sin θ (criterion 1)."""
-    roll = scenes.measure_roll(records["ramp"], 0)
-    if roll["left_ramp"]:
-        raise Fail("the ball let go on the ramp did not stay on it.\nIt bounced or flew off.", HINTS["settle"])
-    _sunk(roll["depth"], "the ramp", roll["depth_frame"])
-    off = abs(roll["accel"] - scenes.ROLLING) / scenes.ROLLING
-    if not off <= ROLL_ACCEL:
-        raise Fail(f"the ball does not roll down the ramp at ⅔ g sin θ, a rolling disc's acceleration.\n"
-                   f"{roll['accel']:.1f} px/s² against {scenes.ROLLING:.1f} (off by {off:.1%}; bound "
-                   f"{ROLL_ACCEL:.0%}).", HINTS["settle"])
-    if not roll["slip"] <= ROLL_SLIP:
-        raise Fail(f"the ball slips on the ramp instead of rolling.\nits rim moves {roll['slip']:.1%} faster or "
-                   f"slower than its center (|ω r - v| / v; bound {ROLL_SLIP:.0%}).", HINTS["settle"])
-    return (f"a = {roll['accel']:.2f} px/s² (⅔ g sin θ = {scenes.ROLLING:.2f}), slip {roll['slip']:.2%}, "
-            f"deepest {roll['depth']:.2f} px")
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def slides_without_friction(records):
-    """On a frictionless ramp the ball slides at a = g sin θ (within 1 %) and does not spin (criterion 2)."""
-    slide = scenes.measure_roll(records["ramp"], 1)
-    if slide["left_ramp"]:
-        raise Fail("the frictionless ball let go on the ramp did not stay on it.\nIt bounced or flew off.",
-                   HINTS["settle"])
-    _sunk(slide["depth"], "the ramp", slide["depth_frame"])
-    off = abs(slide["accel"] - scenes.SLIDING) / scenes.SLIDING
-    if not off <= SLIDE_ACCEL:
-        raise Fail(f"the frictionless ball does not slide at g sin θ.\n{slide['accel']:.1f} px/s² against "
-                   f"{scenes.SLIDING:.1f} (off by {off:.1%}; bound {SLIDE_ACCEL:.0%}).", HINTS["friction_clamp"])
-    if slide["omega"] > SLIDE_SPIN:
-        raise Fail(f"the frictionless ball spins: with mu = 0 nothing can turn it.\nup to "
-                   f"{shown(slide['omega'], SLIDE_SPIN)} rad/s (bound {SLIDE_SPIN:g}).", HINTS["friction_clamp"])
-    return f"a = {slide['accel']:.2f} px/s² (g sin θ = {scenes.SLIDING:.2f}), spin {slide['omega']:.2g} rad/s"
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def knocks_crate_over(records):
-    """The ball rolls off the ramp and knocks a tall crate over, never sinking more than 1 px into anything (criterion 3)."""
-    knock = scenes.measure_knock(records["knock"])
-    _sunk(knock["depth"], knock["depth_into"], knock["depth_frame"])
-    if knock["moved"] < KNOCK_MOVE or knock["turned"] < KNOCK_TURN:
-        raise Fail(f"the ball rolled off the ramp but did not knock the tall crate over.\nit turned "
-                   f"{math.degrees(knock['turned']):.0f}° and moved {knock['moved']:.1f} px (bounds: "
-                   f"{math.degrees(KNOCK_TURN):.0f}° and {KNOCK_MOVE:g} px).", HINTS["settle"])
-    return (f"the crate turned {math.degrees(knock['turned']):.0f}° and moved {knock['moved']:.0f} px; deepest "
-            f"overlap {knock['depth']:.2f} px")
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pushed_out_of_crate(records):
-    """A ball started with its center inside a crate is pushed out of the crate, not through it (criterion 4)."""
+def _inside(records):
     inside = scenes.measure_inside(records["inside"])
-    if inside["side"] == "far":
-        raise Fail("a ball with its center inside a crate was pushed through the crate, not out.\nstarted 15 px "
-                   "from the crate's left side, it came out on the right.", HINTS["inside"])
-    if inside["depth"] > INSIDE_DEPTH or inside["side"] != "near":
-        raise Fail(f"a ball started with its center inside a crate is not pushed out.\nstill "
-                   f"{inside['depth']:.1f} px into it after 0.5 s (bound {INSIDE_DEPTH:g} px).", HINTS["inside"])
-    return f"out on the near side after 0.5 s, {inside['depth']:.2f} px of overlap left"
+    return dict(inside, pushed_through=inside["side"] == "far", not_out=inside["side"] != "near")
+
+
+LEFT, SANK = "the ball let go on the ramp did not stay on it", "the ball sank into the ramp"
+INSIDE = "a ball started with its center inside a crate is not pushed out"
+criteria.register(CHECKS, HINTS, (
+    Criterion("rolls_without_slipping", "On the 22° ramp (mu 0.6) the ball rolls without slipping, |ω r - v| <= 2 % "
+              "of v, at a = ⅔ g sin θ (criterion 1).", _roll(0, scenes.ROLLING), (
+                  Bound("left_ramp", 0, LEFT, "settle"),
+                  Bound("depth", SINK, SANK, "settle", "px", frame="depth_frame"),
+                  Bound("accel_off", ROLL_ACCEL, "the ball does not roll down the ramp at ⅔ g sin θ", "settle"),
+                  Bound("slip", ROLL_SLIP, "the ball slips on the ramp instead of rolling", "settle"))),
+    Criterion("slides_without_friction", "On a frictionless ramp the ball slides at a = g sin θ (within 1 %) and "
+              "does not spin (criterion 2).", _roll(1, scenes.SLIDING), (
+                  Bound("left_ramp", 0, LEFT, "settle"),
+                  Bound("depth", SINK, SANK, "settle", "px", frame="depth_frame"),
+                  Bound("accel_off", SLIDE_ACCEL, "the frictionless ball does not slide at g sin θ", "friction_clamp"),
+                  Bound("omega", SLIDE_SPIN, "the frictionless ball spins: with mu = 0 nothing can turn it",
+                        "friction_clamp", "rad/s"))),
+    Criterion("knocks_crate_over", "The ball rolls off the ramp and knocks a tall crate over, never sinking more "
+              "than 1 px into anything (criterion 3).", lambda records: scenes.measure_knock(records["knock"]), (
+                  Bound("depth", SINK, "the ball sank into {depth_into}", "settle", "px", frame="depth_frame"),
+                  Bound("moved", KNOCK_MOVE, "the ball did not knock the tall crate over", "settle", "px", True),
+                  Bound("turned", KNOCK_TURN, "the ball did not knock the tall crate over", "settle", "°", True,
+                        180 / math.pi))),
+    Criterion("pushed_out_of_crate", "A ball started with its center inside a crate is pushed out of the crate, not "
+              "through it (criterion 4).", _inside, (
+                  Bound("pushed_through", 0, "a ball with its center inside a crate was pushed through it", "inside"),
+                  Bound("depth", INSIDE_DEPTH, INSIDE, "inside", "px"),
+                  Bound("not_out", 0, INSIDE, "inside"))),
+))

@@ -29,7 +29,9 @@ from pygame import Vector2
 from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
 from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
-from checker.judging.common import real, value_text
+from checker.judging.common import answer_number, close, real, same_point, value_text
+from checker.judging.declared import Form, Step
+from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import box, changed_vectors, judging, ngon, reference, twin, with_reference_steps
 from checker.judging.tape import run_rng
 
@@ -319,21 +321,11 @@ def _separate_reference(a, b, normal, depth, slop, percent):
 
 # ---------------------------------------------------------------- step 5: disc_inertia
 
-def probe_inertia(module, lab_path):
-    """The student's disc_inertia(mass, radius) beside ½ m r², for masses and radii far from 1."""
-    cases = []
-    rng = run_rng(module, "disc_inertia")   # and one ball drawn for this run
-    for mass, radius in ((math.pi * 400 / 1000, 20), (2.0, 12.0), (0.35, 37.5), (12.5, 3.0),
-                         (rng.uniform(2.5, 9.0), rng.uniform(5.0, 40.0))):
-        got = module.disc_inertia(mass, radius)
-        try:
-            got = real(got)
-        except (TypeError, ValueError):
-            got = {"bad": _short(got)}
-        cases.append({"mass": mass, "radius": radius, "got": got})
-        if judging(module):
-            cases[-1]["want"] = reference_disc_inertia(mass, radius)
-    return cases
+def inertia_cases(module):
+    """Masses and radii far from 1, and one ball drawn for this run."""
+    rng = run_rng(module, "disc_inertia")
+    return [{"mass": mass, "radius": radius} for mass, radius in ((math.pi * 400 / 1000, 20), (2.0, 12.0), (0.35, 37.5),
+            (12.5, 3.0), (rng.uniform(2.5, 9.0), rng.uniform(5.0, 40.0)))]
 
 
 @reference
@@ -342,38 +334,70 @@ def reference_disc_inertia(mass, radius):
     return 0.5 * mass * radius ** 2
 
 
+def _inertia_form(name, text, answer):
+    return Form(name, f"yours is {text}; a solid disc has ½ m r²", lambda c: answer(c["mass"], c["radius"]))
+
+
+INERTIA = Step(
+    "ball_inertia", "Step 5: disc_inertia() gives a solid disc's moment of inertia, I = ½ m r².", 5, "disc_inertia",
+    inertia_cases, lambda disc_inertia, c: disc_inertia(c["mass"], c["radius"]),
+    lambda c: reference_disc_inertia(c["mass"], c["radius"]), answer=answer_number, hint="inertia",
+    same=lambda got, want: not isinstance(got, dict) and close(got, want), bad=lambda got: isinstance(got, dict),
+    label=lambda c: f"disc_inertia({c['mass']:.4g}, {c['radius']:g})", show=lambda v: f"the number {v:.4g}",
+    kind="a number", unnamed="disc_inertia() is not ½ m r²",
+    wrong=(_inertia_form("disc_ring", "m r², a thin ring's (all the mass at the rim)", lambda m, r: m * r ** 2),
+           _inertia_form("disc_sphere", "2/5 m r², a solid sphere's", lambda m, r: 0.4 * m * r ** 2),
+           _inertia_form("disc_rod", "m r² / 12, a thin rod's", lambda m, r: m * r ** 2 / 12),
+           _inertia_form("disc_quarter", "m r² / 4", lambda m, r: m * r ** 2 / 4),
+           _inertia_form("disc_radius_unsquared", "½ m r: the radius is not squared", lambda m, r: 0.5 * m * r),
+           _inertia_form("disc_no_mass", "½ r²: the mass is left out", lambda m, r: 0.5 * r ** 2)))
+
+
 # ---------------------------------------------------------------- step 6: contact_point
 
-def contact_cases():
-    """(name, center, radius, unit normal out of the ball, depth px)."""
+def contact_cases(module):
+    """(name, center, radius, unit normal out of the ball, depth px), and one contact drawn for this run."""
     down_ramp = Vector2(-math.sin(math.radians(RAMP_ANGLE)), math.cos(math.radians(RAMP_ANGLE)))
-    return [
+    rng = run_rng(module, "contact_point")
+    return [{"case": name, "center": list(center), "radius": radius, "normal": list(normal), "depth": depth}
+            for name, center, radius, normal, depth in (
         ("a ball resting on the ramp", Vector2(240, 350), 20.0, down_ramp, 0.4),
         ("a ball against a crate on its right", Vector2(575, 538), 20.0, Vector2(1, 0), 3.0),
         ("a small ball touching a wall above it, to the left", Vector2(-30, 12), 8.0, Vector2(-3, -4).normalize(), 0.05),
         ("a big ball sunk deep into the floor", Vector2(400, 520), 45.0, Vector2(0, 1), 5.0),
-    ]
-
-
-def probe_contact(module, lab_path):
-    """The student's contact_point(center, radius, normal, depth) beside the point on the surface."""
-    cases = []
-    rng = run_rng(module, "contact_point")   # and one contact drawn for this run
-    drawn = [("a ball touching something drawn for this run", Vector2(rng.uniform(50, 800), rng.uniform(50, 550)),
-              rng.uniform(6, 45), Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(0.5, 5.0))]
-    for name, center, radius, normal, depth in contact_cases() + drawn:
-        got = module.contact_point(Vector2(center), radius, Vector2(normal), depth)
-        cases.append({"case": name, "center": list(center), "radius": radius, "normal": list(normal),
-                      "depth": depth, "got": answer_point(got)})
-        if judging(module):
-            cases[-1].update(_contact_reference(center, radius, normal, depth))
-    return cases
+        ("a ball touching something drawn for this run", Vector2(rng.uniform(50, 800), rng.uniform(50, 550)),
+         rng.uniform(6, 45), Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(0.5, 5.0)))]
 
 
 @reference
-def _contact_reference(center, radius, normal, depth):
-    """The lesson's contact point, center + normal · radius (on the ball's surface), and the halfway-in mistake."""
-    return {"want": list(center + normal * radius), "halfway": list(center + normal * (radius - depth / 2))}
+def reference_contact(center, radius, normal, depth):
+    """The lesson's contact point, center + normal · radius: on the ball's surface."""
+    return list(Vector2(center) + Vector2(normal) * radius)
+
+
+def _contact_form(name, text, at):
+    """A known wrong contact point: center + normal * at(radius, depth)."""
+    return Form(name, text, lambda c: list(Vector2(c["center"]) + Vector2(c["normal"]) * at(c["radius"], c["depth"])))
+
+
+CONTACT = Step(
+    "contact_on_surface", "Step 6: contact_point() puts the contact on the ball's surface, center + normal * radius.",
+    6, "contact_point", contact_cases,
+    lambda contact_point, c: answer_point(contact_point(Vector2(c["center"]), c["radius"], Vector2(c["normal"]),
+                                                        c["depth"])),
+    lambda c: reference_contact(c["center"], c["radius"], c["normal"], c["depth"]), hint="contact",
+    same=same_point, bad=lambda got: isinstance(got, dict), kind="a point", show=vec_text,
+    label=lambda c: f"for {c['case']} (center {vec_text(c['center'])}, radius {c['radius']:g}, normal "
+                    f"{vec_text(c['normal'])}, depth {c['depth']:g})",
+    unnamed="contact_point() is not on the ball's surface, center + normal * radius",
+    wrong=(_contact_form("contact_halfway", "your point is halfway into the overlap, radius - depth / 2 from the "
+                         "center; the step asks for the ball's surface", lambda r, d: r - d / 2),
+           _contact_form("contact_at_centre", "your point is the ball's center, where friction cannot turn it",
+                         lambda r, d: 0.0),
+           _contact_form("contact_far_side", "your point is on the far side of the ball: the normal points out of "
+                         "the ball, into the other body", lambda r, d: -r),
+           _contact_form("contact_depth", "your point is center + normal * depth; the surface is radius px out",
+                         lambda r, d: d)))
 
 
 # ---------------------------------------------------------------- step 7: friction in resolve
@@ -564,8 +588,8 @@ PROBES = {
     "closest_on_segment": ("closest_on_segment", probe_closest),
     "circle_inside": ("circle_polygon", probe_circle_inside),
     "separate": ("separate", probe_separate),
-    "disc_inertia": ("disc_inertia", probe_inertia),
-    "contact_point": ("contact_point", probe_contact),
+    **INERTIA.probes(),
+    **CONTACT.probes(),
     "resolve": ("resolve", probe_resolve),
     "circle_outside": ("circle_polygon", probe_circle_outside),
 }

@@ -23,11 +23,12 @@ solutions/bullets.py measures is noted beside each.
 """
 import math
 
-from . import scenes
-from checker.judging import lab_checks
+from . import probes, scenes
+from checker.judging import criteria, lab_checks
+from checker.judging.common import close as _close, same_point as _same_point   # 1e-7 relative and absolute
+from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import consistent_mistake, mistake
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from lesson11.records import finite
 
 TITLE = "Bullets"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -39,8 +40,6 @@ STEP_ADVICE = {2: "solve the quadratic for the earlier root yourself",
                5: "move to the impact, resolve there and spend the rest of the step yourself"}
 
 # ---------------------------------------------------------------- tolerances and bounds
-TOI_TOLERANCE = 1e-9   # s (the issue); solution: at most 5e-16 s off the geometric answer
-REL, ABS = 1e-7, 1e-7  # relative and absolute (px, px/s) against the lesson's code on the same inputs
 MIN_SHOTS = 100        # the issue: >= 100 shots with CCD; the probe fires 7 speeds x 16 = 112
 WALL_X = 470.0         # px, the handout's wall (handout_unchanged keeps it)
 MOMENTUM = 0.05        # the issue: the crate's momentum within 5 %; solution: 0.0000 % off
@@ -99,28 +98,12 @@ SCENE_SECONDS = {"scene": 0.2}
 
 # ---------------------------------------------------------------- helpers
 
-def _close(got, want):
-    return abs(got - want) <= ABS + REL * abs(want)
-
-
-def _same_point(got, want):
-    return isinstance(got, list) and len(got) == len(want) and all(_close(g, w) for g, w in zip(got, want))
-
-
 def _bad(got):
     return isinstance(got, dict) and "bad" in got
 
 
 def _function(sub, functions, probe, function, step):
     return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
-
-
-def _time(value):
-    if value is None:
-        return "None (no contact)"
-    if _bad(value):
-        return value["bad"]
-    return f"{value:.9g} s"
 
 
 _vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
@@ -134,110 +117,12 @@ lab_checks.register_common(CHECKS, HINTS, ("circle_toi", "bounding_radius", "tim
 
 # ---------------------------------------------------------------- step 2: circle_toi (criterion 3)
 
-def _toi_ok(got, want):
-    if want is None:
-        return got is None
-    return isinstance(got, float) and abs(got - want) <= TOI_TOLERANCE
+probes.TOI.register(CHECKS, HINTS, max_score=2)   # declared in probes.py
 
 
-# the known wrong roots of step 2, by the name the probe gives their times (probes._toi_reference)
-TOI_MISTAKES = {
-    "no_two": "the root is divided by a, not 2a: (-b - √disc) / a is twice the first-contact time",
-    "four": "the root is divided by 4a, not 2a: half the first-contact time",
-    "a_unsquared": "a = |dv|, not dv·dv = |dv|²",
-    "b_sign": "b = -2 dp·dv (as dp = p1 - p2 or dv = v1 - v2 give): time runs backwards; with dp = p2 - p1 and "
-              "dv = v2 - v1, b = 2 dp·dv",
-    "b_no_two": "b = dp·dv without its factor 2: b = 2 dp·dv",
-    "fixed_dt": "t is kept only up to 1/120 s, not up to the dt you are given",
-}
-def _toi_mistake(cases, case):
-    """The Mistake of the known wrong root that gives the student's time in every case, or None."""
-    named = consistent_mistake(cases, lambda c, name: _toi_ok(c["got"], c["forms"][name]),
-                               [name for name, value in case["forms"].items() if not _toi_ok(value, case["want"])
-                                and name in TOI_MISTAKES])
-    return mistake(f"toi_{named}", TOI_MISTAKES[named]) if named else None
+# ---------------------------------------------------------------- step 3: bounding_radius, declared in probes.py
 
-
-@CHECKS.check(depends=["loads"], max_score=2)
-def toi_matches_root(sub, functions):
-    """Step 2: circle_toi() equals the analytic first-contact time within 1e-9 s (head-on, glancing, already
-    touching, moving apart, parallel paths, missing), the lab's done-criterion 3."""
-    cases = _function(sub, functions, "circle_toi", "circle_toi", 2)
-    worst = 0.0
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if _toi_ok(got, want):
-            if want is not None:
-                worst = max(worst, abs(got - want))
-            continue
-        where = f"for {case['case']} (dt = {case['dt']:.4g} s)"
-        evidence = f"{where}, circle_toi() returned {_time(got)}; expected {_time(want)}."
-        hint, first, found = HINTS["toi"], "circle_toi() does not give the first-contact time", None
-        if _bad(got):
-            first = "circle_toi() must return a time in seconds or None"
-        elif want == 0.0 and case["c"] <= 0:
-            first, hint = "the circles already overlap, so the impact is now: return 0.0", HINTS["toi_touching"]
-            found = mistake("toi_touching_missed", first)
-        elif got is not None and case["later"] is not None and abs(got - case["later"]) <= TOI_TOLERANCE:
-            first, hint = "that is the later root, when the circles stop touching", HINTS["toi_later"]
-            found = mistake("toi_later_root", first)
-        elif want is None and got is not None and got < 0:
-            first, hint = "a negative time is in the past: the circles are moving apart", HINTS["toi_apart"]
-            found = mistake("toi_negative_time", first)
-        elif want is None and got is not None and got > case["dt"]:
-            first, hint = f"the time is later than this step's dt = {case['dt']:.4g} s", HINTS["toi_apart"]
-            found = mistake("toi_after_dt", "the time is later than this step's dt")
-        elif want is None and got is not None:
-            hint = HINTS["toi_apart"]
-        elif _toi_mistake(cases, case):
-            found = _toi_mistake(cases, case)
-            first = found.text
-            if found.id == "toi_fixed_dt":
-                hint = HINTS["toi_apart"]
-        elif want is not None and got is None:
-            first = "the circles do touch within the step, but circle_toi() found no contact"
-        raise Fail(f"{first}.\n{evidence}", hint, found)
-    return Passed(f"the time of impact matches the analytic root in all {len(cases)} cases (largest difference "
-                  f"{worst:.1e} s; bound {TOI_TOLERANCE:g} s)", value=cases)
-
-
-# ---------------------------------------------------------------- step 3: bounding_radius
-
-# the known wrong bounding radii, by the name the probe gives their values (probes._bounding_reference)
-BOUNDING_MISTAKES = {
-    "squared": "the radius is the squared distance: take its square root",
-    "from_origin": "the radius is the farthest corner's distance from (0, 0); measure from the centre, "
-                   "centre.distance_to(p)",
-    "half_side": "the radius is the largest |x| or |y| offset (half a side), not a distance: a corner is farther",
-    "half_width": "the radius is the largest |x - centre.x| (half the width), not a distance: a corner is farther",
-    "nearest": "the radius is the nearest corner's distance; the circle must reach the farthest (max, not min)",
-    "average": "the radius is the average distance to the corners; the circle must reach the farthest (max)",
-}
-
-
-@CHECKS.check(depends=["loads"])
-def bounding_circle(sub, functions):
-    """Step 3: bounding_radius() is the distance from the centre to the farthest point of the outline."""
-    cases = _function(sub, functions, "bounding_radius", "bounding_radius", 3)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if isinstance(got, float) and _close(got, want):
-            continue
-        evidence = f"for {case['case']}, bounding_radius() returned {_time(got).replace(' s', ' px')}; the " \
-                   f"farthest corner is {want:.3f} px away."
-        named = consistent_mistake(cases, lambda c, name: isinstance(c["got"], float)
-                                   and _close(c["got"], c["forms"][name]),
-                                   [name for name, value in case["forms"].items() if not _close(value, want)
-                                    and name in BOUNDING_MISTAKES])
-        found = mistake(f"bounding_{named}", BOUNDING_MISTAKES[named]) if named else None
-        if found:
-            first = found.text
-        elif isinstance(got, float) and got < want:
-            first = "corners stick out of your circle, so bullets aimed at them are skipped"
-        else:
-            first = "bounding_radius() is not the farthest corner's distance from the centre"
-        raise Fail(f"{first}.\n{evidence}", HINTS["bounding"], found)
-    return Passed(f"the bounding circle reaches the farthest corner in all {len(cases)} shapes", value=cases)
+probes.BOUNDING.register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- step 4: the broad test
@@ -366,61 +251,44 @@ FUNCTION_CHECKS = ["toi_matches_root", "bounding_circle", "broad_test", "swept_m
 
 # ---------------------------------------------------------------- the scene and the criteria
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines"] + FUNCTION_CHECKS, needs_scenarios=True)
-def runs(sub):
-    """main() runs the lab's scene in CCD mode with six bullets fired, and no bullet passes the wall."""
-    run = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])["scene"]
-    frames = run.record["records"]
-    if not finite(frames):
-        raise Fail("a body's position or speed became infinite or NaN.\nin the scene (CCD, six bullets).",
-                   HINTS["watch"])
-    wall_x = WALL_X
+def _past_the_wall(records):
+    frames = records["scene"].record["records"]
     beyond = [frame["frame"] for frame in frames for body in frame["bodies"]
-              if not body["static"] and not body["points"] and body["pos"][0] > wall_x + 2]
+              if not body["static"] and not body["points"] and body["pos"][0] > WALL_X + 2]
     if beyond:
         raise Fail(f"a bullet got through the wall in CCD mode.\nsix bullets fired at the wall and the crates: one "
                    f"was beyond the wall at frame {beyond[0]}.", HINTS["watch"])
     return f"{len(frames)} frames, {max(len(f['bodies']) for f in frames) - 5} bullets at most, none past the wall"
 
 
-@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
-def ccd_never_tunnels(sub, functions):
-    """With CCD no bullet tunnels through the 4 px wall at any speed from 3000 to 12000 px/s (>= 100 shots; criterion 1)."""
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, ["loads", "handout_unchanged", "runtime_lines"] + FUNCTION_CHECKS,
+                         "main() runs the lab's scene in CCD mode with six bullets fired, and no bullet passes the wall.",
+                         more=_past_the_wall, hint="watch")
+
+
+def _shots(sub, functions):
     shots = _function(sub, functions, "shots", "swept_move", None)
-    total = shots["per_speed"] * len(shots["ccd"])
-    tunnelled = {speed: n for speed, n in shots["ccd"].items() if n}
-    if total < MIN_SHOTS:
-        raise Fail(f"too few shots were fired to grade tunnelling.\n{total} shots (at least {MIN_SHOTS}).",
-                   HINTS["watch"])
-    if tunnelled:
-        listed = ", ".join(f"{n} of {shots['per_speed']} at {speed} px/s" for speed, n in tunnelled.items())
-        raise Fail(f"with CCD, bullets tunnelled through the {shots['wall']:g} px wall.\n{listed} (bound: none).",
-                   HINTS["watch"])
-    return (f"0 of {total} shots tunnelled at {min(shots['ccd'], key=int)}-{max(shots['ccd'], key=int)} px/s "
-            f"({shots['ccd_seconds'] * 1000:.0f} ms of physics)")
+    return dict(shots, shots_fired=shots["per_speed"] * len(shots["ccd"]), tunnelled=sum(shots["ccd"].values()),
+                shots_tunnelled_with_substeps_x8=shots["x8"])
 
 
-@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
-def substeps_still_tunnel(sub, functions):
-    """With sub-stepping x8 alone some bullets still tunnel at 12000 px/s: the lab shows the lesson's point (criterion 2)."""
-    shots = _function(sub, functions, "shots", "swept_move", None)
-    if shots["x8"] == 0:
-        raise Fail(f"sub-stepping x8 stops every bullet, so the lab no longer shows what it misses.\nnone of "
-                   f"{shots['x8_shots']} shots at 12000 px/s tunnelled; the wall (4 px) and bullet (radius 3) stay "
-                   "as handed out.", HINTS["handout"])
-    return (f"{shots['x8']} of {shots['x8_shots']} shots tunnelled at 12000 px/s with sub-steps x8 "
-            f"({shots['x8_seconds'] * 1000:.0f} ms of physics for {shots['x8_shots']} shots; CCD: "
-            f"{shots['ccd_seconds'] * 1000:.0f} ms for {shots['per_speed'] * len(shots['ccd'])})")
-
-
-@CHECKS.check(depends=["loads"], after=FUNCTION_CHECKS, max_score=2)
-def crate_momentum(sub, functions):
-    """A bullet hitting a free crate with CCD gives it the lesson's momentum, M (1 + e) m v / (m + M), within 5 % (criterion 4)."""
+def _momentum(sub, functions):
     hit = _function(sub, functions, "crate_hit", "swept_move", None)
     got = math.hypot(*hit["got"])
-    off = abs(got - hit["want"]) / hit["want"]
-    if not off <= MOMENTUM:
-        raise Fail(f"a bullet hitting a free crate does not give it the lesson's momentum.\nbullet "
-                   f"{hit['bullet_momentum']:.0f}, crate {got:.1f}; the lesson's (e = {hit['e']:g}) {hit['want']:.1f} "
-                   f"(off by {off:.1%}; bound {MOMENTUM:.0%}).", HINTS["watch"])
-    return f"crate momentum {got:.1f} against {hit['want']:.1f} ({off:.2%} off; bound {MOMENTUM:.0%})"
+    return {"crate_momentum": got, "momentum_off": abs(got - hit["want"]) / hit["want"]}
+
+
+criteria.register(CHECKS, HINTS, (
+    Criterion("ccd_never_tunnels", "With CCD no bullet tunnels through the 4 px wall at any speed from 3000 to 12000 "
+              "px/s (>= 100 shots; criterion 1).", _shots, (
+                  Bound("shots_fired", MIN_SHOTS, "too few shots were fired to grade tunnelling", "watch", least=True),
+                  Bound("tunnelled", 0, "with CCD, bullets tunnelled through the wall", "watch"))),
+    Criterion("substeps_still_tunnel", "With sub-stepping x8 alone some bullets still tunnel at 12000 px/s: the lab "
+              "shows the lesson's point (criterion 2).", _shots, (
+                  Bound("shots_tunnelled_with_substeps_x8", 1, "sub-stepping x8 stops every bullet, so the lab no "
+                        "longer shows what it misses", "handout", least=True),)),
+    Criterion("crate_momentum", "A bullet hitting a free crate with CCD gives it the lesson's momentum, "
+              "M (1 + e) m v / (m + M), within 5 % (criterion 4).", _momentum, (
+                  Bound("momentum_off", MOMENTUM, "a bullet hitting a free crate does not give it the lesson's "
+                        "momentum", "watch"),)),
+), depends=("loads",), after=FUNCTION_CHECKS, needs_scenarios=False)

@@ -28,7 +28,8 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
-from checker.judging.common import real, value_text
+from checker.judging.common import close, real, value_text
+from checker.judging.declared import Form, Step
 from checker.judging.probe_kit import box, judging, ngon, reference, twin
 from checker.judging.tape import clock, run_rng
 
@@ -39,6 +40,7 @@ SHOT_SPEEDS = (3000, 4500, 6000, 7500, 9000, 10500, 12000)   # px/s, with CCD
 SHOTS_PER_SPEED = 16                    # 7 x 16 = 112 shots, start offsets spread over one step's travel
 SUBSTEP_SHOTS = 32                      # shots at 12000 px/s with sub-steps x8
 FAST = 12000.0                          # px/s
+TOI_TOLERANCE = 1e-9                    # s (the issue); solution: at most 5e-16 s off the geometric answer
 
 
 def answer_time(value):
@@ -130,30 +132,85 @@ def drawn_toi_cases(rng, count=3):
     return cases
 
 
-def probe_toi(module, lab_path):
-    """The student's circle_toi on each case beside the analytic time and the usual wrong answers."""
-    cases = []
-    for name, p1, v1, r1, p2, v2, r2, dt in toi_cases() + drawn_toi_cases(run_rng(module, "circle_toi")):
-        got = module.circle_toi(Vector2(p1), Vector2(v1), r1, Vector2(p2), Vector2(v2), r2, dt)
-        cases.append({"case": name, "dt": dt, "got": answer_time(got)})
-        if judging(module):
-            cases[-1].update(_toi_reference(p1, v1, r1, p2, v2, r2, dt))
-    return cases
+def _toi_cases(module):
+    """toi_cases() and drawn_toi_cases() as dicts (points and velocities as [x, y])."""
+    keys = ("case", "p1", "v1", "r1", "p2", "v2", "r2", "dt")
+    return [{key: list(value) if isinstance(value, Vector2) else value for key, value in zip(keys, case)}
+            for case in toi_cases() + drawn_toi_cases(run_rng(module, "circle_toi"))]
+
+
+def _toi_args(c):
+    """circle_toi's arguments for case c."""
+    return (Vector2(c["p1"]), Vector2(c["v1"]), c["r1"], Vector2(c["p2"]), Vector2(c["v2"]), c["r2"], c["dt"])
 
 
 @reference
-def _toi_reference(p1, v1, r1, p2, v2, r2, dt):
-    """The analytic time, and the quadratic's two roots and c (to name the usual wrong answers)."""
+def _quadratic(c):
+    """The quadratic's a, b, c for case c (dp = p2 - p1, dv = v2 - v1)."""
+    p1, v1, r1, p2, v2, r2, dt = _toi_args(c)
     dp, dv = p2 - p1, v2 - v1
-    a, b, c = dv.dot(dv), 2 * dp.dot(dv), dp.dot(dp) - (r1 + r2) ** 2
-    disc = b * b - 4 * a * c
-    later = (-b + math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
-    earlier = (-b - math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
-    return {"want": analytic_toi(p1, v1, r1, p2, v2, r2, dt), "later": later, "earlier": earlier, "c": c,
-            "forms": {"no_two": _toi_with(a, b, c, dt, 1.0), "four": _toi_with(a, b, c, dt, 4.0),
-                      "a_unsquared": _toi_with(math.sqrt(a), b, c, dt, 2.0), "b_sign": _toi_with(a, -b, c, dt, 2.0),
-                      # issue 40: b without its factor 2; the bound hard-coded to the course's 1/120 s
-                      "b_no_two": _toi_with(a, b / 2, c, dt, 2.0), "fixed_dt": _toi_with(a, b, c, 1 / 120, 2.0)}}
+    return dv.dot(dv), 2 * dp.dot(dv), dp.dot(dp) - (r1 + r2) ** 2
+
+
+@reference
+def _later_root(c):
+    """The quadratic's later root (s), when the circles stop touching, or None."""
+    a, b, c0 = _quadratic(c)
+    disc = b * b - 4 * a * c0
+    return (-b + math.sqrt(disc)) / (2 * a) if a > 0 and disc >= 0 else None
+
+
+def _toi_form(name, text, root, hint=None):
+    """A known wrong root: _toi_with on the quadratic as root(a, b, c, dt) changes it."""
+    return Form(f"toi_{name}", text, lambda c: _toi_with(*root(*_quadratic(c), c["dt"])), hint)
+
+
+def _toi_ok(got, want):
+    return got is None if want is None else isinstance(got, float) and abs(got - want) <= TOI_TOLERANCE
+
+
+def _toi_diagnosis(cases, c):
+    """What this case shows by itself (touching, the later root, a time in the past or after dt), else a wrong
+    root the cases tell apart, else no contact found where there is one."""
+    got, want = c["got"], c["want"]
+    if want == 0.0 and c["c"] <= 0:
+        return Form("toi_touching_missed", "the circles already overlap, so the impact is now: return 0.0",
+                    hint="toi_touching")
+    if got is not None and c["later"] is not None and abs(got - c["later"]) <= TOI_TOLERANCE:
+        return Form("toi_later_root", "that is the later root, when the circles stop touching", hint="toi_later")
+    if want is None and got is not None:
+        if got < 0:
+            return Form("toi_negative_time", "a negative time is in the past: the circles are moving apart",
+                        hint="toi_apart")
+        if got > c["dt"]:
+            return Form("toi_after_dt", "the time is later than this step's dt", hint="toi_apart",
+                        line=f"the time is later than this step's dt = {c['dt']:.4g} s")
+        return Form(None, TOI.unnamed, hint="toi_apart")
+    named = TOI.named(cases, c)
+    if named is None and want is not None and got is None:
+        return Form(None, "the circles do touch within the step, but circle_toi() found no contact")
+    return named
+
+
+TOI = Step(
+    "toi_matches_root", "Step 2: circle_toi() equals the analytic first-contact time within 1e-9 s (head-on, "
+    "glancing, already touching, moving apart, parallel paths, missing), the lab's done-criterion 3.", 2,
+    "circle_toi", _toi_cases, lambda circle_toi, c: answer_time(circle_toi(*_toi_args(c))),
+    lambda c: analytic_toi(*_toi_args(c)), hint="toi", same=_toi_ok, bad=lambda got: isinstance(got, dict),
+    kind="a time in seconds or None", diagnose=_toi_diagnosis, unnamed="circle_toi() does not give the first-contact time",
+    label=lambda c: f"circle_toi() for {c['case']} (dt = {c['dt']:.4g} s)",
+    show=lambda t: "None (no contact)" if t is None else f"{t:.9g} s",
+    extra={"later": _later_root, "c": lambda c: _quadratic(c)[2]},
+    wrong=(_toi_form("no_two", "the root is divided by a, not 2a: (-b - √disc) / a is twice the first-contact time",
+                     lambda a, b, c, dt: (a, b, c, dt, 1.0)),
+           _toi_form("four", "the root is divided by 4a, not 2a: half the first-contact time",
+                     lambda a, b, c, dt: (a, b, c, dt, 4.0)),
+           _toi_form("a_unsquared", "a = |dv|, not dv·dv = |dv|²", lambda a, b, c, dt: (math.sqrt(a), b, c, dt, 2.0)),
+           _toi_form("b_sign", "b = -2 dp·dv (as dp = p1 - p2 or dv = v1 - v2 give): time runs backwards; with dp = "
+                     "p2 - p1 and dv = v2 - v1, b = 2 dp·dv", lambda a, b, c, dt: (a, -b, c, dt, 2.0)),
+           _toi_form("b_no_two", "b = dp·dv without its factor 2: b = 2 dp·dv", lambda a, b, c, dt: (a, b / 2, c, dt, 2.0)),
+           _toi_form("fixed_dt", "t is kept only up to 1/120 s, not up to the dt you are given",
+                     lambda a, b, c, dt: (a, b, c, 1 / 120, 2.0), hint="toi_apart")))
 
 
 @reference
@@ -190,32 +247,53 @@ def bounding_cases():
     ]
 
 
-def probe_bounding(module, lab_path):
-    """The student's bounding_radius on each outline (and one crate drawn for this run) beside the farthest corner."""
+def _bounding_cases(module):
+    """The fixed outlines and one crate drawn for this run, as dicts."""
     rng = run_rng(module, "bounding_radius")
     centre = Vector2(rng.uniform(100, 700), rng.uniform(100, 500))
     drawn = [("a crate drawn for this run", box(rng.uniform(20, 90), rng.uniform(20, 90), centre, rng.uniform(0, 90)),
               centre)]
-    cases = []
-    for name, points, centre in bounding_cases() + drawn:
-        got = module.bounding_radius([Vector2(p) for p in points], Vector2(centre))
-        cases.append({"case": name, "got": answer_time(got)})
-        if judging(module):
-            cases[-1].update(_bounding_reference(points, centre))
-    return cases
+    return [{"case": name, "points": [list(p) for p in points], "centre": list(centre)}
+            for name, points, centre in bounding_cases() + drawn]
 
 
-@reference
-def _bounding_reference(points, centre):
-    """The farthest corner's distance, the nearest one's and the largest half side (to name mistakes)."""
-    half_sides = [abs(p.x - centre.x) for p in points] + [abs(p.y - centre.y) for p in points]
-    distances = [centre.distance_to(p) for p in points]
-    return {"want": reference_bounding_radius(points, centre), "smallest": min(distances),
-            "half_side": max(half_sides) if half_sides else 0.0,
-            "forms": {"squared": max(d * d for d in distances), "from_origin": max(p.length() for p in points),
-                      "half_side": max(half_sides), "half_width": max(abs(p.x - centre.x) for p in points),
-                      "nearest": min(distances),
-                      "average": sum(distances) / len(distances)}}
+def _distances(c):
+    return [Vector2(c["centre"]).distance_to(p) for p in c["points"]]
+
+
+def _bounding_form(name, text, answer):
+    return Form(f"bounding_{name}", text, answer)
+
+
+def _sticks_out(cases, c):
+    """A named wrong radius, else "corners stick out" for a radius short of the farthest corner."""
+    named = BOUNDING.named(cases, c)
+    if named is None and isinstance(c["got"], float) and c["got"] < c["want"]:
+        return Form(None, "corners stick out of your circle, so bullets aimed at them are skipped")
+    return named
+
+
+BOUNDING = Step(
+    "bounding_circle", "Step 3: bounding_radius() is the distance from the centre to the farthest point of the "
+    "outline.", 3, "bounding_radius", _bounding_cases,
+    lambda radius, c: answer_time(radius([Vector2(p) for p in c["points"]], Vector2(c["centre"]))),
+    lambda c: reference_bounding_radius([Vector2(p) for p in c["points"]], Vector2(c["centre"])), hint="bounding",
+    same=lambda got, want: isinstance(got, float) and close(got, want), diagnose=_sticks_out,
+    label=lambda c: f"bounding_radius() for {c['case']}", show=lambda r: "None" if r is None else f"{r:.6g} px",
+    unnamed="bounding_radius() is not the farthest corner's distance from the centre",
+    wrong=(_bounding_form("squared", "the radius is the squared distance: take its square root",
+                          lambda c: max(d * d for d in _distances(c))),
+           _bounding_form("from_origin", "the radius is the farthest corner's distance from (0, 0); measure from "
+                          "the centre, centre.distance_to(p)", lambda c: max(Vector2(p).length() for p in c["points"])),
+           _bounding_form("half_side", "the radius is the largest |x| or |y| offset (half a side), not a distance: a "
+                          "corner is farther", lambda c: max(abs(p[k] - c["centre"][k]) for p in c["points"]
+                                                             for k in (0, 1))),
+           _bounding_form("half_width", "the radius is the largest |x - centre.x| (half the width), not a distance: "
+                          "a corner is farther", lambda c: max(abs(p[0] - c["centre"][0]) for p in c["points"])),
+           _bounding_form("nearest", "the radius is the nearest corner's distance; the circle must reach the "
+                          "farthest (max, not min)", lambda c: min(_distances(c))),
+           _bounding_form("average", "the radius is the average distance to the corners; the circle must reach the "
+                          "farthest (max)", lambda c: sum(_distances(c)) / len(c["points"]))))
 
 
 # ---------------------------------------------------------------- step 4: time_of_impact
@@ -564,8 +642,8 @@ PURE = ("circle_toi", "bounding_radius", "time_of_impact")
 
 # probe name -> (the lab function it needs, the probe)
 PROBES = {
-    "circle_toi": ("circle_toi", probe_toi),
-    "bounding_radius": ("bounding_radius", probe_bounding),
+    **TOI.probes(),
+    **BOUNDING.probes(),
     "time_of_impact": ("time_of_impact", probe_impact),
     "swept_move": ("swept_move", probe_swept),
     "shots": ("swept_move", probe_shots),

@@ -20,12 +20,12 @@ measures in the same scene, with the measured value noted next to it.
 """
 import math
 
-from checker.judging import lab_checks
+from checker.judging import criteria, lab_checks
+from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import consistent_mistake, mistake
 from lesson11 import records as metrics
-from . import scenes
+from . import probes, scenes
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from checker.judging.common import shown
 
 TITLE = "More Shapes"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -112,13 +112,6 @@ def _function(sub, functions, probe, function, step):
     return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
 
 
-def _bad(value, what, hint):
-    """Fail if a probe recorded a value the student's function returned that is not the right type."""
-    if isinstance(value, str):
-        raise Fail(f"{what.split(' (')[0]} must return {'a list of points' if 'list' in what else 'a number'}.\n"
-                   f"it returned {value}.", hint)
-
-
 # ---------------------------------------------------------------- loading and the handout
 
 lab_checks.register_common(CHECKS, HINTS, ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes",
@@ -127,65 +120,7 @@ lab_checks.register_common(CHECKS, HINTS, ("regular_polygon", "polygon_centroid"
 
 # ---------------------------------------------------------------- step 2: regular_polygon
 
-def _corner_mistake(case, got):
-    """(id, sentence) of a usual step-2 mistake the student's corners show in this case, or None."""
-    sides, radius = case["sides"], case["radius"]
-    want = case["want"]
-    if len(got) != sides:
-        return ("corners_count", f"your polygon has {len(got)} corners; a {sides}-gon has {sides}: k runs over "
-                                 "range(sides)")
-    distances = [math.hypot(*p) for p in got]
-    if not all(_close(d, radius, radius) for d in distances):
-        ratio = sum(distances) / len(distances) / radius
-        if all(_close(d / radius, ratio) for d in distances):
-            return ("corners_radius", f"every corner is {ratio:.4g} × radius from the centre; they belong on the "
-                                      "circle of `radius` px")
-        return ("corners_off_circle", "the corners are not all `radius` px from the centre (0, 0)")
-    same_set = all(any(_close(g[0], w[0], radius) and _close(g[1], w[1], radius) for w in want) for g in got)
-    if same_set:
-        return ("corners_order", "these are the right corners in another order: corner k at θk = 2πk / sides")
-    return ("corners_angles", "the corners lie on the circle but at other angles: corner 0 at (radius, 0), each "
-                              "next 2π / sides further")
-
-
-# the known wrong corner formulas, by the name the probe gives their corners (probes._corner_forms)
-CORNER_MISTAKES = {
-    "degrees": "θk = 360k / sides is in degrees; math.cos and math.sin take radians: θk = 2πk / sides",
-    "half_turn": "θk = πk / sides spreads the corners over half a turn: θk = 2πk / sides",
-    "sin_cos": "your x and y are swapped: x = radius cos θk, y = radius sin θk",
-}
-
-
-def _same_corners(got, want, radius):
-    return len(got) == len(want) and all(_close(g[0], w[0], radius) and _close(g[1], w[1], radius)
-                                         for g, w in zip(got, want))
-
-
-@CHECKS.check(depends=["loads"])
-def polygon_corners(sub, functions):
-    """Step 2: regular_polygon(sides, radius) puts corner k at radius (cos θk, sin θk), θk = 2πk / sides."""
-    cases = _function(sub, functions, "regular_polygon", "regular_polygon", 2)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        label = f"regular_polygon({case['sides']}, {case['radius']:g})"
-        _bad(got, f"{label} (a list of points)", HINTS["corners"])
-        if len(got) == len(want) and all(_close(g[0], w[0], case["radius"]) and _close(g[1], w[1], case["radius"])
-                                         for g, w in zip(got, want)):
-            continue
-        first = next((k for k, (g, w) in enumerate(zip(got, want)) if not (_close(g[0], w[0], case["radius"])
-                      and _close(g[1], w[1], case["radius"]))), min(len(got), len(want)))
-        shown_corner = f"corner {first} is {_vec(got[first])}, expected {_vec(want[first])}" \
-            if first < min(len(got), len(want)) else f"{len(got)} corners, expected {len(want)}"
-        named = consistent_mistake(
-            cases, lambda c, name: not isinstance(c["got"], str) and _same_corners(c["got"], c["forms"][name],
-                                                                                   c["radius"]),
-            [name for name, form in case["forms"].items() if not _same_corners(form, want, case["radius"])])
-        found = mistake(f"corners_{named}", CORNER_MISTAKES[named]) if named else None
-        if found is None and _corner_mistake(case, got):
-            found = mistake(*_corner_mistake(case, got))
-        first = found.text if found else "regular_polygon() does not put corner k at θk = 2πk / sides"
-        raise Fail(f"{first}.\n{label}: {shown_corner}.", HINTS["corners"], found)
-    return f"the corners of all {len(cases)} polygons (3 to 12 sides) are the lesson's"
+probes.CORNERS.register(CHECKS, HINTS)   # declared in probes.py
 
 
 # ---------------------------------------------------------------- step 3: polygon_centroid
@@ -247,47 +182,7 @@ def centroid(sub, functions):
 
 # ---------------------------------------------------------------- step 4: polygon_inertia
 
-INERTIA_MISTAKES = {
-    "inverse": "that is 1 / I: return the inertia I itself (the Body takes the inverse, inv_inertia, from it)",
-    "dot_weight": "the triangles are weighted by |a · b| where the formula weights them by |a × b| (their area)",
-    "no_six": "the sum is not divided by 6",
-    "twelve": "the sum is divided by 12 where the formula has 6",
-    "no_mass": "the mass factor is missing",
-    "times_mass_squared": "the mass is multiplied in twice",
-    "no_cross_term": "each triangle's term lacks a·b: it is a·a + a·b + b·b",
-    "unweighted": "the triangles are not weighted by |a × b| (their area)",
-    "corner_radii": "that is m × the mean squared corner distance, not the triangle-fan sum",
-    "no_abs": "the weights are the signed a × b; use abs(cross(a, b)) so that either winding works",
-    "precedence": "mass * num / 6 * den multiplies by the weights' sum: divide by (6 * den), brackets included",
-    "minus_cross_term": "the a·b term is subtracted; each triangle adds a·a + a·b + b·b",
-    "mass_from_area": "the mass argument is ignored: the mass is recomputed from the area (area / 1000); use the "
-                      "`mass` you are given",
-}
-
-
-@CHECKS.check(depends=["loads"])
-def inertia_sum(sub, functions):
-    """Step 4: polygon_inertia() is the triangle-fan sum m Σ |a × b|(a·a + a·b + b·b) / (6 Σ |a × b|)."""
-    cases = _function(sub, functions, "polygon_inertia", "polygon_inertia", 4)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        if isinstance(got, str):
-            raise Fail(f"polygon_inertia must return a number; for {case['case']} it returned {got}.",
-                       HINTS["inertia"])
-        if _close(got, want):
-            continue
-        named = consistent_mistake(
-            cases, lambda c, key: not isinstance(c["got"], str) and c["forms"].get(key) is not None
-            and _close(c["got"], c["forms"][key]),
-            [key for key, value in case["forms"].items() if value is not None and not _close(want, value)
-             and key in INERTIA_MISTAKES])
-        found = mistake(f"polygon_inertia_{named}", INERTIA_MISTAKES[named]) if named else None
-        first = found.text if found else "polygon_inertia() is not the triangle-fan sum"
-        analytic = f" (analytic {case['analytic']:.6g})" if case["analytic"] is not None else ""
-        raise Fail(f"{first}.\nfor {case['case']}, yours gives {got:.6g}; the triangle-fan sum {want:.6g}{analytic}.",
-                   HINTS["inertia"], found)
-    regular = sum(1 for c in cases if c["analytic"] is not None)
-    return f"all {len(cases)} inertias match the lesson ({regular} of them the analytic value of a box or regular polygon)"
+probes.INERTIA.register(CHECKS, HINTS)   # declared in probes.py
 
 
 # ---------------------------------------------------------------- step 5: separating_axes (and sat on them)
@@ -398,119 +293,74 @@ def parallel_axes(sub, functions):
 
 # ---------------------------------------------------------------- the inertia criterion, on the lab's own bodies
 
-@CHECKS.check(depends=["loads"], after=["polygon_corners", "centroid", "inertia_sum"], max_score=2)
-def bodies_inertia(sub, functions):
-    """Each shape the lab builds is centred on its centroid and has the analytic inertia of a regular polygon,
-    m r² (2 + cos(2π/n)) / 6, or of a box, m (w² + h²) / 12, within 0.1 %."""
-    cases = _function(sub, functions, "bodies", "build", None)
-    worst = 0.0
-    for case in cases:
-        offset = math.hypot(*case["centroid"])
-        if offset > CENTRED:
-            raise Fail(f"build() makes a {case['kind']} that turns about the wrong point.\nits corners' centroid is "
-                       f"{offset:.3g} px from its position.", HINTS["centroid"])
-        want = case["analytic"] if case["analytic"] is not None else case["reference"]
-        error = abs(case["inertia"] - want) / want
-        worst = max(worst, error)
-        if error > INERTIA_REL:
-            what = "the analytic value" if case["analytic"] is not None else "the triangle-fan sum about its centroid"
-            raise Fail(f"build() makes a {case['kind']} whose inertia is not {what}.\nmass {case['mass']:.4g}: "
-                       f"inertia {case['inertia']:.6g}, expected {want:.6g} ({100 * error:.3g} % off, bound "
-                       f"{100 * INERTIA_REL:g} %).", HINTS["inertia"])
-    return f"{len(cases)} kinds of shape, worst inertia error {100 * worst:.2g} %"
+def _bodies(sub, functions):
+    """Each kind of body build() makes: its corners' centroid's distance from its position, its inertia's error."""
+    return [dict(body, centroid_offset=math.hypot(*body["centroid"]), inertia_error=abs(body["inertia"] - want) / want)
+            for body in _function(sub, functions, "bodies", "build", None)
+            for want in [body["analytic"] if body["analytic"] is not None else body["reference"]]]
+
+
+criteria.register(CHECKS, HINTS, (Criterion(
+    "bodies_inertia", "Each shape the lab builds is centred on its centroid and has the analytic inertia of a regular "
+    "polygon,\n    m r² (2 + cos(2π/n)) / 6, or of a box, m (w² + h²) / 12, within 0.1 %.", _bodies, (
+        Bound("centroid_offset", CENTRED, "build() makes a {kind} that turns about the wrong point", "centroid", "px"),
+        Bound("inertia_error", INERTIA_REL, "build() makes a {kind} whose inertia is not the analytic value (or the "
+              "triangle-fan sum about its centroid)", "inertia"))),
+), depends=("loads",), after=("polygon_corners", "centroid", "inertia_sum"), needs_scenarios=False)
 
 
 # ---------------------------------------------------------------- the scenes
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "parallel_axes", "bodies_inertia"],
-              needs_scenarios=True)
-def runs(sub):
-    """main() runs each of the checker's two scenes to the end, with the course's gravity."""
-    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
-    for name, run in records.items():
-        if not metrics.finite(run.record["records"]):
-            raise Fail(f"a shape's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
-    gravity = metrics.free_fall(records["pile"].record)
-    if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
-        raise Fail(f"shapes do not fall with the course's gravity, {GRAVITY:g} px/s².\nin the pile scene they fall "
-                   f"with {gravity:.1f} px/s².", HINTS["handout"])
-    return records
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, ["loads", "handout_unchanged", "runtime_lines",
+                         "parallel_axes", "bodies_inertia"], "main() runs each of the checker's two scenes to the end, "
+                         "with the course's gravity.", "a shape", ("pile", GRAVITY, GRAVITY_TOLERANCE))
 
 
-def _escaped(summary, what):
-    """Fail if shapes fell through the floor or left the screen."""
-    if summary["fell_through"]:
-        raise Fail(f"shapes fell through the floor.\n{what}: {summary['fell_through']} of {summary['crates']} "
-                   f"(top speed {summary['peak_speed']:.0f} px/s).", HINTS["settle"])
-    if summary["off_screen"] or summary["highest_y"] < -50:
-        raise Fail(f"shapes were flung off the screen.\n{what}: top speed {summary['peak_speed']:.0f} px/s.",
-                   HINTS["settle"])
+def _tipping(shape):
+    def measure(records):
+        record = records["solo"].record
+        tipped = scenes.measure_tipping(record, shape)
+        return dict(criteria.escapes(metrics.summary(record)), **tipped, sink=-tipped["floor_gap"])
+    return measure
 
 
-def _comes_to_rest(shape, what, turn, turn_words):
-    if -shape["floor_gap"] > PENETRATION:
-        raise Fail(f"{what} sank into the floor.\n{shown(-shape['floor_gap'], PENETRATION)} px deep (bound "
-                   f"{PENETRATION:g} px).", HINTS["sinking"])
-    if shape["turned"] < turn or shape["side_error"] > TIPPED_FLAT:
-        raise Fail(f"{what} did not {turn_words}.\nit turned {math.degrees(shape['turned']):.1f}° (at least "
-                   f"{math.degrees(turn):.0f}°); its lowest side ended {shown(math.degrees(shape['side_error']), 6)}° "
-                   f"from flat (bound {math.degrees(TIPPED_FLAT):.0f}°).", HINTS["settle"])
-    if shape["rest_speed"] > REST_SPEED or shape["rest_omega"] > REST_OMEGA:
-        raise Fail(f"{what} is still moving at the end.\n{shown(shape['rest_speed'], REST_SPEED)} px/s, "
-                   f"{shown(shape['rest_omega'], REST_OMEGA)} rad/s over the last 0.5 s (bounds {REST_SPEED:g} px/s, "
-                   f"{REST_OMEGA:g} rad/s).", HINTS["settle"])
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def triangle_tips(records):
-    """A triangle dropped on a corner falls onto a side and comes to rest."""
-    record = records["solo"].record
-    _escaped(metrics.summary(record), "a triangle dropped on its corner did not land")
-    shape = scenes.measure_tipping(record, scenes.TRIANGLE)
-    _comes_to_rest(shape, "the triangle dropped on its corner", TRIANGLE_TURN, "fall onto a side")
-    return f"it turned {math.degrees(shape['turned']):.0f}° and rests {math.degrees(shape['side_error']):.1f}° from flat"
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def hexagon_tips(records):
-    """A hexagon pushed along the floor tips over its corners and stops, on a side."""
-    record = records["solo"].record
-    _escaped(metrics.summary(record), "a hexagon pushed along the floor did not stay on it")
-    shape = scenes.measure_tipping(record, scenes.PUSHED)
-    _comes_to_rest(shape, f"the hexagon pushed at {scenes.PUSH_SPEED:g} px/s", HEXAGON_TURN,
-                   "tip over a corner onto the next side")
-    return (f"it tipped over {round(shape['turned'] / (math.pi / 3))} corner(s), {shape['travelled']:.0f} px, and "
-            "stopped on a side")
-
-
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pile_stable(records):
-    """Shapes of every kind piled together neither sink into the floor or each other nor jitter."""
+def _pile(records):
     record = records["pile"].record
-    _escaped(metrics.summary(record, scenes.PILE_TAIL), "the pile of seven shapes fell apart")
-    pile = metrics.measure_pile(record, scenes.PILE_TAIL)
-    if pile["floor_penetration"] > PENETRATION or pile["pair_overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the pile sinks.\nshapes end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
-                   f"floor (bound {PENETRATION:g} px), up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into "
-                   f"each other (bound {PAIR_OVERLAP:g} px).", HINTS["sinking"])
-    if pile["tail_speed"] > PILE_SPEED or pile["drift"] > PILE_DRIFT:
-        raise Fail(f"the pile jitters.\nin its last {scenes.PILE_TAIL:g} s a shape moves at "
-                   f"{shown(pile['tail_speed'], PILE_SPEED)} px/s (bound {PILE_SPEED:g}) and drifts "
-                   f"{shown(pile['drift'], PILE_DRIFT)} px (bound {PILE_DRIFT:g}).", HINTS["settle"])
-    return (f"deepest overlap {max(pile['floor_penetration'], pile['pair_overlap'], 0):.2f} px, top speed "
-            f"{pile['tail_speed']:.1f} px/s at the end")
+    return dict(criteria.escapes(metrics.summary(record, scenes.PILE_TAIL)),
+                **metrics.measure_pile(record, scenes.PILE_TAIL))
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def ramp_holds(records):
-    """A pentagon and a hexagon set on the 22° ramp stay put."""
+def _ramp(records):
     record = records["solo"].record
-    arrays = metrics.dynamic_arrays(record)
-    ramp = [metrics.measure_ramp(record)[i] for i in scenes.ON_RAMP]
-    tail_speed = float(arrays["speed"][-metrics.FPS:, list(scenes.ON_RAMP)].max())
-    worst = max(ramp, key=lambda shape: abs(shape["slid"]))
-    if abs(worst["slid"]) > RAMP_SLIDE or tail_speed > RAMP_SPEED:
-        raise Fail(f"a pentagon and a hexagon at rest on the 22° ramp did not stay put: friction 0.6 holds them.\n"
-                   f"one moved {shown(worst['slid'], RAMP_SLIDE)} px in 3 s (bound {RAMP_SLIDE:g} px); the faster "
-                   f"moves {shown(tail_speed, RAMP_SPEED)} px/s at the end (bound {RAMP_SPEED:g}).", HINTS["settle"])
-    return f"they moved at most {abs(worst['slid']):.2f} px along the slope in 3 s"
+    speed = metrics.dynamic_arrays(record)["speed"][-metrics.FPS:, list(scenes.ON_RAMP)]
+    return {"slid": max(abs(metrics.measure_ramp(record)[i]["slid"]) for i in scenes.ON_RAMP),
+            "tail_speed": float(speed.max())}
+
+
+def _rests(turn, what):
+    """The bounds of a shape that must tip over (turn at least `turn`), land on a side and rest."""
+    return (criteria.escape_bounds("shapes", "settle") + (
+        Bound("sink", PENETRATION, f"{what} sank into the floor", "sinking", "px"),
+        Bound("turned", turn, f"{what} did not tip over", "settle", "°", True, 180 / math.pi),
+        Bound("side_error", TIPPED_FLAT, f"{what} did not land on a side", "settle", "°", scale=180 / math.pi),
+        Bound("rest_speed", REST_SPEED, f"{what} is still moving at the end", "settle", "px/s"),
+        Bound("rest_omega", REST_OMEGA, f"{what} is still turning at the end", "settle", "rad/s")))
+
+
+criteria.register(CHECKS, HINTS, (
+    Criterion("triangle_tips", "A triangle dropped on a corner falls onto a side and comes to rest.",
+              _tipping(scenes.TRIANGLE), _rests(TRIANGLE_TURN, "the triangle dropped on its corner")),
+    Criterion("hexagon_tips", "A hexagon pushed along the floor tips over its corners and stops, on a side.",
+              _tipping(scenes.PUSHED), _rests(HEXAGON_TURN, f"the hexagon pushed at {scenes.PUSH_SPEED:g} px/s")),
+    Criterion("pile_stable", "Shapes of every kind piled together neither sink into the floor or each other nor "
+              "jitter.", _pile, criteria.escape_bounds("the pile's shapes", "settle") + (
+                  Bound("floor_penetration", PENETRATION, "the pile sinks", "sinking", "px"),
+                  Bound("pair_overlap", PAIR_OVERLAP, "the pile sinks", "sinking", "px"),
+                  Bound("tail_speed", PILE_SPEED, "the pile jitters", "settle", "px/s"),
+                  Bound("drift", PILE_DRIFT, "the pile jitters", "settle", "px"))),
+    Criterion("ramp_holds", "A pentagon and a hexagon set on the 22° ramp stay put.", _ramp, (
+        Bound("slid", RAMP_SLIDE, "shapes at rest on the 22° ramp did not stay put: friction 0.6 holds them",
+              "settle", "px"),
+        Bound("tail_speed", RAMP_SPEED, "shapes at rest on the 22° ramp did not stay put: friction 0.6 holds them",
+              "settle", "px/s"))),
+))

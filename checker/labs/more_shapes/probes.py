@@ -27,7 +27,9 @@ from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, 
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from checker.judging import probe_kit
-from checker.judging.common import real, value_text
+from checker.judging.common import close, real, value_text
+from checker.judging.declared import Form, Step, forms_of
+from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import judging, reference
 
 reference_centroid = reference(polygon_centroid)
@@ -72,19 +74,6 @@ def _vector(value):
 POLYGONS = ((3, 34.0), (4, 20.0), (5, 30.5), (6, 28.0), (7, 12.0), (8, 40.0), (12, 5.0))
 
 
-def probe_regular_polygon(module, lab_path):
-    """The student's regular_polygon(sides, radius) beside the lesson's corners radius (cos θk, sin θk), θk = 2πk/n."""
-    rng = run_rng(module, "regular_polygon")   # and one polygon drawn for this run
-    drawn = ((rng.randint(3, 11), round(rng.uniform(6, 60), 1)),)
-    cases = [{"sides": sides, "radius": radius, "got": _points(module.regular_polygon(sides, radius))}
-             for sides, radius in POLYGONS + drawn]
-    if judging(module):
-        for case in cases:
-            case["want"] = _plain(reference_regular_polygon(case["sides"], case["radius"]))
-            case["forms"] = _corner_forms(case["sides"], case["radius"])
-    return cases
-
-
 @reference
 def _corner_forms(sides, radius):
     """What the known wrong corner formulas give, by name: θk in degrees, πk / n (half a turn), x from sin."""
@@ -93,6 +82,67 @@ def _corner_forms(sides, radius):
         return [[y, x] if swap else [x, y] for x, y in points]
     return {"degrees": corners(lambda k: 360 * k / sides), "half_turn": corners(lambda k: math.pi * k / sides),
             "sin_cos": corners(lambda k: 2 * math.pi * k / sides, swap=True)}
+
+
+def _near(got, want, radius):
+    return close(got, want, floor=1e-7 * max(radius, 1.0))
+
+
+def _same_corners(got, want, radius):
+    return (not isinstance(got, str) and len(got) == len(want)
+            and all(_near(g[0], w[0], radius) and _near(g[1], w[1], radius) for g, w in zip(got, want)))
+
+
+def _corner_mistake(cases, case):
+    """A known wrong formula the cases tell apart, else what this case's corners show: how many, how far, in
+    which order."""
+    named = CORNERS.named(cases, case)
+    got, sides, radius = case["got"], case["sides"], case["radius"]
+    if named or isinstance(got, str):
+        return named
+    if len(got) != sides:
+        return Form("corners_count", f"your polygon has {len(got)} corners; a {sides}-gon has {sides}: k runs over "
+                                     "range(sides)")
+    distances = [math.hypot(*p) for p in got]
+    if not all(_near(d, radius, radius) for d in distances):
+        ratio = sum(distances) / len(distances) / radius
+        if all(close(d / radius, ratio) for d in distances):
+            return Form("corners_radius", f"every corner is {ratio:.4g} × radius from the centre; they belong on the "
+                                          "circle of `radius` px")
+        return Form("corners_off_circle", "the corners are not all `radius` px from the centre (0, 0)")
+    if all(any(_near(g[0], w[0], radius) and _near(g[1], w[1], radius) for w in case["want"]) for g in got):
+        return Form("corners_order", "these are the right corners in another order: corner k at θk = 2πk / sides")
+    return Form("corners_angles", "the corners lie on the circle but at other angles: corner 0 at (radius, 0), each "
+                                  "next 2π / sides further")
+
+
+def _first_corner(case):
+    got, want = case["got"], case["want"]
+    k = next((k for k, (g, w) in enumerate(zip(got, want)) if not (_near(g[0], w[0], case["radius"])
+              and _near(g[1], w[1], case["radius"]))), min(len(got), len(want)))
+    shown = f"corner {k} is {vec_text(got[k])}, expected {vec_text(want[k])}" if k < min(len(got), len(want)) \
+        else f"{len(got)} corners, expected {len(want)}"
+    return f"regular_polygon({case['sides']}, {case['radius']:g}): {shown}."
+
+
+def _polygons(module):
+    rng = run_rng(module, "regular_polygon")   # and one polygon drawn for this run
+    return [{"sides": sides, "radius": radius}
+            for sides, radius in POLYGONS + ((rng.randint(3, 11), round(rng.uniform(6, 60), 1)),)]
+
+
+CORNERS = Step(
+    "polygon_corners", "Step 2: regular_polygon(sides, radius) puts corner k at radius (cos θk, sin θk), θk = 2πk / "
+    "sides.", 2, "regular_polygon", _polygons, lambda polygon, c: _points(polygon(c["sides"], c["radius"])),
+    lambda c: _plain(reference_regular_polygon(c["sides"], c["radius"])), hint="corners",
+    same=lambda got, want: _same_corners(got, want, math.hypot(*want[0])), bad=lambda got: isinstance(got, str),
+    kind="a list of points", show=lambda points: f"{len(points)} corners from {vec_text(points[0])}",
+    label=lambda c: f"regular_polygon({c['sides']}, {c['radius']:g})", diagnose=_corner_mistake,
+    evidence=_first_corner, unnamed="regular_polygon() does not put corner k at θk = 2πk / sides",
+    wrong=forms_of({"degrees": "θk = 360k / sides is in degrees; math.cos and math.sin take radians: θk = 2πk / sides",
+                    "half_turn": "θk = πk / sides spreads the corners over half a turn: θk = 2πk / sides",
+                    "sin_cos": "your x and y are swapped: x = radius cos θk, y = radius sin θk"},
+                   lambda c: _corner_forms(c["sides"], c["radius"]), "corners_"))
 
 
 # ---------------------------------------------------------------- step 3: polygon_centroid
@@ -208,21 +258,43 @@ def inertia_cases():
     return cases
 
 
-def probe_polygon_inertia(module, lab_path):
-    """The student's polygon_inertia beside the lesson's triangle-fan sum, the analytic value and the mistakes' values."""
-    cases = []
+def _inertia_cases(module):
+    """inertia_cases() and an outline drawn for this run, as dicts."""
     rng = run_rng(module, "polygon_inertia")
     mass = rng.uniform(2.5, 9.0)
     drawn = [(f"an outline drawn for this run, centred, mass {mass:.3g}", convex_polygon(drawn_outline(rng)), mass,
               None)]
-    for name, points, mass, analytic in inertia_cases() + drawn:
-        got = module.polygon_inertia([Vector2(p) for p in points], mass)
-        cases.append({"case": name, "points": _plain(points), "mass": mass, "got": _number(got)})
-        if judging(module):
-            cases[-1].update(want=reference_inertia([Vector2(p) for p in points], mass),
-                             analytic=analytic_inertia(**analytic) if analytic else None,
-                             forms=_inertia_forms(points, mass))
-    return cases
+    return [{"case": name, "points": _plain(points), "mass": mass, "analytic_of": analytic}
+            for name, points, mass, analytic in inertia_cases() + drawn]
+
+
+# step 4's known wrong sums, by the name _inertia_forms gives their values
+INERTIA_MISTAKES = {
+    "inverse": "that is 1 / I: return the inertia I itself (the Body takes the inverse, inv_inertia, from it)",
+    "dot_weight": "the triangles are weighted by |a · b| where the formula weights them by |a × b| (their area)",
+    "no_six": "the sum is not divided by 6",
+    "twelve": "the sum is divided by 12 where the formula has 6",
+    "no_mass": "the mass factor is missing",
+    "times_mass_squared": "the mass is multiplied in twice",
+    "no_cross_term": "each triangle's term lacks a·b: it is a·a + a·b + b·b",
+    "unweighted": "the triangles are not weighted by |a × b| (their area)",
+    "corner_radii": "that is m × the mean squared corner distance, not the triangle-fan sum",
+    "no_abs": "the weights are the signed a × b; use abs(cross(a, b)) so that either winding works",
+    "precedence": "mass * num / 6 * den multiplies by the weights' sum: divide by (6 * den), brackets included",
+    "minus_cross_term": "the a·b term is subtracted; each triangle adds a·a + a·b + b·b",
+    "mass_from_area": "the mass argument is ignored: the mass is recomputed from the area (area / 1000); use the "
+                      "`mass` you are given",
+}
+
+INERTIA = Step(
+    "inertia_sum", "Step 4: polygon_inertia() is the triangle-fan sum m Σ |a × b|(a·a + a·b + b·b) / (6 Σ |a × b|).",
+    4, "polygon_inertia", _inertia_cases, lambda inertia, c: inertia([Vector2(p) for p in c["points"]], c["mass"]),
+    lambda c: reference_inertia([Vector2(p) for p in c["points"]], c["mass"]), answer=_number, hint="inertia",
+    same=lambda got, want: not isinstance(got, str) and want is not None and close(got, want),
+    bad=lambda got: isinstance(got, str), kind="a number", show=lambda value: f"{value:.6g}",
+    label=lambda c: f"polygon_inertia() for {c['case']}", unnamed="polygon_inertia() is not the triangle-fan sum",
+    wrong=forms_of(INERTIA_MISTAKES, lambda c: _inertia_forms(c["points"], c["mass"]), "polygon_inertia_"),
+    extra={"analytic": lambda c: analytic_inertia(**c["analytic_of"]) if c["analytic_of"] else None})
 
 
 # ---------------------------------------------------------------- step 5: separating_axes and sat
@@ -370,9 +442,9 @@ def _body_reference(item, mass, local):
 PURE = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes")
 
 # probe name -> (the lab function it needs, the probe)
-PROBES = {"regular_polygon": ("regular_polygon", probe_regular_polygon),
+PROBES = {**CORNERS.probes(),
           "polygon_centroid": ("polygon_centroid", probe_polygon_centroid),
-          "polygon_inertia": ("polygon_inertia", probe_polygon_inertia),
+          **INERTIA.probes(),
           "separating_axes": ("separating_axes", probe_separating_axes),
           "sat": ("sat", probe_sat),
           "bodies": ("build", probe_bodies)}

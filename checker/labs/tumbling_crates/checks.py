@@ -24,14 +24,14 @@ import re
 
 from . import probes
 from . import scenes
-from checker.judging import lab_checks
+from checker.judging import criteria, lab_checks
+from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import SHARED, arguments_hint, consistent_mistake, fitting_mistakes, mistake
 from lesson11 import records as metrics
 from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TURN, PAIR_OVERLAP, PENETRATION,
                                    PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
                                    TIPPED_FLAT)
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from checker.judging.common import shown
 
 TITLE = "Tumbling Crates"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -537,120 +537,77 @@ def apply_impulse_spin(sub, functions):
 
 # ---------------------------------------------------------------- the scenes and the lesson's criteria
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "sat_normal", "resolve_k", "resolve_friction",
-                     "apply_impulse_spin"], needs_scenarios=True)
-def runs(sub):
-    """main() runs each of the checker's four scenes to the end, with the course's gravity."""
-    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
-    for name, run in records.items():
-        if not metrics.finite(run.record["records"]):
-            raise Fail(f"a crate's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["settle"])
-    gravity = metrics.free_fall(records["corner"].record)
-    if gravity is not None and abs(gravity - GRAVITY) > GRAVITY_TOLERANCE * GRAVITY:
-        raise Fail(f"crates do not fall with the course's gravity, {GRAVITY:g} px/s².\nin the corner scene they fall "
-                   f"with {gravity:.1f} px/s².", HINTS["handout"])
-    return records
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, ["loads", "handout_unchanged", "runtime_lines", "sat_normal",
+                         "resolve_k", "resolve_friction", "apply_impulse_spin"], "main() runs each of the checker's four "
+                         "scenes to the end, with the course's gravity.", "a crate", ("corner", GRAVITY, GRAVITY_TOLERANCE))
 
 
-def _escaped(summary, what):
-    """Fail if crates fell through the floor, were flung away or left the screen."""
-    flung = summary["highest_y"] < -50 or (summary["peak_speed"] > EXPLODED and summary["off_screen"]
-                                           and summary["fell_through"] < summary["crates"])
-    if flung:
-        raise Fail(f"crates were flung apart.\n{what}: top speed {summary['peak_speed']:.0f} px/s, spin up to "
-                   f"{summary['tail_omega']:.0f} rad/s; {summary['off_screen']} of {summary['crates']} left the "
-                   "screen.", HINTS["settle"])
-    if summary["fell_through"]:
-        raise Fail(f"crates fell through the floor.\n{what}: {summary['fell_through']} of {summary['crates']} (top "
-                   f"speed {summary['peak_speed']:.0f} px/s).", HINTS["settle"])
-    if summary["off_screen"]:
-        raise Fail(f"crates left the screen.\n{what}: {summary['off_screen']} of {summary['crates']}.",
-                   HINTS["settle"])
+def _escapes(record):
+    return criteria.escapes(metrics.summary(record), EXPLODED)
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def corner_tips(records):
-    """A crate that lands on a corner tips over onto a flat side and comes to rest (criterion 1)."""
+def _corner(records):
     record = records["corner"].record
-    _escaped(metrics.summary(record), "two crates dropped on a corner did not land")
-    for index, crate in enumerate(scenes.measure_corner(record), 1):
-        if -crate["floor_gap"] > PENETRATION:
-            raise Fail(f"a crate landed on its corner and sank into the floor.\ncrate {index}: "
-                       f"{shown(-crate['floor_gap'], PENETRATION)} px deep (bound {PENETRATION:g} px).",
-                       HINTS["sinking"])
-        if crate["turned"] < MIN_TURN or crate["flat_error"] > TIPPED_FLAT:
-            raise Fail(f"a crate landed on a corner but did not tip onto a flat side.\ncrate {index} turned "
-                       f"{math.degrees(crate['turned']):.1f}° and ended {shown(math.degrees(crate['flat_error']), 6)}° "
-                       f"from flat (bound {math.degrees(TIPPED_FLAT):.0f}°).", HINTS["settle"])
-        if crate["rest_speed"] > REST_SPEED or crate["rest_omega"] > REST_OMEGA:
-            raise Fail(f"a crate tipped over but is still moving 2.5 s after the drop.\ncrate {index}: "
-                       f"{shown(crate['rest_speed'], REST_SPEED)} px/s, {shown(crate['rest_omega'], REST_OMEGA)} "
-                       f"rad/s (bounds {REST_SPEED:g} px/s, {REST_OMEGA:g} rad/s).", HINTS["settle"])
+    return [dict(_escapes(record), **crate, sink=-crate["floor_gap"]) for crate in scenes.measure_corner(record)]
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def ramp_holds(records):
-    """Crates set on the 22° ramp (friction 0.6) stay put (criterion 2)."""
+def _ramp(records):
     record = records["ramp"].record
-    summary = metrics.summary(record)
-    _escaped(summary, "three crates set on the ramp did not stay there")
-    worst = max(metrics.measure_ramp(record), key=lambda c: abs(c["slid"]))
-    if abs(worst["slid"]) > RAMP_SLIDE or summary["tail_speed"] > RAMP_SPEED:
-        raise Fail(f"crates at rest on the 22° ramp did not stay put: friction 0.6 holds them.\none moved "
-                   f"{shown(worst['slid'], RAMP_SLIDE)} px in 3 s (bound {RAMP_SLIDE:g} px); the fastest moves "
-                   f"{shown(summary['tail_speed'], RAMP_SPEED)} px/s at the end (bound {RAMP_SPEED:g}).",
-                   HINTS["settle"])
-    return f"the crates moved at most {abs(worst['slid']):.1f} px along the slope in 3 s"
+    return dict(_escapes(record), slid=max(abs(crate["slid"]) for crate in metrics.measure_ramp(record)),
+                tail_speed=metrics.summary(record)["tail_speed"])
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def pile_stable(records):
-    """A pile of a dozen crates neither sinks into the floor nor jitters apart (criterion 3)."""
-    record = records["pile"].record
-    _escaped(metrics.summary(record), "the pile of 12 crates fell apart")
-    pile = metrics.measure_pile(record)
-    if pile["floor_penetration"] > PENETRATION or pile["pair_overlap"] > PAIR_OVERLAP:
-        raise Fail(f"the pile sinks.\ncrates end {shown(max(pile['floor_penetration'], 0), PENETRATION)} px into the "
-                   f"floor and up to {shown(pile['pair_overlap'], PAIR_OVERLAP)} px into each other (bound "
-                   f"{PENETRATION:g} px).", HINTS["sinking"])
-    if pile["tail_speed"] > PILE_SPEED or pile["drift"] > PILE_DRIFT:
-        raise Fail(f"the pile jitters apart.\nin its last second a crate moves at {shown(pile['tail_speed'], PILE_SPEED)} "
-                   f"px/s (bound {PILE_SPEED:g}) and drifts {shown(pile['drift'], PILE_DRIFT)} px (bound "
-                   f"{PILE_DRIFT:g}).", HINTS["settle"])
-    return (f"deepest overlap {max(pile['floor_penetration'], pile['pair_overlap'], 0):.2f} px, top speed "
-            f"{pile['tail_speed']:.1f} px/s in the last second")
+def _pile(records):
+    return dict(_escapes(records["pile"].record), **metrics.measure_pile(records["pile"].record))
 
 
 LINE = re.compile(r"Simulated\s+(-?[\d.]+)\s*s\s+with\s+(\d+)\s+crates?;\s*fast movers now:\s*(\d+)")
 
 
-@CHECKS.check(depends=["runs"], max_score=2, needs_scenarios=True)
-def fast_movers_zero(records):
-    """After four clicked drops the program prints `fast movers now: 0`, matching the simulation (criterion 4)."""
+def _printed(records):
+    """The clicked drops, the printed line and whether it matches the run's last frame, the fast movers."""
     run = records["own_scene"]
-    frames = run.record["records"]
-    added = metrics.drops_added(run.record)
-    if added < len(scenes.DROPS):
-        raise Fail(f"every click must drop a crate (MAX_CRATES is 14).\nthe checker clicked {len(scenes.DROPS)} "
-                   f"times; {added} crate(s) appeared ({len(metrics.dynamic(frames[0]))} at the start, "
-                   f"{len(metrics.dynamic(frames[-1]))} at the end).", HINTS["handout"])
-    matches = LINE.findall(run.stdout)
-    if not matches:
-        raise Fail("when the window closed, the program printed no final line.\nexpected a line like "
-                   "'Simulated 4.5 s with 8 crates; fast movers now: 0'.", HINTS["print"])
-    seconds, crates, movers = float(matches[-1][0]), int(matches[-1][1]), int(matches[-1][2])
-    last = frames[-1]
-    recorded_movers = metrics.fast_movers(last)
-    recorded_crates = len(metrics.dynamic(last))
-    recorded_seconds = last["frame"] / metrics.FPS
-    if movers != recorded_movers or crates != recorded_crates or abs(seconds - recorded_seconds) > 0.15:
-        raise Fail(f"the printed line does not match the simulation.\nit says {seconds:g} s, {crates} crates, "
-                   f"{movers} fast movers; recorded {recorded_seconds:.1f} s, {recorded_crates} crates, "
-                   f"{recorded_movers} faster than {metrics.FAST_MOVER:g} px/s.", HINTS["print"])
-    if movers:
-        _escaped(metrics.summary(run.record), f"in the lab's own scene with {len(scenes.DROPS)} dropped crates, "
-                 f"the program printed 'fast movers now: {movers}'")
-        raise Fail(f"dropped crates do not come to rest.\n{scenes.SETTLE_FRAMES / metrics.FPS:g} s after the last "
-                   f"of {len(scenes.DROPS)} drops the program printed 'fast movers now: {movers}' (expected 0).",
-                   HINTS["settle"])
-    return f"'fast movers now: 0' with {crates} crates after {seconds:g} s"
+    out = {"crates_dropped": metrics.drops_added(run.record), "final_line_printed": bool(LINE.findall(run.stdout))}
+    if out["final_line_printed"]:
+        seconds, crates, movers = LINE.findall(run.stdout)[-1]
+        last = run.record["records"][-1]
+        out.update(fast_movers_printed=int(movers), printed_line_matches_the_run=(
+            int(movers) == metrics.fast_movers(last) and int(crates) == len(metrics.dynamic(last))
+            and abs(float(seconds) - last["frame"] / metrics.FPS) <= 0.15))
+        out.update(_escapes(run.record) if int(movers) else {"flung": False, "fell_through": 0, "off_screen": 0})
+    return out
+
+
+CRATES, STILL = "crates", "a crate is still moving 2.5 s after the drop"
+criteria.register(CHECKS, HINTS, (
+    Criterion("corner_tips", "A crate that lands on a corner tips over onto a flat side and comes to rest "
+              "(criterion 1).", _corner, criteria.escape_bounds(CRATES, "settle") + (
+                  Bound("sink", PENETRATION, "a crate landed on its corner and sank into the floor", "sinking", "px"),
+                  Bound("turned", MIN_TURN, "a crate landed on a corner but did not tip over", "settle", "°", True,
+                        180 / math.pi),
+                  Bound("flat_error", TIPPED_FLAT, "a crate landed on a corner but did not end on a flat side",
+                        "settle", "°", scale=180 / math.pi),
+                  Bound("rest_speed", REST_SPEED, STILL, "settle", "px/s"),
+                  Bound("rest_omega", REST_OMEGA, STILL, "settle", "rad/s"))),
+    Criterion("ramp_holds", "Crates set on the 22° ramp (friction 0.6) stay put (criterion 2).", _ramp,
+              criteria.escape_bounds(CRATES, "settle") + (
+                  Bound("slid", RAMP_SLIDE, "crates at rest on the 22° ramp did not stay put: friction 0.6 holds "
+                        "them", "settle", "px"),
+                  Bound("tail_speed", RAMP_SPEED, "crates at rest on the 22° ramp did not stay put: friction 0.6 "
+                        "holds them", "settle", "px/s"))),
+    Criterion("pile_stable", "A pile of a dozen crates neither sinks into the floor nor jitters apart "
+              "(criterion 3).", _pile, criteria.escape_bounds(CRATES, "settle") + (
+                  Bound("floor_penetration", PENETRATION, "the pile sinks", "sinking", "px"),
+                  Bound("pair_overlap", PAIR_OVERLAP, "the pile sinks", "sinking", "px"),
+                  Bound("tail_speed", PILE_SPEED, "the pile jitters apart", "settle", "px/s"),
+                  Bound("drift", PILE_DRIFT, "the pile jitters apart", "settle", "px"))),
+    Criterion("fast_movers_zero", "After four clicked drops the program prints `fast movers now: 0`, matching the "
+              "simulation (criterion 4).", _printed, (
+                  Bound("crates_dropped", len(scenes.DROPS), "every click must drop a crate (MAX_CRATES is 14)",
+                        "handout", least=True),
+                  Bound("final_line_printed", 1, "when the window closed, the program printed no final line",
+                        "print", least=True),
+                  Bound("printed_line_matches_the_run", 1, "the printed line does not match the simulation (a fast "
+                        f"mover: over {metrics.FAST_MOVER:g} px/s)", "print", least=True)) + criteria.escape_bounds(CRATES, "settle") + (
+                  Bound("fast_movers_printed", 0, "dropped crates do not come to rest", "settle"),)),
+))
