@@ -1,10 +1,11 @@
 '''The files `python -m checker new-lab ID --title "..."` writes: a one-step lab in today's form, in one place.
 
 FILES maps each path (under the project) to its text; `$lab_id` and `$title` are filled in (string.Template:
-Python's own braces stay as they are). The lab: two crates fall onto the floor; the student writes step 2,
-normal_speed(va, vb, normal) = (vB - vA) · n, probed on fixed and drawn pairs, with ten known wrong forms named
-by the one-formula rule; `runs` runs one scene. new_lab.py also writes the starter, with assign's starter_text.
-When checks become declarative (issue 42, part 2), only checks.py and probes.py here change.
+Python's own braces stay as they are). The lab: three crates are tossed onto the floor, and the World gives a
+contact its impulse only while the student's step 2, normal_speed(va, vb, normal) = (vB - vA) · n, says it
+closes. The step is declared as data (checker/judging/declared.py: fixed and drawn cases, ten known wrong forms
+named by the one-formula rule); `runs` runs one scene; show.py draws its cases. new_lab.py also writes the
+starter, with assign's starter_text.
 '''
 
 SOLUTION = '''"""$title: a Lesson 11 lab (written by `python -m checker new-lab`; make it yours).
@@ -152,22 +153,17 @@ INIT = '''"""The $title lab: checks.py (its checks), probes.py (its probes), sce
 
 CHECKS = '''"""$title: the checks and the hints (written by `python -m checker new-lab`; make them yours).
 
-Order of checks: loads, handout_unchanged, runtime_lines, normal_speed_right (step 2), runs (the scene).
-normal_speed_right reads checker/labs/$lab_id/probes.py's cases, names the first that differs, and the
-mistake when exactly one known wrong form (NORMAL_MISTAKES) gives the student's answer in every case.
+Order of checks: loads, handout_unchanged, runtime_lines, normal_speed_right (step 2, declared in probes.py as
+data: checker/judging/declared.py grades it), runs (the scene).
 """
 from checker.judging import lab_checks
-from checker.judging.causes import consistent_mistake, mistake
-from checker.judging.checks import Fail, Hint, Registry
-from lesson11 import records as metrics
-from . import scenes
+from checker.judging.checks import Hint, Registry
+from . import probes, scenes
 
 TITLE = "$title"
 # the library functions step 2 asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
 STEP_LIBRARY = {2: ("relative_velocity",)}
 STEP_ADVICE = {2: "subtract the velocities and take the dot product with the normal yourself"}
-
-RELATIVE = 1e-9   # the answer against (vB - vA) · n, relative to its size (other orders of the same sums differ)
 
 HINTS = {
     "normal": Hint(2, "the speed along the normal",
@@ -188,79 +184,31 @@ SCENE_SECONDS = {"drop": 0.4}
 CHECKS = Registry()
 
 lab_checks.register_common(CHECKS, HINTS, ("normal_speed", "main"))
-
-# the known wrong forms of step 2, by the name the probe gives their answers (probes.normal_mistakes)
-NORMAL_MISTAKES = {
-    "sign": "you take A's velocity relative to B's: vB - vA, so that approaching reads negative",
-    "only_b": "only B's velocity is projected: subtract A's first",
-    "only_a": "only A's velocity is projected: take B's minus A's",
-    "length": "the length of vB - vA is not its part along the normal: take the dot product with n",
-    "sum": "vB + vA is projected: the relative velocity is vB - vA",
-    "cross": "a cross product gives the part across the normal: take the dot product",
-    "abs": "the speed lost its sign: approaching must read negative",
-    "halved": "the speed is halved: (vB - vA) · n has no factor 1/2",
-    "clamped": "a separating pair reads 0: keep the positive speeds too",
-    "x_only": "only the x part is taken: the normal is not always along x, take the dot product",
-}
-
-
-def _mistake(cases, case):
-    """The Mistake of the one known wrong form that gives the student's answer in every case, or None."""
-    def close(got, value):
-        return abs(got - value) <= RELATIVE * max(1.0, abs(value))
-    named = consistent_mistake(cases, lambda c, name: close(c["got"], c["mistakes"][name]),
-                               [name for name, value in case["mistakes"].items() if not close(value, case["want"])])
-    return mistake(f"normal_{named}", NORMAL_MISTAKES[named]) if named else None
-
-
-@CHECKS.check(depends=["loads"])
-def normal_speed_right(sub, functions):
-    """Step 2: normal_speed(va, vb, normal) is (vB - vA) · n, negative while the bodies approach."""
-    cases = lab_checks.function_data(sub, functions, "normal_speed", "normal_speed", 2, HINTS["crash"])
-    numbers = all(not isinstance(c["got"], str) for c in cases)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        label = (f"normal_speed({lab_checks.vec_text(case['va'])}, {lab_checks.vec_text(case['vb'])}, "
-                 f"{lab_checks.vec_text(case['normal'])}) ({case['case']})")
-        if isinstance(got, str):
-            raise Fail(f"normal_speed() must return a number (px/s).\\n{label} returned {got}.", HINTS["normal"])
-        if abs(got - want) <= RELATIVE * max(1.0, abs(want)):
-            continue
-        found = _mistake(cases, case) if numbers else None
-        first = found.text if found else "the speed along the normal is not (vB - vA) · n"
-        raise Fail(f"{first}.\\n{label} gave {got:.6g} px/s; expected {want:.6g} ({case['how']}).", HINTS["normal"],
-                   found)
-    return f"all {len(cases)} pairs (approaching, separating, sliding past, at rest) read (vB - vA) · n"
-
-
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "normal_speed_right"], needs_scenarios=True)
-def runs(sub):
-    """main() runs the checker's scene to the end."""
-    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
-    for name, run in records.items():
-        if not metrics.finite(run.record["records"]):
-            raise Fail(f"a crate's position or speed became infinite or NaN.\\nin the '{name}' scene.",
-                       HINTS["crash"])
-    return f"main() ran {', '.join(records)} to the end"
+probes.NORMAL_SPEED.register(CHECKS, HINTS)
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, ["loads", "handout_unchanged", "runtime_lines",
+                         "normal_speed_right"], "main() runs the checker's scene to the end.", "a crate", hint="crash")
 '''
 
 PROBES = '''"""Probes of a $title file's own functions, run inside the checker's child process (new-lab's template).
 
     normal_speed  (step 2) pairs approaching, separating, sliding past each other, moving together and at
                   rest, with normals along the axes and slanted, and two pairs drawn for this run; beside
-                  the lesson's answer, what each known wrong form gives (checks.NORMAL_MISTAKES)
+                  the lesson's answer, what each known wrong form gives (NORMAL_MISTAKES)
 
-The lesson's answers are added in the grader only (`judging`, checker/judging/probe_kit.py). Units: px, s.
+The lesson's answers are added in the grader only (checker/judging/declared.py's lesson_answers). Units: px, s.
 """
 import math
 
 from pygame import Vector2
 
 from checker.judging.common import real, value_text
-from checker.judging.probe_kit import judging, reference
+from checker.judging.declared import Step, forms_of
+from checker.judging.lab_checks import vec_text
+from checker.judging.probe_kit import reference
 from checker.judging.tape import run_rng
 
 REQUIRED = ("normal_speed", "main")
+RELATIVE = 1e-9   # the answer against (vB - vA) · n, relative to its size (other orders of the same sums differ)
 
 CASES = (
     # (what, vA px/s, vB px/s, unit normal from A to B)
@@ -289,49 +237,75 @@ def reference_normal_speed(va, vb, normal):
 
 
 @reference
-def reference_approach(va, vb, normal):
-    """How the pair moves along the normal: "approaching", "separating" or "level" (the case's words)."""
-    speed = reference_normal_speed(va, vb, normal)
+def reference_approach(case):
+    """How the pair moves along the normal: "approaching", "separating" or "level" (the evidence's words)."""
+    speed = reference_normal_speed(case["va"], case["vb"], case["normal"])
     return "approaching" if speed < 0 else "separating" if speed > 0 else "level"
 
 
+# the known wrong forms of step 2: name -> the sentence that names it (its mistake id: normal_<name>)
+NORMAL_MISTAKES = {
+    "sign": "you take A's velocity relative to B's: vB - vA, so that approaching reads negative",
+    "only_b": "only B's velocity is projected: subtract A's first",
+    "only_a": "only A's velocity is projected: take B's minus A's",
+    "length": "the length of vB - vA is not its part along the normal: take the dot product with n",
+    "sum": "vB + vA is projected: the relative velocity is vB - vA",
+    "cross": "a cross product gives the part across the normal: take the dot product",
+    "abs": "the speed lost its sign: approaching must read negative",
+    "halved": "the speed is halved: (vB - vA) · n has no factor 1/2",
+    "clamped": "a separating pair reads 0: keep the positive speeds too",
+    "x_only": "only the x part is taken: the normal is not always along x, take the dot product",
+}
+
+
 @reference
-def normal_mistakes(va, vb, normal):
-    """{name: what a known wrong normal_speed gives} for one case (names: checks.NORMAL_MISTAKES)."""
-    va, vb, n = Vector2(va), Vector2(vb), Vector2(normal)
+def normal_mistakes(case):
+    """{name: what a known wrong normal_speed gives} for one case (NORMAL_MISTAKES)."""
+    va, vb, n = Vector2(case["va"]), Vector2(case["vb"]), Vector2(case["normal"])
     right = (vb - va).dot(n)
     return {"sign": (va - vb).dot(n), "only_b": vb.dot(n), "only_a": va.dot(n), "length": (vb - va).length(),
             "sum": (vb + va).dot(n), "cross": (vb - va).cross(n), "abs": abs(right), "halved": right / 2,
             "clamped": min(0.0, right), "x_only": (vb - va).x}
 
 
-def probe_normal_speed(module, lab_path):
-    """The student's normal_speed on every case beside the lesson's answer and the known wrong forms."""
-    rng = run_rng(module, "normal_speed")   # two pairs drawn for this run, one approaching and one separating
+def normal_speed_cases(module):
+    """CASES and two pairs drawn for this run (one approaching, one separating), each a dict of inputs."""
+    rng = run_rng(module, "normal_speed")
     drawn = []
     for what, sign in (("a pair drawn for this run, approaching", -1), ("a pair drawn for this run, separating", 1)):
         angle = rng.uniform(0, 2 * math.pi)
         normal = (math.cos(angle), math.sin(angle))
         va = (rng.uniform(-200, 200), rng.uniform(-200, 200))
-        along = sign * rng.uniform(20, 300)
-        drawn.append((what, va, (va[0] + along * normal[0] + rng.uniform(-50, 50) * normal[1],
-                                 va[1] + along * normal[1] - rng.uniform(-50, 50) * normal[0]), normal))
-    cases = []
-    for what, va, vb, normal in CASES + tuple(drawn):
-        got = module.normal_speed(Vector2(va), Vector2(vb), Vector2(normal))
-        cases.append({"case": what, "va": list(va), "vb": list(vb), "normal": list(normal), "got": _number(got)})
-        if judging(module):
-            cases[-1]["want"] = reference_normal_speed(va, vb, normal)
-            cases[-1]["how"] = reference_approach(va, vb, normal)
-            cases[-1]["mistakes"] = normal_mistakes(va, vb, normal)
-    return cases
+        along, across = sign * rng.uniform(20, 300), rng.uniform(-50, 50)
+        drawn.append((what, va, (va[0] + along * normal[0] + across * normal[1],
+                                 va[1] + along * normal[1] - across * normal[0]), normal))
+    return [{"case": what, "va": list(va), "vb": list(vb), "normal": list(normal)}
+            for what, va, vb, normal in CASES + tuple(drawn)]
 
+
+def _label(case):
+    return f"normal_speed({vec_text(case['va'])}, {vec_text(case['vb'])}, {vec_text(case['normal'])}) ({case['case']})"
+
+
+# step 2 as data: the cases, the student's call, the lesson's answer (in the grader only) and the wrong forms;
+# checker/judging/declared.py probes, compares, names a form when it alone fits every case and words the message
+NORMAL_SPEED = Step(
+    "normal_speed_right", "Step 2: normal_speed(va, vb, normal) is (vB - vA) · n, negative while the bodies approach.",
+    2, "normal_speed", normal_speed_cases,
+    lambda normal_speed, c: normal_speed(Vector2(c["va"]), Vector2(c["vb"]), Vector2(c["normal"])),
+    lambda c: reference_normal_speed(c["va"], c["vb"], c["normal"]), answer=_number, hint="normal",
+    same=lambda got, want: not isinstance(got, str) and abs(got - want) <= RELATIVE * max(1.0, abs(want)),
+    bad=lambda got: isinstance(got, str), kind="a number (px/s)", label=_label, show=lambda v: f"{v:.6g} px/s",
+    unnamed="the speed along the normal is not (vB - vA) · n", extra={"how": lambda c: reference_approach(c)},
+    evidence=lambda c: f"{_label(c)} returned {c['got']:.6g} px/s; expected {c['want']:.6g} ({c['how']}).",
+    passed="all {n} pairs (approaching, separating, sliding past, at rest) read (vB - vA) · n",
+    wrong=forms_of(NORMAL_MISTAKES, lambda c: normal_mistakes(c), "normal_"))
 
 # the step functions that answer a question and must leave their arguments as they got them
 PURE = ("normal_speed",)
 
 # probe name -> (the lab function it needs, the probe)
-PROBES = {"normal_speed": ("normal_speed", probe_normal_speed)}
+PROBES = NORMAL_SPEED.probes()
 '''
 
 SCENES = '''"""The $title scene: two crates dropped onto the floor (new-lab's template).
