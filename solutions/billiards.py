@@ -25,10 +25,12 @@ Code written above a placeholder left in place is wasted: a placeholder
 `return` hands back its stand-in value unless your code returned first.
 
 Controls: left click shoots the cue ball (white) towards the mouse, harder
-the further away you click; R racks the balls again. Lines marked
+the further away you click; R racks the balls again, in a new order. Lines marked
 `# lab runtime` let the checker run this file headless; `# solver panel`
 lines add the solver panel. Units: px, s; y grows downward.
 """
+import random
+
 import pygame
 
 from lesson11 import runtime as lab  # lab runtime
@@ -132,18 +134,19 @@ def build(item):
     return ball
 
 
-def make_scene():
-    """The four cushions, the cue ball and ten balls racked in a triangle."""
+def make_scene(rng):
+    """The four cushions, the cue ball and ten balls racked in a triangle, their colours shuffled by rng."""
     t, c = TABLE, CUSHION
     cushions = [Body(box_points(w, h), pos, 0, color=GREY) for w, h, pos in (
         (t.width + 2 * c, c, (t.centerx, t.top - c / 2)), (t.width + 2 * c, c, (t.centerx, t.bottom + c / 2)),
         (c, t.height, (t.left - c / 2, t.centery)), (c, t.height, (t.right + c / 2, t.centery)))]
     balls = [build({"pos": (t.left + t.width / 4, t.centery)})]
     step = 2 * RADIUS + 0.5   # px between rows and neighbours: touching, not overlapping
+    colors = rng.sample(COLORS, len(COLORS))
     for row in range(4):
         for k in range(row + 1):
             balls.append(build({"pos": (t.left + 0.7 * t.width + row * step * 0.866,
-                                        t.centery + (k - row / 2) * step), "color": COLORS[len(balls) - 1]}))
+                                        t.centery + (k - row / 2) * step), "color": colors[len(balls) - 1]}))
     return cushions + balls
 
 
@@ -158,7 +161,8 @@ def main():
     pygame.display.set_caption("Billiards")
     clock = pygame.time.Clock()
     font = pygame.font.Font(None, 24)
-    world = World(lab.scene(make_scene(), build=build), effects={"restitution", "correction"},  # lab runtime: scene()
+    rng = random.Random(lab.seed(11))  # lab runtime: seed()
+    world = World(lab.scene(make_scene(rng), build=build), effects={"restitution", "correction"},  # lab runtime: scene()
                   circle_circle=circle_circle, resolve=resolve)
     panel = LabPanel()  # solver panel
     running = True
@@ -175,7 +179,7 @@ def main():
                 if aim.length() > 0:
                     cue.vel = aim.normalize() * min(MAX_SHOT, 3 * aim.length())
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_r:
-                world = World(make_scene(), effects={"restitution", "correction"}, circle_circle=circle_circle,
+                world = World(make_scene(rng), effects={"restitution", "correction"}, circle_circle=circle_circle,
                               resolve=resolve)
         steps = panel.advance(world, dt)  # solver panel: fixed steps, long frames clamped
         balls = balls_of(world)

@@ -1,92 +1,98 @@
-"""Billiards: the checks and the hints (written by `python -m checker new-lab`; make them yours).
+"""Billiards: the checks, their bounds and the hints.
 
-Order of checks: loads, handout_unchanged, runtime_lines, normal_speed_right (step 2), runs (the scene).
-normal_speed_right reads checker/labs/billiards/probes.py's cases, names the first that differs, and the
-mistake when exactly one known wrong form (NORMAL_MISTAKES) gives the student's answer in every case.
+Order: loads, handout_unchanged, runtime_lines, circle_circle_right (step 2), bounce_right (step 3),
+cloth_slowing_right (step 4), each declared in probes.py; runs, then the criteria on the recorded scenes
+(scenes.py): speeds_exchange, momentum_kept, no_overlap, comes_to_rest. Every bound was measured on
+solutions/billiards.py, the value noted beside it.
 """
 from checker.judging import lab_checks
-from checker.judging.causes import consistent_mistake, mistake
 from checker.judging.checks import Fail, Hint, Registry
 from lesson11 import records as metrics
-from . import scenes
+from . import probes, scenes
 
 TITLE = "Billiards"
-# the library functions step 2 asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
-STEP_LIBRARY = {2: ("relative_velocity",)}
-STEP_ADVICE = {2: "subtract the velocities and take the dot product with the normal yourself"}
+STEP_LIBRARY = {2: ("circle_circle",), 3: ("resolve", "lesson_resolve", "apply_impulse"), 4: ()}
+STEP_ADVICE = {2: "find the overlap and the normal yourself", 3: "compute j and change both velocities yourself",
+               4: "lower the speed yourself"}
 
-RELATIVE = 1e-9   # the answer against (vB - vA) · n, relative to its size (other orders of the same sums differ)
+CUE_KEEPS = 0.05        # of its speed, the cue ball after a head-on hit (e = 0.95); solution: 0.025
+OBJECT_TAKES = 0.95     # of the cue ball's speed, the ball it hits; solution: 0.975
+DRIFT = 1e-3            # |P - P0| / |P0| on the frictionless cloth; solution: 0.0
+OVERLAP = 2.0           # px, two balls or a ball and a cushion, the whole break; solution: 0.12
+REST_BY = 5.5           # s, every ball exactly at rest after the break; solution: 4.50
 
 HINTS = {
-    "normal": Hint(2, "the speed along the normal",
-                   "Section 5: the relative velocity is B's minus A's; its part along the unit normal n (from A "
-                   "to B) is a dot product, negative while the bodies approach."),
-    "handout": lab_checks.handout_hint("the scene, the World, the `# lab runtime` lines, the final print"),
+    "contact": Hint(2, "two balls' contact", "Section 6: with d = cb - ca the balls overlap when |d| < ra + rb; "
+                    "the normal is d made unit length (from A to B), the depth the overlap ra + rb - |d|."),
+    "bounce": Hint(3, "the bounce impulse", "Section 5 with no spin: vn = (vB - vA) · n; no impulse if vn >= 0. "
+                   "Otherwise j = -(1 + e) vn / (1/mA + 1/mB); B gains j n times its inverse mass, A loses it."),
+    "cloth": Hint(4, "the cloth's slowing", "The speed falls by mu g dt each frame along -v, direction kept; a "
+                  "ball slower than that ends at exactly (0, 0), never turned round."),
+    "handout": lab_checks.handout_hint("the table, build(), the World, the `# lab runtime` lines"),
     "runtime": lab_checks.RUNTIME_HINT,
-    "crash": Hint(1, "run the file", "Run the file yourself (python billiards.py) and fix the error at the line shown."),
+    "crash": Hint(1, "run the file", "Run the file yourself (python billiards.py) and fix the error at the line "
+                  "shown."),
 }
-
-# The scenes each behaviour check reads, by check id (checker/replay/pictures.py draws them when one fails).
-PICTURE_SCENES = {"runs": ("drop",)}
-
-# CPU s of the solution's run of each scene (the template's: 0.4 s in a child process; measure yours again when
-# the scene changes: the grader starts the longest first).
-SCENE_SECONDS = {"drop": 0.4}
+PICTURE_SCENES = {"speeds_exchange": ("frictionless",), "momentum_kept": ("frictionless",),
+                  "no_overlap": ("break",), "comes_to_rest": ("break",)}
+SCENE_SECONDS = {"frictionless": 0.1, "break": 0.9}   # CPU s of the solution's runs
 
 CHECKS = Registry()
-
-lab_checks.register_common(CHECKS, HINTS, ("normal_speed", "main"))
-
-# the known wrong forms of step 2, by the name the probe gives their answers (probes.normal_mistakes)
-NORMAL_MISTAKES = {
-    "sign": "you take A's velocity relative to B's: vB - vA, so that approaching reads negative",
-    "only_b": "only B's velocity is projected: subtract A's first",
-    "only_a": "only A's velocity is projected: take B's minus A's",
-    "length": "the length of vB - vA is not its part along the normal: take the dot product with n",
-    "sum": "vB + vA is projected: the relative velocity is vB - vA",
-    "cross": "a cross product gives the part across the normal: take the dot product",
-    "abs": "the speed lost its sign: approaching must read negative",
-    "halved": "the speed is halved: (vB - vA) · n has no factor 1/2",
-    "clamped": "a separating pair reads 0: keep the positive speeds too",
-    "x_only": "only the x part is taken: the normal is not always along x, take the dot product",
-}
+lab_checks.register_common(CHECKS, HINTS, probes.REQUIRED)
+for step in probes.STEPS:
+    step.register(CHECKS, HINTS)
 
 
-def _mistake(cases, case):
-    """The Mistake of the one known wrong form that gives the student's answer in every case, or None."""
-    def close(got, value):
-        return abs(got - value) <= RELATIVE * max(1.0, abs(value))
-    named = consistent_mistake(cases, lambda c, name: close(c["got"], c["mistakes"][name]),
-                               [name for name, value in case["mistakes"].items() if not close(value, case["want"])])
-    return mistake(f"normal_{named}", NORMAL_MISTAKES[named]) if named else None
-
-
-@CHECKS.check(depends=["loads"])
-def normal_speed_right(sub, functions):
-    """Step 2: normal_speed(va, vb, normal) is (vB - vA) · n, negative while the bodies approach."""
-    cases = lab_checks.function_data(sub, functions, "normal_speed", "normal_speed", 2, HINTS["crash"])
-    numbers = all(not isinstance(c["got"], str) for c in cases)
-    for case in cases:
-        got, want = case["got"], case["want"]
-        label = (f"normal_speed({lab_checks.vec_text(case['va'])}, {lab_checks.vec_text(case['vb'])}, "
-                 f"{lab_checks.vec_text(case['normal'])}) ({case['case']})")
-        if isinstance(got, str):
-            raise Fail(f"normal_speed() must return a number (px/s).\n{label} returned {got}.", HINTS["normal"])
-        if abs(got - want) <= RELATIVE * max(1.0, abs(want)):
-            continue
-        found = _mistake(cases, case) if numbers else None
-        first = found.text if found else "the speed along the normal is not (vB - vA) · n"
-        raise Fail(f"{first}.\n{label} gave {got:.6g} px/s; expected {want:.6g} ({case['how']}).", HINTS["normal"],
-                   found)
-    return f"all {len(cases)} pairs (approaching, separating, sliding past, at rest) read (vB - vA) · n"
-
-
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines", "normal_speed_right"], needs_scenarios=True)
+@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines"] + [s.check for s in probes.STEPS],
+              needs_scenarios=True)
 def runs(sub):
-    """main() runs the checker's scene to the end."""
+    """main() runs the checker's scenes to the end."""
     records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
     for name, run in records.items():
         if not metrics.finite(run.record["records"]):
-            raise Fail(f"a crate's position or speed became infinite or NaN.\nin the '{name}' scene.",
-                       HINTS["crash"])
-    return f"main() ran {', '.join(records)} to the end"
+            raise Fail(f"a ball's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["crash"])
+    return records
+
+
+@CHECKS.check(depends=["runs"], needs_scenarios=True)
+def speeds_exchange(records):
+    """Two equal balls meeting head-on swap speeds, all but the share e = 0.95 keeps back."""
+    cue, hit = scenes.head_on(records["frictionless"].record)
+    if cue > CUE_KEEPS or hit < OBJECT_TAKES:
+        raise Fail(f"two equal balls meeting head-on do not swap speeds.\nthe cue ball kept {cue:.1%} of its speed "
+                   f"(at most {CUE_KEEPS:.0%}), the ball hit took {hit:.1%} (at least {OBJECT_TAKES:.0%}).",
+                   HINTS["bounce"])
+    return f"the cue ball kept {cue:.1%} of its speed, the ball it hit took {hit:.1%}"
+
+
+@CHECKS.check(depends=["runs"], needs_scenarios=True)
+def momentum_kept(records):
+    """On a frictionless cloth the balls' total momentum stays as it was."""
+    drift, when = scenes.momentum_drift(records["frictionless"].record)
+    if drift > DRIFT:
+        raise Fail(f"the balls' total momentum changes when they meet.\nat {when:.2f} s it was off by {drift:.1%} "
+                   f"(bound {DRIFT:.1%}).", HINTS["bounce"])
+    return f"total momentum kept to {drift:.1e} of itself"
+
+
+@CHECKS.check(depends=["runs"], needs_scenarios=True)
+def no_overlap(records):
+    """In the break no ball sinks more than 2 px into another ball or a cushion."""
+    depth, what, when = scenes.deepest_overlap(records["break"].record)
+    if depth > OVERLAP:
+        raise Fail(f"balls sink into each other in the break.\n{what} overlapped by {depth:.1f} px at {when:.2f} s "
+                   f"(bound {OVERLAP:g} px).", HINTS["contact"])
+    return f"the deepest overlap was {depth:.2f} px ({what})"
+
+
+@CHECKS.check(depends=["runs"], needs_scenarios=True)
+def comes_to_rest(records):
+    """After the break every ball stops, exactly, within 5.5 s."""
+    record = records["break"].record
+    rest = scenes.at_rest(record)
+    if rest is None or rest > REST_BY:
+        count, fastest = scenes.still_rolling(record)
+        said = f"{count} still rolled at the end, the fastest at {fastest:.1f} px/s" if rest is None else \
+            f"the last stopped at {rest:.2f} s"
+        raise Fail(f"the balls do not come to rest after the break.\n{said} (bound {REST_BY:g} s).", HINTS["cloth"])
+    return f"every ball at rest from {rest:.2f} s"
