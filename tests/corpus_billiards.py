@@ -19,70 +19,236 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STARTER = os.path.join(ROOT, "starters", "billiards_starter.py")
 SOLUTION = os.path.join(ROOT, "solutions", "billiards.py")
 
-STEPS = (2,)
-CHECK_STEP = {"loads": None, "handout_unchanged": None, "runtime_lines": None, "normal_speed_right": 2, "runs": None}
-FUNCTION_CHECKS = ("normal_speed_right",)
+STEPS = (2, 3, 4)
+CHECK_STEP = {"loads": None, "handout_unchanged": None, "runtime_lines": None, "circle_circle_right": 2,
+              "bounce_right": 3, "cloth_slowing_right": 4, "runs": None, "speeds_exchange": None,
+              "momentum_kept": None, "no_overlap": None, "comes_to_rest": None}
+FUNCTION_CHECKS = ("circle_circle_right", "bounce_right", "cloth_slowing_right")
+SHOW_ENTRY = "bounce_b_only"
 
 
 wrong, correct = makers(CHECK_STEP)
 
 
 CORRECT = [
-    correct("correct_solution_steps", "the solution's own step", why="the reference build"),
-    correct("correct_components", "writes the dot product out by components", {2: """
-        return (vb.x - va.x) * normal.x + (vb.y - va.y) * normal.y
-    """}, why="the same sums in the same order"),
-    correct("correct_two_dots", "projects each velocity, then subtracts", {2: """
-        return vb.dot(normal) - va.dot(normal)
-    """}, why="equal up to rounding, within the check's 1e-9 relative tolerance"),
-    correct("correct_vector_product", "Vector2 * Vector2, pygame's dot product", {2: """
-        relative = vb - va
-        return relative * normal
-    """}, why="pygame's Vector2 * Vector2 is the dot product"),
+    correct("correct_solution_steps", "the solution's own steps", why="the reference build"),
+    correct("correct_squared_test", "tests |d|² against (ra + rb)² before taking a square root", {2: """
+        offset = cb - ca
+        reach = ra + rb
+        if offset.length_squared() >= reach * reach:
+            return None
+        distance = offset.length()
+        if distance == 0:
+            return pygame.Vector2(1, 0), reach
+        return offset.normalize(), reach - distance
+    """}, why="the same None and, up to rounding, the same normal and depth"),
+    correct("correct_by_components", "writes everything in x and y", {2: """
+        import math
+        dx, dy = cb.x - ca.x, cb.y - ca.y
+        distance = math.hypot(dx, dy)
+        if distance >= ra + rb:
+            return None
+        if distance == 0:
+            return pygame.Vector2(1.0, 0.0), ra + rb
+        return pygame.Vector2(dx / distance, dy / distance), ra + rb - distance
+    """, 3: """
+        nx, ny = normal.x, normal.y
+        vn = (b.vel.x - a.vel.x) * nx + (b.vel.y - a.vel.y) * ny
+        if vn < 0:
+            j = -(1 + e) * vn / (a.inv_mass + b.inv_mass)
+            a.vel = pygame.Vector2(a.vel.x - j * nx * a.inv_mass, a.vel.y - j * ny * a.inv_mass)
+            b.vel = pygame.Vector2(b.vel.x + j * nx * b.inv_mass, b.vel.y + j * ny * b.inv_mass)
+    """}, why="new Vector2s instead of in-place changes; math.hypot for the length"),
+    correct("correct_impulse_vector_and_scale", "builds the impulse vector; scales the speed with scale_to_length", {3: """
+        closing = (b.vel - a.vel) * normal
+        if closing >= 0:
+            return
+        impulse = normal * (-(1 + e) * closing / (a.inv_mass + b.inv_mass))
+        a.vel = a.vel - impulse * a.inv_mass
+        b.vel = b.vel + impulse * b.inv_mass
+    """, 4: """
+        new = pygame.Vector2(vel)
+        speed = new.length() - mu * G * dt
+        if speed <= 0:
+            return pygame.Vector2()
+        new.scale_to_length(speed)
+        return new
+    """}, why="Vector2 * Vector2 is the dot product; scale_to_length keeps the direction"),
+    correct("correct_cloth_in_place", "slows the given vector in place and returns it", {4: """
+        speed = vel.length()
+        if speed == 0 or speed <= mu * G * dt:
+            return vel * 0
+        vel -= vel / speed * (mu * G * dt)
+        return vel
+    """}, why="main() stores what it returns; the same speed up to rounding"),
 ]
 
 WRONG = [
-    wrong("sign_flipped", "takes vA - vB", "normal_speed_right", {2: "return (va - vb).dot(normal)"},
-          why="head-on along x reads +480 instead of -480"),
-    wrong("only_b", "projects vB only", "normal_speed_right", {2: "return vb.dot(normal)"},
-          why="B catching up with A reads -200 instead of -150"),
-    wrong("only_a", "projects vA only", "normal_speed_right", {2: "return va.dot(normal)"},
-          why="B falling onto A at rest reads 0"),
-    wrong("length", "the length of the relative velocity", "normal_speed_right", {2: "return (vb - va).length()"},
-          why="sliding past each other reads 200 instead of 0"),
-    wrong("sum", "projects vB + vA", "normal_speed_right", {2: "return (vb + va).dot(normal)"},
-          why="head-on along x reads 0"),
-    wrong("cross", "a cross product instead of the dot product", "normal_speed_right",
-          {2: "return (vb - va).cross(normal)"}, why="head-on along x reads 0"),
-    wrong("absolute", "abs() of the projection", "normal_speed_right", {2: "return abs((vb - va).dot(normal))"},
-          why="an approaching pair reads positive"),
-    wrong("halved", "half the projection", "normal_speed_right", {2: "return (vb - va).dot(normal) / 2"},
-          why="head-on along x reads -240"),
-    wrong("clamped", "keeps only approaching speeds", "normal_speed_right",
-          {2: "return min(0.0, (vb - va).dot(normal))"}, why="separating along y reads 0 instead of 170"),
-    wrong("x_only", "the x part of the relative velocity", "normal_speed_right", {2: "return vb.x - va.x"},
-          why="B falling onto A reads 0"),
-    wrong("returns_none", "computes the speed but returns nothing", "normal_speed_right", {2: """
-        speed = (vb - va).dot(normal)
-    """}, why="the function returns None: the checker must say it needs a number, not crash"),
-    wrong("outside_scene_changed", "edits make_scene(): the first crate starts on the floor", "handout_unchanged",
-          edits=[('"pos": [300, 240]})', '"pos": [300, 540]})')],
-          why="code outside the steps differs from the handout"),
+    wrong("contact_reversed", "normal from B to A", "circle_circle_right", {2: """
+        offset = ca - cb
+        distance = offset.length()
+        if distance >= ra + rb:
+            return None
+        if distance == 0:
+            return pygame.Vector2(1, 0), ra + rb
+        return offset / distance, ra + rb - distance
+    """}, why="overlapping along x gives (-1, 0)"),
+    wrong("contact_gap", "depth = |d| - ra - rb", "circle_circle_right", {2: """
+        offset = cb - ca
+        distance = offset.length()
+        if distance >= ra + rb:
+            return None
+        if distance == 0:
+            return pygame.Vector2(1, 0), distance - ra - rb
+        return offset / distance, distance - ra - rb
+    """}, why="overlapping along x gives depth -8"),
+    wrong("contact_unit", "the normal left as cb - ca", "circle_circle_right", {2: """
+        offset = cb - ca
+        depth = ra + rb - offset.length()
+        if depth <= 0:
+            return None
+        if offset.length() == 0:
+            return pygame.Vector2(1, 0), depth
+        return offset, depth
+    """}, why="overlapping along x gives (20, 0)"),
+    wrong("contact_halved", "each ball's half of the overlap", "circle_circle_right", {2: """
+        offset = cb - ca
+        depth = (ra + rb - offset.length()) / 2
+        if depth <= 0:
+            return None
+        if offset.length() == 0:
+            return pygame.Vector2(1, 0), depth
+        return offset.normalize(), depth
+    """}, why="overlapping along x gives depth 4"),
+    wrong("contact_squared", "compares |d|² with ra + rb", "circle_circle_right", {2: """
+        offset = cb - ca
+        if offset.length_squared() >= ra + rb:
+            return None
+        if offset.length() == 0:
+            return pygame.Vector2(1, 0), ra + rb
+        return offset.normalize(), ra + rb - offset.length()
+    """}, why="overlapping along x (|d|² = 400 > 28) gives None"),
+    wrong("contact_coincident_crash", "no case for coincident centres", "circle_circle_right", {2: """
+        offset = cb - ca
+        if offset.length() >= ra + rb:
+            return None
+        return offset.normalize(), ra + rb - offset.length()
+    """}, status=("error",), why="Vector2.normalize() of (0, 0) raises at coincident centres"),
+    wrong("bounce_separating", "pushes even when the balls separate", "bounce_right", {3: """
+        vn = (b.vel - a.vel).dot(normal)
+        j = -(1 + e) * vn / (a.inv_mass + b.inv_mass)
+        a.vel -= normal * (j * a.inv_mass)
+        b.vel += normal * (j * b.inv_mass)
+    """}, why="separating pairs are pulled back together"),
+    wrong("bounce_e_alone", "j = -e vn / k", "bounce_right", {3: """
+        vn = (b.vel - a.vel).dot(normal)
+        if vn < 0:
+            j = -e * vn / (a.inv_mass + b.inv_mass)
+            a.vel -= normal * (j * a.inv_mass)
+            b.vel += normal * (j * b.inv_mass)
+    """}, why="e = 1 head-on: each ball keeps half the speed"),
+    wrong("bounce_no_e", "j = -vn / k", "bounce_right", {3: """
+        vn = (b.vel - a.vel).dot(normal)
+        if vn < 0:
+            j = -vn / (a.inv_mass + b.inv_mass)
+            a.vel -= normal * (j * a.inv_mass)
+            b.vel += normal * (j * b.inv_mass)
+    """}, why="the balls end moving together"),
+    wrong("bounce_masses_summed", "divides by mA + mB", "bounce_right", {3: """
+        vn = (b.vel - a.vel).dot(normal)
+        if vn < 0:
+            j = -(1 + e) * vn / (a.mass + b.mass)
+            a.vel -= normal * (j * a.inv_mass)
+            b.vel += normal * (j * b.inv_mass)
+    """}, why="B three times heavier: j is 3 times too small"),
+    wrong("bounce_b_only", "changes B's velocity only", "bounce_right", {3: """
+        vn = (b.vel - a.vel).dot(normal)
+        if vn < 0:
+            j = -(1 + e) * vn / (a.inv_mass + b.inv_mass)
+            b.vel += normal * (j * b.inv_mass)
+    """}, why="A goes on at 400 px/s"),
+    wrong("bounce_same_sign", "+j n to both balls", "bounce_right", {3: """
+        vn = (b.vel - a.vel).dot(normal)
+        if vn < 0:
+            j = -(1 + e) * vn / (a.inv_mass + b.inv_mass)
+            a.vel += normal * (j * a.inv_mass)
+            b.vel += normal * (j * b.inv_mass)
+    """}, why="A speeds up through B"),
+    wrong("bounce_signs_swapped", "+j n to A, -j n to B", "bounce_right", {3: """
+        vn = (b.vel - a.vel).dot(normal)
+        if vn < 0:
+            j = -(1 + e) * vn / (a.inv_mass + b.inv_mass)
+            a.vel += normal * (j * a.inv_mass)
+            b.vel -= normal * (j * b.inv_mass)
+    """}, why="the balls are pushed into each other"),
+    wrong("cloth_reverses", "subtracts mu g dt along v without stopping at zero", "cloth_slowing_right", {4: """
+        if vel.length() == 0:
+            return vel
+        return vel - vel.normalize() * (mu * G * dt)
+    """}, why="a ball at (1, 1) px/s turns round"),
+    wrong("cloth_drag", "slows in proportion to the speed", "cloth_slowing_right", {4: """
+        return vel * (1 - mu * dt)
+    """}, why="a ball never stops"),
+    wrong("cloth_no_dt", "drops mu g each frame", "cloth_slowing_right", {4: """
+        speed = vel.length()
+        if speed <= mu * G:
+            return pygame.Vector2(0, 0)
+        return vel * ((speed - mu * G) / speed)
+    """}, why="a ball at 120 px/s stops in one frame"),
+    wrong("cloth_no_g", "drops mu dt", "cloth_slowing_right", {4: """
+        speed = vel.length()
+        if speed <= mu * dt:
+            return pygame.Vector2(0, 0)
+        return vel * ((speed - mu * dt) / speed)
+    """}, why="a fast ball loses 0.0025 px/s a frame"),
+    wrong("cloth_per_axis", "slows x and y apart", "cloth_slowing_right", {4: """
+        drop = mu * G * dt
+        x = max(abs(vel.x) - drop, 0) * (1 if vel.x > 0 else -1)
+        y = max(abs(vel.y) - drop, 0) * (1 if vel.y > 0 else -1)
+        return pygame.Vector2(x, y)
+    """}, why="a slanted ball turns towards an axis"),
+    wrong("cloth_at_rest_crash", "normalizes a ball at rest", "cloth_slowing_right", {4: """
+        speed = vel.length()
+        drop = mu * G * dt
+        if speed <= drop:
+            return vel.normalize() * 0
+        return vel - vel.normalize() * drop
+    """}, status=("error",), why="Vector2.normalize() of (0, 0) raises for the ball at rest"),
+    wrong("attempt_library_through_world", "asks a World for the library's test", "circle_circle_right", {2: """
+        return World().circle_circle(ca, ra, cb, rb)
+    """}, why="a step may not reach the World: step rules"),
+    wrong("attempt_answers_for_the_fixed_cases", "hard-codes the handout's cases", "circle_circle_right", {2: """
+        known = {(100, 100, 120, 100): ((1, 0), 8), (200, 200, 200, 180): ((0, -1), 8),
+                 (50, 60, 62, 76): ((0.6, 0.8), 5), (400, 100, 390, 100): ((-1, 0), 24),
+                 (300, 300, 300, 300): ((1, 0), 28)}
+        found = known.get((ca.x, ca.y, cb.x, cb.y))
+        return None if found is None else (pygame.Vector2(found[0]), found[1])
+    """}, why="the cases drawn for this run are not in the table"),
+    wrong("attempt_impulse_import", "imports the library's resolve inside the step", "bounce_right", {3: """
+        from lesson11.physics2d import response
+        response.resolve(a, b, normal, a.pos, 0, friction=False, restitution=True, spin=False)
+    """}, why="an import inside a step: step rules"),
+    wrong("outside_cloth_skipped", "main() no longer slows the balls", "handout_unchanged",
+          edits=[("            ball.vel = cloth_slowing(ball.vel, ball.rolling, steps * world.step_seconds)\n",
+                  "            pass\n")], why="code outside the steps differs from the handout"),
 ]
 
 SAYS = {
-    "sign_flipped": ("A's velocity relative to B's",), "only_b": ("only B's velocity",),
-    "only_a": ("only A's velocity",), "length": ("the length of vB - vA",), "sum": ("vB + vA",),
-    "cross": ("cross product",), "absolute": ("lost its sign",), "halved": ("halved",),
-    "clamped": ("separating pair reads 0",), "x_only": ("only the x part",), "returns_none": ("a number",),
-    "outside_scene_changed": ('"pos": [300, 540]',),
+    "contact_reversed": ("from B to A",), "contact_gap": ("the gap",), "contact_unit": ("not a unit vector",),
+    "contact_halved": ("halved",), "contact_squared": ("|d|²",), "contact_coincident_crash": ("circle_circle",),
+    "bounce_separating": ("already separate",), "bounce_e_alone": ("e alone",), "bounce_no_e": ("leaves out e",),
+    "bounce_masses_summed": ("mA + mB",), "bounce_b_only": ("only B",), "bounce_same_sign": ("both balls",),
+    "bounce_signs_swapped": ("A gets +j n",), "cloth_reverses": ("turns round",), "cloth_drag": ("drag",),
+    "cloth_no_dt": ("leaves out dt",), "cloth_no_g": ("leaves out g",), "cloth_per_axis": ("x and y",),
+    "cloth_at_rest_crash": ("cloth_slowing",), "attempt_library_through_world": ("World",),
+    "attempt_answers_for_the_fixed_cases": ("drawn for this run",), "attempt_impulse_import": ("import",),
+    "outside_cloth_skipped": ("pass",),
 }
 WRONG = with_says(WRONG, SAYS)
 
 # the mistake id each entry's failing check must carry (--json's "mistake")
-MISTAKE_IDS = {"sign_flipped": "normal_sign", "only_b": "normal_only_b", "only_a": "normal_only_a",
-               "length": "normal_length", "sum": "normal_sum", "cross": "normal_cross", "absolute": "normal_abs",
-               "halved": "normal_halved", "clamped": "normal_clamped", "x_only": "normal_x_only"}
+MISTAKE_IDS = {name: name for name in SAYS if name.split("_")[0] in ("contact", "bounce", "cloth")
+               and not name.endswith("_crash")}
 
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}

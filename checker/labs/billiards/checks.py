@@ -12,7 +12,7 @@ from . import probes, scenes
 
 TITLE = "Billiards"
 STEP_LIBRARY = {2: ("circle_circle",), 3: ("resolve", "lesson_resolve", "apply_impulse"), 4: ()}
-STEP_ADVICE = {2: "find the overlap and the normal yourself", 3: "compute j and change both velocities yourself",
+STEP_ADVICE = {2: "write the test yourself", 3: "compute j and change both velocities yourself",
                4: "lower the speed yourself"}
 
 CUE_KEEPS = 0.05        # of its speed, the cue ball after a head-on hit (e = 0.95); solution: 0.025

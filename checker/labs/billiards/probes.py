@@ -74,6 +74,8 @@ def contact_forms(case):
     if right is None:
         return {"inverted": [offset.x / far, offset.y / far, radii - far]}
     n, depth = right[:2], right[2]
+    if not far:   # coincident centres: every form keeps the lesson's fixed normal
+        return {"reversed": right, "unit": right, "gap": [*n, -depth], "halved": [*n, depth / 2], "squared": right}
     return {"reversed": [-n[0], -n[1], depth], "gap": [*n, -depth], "unit": [offset.x, offset.y, depth],
             "halved": [*n, depth / 2], "squared": right if far * far < radii else None}
 
