@@ -39,7 +39,7 @@ from lesson11.physics2d import Body, Circle, World, box_points
 from lesson11.physics2d.draw import draw_text
 
 WIDTH, HEIGHT = 900, 600
-TABLE = pygame.Rect(60, 60, 780, 480)   # px: the cloth inside the cushions
+TABLE = pygame.Rect(60, 150, 780, 400)  # px: the cloth inside the cushions (below the solver panel)
 CUSHION = 40                            # px: each cushion's thickness
 RADIUS = 14.0                           # px: every ball
 MASS = 1.0                              # every ball

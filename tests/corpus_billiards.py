@@ -25,6 +25,7 @@ CHECK_STEP = {"loads": None, "handout_unchanged": None, "runtime_lines": None, "
               "momentum_kept": None, "no_overlap": None, "comes_to_rest": None}
 FUNCTION_CHECKS = ("circle_circle_right", "bounce_right", "cloth_slowing_right")
 SHOW_ENTRY = "bounce_b_only"
+SHOW_CASE = "BallsCase"
 
 
 wrong, correct = makers(CHECK_STEP)

@@ -18,8 +18,8 @@ STEP_ADVICE = {2: "write the test yourself", 3: "compute j and change both veloc
 CUE_KEEPS = 0.05        # of its speed, the cue ball after a head-on hit (e = 0.95); solution: 0.025
 OBJECT_TAKES = 0.95     # of the cue ball's speed, the ball it hits; solution: 0.975
 DRIFT = 1e-3            # |P - P0| / |P0| on the frictionless cloth; solution: 0.0
-OVERLAP = 2.0           # px, two balls or a ball and a cushion, the whole break; solution: 0.12
-REST_BY = 5.5           # s, every ball exactly at rest after the break; solution: 4.50
+OVERLAP = 2.0           # px, two balls or a ball and a cushion, the whole break; solution: 0.21
+REST_BY = 5.5           # s, every ball exactly at rest after the break; solution: 4.48
 
 HINTS = {
     "contact": Hint(2, "two balls' contact", "Section 6: with d = cb - ca the balls overlap when |d| < ra + rb; "
@@ -35,7 +35,7 @@ HINTS = {
 }
 PICTURE_SCENES = {"speeds_exchange": ("frictionless",), "momentum_kept": ("frictionless",),
                   "no_overlap": ("break",), "comes_to_rest": ("break",)}
-SCENE_SECONDS = {"frictionless": 0.1, "break": 0.9}   # CPU s of the solution's runs
+SCENE_SECONDS = {"frictionless": 0.1, "break": 0.6}   # CPU s of the solution's runs
 
 CHECKS = Registry()
 lab_checks.register_common(CHECKS, HINTS, probes.REQUIRED)

@@ -1,9 +1,9 @@
 """The Billiards scenes: which balls the checker sets where, and what it measures.
 
-The table's cloth is x 60-840, y 60-540 px (the lab's TABLE), every ball 14 px in radius, mass 1. Items
+The table's cloth is x 60-840, y 150-550 px (the lab's TABLE), every ball 14 px in radius, mass 1. Items
 are the lab's own ball descriptions ({"pos", "vel", "color", "rolling"}), made by the lab's build();
 "rolling": 0 is a frictionless cloth.
-  frictionless  0.75 s, no cloth: a head-on pair (y = 180) and a glancing pair (y = 420), each a ball
+  frictionless  0.75 s, no cloth: a head-on pair (y = 250) and a glancing pair (y = 400), each a ball
                 at 500-600 px/s into one at rest; no ball reaches a cushion;
   break         6 s, the lab's cloth: the cue ball at 900 px/s into ten racked balls.
 """
@@ -11,15 +11,15 @@ import math
 
 from lesson11 import records as metrics
 
-TABLE = (60, 60, 840, 540)   # px: left, top, right, bottom of the cloth
+TABLE = (60, 150, 840, 550)   # px: left, top, right, bottom of the cloth
 HEAD_ON_SPEED = 500.0        # px/s
 RACK = 2 * 14 + 0.5          # px between racked balls' centres
 
 
 def frictionless():
     """Two pairs on a frictionless cloth: head-on (balls 0, 1) and glancing, 10 px off centre (balls 2, 3)."""
-    balls = [{"pos": [300, 180], "vel": [HEAD_ON_SPEED, 0]}, {"pos": [500, 180]},
-             {"pos": [250, 430], "vel": [600, 0]}, {"pos": [450, 420]}]
+    balls = [{"pos": [300, 250], "vel": [HEAD_ON_SPEED, 0]}, {"pos": [500, 250]},
+             {"pos": [250, 410], "vel": [600, 0]}, {"pos": [450, 400]}]
     for ball in balls:
         ball["rolling"] = 0.0
     return {"frames": 45, "fps": metrics.FPS, "seed": metrics.SEED, "record_every": 1, "scenario": balls}
@@ -27,9 +27,10 @@ def frictionless():
 
 def breaking():
     """The cue ball at 900 px/s into ten balls racked in a triangle, on the lab's cloth (6 s)."""
-    balls = [{"pos": [255, 300], "vel": [900, 0]}]
+    balls = [{"pos": [255, 350], "vel": [900, 0]}]
     for row in range(4):
-        balls += [{"pos": [606 + row * RACK * math.sqrt(3) / 2, 300 + (k - row / 2) * RACK]} for k in range(row + 1)]
+        balls += [{"pos": [606 + row * RACK * math.sqrt(3) / 2, 350 + (k - row / 2) * RACK], "color": [210, 50, 40]}
+                  for k in range(row + 1)]
     return {"frames": 360, "fps": metrics.FPS, "seed": metrics.SEED, "record_every": 1, "scenario": balls}
 
 

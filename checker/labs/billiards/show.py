@@ -1,0 +1,79 @@
+"""What --show and --pictures draw for Billiards: SERIES, each scene check's quantity per frame and its bound;
+CASES, a failed step's cases drawn as balls and arrows (the case's vectors in grey, the lesson's answer in
+yellow, the student's in magenta): the two balls and the normals (step 2), the velocities after the bounce
+(step 3), the velocity after the cloth (step 4)."""
+import math
+
+import pygame
+from pygame import Vector2
+
+from checker.replay.show_kit import BACK, GREY, LESSON, STUDENT, TEXT, Case, arrow, cross, data, numbered, text_font
+from checker.replay.show_series import FASTEST, Quantity
+from . import checks, probes, scenes
+
+SERIES = {
+    "runs": FASTEST,
+    "speeds_exchange": Quantity("head-on cue ball's speed (px/s)", lambda f: math.hypot(*scenes.balls(f)[0]["vel"]),
+                                checks.CUE_KEEPS * scenes.HEAD_ON_SPEED, at_end=True),
+    "momentum_kept": Quantity("total momentum (px/s, mass 1 each)", lambda f: math.hypot(*scenes.momentum(f))),
+    "no_overlap": Quantity("deepest overlap (px)", lambda f: scenes.overlap(f)[0], checks.OVERLAP),
+    "comes_to_rest": Quantity("balls rolling", lambda f: sum(b["vel"] != [0.0, 0.0] for b in scenes.balls(f)), 0.0,
+                              at_end=True),
+}
+CENTRE = Vector2(450, 220)   # px: where a contact case is drawn
+
+
+class BallsCase(Case):
+    """One failing case of a Billiards step, drawn by its kind ("contact", "bounce" or "cloth")."""
+
+    def __init__(self, case, number, count, kind):
+        super().__init__(case, number, count)
+        self.kind = kind
+
+    def said(self, value):
+        if not isinstance(value, list):
+            return str(value)
+        if self.kind == "contact":
+            return f"normal {probes.shown(value[:2])}, depth {value[2]:.2f} px"
+        return ", ".join(f"{name}{probes.shown(value[k:k + 2])} px/s" for name, k in
+                         ((("vA ", 0), ("vB ", 2)) if self.kind == "bounce" else (("v ", 0),)))
+
+    def lines(self):
+        return [self.head(), f"yours (magenta): {self.said(self.case['got'])}",
+                f"the lesson's (yellow): {self.said(self.case['want'])}"]
+
+    def draw(self, surface):
+        surface.fill(BACK)
+        case, font = self.case, text_font(20)
+        rows = [(value, colour) for value, colour in ((case["want"], LESSON), (case["got"], STUDENT))
+                if isinstance(value, list)]
+        if self.kind == "contact":   # the balls 4 x life size around their midpoint, and each answer's normal
+            middle = (Vector2(case["ca"]) + Vector2(case["cb"])) / 2
+            for c, r in ((case["ca"], case["ra"]), (case["cb"], case["rb"])):
+                pygame.draw.circle(surface, GREY, CENTRE + (Vector2(c) - middle) * 4, r * 4, 2)
+            for value, colour in rows:
+                arrow(surface, colour, CENTRE, CENTRE + Vector2(value[:2]) * 60)
+        else:   # a row per velocity: before (grey), the lesson's after, yours after; both balls for bounce
+            before = case["va"] + case["vb"] if self.kind == "bounce" else case["vel"]
+            scale = 85 / max([math.hypot(*v[k:k + 2]) for v, _ in rows + [(before, 0)] for k in (0, 2)] + [1e-9])
+            for row, (value, colour) in enumerate([(before, GREY)] + rows):
+                surface.blit(font.render(("before", "lesson's", "yours")[row], True, colour), (40, 110 + 110 * row))
+                for k in range(0, len(value), 2):
+                    centre = Vector2(260 + 320 * k // 2, 120 + 110 * row)
+                    pygame.draw.circle(surface, colour, centre, 14, 2)
+                    surface.blit(font.render("AB"[k // 2] if len(value) > 2 else "", True, TEXT), centre - (5, 8))
+                    if value[k:k + 2] == [0.0, 0.0]:
+                        cross(surface, colour, centre, 6, 2)
+                    arrow(surface, colour, centre, centre + Vector2(value[k:k + 2]) * scale)
+        self.finish(surface, "grey: the case" + (", arrows: the normal x 60" if self.kind == "contact" else
+                                                 ", arrows: velocities, the fastest 85 px, x: at rest"))
+
+
+def cases_of(probe, kind):
+    """The probe's failing cases as BallsCase drawings."""
+    return lambda functions, seed: numbered(BallsCase, [c for c in data(functions, probe) or [] if "want" in c
+                                                        and not probes.same(c["got"], c["want"])], kind)
+
+
+CASES = {"circle_circle_right": cases_of("circle_circle", "contact"), "bounce_right": cases_of("bounce", "bounce"),
+         "cloth_slowing_right": cases_of("cloth_slowing", "cloth")}
