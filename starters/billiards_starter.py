@@ -1,33 +1,23 @@
-"""Billiards: a Lesson 11 lab, two balls that meet on a table seen from above.
+"""Billiards: a Lesson 11 lab, balls that meet on a table seen from above.
 
-You write the contact between two balls: circle_circle() finds whether they
-overlap and along which normal, bounce() gives both the impulse that makes
-them bounce apart, and cloth_slowing() lets the cloth slow every ball to a
-stop. The World (lesson11.physics2d) calls your circle_circle() for every
-pair of balls and your bounce() for every contact, cushions included; the
-library's circle_polygon() finds a ball against a cushion.
+You write the contact between two balls: circle_circle() finds whether they overlap and along which normal,
+bounce() gives both the impulse that makes them bounce apart, cloth_slowing() lets the cloth slow each ball
+to a stop. The World (lesson11.physics2d) calls your circle_circle() for every pair of balls and your
+bounce() for every contact, cushions included (a ball against a cushion: the library's circle_polygon()).
+Seen from above, the World has no gravity: the scene declares only the effects it needs (EFFECTS); g is
+used by the cloth only. The balls do not spin, so the impulse has no spin term.
 
-The table is seen from above, so the World has no gravity: the scene declares
-only the effects it needs ("restitution", "correction"). g = 980 px/s² is
-used only by the cloth's slowing. The balls do not spin (no "rotation"), so
-the impulse has no spin term: a hit between two balls goes through both
-centres.
+The comments "Step 1" to "Step 5" follow the exercise's steps. Steps 2 to 4 are the code between the lines
+`# --- step N: ... ---` and `# --- end of step N ---`: yours to write in the starter, done in the solution
+(where each step opens with the starter's text for it, between `# BEGIN PROMPT` and `# END PROMPT`). Each
+step's comment names the section of the lesson (lesson11/README.md) that explains it. In the starter each
+step holds a placeholder line, marked "replace this placeholder", that keeps the file running until you
+write the step: replace that line with your code. Code written above a placeholder left in place is
+wasted: a placeholder `return` hands back its stand-in value unless your code returned first.
 
-The comments "Step 1" to "Step 5" follow the exercise's steps. Steps 2 to 4
-are the code between the lines `# --- step N: ... ---` and
-`# --- end of step N ---`: yours to write in the starter, done in the solution
-(where each step opens with the starter's text for it, between
-`# BEGIN PROMPT` and `# END PROMPT`). Each step's comment names the section
-of the lesson (lesson11/README.md) that explains it. In the starter each step
-holds a placeholder line, marked "replace this placeholder", that keeps the
-file running until you write the step: replace that line with your code.
-Code written above a placeholder left in place is wasted: a placeholder
-`return` hands back its stand-in value unless your code returned first.
-
-Controls: left click shoots the cue ball (white) towards the mouse, harder
-the further away you click; R racks the balls again, in a new order. Lines marked
-`# lab runtime` let the checker run this file headless; `# solver panel`
-lines add the solver panel. Units: px, s; y grows downward.
+Controls: left click shoots the white ball towards the mouse, harder the further away you click; R racks
+the balls again, in a new order. Lines marked `# lab runtime` let the checker run this file headless, and
+`# solver panel` lines add the solver panel. Units: px, s; y grows downward.
 """
 import random
 
@@ -47,6 +37,7 @@ RESTITUTION = 0.95                      # e of every contact, ball or cushion
 G = 980.0                               # px/s²: g, used only by the cloth (the table is seen from above)
 ROLLING = 0.15                          # the cloth's rolling resistance μ_r (a real cloth: about 0.01)
 MAX_SHOT = 900.0                        # px/s: the hardest shot
+EFFECTS = {"restitution", "correction"}  # seen from above: no gravity; balls that do not spin: no rotation
 CLOTH, GREY, WHITE = (30, 110, 60), (90, 60, 40), (240, 240, 235)
 COLORS = [(230, 190, 40), (40, 80, 200), (210, 50, 40), (120, 50, 160), (240, 130, 30), (30, 140, 80),
           (140, 30, 40), (30, 30, 30), (200, 170, 60), (60, 110, 210)]
@@ -115,14 +106,16 @@ def make_scene(rng):
     cushions = [Body(box_points(w, h), pos, 0, color=GREY) for w, h, pos in (
         (t.width + 2 * c, c, (t.centerx, t.top - c / 2)), (t.width + 2 * c, c, (t.centerx, t.bottom + c / 2)),
         (c, t.height, (t.left - c / 2, t.centery)), (c, t.height, (t.right + c / 2, t.centery)))]
-    balls = [build({"pos": (t.left + t.width / 4, t.centery)})]
-    step = 2 * RADIUS + 0.5   # px between rows and neighbours: touching, not overlapping
-    colors = rng.sample(COLORS, len(COLORS))
-    for row in range(4):
-        for k in range(row + 1):
-            balls.append(build({"pos": (t.left + 0.7 * t.width + row * step * 0.866,
-                                        t.centery + (k - row / 2) * step), "color": colors[len(balls) - 1]}))
-    return cushions + balls
+    gap = 2 * RADIUS + 0.5   # px between racked balls' centres: touching, not overlapping
+    spots = [(t.left + 0.7 * t.width + row * gap * 0.866, t.centery + (k - row / 2) * gap)
+             for row in range(4) for k in range(row + 1)]
+    return cushions + [build({"pos": (t.left + t.width / 4, t.centery)})] + [
+        build({"pos": spot, "color": color}) for spot, color in zip(spots, rng.sample(COLORS, len(spots)))]
+
+
+def make_world(bodies):
+    """A World with the table's effects that calls this file's circle_circle() and, through resolve(), bounce()."""
+    return World(bodies, effects=EFFECTS, circle_circle=circle_circle, resolve=resolve)
 
 
 def balls_of(world):
@@ -137,8 +130,7 @@ def main():
     clock = pygame.time.Clock()
     font = pygame.font.Font(None, 24)
     rng = random.Random(lab.seed(11))  # lab runtime: seed()
-    world = World(lab.scene(make_scene(rng), build=build), effects={"restitution", "correction"},  # lab runtime: scene()
-                  circle_circle=circle_circle, resolve=resolve)
+    world = make_world(lab.scene(make_scene(rng), build=build))  # lab runtime: scene()
     panel = LabPanel()  # solver panel
     running = True
     # Step 5: watch the break, then shoot again and see the balls roll to a stop.
@@ -154,8 +146,7 @@ def main():
                 if aim.length() > 0:
                     cue.vel = aim.normalize() * min(MAX_SHOT, 3 * aim.length())
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_r:
-                world = World(make_scene(rng), effects={"restitution", "correction"}, circle_circle=circle_circle,
-                              resolve=resolve)
+                world = make_world(make_scene(rng))
         steps = panel.advance(world, dt)  # solver panel: fixed steps, long frames clamped
         balls = balls_of(world)
         for ball in balls:
@@ -164,9 +155,8 @@ def main():
 
         screen.fill(GREY)
         pygame.draw.rect(screen, CLOTH, TABLE)
-        for body in world.bodies:
-            if body.inv_mass != 0:
-                pygame.draw.circle(screen, body.color, body.pos, RADIUS)
+        for ball in balls:
+            pygame.draw.circle(screen, ball.color, ball.pos, RADIUS)
         moving = sum(1 for ball in balls if ball.vel.length() > 0)
         draw_text(screen, font, f"balls rolling {moving}/{len(balls)} | [click] shoot the white ball  [R] rack")
         panel.draw(screen, world)  # solver panel: settings, ms, graph

@@ -60,7 +60,7 @@ CORRECT = [
             a.vel = pygame.Vector2(a.vel.x - j * nx * a.inv_mass, a.vel.y - j * ny * a.inv_mass)
             b.vel = pygame.Vector2(b.vel.x + j * nx * b.inv_mass, b.vel.y + j * ny * b.inv_mass)
     """}, why="new Vector2s instead of in-place changes; math.hypot for the length"),
-    correct("correct_impulse_vector_and_scale", "builds the impulse vector; scales the speed with scale_to_length", {3: """
+    correct("correct_impulse_vector_and_scale", "an impulse vector; scale_to_length for the speed", {3: """
         closing = (b.vel - a.vel) * normal
         if closing >= 0:
             return

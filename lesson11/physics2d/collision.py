@@ -960,12 +960,13 @@ def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0, 
     Circles: circles_test(ca, ra, cb, rb) for two circles (the lab's
     circle_circle, if hooked; None: this module's circle_circle), or
     circle_test(center, radius, points) for a circle and a polygon (the lab's
-    circle_polygon, if hooked), giving the normal out of the circle and the depth; circle_point(center, radius, d, depth) places
-    the one contact point, d being the direction from the circle's center
-    (default circle_contact_point: halfway into the overlap, c + d (r - depth/2)).
+    circle_polygon, if hooked), giving the normal out of the circle and the
+    depth; circle_point(center, radius, d, depth) places the one contact point,
+    d being the direction from the circle's center (default
+    circle_contact_point: halfway into the overlap, c + d (r - depth/2)).
     A margin (px) asks for speculative contacts: pairs closer than that count,
     with a negative depth; polygons and circles then use this module's sat,
-    circle_polygon and circle_contact_point (which know about margins).
+    circle_circle, circle_polygon and circle_contact_point (which know about margins).
     """
     kind = (a.shape.kind, b.shape.kind)
     if kind == ("polygon", "polygon"):

@@ -1,12 +1,12 @@
 """What --show and --pictures draw for Billiards: SERIES, each scene check's quantity per frame and its bound;
-CASES, a failed step's cases drawn as balls and arrows (the case's vectors in grey, the lesson's answer in
-yellow, the student's in magenta): the two balls and the normals (step 2), the velocities after the bounce
-(step 3), the velocity after the cloth (step 4)."""
+CASES, a failed step's cases as balls and arrows, the case in grey, the lesson's answer in yellow, the
+student's in magenta: the two balls and each normal (step 2), the velocities before and after (steps 3, 4)."""
 import math
 
 import pygame
 from pygame import Vector2
 
+from checker.judging.declared import listed
 from checker.replay.show_kit import BACK, GREY, LESSON, STUDENT, TEXT, Case, arrow, cross, data, numbered, text_font
 from checker.replay.show_series import FASTEST, Quantity
 from . import checks, probes, scenes
@@ -20,11 +20,10 @@ SERIES = {
     "comes_to_rest": Quantity("balls rolling", lambda f: sum(b["vel"] != [0.0, 0.0] for b in scenes.balls(f)), 0.0,
                               at_end=True),
 }
-CENTRE = Vector2(450, 220)   # px: where a contact case is drawn
 
 
 class BallsCase(Case):
-    """One failing case of a Billiards step, drawn by its kind ("contact", "bounce" or "cloth")."""
+    """One failing case of a Billiards step, drawn by its kind: "contact", "bounce" or "cloth"."""
 
     def __init__(self, case, number, count, kind):
         super().__init__(case, number, count)
@@ -34,9 +33,9 @@ class BallsCase(Case):
         if not isinstance(value, list):
             return str(value)
         if self.kind == "contact":
-            return f"normal {probes.shown(value[:2])}, depth {value[2]:.2f} px"
-        return ", ".join(f"{name}{probes.shown(value[k:k + 2])} px/s" for name, k in
-                         ((("vA ", 0), ("vB ", 2)) if self.kind == "bounce" else (("v ", 0),)))
+            return f"normal {listed(value[:2])}, depth {value[2]:.2f} px"
+        return ", ".join(f"{'vA vB'.split()[k // 2] if len(value) > 2 else 'v'} {listed(value[k:k + 2])} px/s"
+                         for k in range(0, len(value), 2))
 
     def lines(self):
         return [self.head(), f"yours (magenta): {self.said(self.case['got'])}",
@@ -44,29 +43,28 @@ class BallsCase(Case):
 
     def draw(self, surface):
         surface.fill(BACK)
-        case, font = self.case, text_font(20)
-        rows = [(value, colour) for value, colour in ((case["want"], LESSON), (case["got"], STUDENT))
-                if isinstance(value, list)]
-        if self.kind == "contact":   # the balls 4 x life size around their midpoint, and each answer's normal
+        case, font, centre = self.case, text_font(20), Vector2(450, 220)
+        rows = [(v, c) for v, c in ((case["want"], LESSON), (case["got"], STUDENT)) if isinstance(v, list)]
+        if self.kind == "contact":   # the balls 4 x life size around their midpoint, each answer's normal x 60
             middle = (Vector2(case["ca"]) + Vector2(case["cb"])) / 2
             for c, r in ((case["ca"], case["ra"]), (case["cb"], case["rb"])):
-                pygame.draw.circle(surface, GREY, CENTRE + (Vector2(c) - middle) * 4, r * 4, 2)
+                pygame.draw.circle(surface, GREY, centre + (Vector2(c) - middle) * 4, r * 4, 2)
             for value, colour in rows:
-                arrow(surface, colour, CENTRE, CENTRE + Vector2(value[:2]) * 60)
-        else:   # a row per velocity: before (grey), the lesson's after, yours after; both balls for bounce
-            before = case["va"] + case["vb"] if self.kind == "bounce" else case["vel"]
-            scale = 85 / max([math.hypot(*v[k:k + 2]) for v, _ in rows + [(before, 0)] for k in (0, 2)] + [1e-9])
-            for row, (value, colour) in enumerate([(before, GREY)] + rows):
-                surface.blit(font.render(("before", "lesson's", "yours")[row], True, colour), (40, 110 + 110 * row))
-                for k in range(0, len(value), 2):
-                    centre = Vector2(260 + 320 * k // 2, 120 + 110 * row)
-                    pygame.draw.circle(surface, colour, centre, 14, 2)
-                    surface.blit(font.render("AB"[k // 2] if len(value) > 2 else "", True, TEXT), centre - (5, 8))
-                    if value[k:k + 2] == [0.0, 0.0]:
-                        cross(surface, colour, centre, 6, 2)
-                    arrow(surface, colour, centre, centre + Vector2(value[k:k + 2]) * scale)
-        self.finish(surface, "grey: the case" + (", arrows: the normal x 60" if self.kind == "contact" else
-                                                 ", arrows: velocities, the fastest 85 px, x: at rest"))
+                arrow(surface, colour, centre, centre + Vector2(value[:2]) * 60)
+            return self.finish(surface, "grey: the balls, arrows: the normal x 60")
+        before = case["va"] + case["vb"] if self.kind == "bounce" else case["vel"]
+        rows = [(before, GREY)] + rows   # a row each: before, the lesson's after, yours after
+        scale = 85 / max([math.hypot(*v[k:k + 2]) for v, _ in rows for k in range(0, len(v), 2)] + [1e-9])
+        for row, (value, colour) in enumerate(rows):
+            surface.blit(font.render(("before", "lesson's", "yours")[row], True, colour), (40, 110 + 110 * row))
+            for k in range(0, len(value), 2):
+                at = Vector2(260 + 160 * k, 120 + 110 * row)
+                pygame.draw.circle(surface, colour, at, 14, 2)
+                surface.blit(font.render("AB"[k // 2] if len(value) > 2 else "", True, TEXT), at - (5, 8))
+                if value[k:k + 2] == [0.0, 0.0]:
+                    cross(surface, colour, at, 6, 2)
+                arrow(surface, colour, at, at + Vector2(value[k:k + 2]) * scale)
+        self.finish(surface, "grey: the case, arrows: velocities (the fastest 85 px), x: at rest")
 
 
 def cases_of(probe, kind):
