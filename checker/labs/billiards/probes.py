@@ -1,6 +1,5 @@
 """Billiards' three steps declared as data (checker/judging/declared.py): each one's cases (some drawn for this
-run), the lesson's answer (reference_*, run in the grader only) and its known wrong forms with their words.
-Units: px, s."""
+run), the lesson's answer (reference_*, run in the grader only), its known wrong forms and their words. px, s."""
 import math
 
 from pygame import Vector2
@@ -11,7 +10,6 @@ from checker.judging.tape import run_rng
 from lesson11.physics2d import Body, Circle
 
 REQUIRED = ("circle_circle", "bounce", "cloth_slowing", "main")
-PURE = ("circle_circle",)
 G = 980.0   # px/s², the handout's g
 same = close(1e-9)   # relative: the same sums in another order agree this well
 
@@ -24,19 +22,18 @@ def declare(check, doc, step, function, key, table, forms, text, must, **parts):
                 wrong=forms_of(table, forms, key + "_"), **parts)
 
 
-# ---------------------------------------------------------------- step 2: circle_circle
-
 def contact_cases(module):
     rng = run_rng(module, "circle_circle")
     angle, ra, rb = rng.uniform(0, 2 * math.pi), rng.uniform(8, 20), rng.uniform(8, 20)
-    cases = [("overlapping along x", (100, 100), 14, (120, 100), 14), ("B above A", (200, 200), 14, (200, 180), 14),
-             ("slanted, radii 10 and 15", (50, 60), 10, (62, 76), 15), ("B left of A, deep", (400, 100), 14,
-             (390, 100), 20), ("apart along x", (0, 0), 14, (40, 0), 14), ("apart diagonally", (0, 0), 10, (30, 30),
-             10), ("coincident centres", (300, 300), 14, (300, 300), 14)]
+    cases = [  # (what, centre A, radius A, centre B, radius B)
+        ("overlapping along x", [100, 100], 14, [120, 100], 14), ("B above A", [200, 200], 14, [200, 180], 14),
+        ("slanted, radii 10 and 15", [50, 60], 10, [62, 76], 15), ("B left of A, deep", [400, 100], 14, [390, 100], 20),
+        ("apart along x", [0, 0], 14, [40, 0], 14), ("apart diagonally", [0, 0], 10, [30, 30], 10),
+        ("coincident centres", [300, 300], 14, [300, 300], 14)]
     for what, k in (("overlapping", rng.uniform(0.3, 0.9)), ("apart", rng.uniform(1.1, 2))):
-        cases.append((f"drawn for this run, {what}", (300, 200), ra,
-                      (300 + k * (ra + rb) * math.cos(angle), 200 + k * (ra + rb) * math.sin(angle)), rb))
-    return [{"case": what, "ca": list(ca), "ra": ra, "cb": list(cb), "rb": rb} for what, ca, ra, cb, rb in cases]
+        cases.append((f"drawn for this run, {what}", [300, 200], ra,
+                      [300 + k * (ra + rb) * math.cos(angle), 200 + k * (ra + rb) * math.sin(angle)], rb))
+    return [dict(zip(("case", "ca", "ra", "cb", "rb"), case)) for case in cases]
 
 
 @reference
@@ -66,9 +63,7 @@ CONTACT = {
     "unit": "the normal is cb - ca, not a unit vector: divide it by its length",
     "halved": "the depth is halved: the overlap is the whole ra + rb - |cb - ca|",
     "squared": "|d|² is compared with ra + rb: compare |d| with ra + rb",
-    "inverted": "overlapping balls give None and apart ones a contact: the test is the wrong way round",
-}
-
+    "inverted": "overlapping balls give None and apart ones a contact: the test is the wrong way round"}
 
 CIRCLE_CIRCLE = declare(
     "circle_circle_right", "Step 2: circle_circle() gives None when two balls are apart, else the unit normal from "
@@ -80,23 +75,21 @@ CIRCLE_CIRCLE = declare(
     unnamed="the contact is not (unit normal A to B, ra + rb - |cb - ca|), None when apart")
 
 
-# ---------------------------------------------------------------- step 3: bounce
-
 def bounce_cases(module):
     rng = run_rng(module, "bounce")
     angle, closing = rng.uniform(0, 2 * math.pi), rng.uniform(50, 600)
-    n = (math.cos(angle), math.sin(angle))
-    cases = [("equal balls head-on, e = 1", 1, (400, 0), 1, (0, 0), (1, 0), 1.0),
-             ("equal balls head-on, e = 0.95", 1, (400, 0), 1, (-100, 0), (1, 0), 0.95),
-             ("B three times heavier", 1, (0, 300), 3, (0, 0), (0, 1), 0.95),
-             ("a ball into a cushion (A, static)", 0, (0, 0), 1, (-200, 150), (-1, 0), 0.8),
-             ("slanted normal, glancing", 2, (250, 40), 0.5, (-30, 60), (0.6, -0.8), 0.5),
-             ("separating", 1, (-100, 0), 1, (100, 0), (1, 0), 0.95),
-             ("sliding past each other", 1, (0, 100), 1, (0, -100), (1, 0), 0.95),
-             ("drawn for this run", rng.uniform(0.5, 3), (closing * n[0], closing * n[1]), rng.uniform(0.5, 3),
-              (rng.uniform(-50, 50), rng.uniform(-50, 50)), n, rng.uniform(0.3, 1))]
-    return [{"case": what, "ma": ma, "va": list(va), "mb": mb, "vb": list(vb), "normal": list(n), "e": e}
-            for what, ma, va, mb, vb, n, e in cases]
+    n = [math.cos(angle), math.sin(angle)]
+    cases = [  # (what, mA, vA, mB, vB, unit normal A to B, e)
+        ("equal balls head-on, e = 1", 1, [400, 0], 1, [0, 0], [1, 0], 1.0),
+        ("equal balls head-on, e = 0.95", 1, [400, 0], 1, [-100, 0], [1, 0], 0.95),
+        ("B three times heavier", 1, [0, 300], 3, [0, 0], [0, 1], 0.95),
+        ("a ball into a cushion (A, static)", 0, [0, 0], 1, [-200, 150], [-1, 0], 0.8),
+        ("slanted normal, glancing", 2, [250, 40], 0.5, [-30, 60], [0.6, -0.8], 0.5),
+        ("separating", 1, [-100, 0], 1, [100, 0], [1, 0], 0.95),
+        ("sliding past each other", 1, [0, 100], 1, [0, -100], [1, 0], 0.95),
+        ("drawn for this run", rng.uniform(0.5, 3), [closing * n[0], closing * n[1]], rng.uniform(0.5, 3),
+         [rng.uniform(-50, 50), rng.uniform(-50, 50)], n, rng.uniform(0.3, 1))]
+    return [dict(zip(("case", "ma", "va", "mb", "vb", "normal", "e"), case)) for case in cases]
 
 
 def bounce_call(function, c):
@@ -106,8 +99,7 @@ def bounce_call(function, c):
 
 
 def impulse(case, e=None, k=None, always=False, on_a=-1, on_b=1):
-    """[vA, vB] after j = -(1 + e) vn / k along n (default: the lesson's e and k, only while closing), A given
-    on_a j n / mA and B on_b j n / mB."""
+    """[vA, vB] after j = -(1 + e) vn / k (default: the lesson's, only while closing): on_a j n / mA, on_b j n / mB."""
     n, va, vb = Vector2(case["normal"]), Vector2(case["va"]), Vector2(case["vb"])
     ia, ib = [1 / m if m else 0.0 for m in (case["ma"], case["mb"])]
     vn = (vb - va).dot(n)
@@ -135,31 +127,27 @@ BOUNCE = {
     "masses_summed": "j divides by mA + mB: divide by the inverse masses, 1/mA + 1/mB",
     "b_only": "only B gets the impulse: A takes -j n as well",
     "same_sign": "both balls get +j n: A takes -j n",
-    "signs_swapped": "A gets +j n and B -j n: the push runs from A to B, so B gets +j n",
-}
+    "signs_swapped": "A gets +j n and B -j n: the push runs from A to B, so B gets +j n"}
 
 BOUNCE_STEP = declare(
     "bounce_right", "Step 3: bounce() gives B +j n and A -j n, j = -(1 + e) vn / (1/mA + 1/mB), only while the "
     "balls close.", 3, "bounce", "bounce", BOUNCE, bounce_forms,
     lambda c: f"bounce, {c['case']} (mA {c['ma']:.3g}, mB {c['mb']:.3g}, e {c['e']:.3g}): vA, vB",
-    "leave both velocities Vector2s", cases=bounce_cases, call=bounce_call,
-    answer=lambda raw: numbers(raw, 4),
+    "leave both velocities Vector2s", cases=bounce_cases, call=bounce_call, answer=lambda raw: numbers(raw, 4),
     lesson=lambda case: reference_bounce(case), unnamed="the velocities after the bounce are not the lesson's",
     passed="all {n} pairs bounce as the lesson's impulse says")
 
 
-# ---------------------------------------------------------------- step 4: cloth_slowing
-
 def cloth_cases(module):
     rng = run_rng(module, "cloth_slowing")
     angle = rng.uniform(0, 2 * math.pi)
-    cases = [("fast along x", (300, 0), 0.15, 1 / 60), ("slanted", (120, -160), 0.15, 1 / 60),
-             ("slow: it stops", (1, 1), 0.15, 1 / 60), ("at rest", (0, 0), 0.15, 1 / 60),
-             ("a slower cloth, a longer frame", (-80, 60), 0.05, 1 / 30),
-             ("just faster than one frame's drop", (0, -2.5), 0.15, 1 / 60)]
+    cases = [("fast along x", [300, 0], 0.15, 1 / 60), ("slanted", [120, -160], 0.15, 1 / 60),
+             ("slow: it stops", [1, 1], 0.15, 1 / 60), ("at rest", [0, 0], 0.15, 1 / 60),
+             ("a slower cloth, a longer frame", [-80, 60], 0.05, 1 / 30),
+             ("just faster than one frame's drop", [0, -2.5], 0.15, 1 / 60)]
     for what, speed in (("drawn for this run", rng.uniform(50, 500)), ("drawn for this run, stops", rng.uniform(0, 2))):
-        cases.append((what, (speed * math.cos(angle), speed * math.sin(angle)), rng.uniform(0.05, 0.3), 1 / 60))
-    return [{"case": what, "vel": list(vel), "mu": mu, "dt": dt} for what, vel, mu, dt in cases]
+        cases.append((what, [speed * math.cos(angle), speed * math.sin(angle)], rng.uniform(0.05, 0.3), 1 / 60))
+    return [dict(zip(("case", "vel", "mu", "dt"), case)) for case in cases]
 
 
 @reference
@@ -182,8 +170,7 @@ CLOTH = {
     "drag": "the drop grows with the speed (a drag): the cloth takes the same mu g dt every frame",
     "no_dt": "the drop leaves out dt: mu g is per second, a frame takes mu g dt",
     "no_g": "the drop leaves out g: it is mu g dt, g = 980 px/s²",
-    "per_axis": "x and y are slowed apart: lower the speed along -v, keeping the direction",
-}
+    "per_axis": "x and y are slowed apart: lower the speed along -v, keeping the direction"}
 
 CLOTH_STEP = declare(
     "cloth_slowing_right", "Step 4: cloth_slowing() lowers the speed by mu g dt along -v and stops a slower ball at "

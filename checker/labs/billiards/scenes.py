@@ -1,7 +1,6 @@
-"""The Billiards scenes and what they measure. The cloth is x 60-840, y 150-550 px; balls (the lab's items
-{"pos", "vel", "color", "rolling"}, rolling 0: no cloth) are 14 px, mass 1. frictionless (0.75 s): a ball at
-500 px/s head-on into one at rest (y = 250), one at 600 px/s 10 px off centre into another (y = 400), no ball
-reaching a cushion; break (6 s, the lab's cloth): the cue ball at 900 px/s into ten racked balls."""
+"""The Billiards scenes and what they measure. Cloth x 60-840, y 150-550 px; balls (the lab's items: pos, vel,
+color, rolling (0: no cloth)) 14 px, mass 1. frictionless, 0.75 s: a ball at 500 px/s head-on into one at rest,
+one at 600 px/s 10 px off centre into another, none reaching a cushion; break, 6 s: the cue ball at 900 px/s."""
 import math
 
 from lesson11 import records as metrics
@@ -27,19 +26,15 @@ def breaking():
 SCENARIOS = {"frictionless": frictionless, "break": breaking}
 
 
-def balls(frame):
-    """The frame's balls (its moving bodies), in the scenario's order."""
-    return [body for body in frame["bodies"] if not body["static"]]
-
 
 def momentum(frame):
     """Total momentum of the frame's balls (mass 1 each: px/s)."""
-    return [sum(ball["vel"][axis] for ball in balls(frame)) for axis in (0, 1)]
+    return [sum(ball["vel"][axis] for ball in metrics.dynamic(frame)) for axis in (0, 1)]
 
 
 def overlap(frame):
     """(px, what) of the frame's deepest overlap of two balls, or of a ball and a cushion."""
-    found, (left, top, right, bottom) = balls(frame), TABLE
+    found, (left, top, right, bottom) = metrics.dynamic(frame), TABLE
     deepest = [(0.0, "nothing")]
     for i, a in enumerate(found):
         x, y = a["pos"]
@@ -47,13 +42,4 @@ def overlap(frame):
         deepest += [(a["radius"] + b["radius"] - math.dist(a["pos"], b["pos"]), f"balls {i} and {k}")
                     for k, b in enumerate(found[i + 1:], i + 1)]
     return max(deepest)
-
-
-def at_rest(record):
-    """The time (s) from which every ball stays exactly at rest, or None when one still rolls at the end."""
-    frames = record["records"]
-    moving = [k for k, f in enumerate(frames) if any(ball["vel"] != [0.0, 0.0] for ball in balls(f))]
-    if moving and moving[-1] == len(frames) - 1:
-        return None
-    return frames[moving[-1] + 1]["frame"] / metrics.FPS if moving else 0.0
 

@@ -1,6 +1,5 @@
 """What --show and --pictures draw for Billiards: SERIES, each scene check's quantity per frame and its bound;
-CASES, a failed step's cases as balls and arrows, the case in grey, the lesson's answer in yellow, the
-student's in magenta: the two balls and each normal (step 2), the velocities before and after (steps 3, 4)."""
+CASES, a failed step's cases: the balls and each answer's normal, or the velocities before and after."""
 import math
 
 import pygame
@@ -9,15 +8,16 @@ from pygame import Vector2
 from checker.judging.declared import listed
 from checker.replay.show_kit import BACK, GREY, LESSON, STUDENT, TEXT, Case, arrow, cross, data, numbered, text_font
 from checker.replay.show_series import FASTEST, Quantity
+from lesson11 import records as metrics
 from . import checks, probes, scenes
 
 SERIES = {
     "runs": FASTEST,
-    "speeds_exchange": Quantity("head-on cue ball's speed (px/s)", lambda f: math.hypot(*scenes.balls(f)[0]["vel"]),
+    "speeds_exchange": Quantity("head-on cue ball's speed (px/s)", lambda f: metrics.speed(metrics.dynamic(f)[0]),
                                 checks.CUE_KEEPS * scenes.HEAD_ON_SPEED, at_end=True),
     "momentum_kept": Quantity("total momentum (px/s, mass 1 each)", lambda f: math.hypot(*scenes.momentum(f))),
     "no_overlap": Quantity("deepest overlap (px)", lambda f: scenes.overlap(f)[0], checks.OVERLAP),
-    "comes_to_rest": Quantity("balls rolling", lambda f: sum(b["vel"] != [0.0, 0.0] for b in scenes.balls(f)), 0.0,
+    "comes_to_rest": Quantity("balls rolling", lambda f: sum(metrics.speed(b) > 0 for b in metrics.dynamic(f)), 0.0,
                               at_end=True),
 }
 
@@ -34,8 +34,7 @@ class BallsCase(Case):
             return str(value)
         if self.kind == "contact":
             return f"normal {listed(value[:2])}, depth {value[2]:.2f} px"
-        return ", ".join(f"{'vA vB'.split()[k // 2] if len(value) > 2 else 'v'} {listed(value[k:k + 2])} px/s"
-                         for k in range(0, len(value), 2))
+        return f"{'vA, vB' if self.kind == 'bounce' else 'v'} {listed(value)} px/s"
 
     def lines(self):
         return [self.head(), f"yours (magenta): {self.said(self.case['got'])}",
@@ -52,10 +51,9 @@ class BallsCase(Case):
             for value, colour in rows:
                 arrow(surface, colour, centre, centre + Vector2(value[:2]) * 60)
             return self.finish(surface, "grey: the balls, arrows: the normal x 60")
-        before = case["va"] + case["vb"] if self.kind == "bounce" else case["vel"]
-        rows = [(before, GREY)] + rows   # a row each: before, the lesson's after, yours after
+        rows = [(case["va"] + case["vb"] if self.kind == "bounce" else case["vel"], GREY)] + rows
         scale = 85 / max([math.hypot(*v[k:k + 2]) for v, _ in rows for k in range(0, len(v), 2)] + [1e-9])
-        for row, (value, colour) in enumerate(rows):
+        for row, (value, colour) in enumerate(rows):   # a row each: before, the lesson's after, yours after
             surface.blit(font.render(("before", "lesson's", "yours")[row], True, colour), (40, 110 + 110 * row))
             for k in range(0, len(value), 2):
                 at = Vector2(260 + 160 * k, 120 + 110 * row)
@@ -68,7 +66,6 @@ class BallsCase(Case):
 
 
 def cases_of(probe, kind):
-    """The probe's failing cases as BallsCase drawings."""
     return lambda functions, seed: numbered(BallsCase, [c for c in data(functions, probe) or [] if "want" in c
                                                         and not probes.same(c["got"], c["want"])], kind)
 
