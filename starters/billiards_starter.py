@@ -42,7 +42,7 @@ CLOTH, GREY, WHITE = (30, 110, 60), (90, 60, 40), (240, 240, 235)
 COLORS = [(230, 190, 40), (40, 80, 200), (210, 50, 40), (120, 50, 160), (240, 130, 30), (30, 140, 80),
           (140, 30, 40), (30, 30, 30), (200, 170, 60), (60, 110, 210)]
 
-# Step 1: run this file. Until you write step 2 the balls pass through each other; they bounce off the cushions.
+# Step 1: run this file and click to shoot: until steps 2 and 3 nothing bounces, and until step 4 nothing slows.
 
 
 def circle_circle(ca, ra, cb, rb):
@@ -133,7 +133,7 @@ def main():
     world = make_world(lab.scene(make_scene(rng), build=build))  # lab runtime: scene()
     panel = LabPanel()  # solver panel
     running = True
-    # Step 5: watch the break, then shoot again and see the balls roll to a stop.
+    # Step 5: shoot into the rack: watch the balls bounce apart, off the cushions, and roll to a stop.
     while running and lab.frame_budget():  # lab runtime: frame_budget()
         dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)
         for event in lab.events():  # lab runtime: pygame.event.get()

@@ -215,9 +215,6 @@ WRONG = [
             return vel.normalize() * 0
         return vel - vel.normalize() * drop
     """}, status=("error",), why="Vector2.normalize() of (0, 0) raises for the ball at rest"),
-    wrong("attempt_library_through_world", "asks a World for the library's test", "circle_circle_right", {2: """
-        return World().circle_circle(ca, ra, cb, rb)
-    """}, why="a step may not reach the World: step rules"),
     wrong("attempt_answers_for_the_fixed_cases", "hard-codes the handout's cases", "circle_circle_right", {2: """
         known = {(100, 100, 120, 100): ((1, 0), 8), (200, 200, 200, 180): ((0, -1), 8),
                  (50, 60, 62, 76): ((0.6, 0.8), 5), (400, 100, 390, 100): ((-1, 0), 24),
@@ -225,10 +222,12 @@ WRONG = [
         found = known.get((ca.x, ca.y, cb.x, cb.y))
         return None if found is None else (pygame.Vector2(found[0]), found[1])
     """}, why="the cases drawn for this run are not in the table"),
-    wrong("attempt_impulse_import", "imports the library's resolve inside the step", "bounce_right", {3: """
-        from lesson11.physics2d import response
-        response.resolve(a, b, normal, a.pos, 0, friction=False, restitution=True, spin=False)
-    """}, why="an import inside a step: step rules"),
+    wrong("attempt_swap_velocities", "swaps the two velocities", "bounce_right", {3: """
+        a.vel, b.vel = b.vel, a.vel
+    """}, why="right for equal balls head-on with e = 1 only"),
+    wrong("attempt_stop_every_ball", "stops every ball at once", "cloth_slowing_right", {4: """
+        return pygame.Vector2(0, 0)
+    """}, why="every ball at rest at once would pass comes_to_rest: the step's cases must fail it"),
     wrong("outside_cloth_skipped", "main() no longer slows the balls", "handout_unchanged",
           edits=[("            ball.vel = cloth_slowing(ball.vel, ball.rolling, steps * world.step_seconds)\n",
                   "            pass\n")], why="code outside the steps differs from the handout"),
@@ -241,8 +240,8 @@ SAYS = {
     "bounce_masses_summed": ("mA + mB",), "bounce_b_only": ("only B",), "bounce_same_sign": ("both balls",),
     "bounce_signs_swapped": ("A gets +j n",), "cloth_reverses": ("turns round",), "cloth_drag": ("drag",),
     "cloth_no_dt": ("leaves out dt",), "cloth_no_g": ("leaves out g",), "cloth_per_axis": ("x and y",),
-    "cloth_at_rest_crash": ("cloth_slowing",), "attempt_library_through_world": ("World",),
-    "attempt_answers_for_the_fixed_cases": ("drawn for this run",), "attempt_impulse_import": ("import",),
+    "cloth_at_rest_crash": ("cloth_slowing",), "attempt_swap_velocities": ("e = 0.95",),
+    "attempt_answers_for_the_fixed_cases": ("drawn for this run",), "attempt_stop_every_ball": ("fast along x",),
     "outside_cloth_skipped": ("pass",),
 }
 WRONG = with_says(WRONG, SAYS)
