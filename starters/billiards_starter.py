@@ -39,10 +39,10 @@ ROLLING = 0.15                          # the cloth's rolling resistance μ_r (a
 MAX_SHOT = 900.0                        # px/s: the hardest shot
 EFFECTS = {"restitution", "correction"}  # seen from above: no gravity; balls that do not spin: no rotation
 CLOTH, GREY, WHITE = (30, 110, 60), (90, 60, 40), (240, 240, 235)
-COLORS = [(230, 190, 40), (40, 80, 200), (210, 50, 40), (120, 50, 160), (240, 130, 30), (30, 140, 80),
+COLORS = [(230, 190, 40), (40, 80, 200), (210, 50, 40), (120, 50, 160), (240, 130, 30), (230, 110, 160),
           (140, 30, 40), (30, 30, 30), (200, 170, 60), (60, 110, 210)]
 
-# Step 1: run this file and click to shoot: until steps 2 and 3 nothing bounces, and until step 4 nothing slows.
+# Step 1: run this file and watch the break: until steps 2 and 3 nothing bounces, and until step 4 nothing slows.
 
 
 def circle_circle(ca, ra, cb, rb):
@@ -101,7 +101,7 @@ def build(item):
 
 
 def make_scene(rng):
-    """The four cushions, the cue ball and ten balls racked in a triangle, their colours shuffled by rng."""
+    """The four cushions, ten balls racked in a triangle (colours shuffled by rng) and the cue ball breaking them."""
     t, c = TABLE, CUSHION
     cushions = [Body(box_points(w, h), pos, 0, color=GREY) for w, h, pos in (
         (t.width + 2 * c, c, (t.centerx, t.top - c / 2)), (t.width + 2 * c, c, (t.centerx, t.bottom + c / 2)),
@@ -109,13 +109,15 @@ def make_scene(rng):
     gap = 2 * RADIUS + 0.5   # px between racked balls' centres: touching, not overlapping
     spots = [(t.left + 0.7 * t.width + row * gap * 0.866, t.centery + (k - row / 2) * gap)
              for row in range(4) for k in range(row + 1)]
-    return cushions + [build({"pos": (t.left + t.width / 4, t.centery)})] + [
+    cue = build({"pos": (t.left + t.width / 4, t.centery), "vel": (MAX_SHOT, rng.uniform(-20, 20))})
+    return cushions + [cue] + [
         build({"pos": spot, "color": color}) for spot, color in zip(spots, rng.sample(COLORS, len(spots)))]
 
 
-def make_world(bodies):
-    """A World with the table's effects that calls this file's circle_circle() and, through resolve(), bounce()."""
-    return World(bodies, effects=EFFECTS, circle_circle=circle_circle, resolve=resolve)
+def make_world(rng):
+    """The table in a World with its effects, calling this file's circle_circle() and, through resolve(), bounce()."""
+    return World(lab.scene(make_scene(rng), build=build), effects=EFFECTS,  # lab runtime: scene()
+                 circle_circle=circle_circle, resolve=resolve)
 
 
 def balls_of(world):
@@ -130,10 +132,10 @@ def main():
     clock = pygame.time.Clock()
     font = pygame.font.Font(None, 24)
     rng = random.Random(lab.seed(11))  # lab runtime: seed()
-    world = make_world(lab.scene(make_scene(rng), build=build))  # lab runtime: scene()
+    world = make_world(rng)
     panel = LabPanel()  # solver panel
     running = True
-    # Step 5: shoot into the rack: watch the balls bounce apart, off the cushions, and roll to a stop.
+    # Step 5: watch the break bounce the balls apart and the cloth stop them; click to shoot the white ball again.
     while running and lab.frame_budget():  # lab runtime: frame_budget()
         dt = lab.tick(clock, 60) / 1000  # lab runtime: clock.tick(60)
         for event in lab.events():  # lab runtime: pygame.event.get()
@@ -146,7 +148,7 @@ def main():
                 if aim.length() > 0:
                     cue.vel = aim.normalize() * min(MAX_SHOT, 3 * aim.length())
             elif event.type == pygame.KEYDOWN and event.key == pygame.K_r:
-                world = make_world(make_scene(rng))
+                world = make_world(rng)
         steps = panel.advance(world, dt)  # solver panel: fixed steps, long frames clamped
         balls = balls_of(world)
         for ball in balls:
