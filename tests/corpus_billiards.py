@@ -250,6 +250,29 @@ WRONG = with_says(WRONG, SAYS)
 MISTAKE_IDS = {name: name for name in SAYS if name.split("_")[0] in ("contact", "bounce", "cloth")
                and not name.endswith("_crash")}
 
+# two mistakes of one step at once (tests/test_named_causes.py): the step fails, naming neither
+COMBINED = {
+    "billiards_contact_reversed_and_halved": ("circle_circle_right", {2: """
+        offset = ca - cb
+        depth = (ra + rb - offset.length()) / 2
+        if depth <= 0:
+            return None
+        if offset.length() == 0:
+            return pygame.Vector2(1, 0), depth
+        return offset.normalize(), depth
+    """}, ("from B to A", "halved")),
+    "billiards_bounce_e_alone_on_b_only": ("bounce_right", {3: """
+        vn = (b.vel - a.vel).dot(normal)
+        if vn < 0:
+            b.vel += normal * (-e * vn / (a.inv_mass + b.inv_mass) * b.inv_mass)
+    """}, ("e alone", "only B")),
+    "billiards_cloth_no_dt_and_reverses": ("cloth_slowing_right", {4: """
+        if vel.length() == 0:
+            return vel
+        return vel - vel.normalize() * (mu * G)
+    """}, ("leaves out dt", "turns round")),
+}
+
 ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
