@@ -129,6 +129,13 @@ WRONG = [
             return pygame.Vector2(1, 0), ra + rb
         return offset.normalize(), ra + rb - offset.length()
     """}, why="overlapping along x (|d|² = 400 > 28) gives None"),
+    wrong("contact_inverted", "None for overlapping balls, a contact for apart ones", "circle_circle_right", {2: """
+        offset = cb - ca
+        depth = ra + rb - offset.length()
+        if depth > 0:
+            return None
+        return offset.normalize(), depth
+    """}, why="overlapping along x gives None, apart along x a contact"),
     wrong("contact_coincident_crash", "no case for coincident centres", "circle_circle_right", {2: """
         offset = cb - ca
         if offset.length() >= ra + rb:
@@ -235,7 +242,8 @@ WRONG = [
 
 SAYS = {
     "contact_reversed": ("from B to A",), "contact_gap": ("the gap",), "contact_unit": ("not a unit vector",),
-    "contact_halved": ("halved",), "contact_squared": ("|d|²",), "contact_coincident_crash": ("circle_circle",),
+    "contact_halved": ("halved",), "contact_squared": ("|d|²",), "contact_inverted": ("wrong way round",),
+    "contact_coincident_crash": ("circle_circle",),
     "bounce_separating": ("already separate",), "bounce_e_alone": ("e alone",), "bounce_no_e": ("leaves out e",),
     "bounce_masses_summed": ("mA + mB",), "bounce_b_only": ("only B",), "bounce_same_sign": ("both balls",),
     "bounce_signs_swapped": ("A gets +j n",), "cloth_reverses": ("turns round",), "cloth_drag": ("drag",),
