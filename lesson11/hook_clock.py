@@ -8,14 +8,14 @@ time is the time inside those calls, inclusive of everything they call
 """
 import statistics
 
-HOOKS = ("sat", "circle_polygon", "resolve", "separate", "circle_point")
+HOOKS = ("sat", "circle_circle", "circle_polygon", "resolve", "separate", "circle_point")
 
 
 def lab_hooks(world):
     """{name: function} of the World's hooks that are not the library's own (so: the lab's functions)."""
     from .physics2d import collision
-    library = {"sat": collision.sat, "circle_polygon": collision.circle_polygon,
-               "circle_point": collision.circle_contact_point,
+    library = {"sat": collision.sat, "circle_circle": collision.circle_circle,
+               "circle_polygon": collision.circle_polygon, "circle_point": collision.circle_contact_point,
                "resolve": getattr(world, "lesson_resolve", None), "separate": getattr(world, "lesson_separate", None)}
     found = {}
     for name in HOOKS:

@@ -129,7 +129,7 @@ def settings_of(cls):
     (Body, {"pos", "angle", "mass", "inertia", "restitution", "friction"}),
     (World, {"gravity", "step_seconds", "iterations", "substeps", "slop", "percent", "resting_speed", "max_frame",
              "max_steps", "contact_rule", "solver", "effects", "order", "broad_phase", "warm_starting",
-             "circle_polygon", "circle_point", "sleep_speed", "sleep_spin", "sleep_after", "sleep_timer", "moves",
+             "circle_circle", "circle_polygon", "circle_point", "sleep_speed", "sleep_spin", "sleep_after", "sleep_timer", "moves",
              "wake_pair"}),
 ])
 def test_every_setting_has_its_own_docstring_with_its_default(cls, names):

@@ -137,3 +137,15 @@ def test_the_framework_words_what_a_lab_leaves_out():
                                                          "double(1) returned two; expected 2 units.")
     with pytest.raises(AssertionError):   # the hint is the one thing a step must always name
         declared.Step("doubles", "Step 2: double(x) is 2 x.", 2, "double", lambda module: [], None, lesson)
+
+
+def test_numbers_lays_vectors_flat_and_words_what_is_not_numbers():
+    from pygame import Vector2
+    assert declared.numbers((Vector2(0.6, 0.8), 5), 3) == [0.6, 0.8, 5.0]
+    assert declared.numbers((Vector2(1, 2), Vector2(3, 4)), 4) == [1.0, 2.0, 3.0, 4.0]
+    assert declared.numbers(None, 3) is None
+    assert all(isinstance(declared.numbers(raw, 3), str) for raw in ((Vector2(1, 0),), ("1", 2, 3), 7, [True, 1, 2]))
+    same = declared.close(1e-9)
+    assert same([1.0, 2.0], [1.0 + 1e-12, 2.0]) and same(None, None)
+    assert not same([1.0, 2.0], [1.0, 2.001]) and not same(None, [1.0]) and not same("(1, 2)", [1.0, 2.0])
+    assert declared.listed([1, -0.001, 8]) == "(1.00, 0.00, 8.00)" and declared.listed(None) == "None"

@@ -1,6 +1,6 @@
 """python -m checker new-lab ID --title "...": write a new one-step lab that grades at once (lab_template.py).
 
-    python -m checker new-lab billiards --title "Billiards"
+    python -m checker new-lab air_hockey --title "Air Hockey"
 
 writes solutions/ID.py, checker/labs/ID/ (checks, probes, scenes, show), starters/ID_starter.py (as `assign` writes
 it) and tests/corpus_ID.py (tests/test_corpus_labs.py finds it). At once the solution passes, the starter fails step 2, and

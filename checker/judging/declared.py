@@ -13,9 +13,12 @@ A step whose mistakes need more than a table (a whole scene, a spliced step) sta
 """
 from dataclasses import dataclass, field
 
+from pygame import Vector2
+
 from . import lab_checks
 from .causes import consistent_mistake, mistake
 from .checks import Fail, Passed
+from .common import real, value_text
 from .tape import judging, reference
 
 
@@ -36,6 +39,28 @@ def forms_of(table, answers, prefix=""):
     {name: answer} (a name it leaves out: None, no answer there); each mistake's id is prefix + name."""
     return tuple(Form(prefix + name, text, lambda case, name=name: answers(case).get(name))
                  for name, text in table.items())
+
+
+def numbers(raw, size):
+    """A function's answer as `size` floats, its vectors laid flat ((normal, depth): [nx, ny, depth]), for a Step's
+    `answer`; None stays None; anything else is its text (a Step's `bad` can call a str malformed)."""
+    try:
+        flat = [real(x) for part in raw for x in (part if isinstance(part, (Vector2, tuple, list)) else [part])]
+        return flat if len(flat) == size else value_text(raw)
+    except (TypeError, ValueError):
+        return None if raw is None else value_text(raw)
+
+
+def close(relative):
+    """A Step's `same` for numbers() answers: equal, or lists whose numbers each agree to `relative` of their
+    size (at least 1): the same sums in another order."""
+    return lambda got, want: got == want or (isinstance(got, list) and isinstance(want, list) and len(got) == len(
+        want) and all(abs(g - w) <= relative * max(1.0, abs(w)) for g, w in zip(got, want)))
+
+
+def listed(value):
+    """A numbers() answer in a message, two decimals each: "(1.00, 0.00, 8.00)"; anything else as str()."""
+    return f"({', '.join(lab_checks.number_text(x) for x in value)})" if isinstance(value, list) else str(value)
 
 
 def words(text):

@@ -258,10 +258,12 @@ def circle_contact_point(center, radius, normal, depth):
 
 
 def circle_circle(center_a, radius_a, center_b, radius_b, margin=0.0):
-    """Two circles: None if apart, else (normal from A to B, depth = ra + rb - |cB - cA|).
+    """Two circles (centers px, radii px): None if apart, else (unit normal from A to B, depth px).
 
-    Coincident centers get the normal (1, 0). A margin (px) also reports
-    circles up to `margin` apart, with a negative depth.
+    normal = (cB - cA) / |cB - cA|, depth = ra + rb - |cB - cA|; touching counts
+    as apart. Coincident centers get the normal (1, 0). The World's default
+    `circle_circle` hook. A margin (px) also reports circles up to `margin`
+    apart, with a negative depth.
     """
     offset = center_b - center_a
     dist = offset.length()
@@ -947,7 +949,7 @@ the contact points (world px) and each point's own depth (px; negative = a gap, 
 
 
 def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0, circle_test=circle_polygon,
-            circle_point=circle_contact_point):
+            circle_point=circle_contact_point, circles_test=None):
     """Narrow phase for one pair of bodies (with world points pa, pb): a Manifold, or None when apart.
 
     Polygons: polygon_test(pa, pb) (the lab's sat, if hooked) gives normal and
@@ -955,14 +957,16 @@ def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0, 
       "corners"  the lesson's contact_points, every point with the pair's depth;
                  with a margin, corner_manifold (each corner its own depth);
       "clip"     clip_manifold, edge clipping, each point its own depth.
-    Circles: circle_circle, or circle_test(center, radius, points) for a circle
-    and a polygon (the lab's circle_polygon, if hooked), giving the normal out
-    of the circle and the depth; circle_point(center, radius, d, depth) places
-    the one contact point, d being the direction from the circle's center
-    (default circle_contact_point: halfway into the overlap, c + d (r - depth/2)).
+    Circles: circles_test(ca, ra, cb, rb) for two circles (the lab's
+    circle_circle, if hooked; None: this module's circle_circle), or
+    circle_test(center, radius, points) for a circle and a polygon (the lab's
+    circle_polygon, if hooked), giving the normal out of the circle and the
+    depth; circle_point(center, radius, d, depth) places the one contact point,
+    d being the direction from the circle's center (default
+    circle_contact_point: halfway into the overlap, c + d (r - depth/2)).
     A margin (px) asks for speculative contacts: pairs closer than that count,
     with a negative depth; polygons and circles then use this module's sat,
-    circle_polygon and circle_contact_point (which know about margins).
+    circle_circle, circle_polygon and circle_contact_point (which know about margins).
     """
     kind = (a.shape.kind, b.shape.kind)
     if kind == ("polygon", "polygon"):
@@ -978,7 +982,10 @@ def collide(a, b, pa, pb, contact_rule="corners", polygon_test=sat, margin=0.0, 
             pairs = [(p, depth) for p in contact_points(pa, pb, normal)]
         return Manifold(normal, depth, [p for p, _ in pairs], [d for _, d in pairs])
     if kind == ("circle", "circle"):
-        hit = circle_circle(a.pos, a.radius, b.pos, b.radius, margin)
+        if circles_test is None or circles_test is circle_circle or margin:
+            hit = circle_circle(a.pos, a.radius, b.pos, b.radius, margin)
+        else:  # the lab's test, on copies of the centres
+            hit = _circle_answer(circles_test(Vector2(a.pos), a.radius, Vector2(b.pos), b.radius), circles_test)
     elif margin:
         if kind == ("circle", "polygon"):
             hit = circle_polygon(a.pos, a.radius, pb, margin)

@@ -6,7 +6,7 @@ nothing else (no friction pass for a frictionless scene, no swept tests unless
 (in World(...) or later), with a one-line ValueError naming it and the value
 (settings.py); help(World.slop) and the others say what each is, its unit and
 default. A lab can hand in its own `sat`, `resolve` and `separate` (and, for
-balls, `circle_polygon` and `circle_point`), and the world calls them inside
+balls, `circle_circle`, `circle_polygon` and `circle_point`), and the world calls them inside
 its loop, so a student's functions run the whole simulation.
 
 World.step dispatches to one phase list per solver (step_solve_first,
@@ -61,7 +61,8 @@ class World:
                      (World(wake=...) sets wake_pair)
     Hooks (a lab's functions, called inside the loop; None gives the library's):
       sat(pa, pb), resolve(a, b, normal, point), separate(a, b, normal, depth);
-      circle_polygon(center, radius, points) and circle_point(center, radius, normal, depth) for balls;
+      circle_circle(ca, ra, cb, rb), circle_polygon(center, radius, points) and
+      circle_point(center, radius, normal, depth) for balls;
       sleep_timer(timer, speed, spin, dt), moves(body), wake(a, b) for "sleep" (sleep.py).
       Each must be a function: anything else is a one-line ValueError. Like sat, the
       circle hooks serve the lesson solver; the accumulated solver's speculative
@@ -186,6 +187,13 @@ class World:
         circle_polygon(center, radius, points) -> None or (normal out of the
         circle into the polygon, depth px). A function; World(circle_polygon=None)
         uses the library's, collision.circle_polygon (the default).""")
+    circle_circle = setting("circle_circle", hook("circle_circle"),
+                            """Hook: the test of every pair of circles (lesson solver).
+
+        circle_circle(ca, ra, cb, rb) -> None when apart, else (unit normal
+        from A's centre to B's, depth = ra + rb - |cb - ca| px); centres in
+        world px (copies), radii px. A function; World(circle_circle=None)
+        uses the library's, collision.circle_circle (the default).""")
     circle_point = setting("circle_point", hook("circle_point"),
                            """Hook: the contact point of every circle pair (lesson solver).
 
@@ -239,8 +247,8 @@ class World:
                  slop=response.SLOP, percent=response.PERCENT, resting_speed=response.RESTING_SPEED,
                  max_frame=0.25, max_steps=MAX_STEPS, contact_rule="corners", effects=LESSON_EFFECTS, solver="lesson",
                  warm_starting=True, order="solve-first", sat=None, resolve=None, separate=None,
-                 circle_polygon=None, circle_point=None, sleep_speed=SLEEP_SPEED, sleep_spin=SLEEP_SPIN,
-                 sleep_after=SLEEP_AFTER, sleep_timer=None, moves=None, wake=None,
+                 circle_polygon=None, circle_point=None, circle_circle=None, sleep_speed=SLEEP_SPEED,
+                 sleep_spin=SLEEP_SPIN, sleep_after=SLEEP_AFTER, sleep_timer=None, moves=None, wake=None,
                  broad_phase="sweep-and-prune"):
         self.arbiters = {}
         self.touched = set()  # "sleep": pairs (id(a), id(b)) that touched during this step
@@ -265,6 +273,7 @@ class World:
         self.separate = separate or self.lesson_separate
         self.circle_polygon = circle_polygon or collision.circle_polygon
         self.circle_point = circle_point or collision.circle_contact_point
+        self.circle_circle = circle_circle or collision.circle_circle
         self.sleep_speed = sleep_speed
         self.sleep_spin = sleep_spin
         self.sleep_after = sleep_after
@@ -804,7 +813,7 @@ class World:
                 narrow += 1
                 manifold = collision.collide(a, b, geometry.points(i), geometry.points(j), self.contact_rule,
                                              self.sat, broadphase.pair_margin(i, j, reach, base),
-                                             self.circle_polygon, self.circle_point)
+                                             self.circle_polygon, self.circle_point, self.circle_circle)
                 if manifold is None:
                     continue
                 contacts += len(manifold.points)
@@ -943,7 +952,7 @@ def _plain_manifolds(world):
         pairs, tested = broadphase.sweep_boxes(boxes, moving)  # sweep_and_prune without margins, written out
     world.counters["pair_tests"] += tested
     sat, rule = world.sat, world.contact_rule
-    circle_polygon, circle_point = world.circle_polygon, world.circle_point
+    circle_polygon, circle_point, circle_circle = world.circle_polygon, world.circle_point, world.circle_circle
     contact_points, collide, manifold_of = collision.contact_points, collision.collide, collision.Manifold
     narrow = contacts = 0
     try:
@@ -958,7 +967,8 @@ def _plain_manifolds(world):
                 found = contact_points(points[i], points[j], normal)
                 manifold = manifold_of(normal, depth, found, [depth] * len(found))
             else:
-                manifold = collide(a, b, points[i], points[j], rule, sat, 0.0, circle_polygon, circle_point)
+                manifold = collide(a, b, points[i], points[j], rule, sat, 0.0, circle_polygon, circle_point,
+                                   circle_circle)
                 if manifold is None:
                     continue
             contacts += len(manifold.points)
@@ -1011,7 +1021,7 @@ def _speculative_manifolds(world, dt):
                 manifold = _polygon_manifold(points, xy, flat, i, j, rule, margin)
             else:
                 manifold = collision.collide(a, b, points[i], points[j], rule, world.sat, margin,
-                                             world.circle_polygon, world.circle_point)
+                                             world.circle_polygon, world.circle_point, world.circle_circle)
             if manifold is None:
                 continue
             contacts += len(manifold.points)
