@@ -285,5 +285,46 @@ ENTRIES = CORRECT + WRONG
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
 
+
+
+def attack_entries(attack, control):
+    """Billiards' entries of the attack corpus (tests/corpus_attacks.py builds the others from the lab itself):
+    step 2 answered from a table of the probe's fixed pairs, and two honest controls in other styles."""
+    import types
+    from checker.labs.billiards.probes import contact_cases, reference_contact
+    fixed = contact_cases(types.ModuleType("plain"))[:-2]   # the last two are drawn for each run
+    hits = {(*case["ca"], case["ra"], *case["cb"], case["rb"]): reference_contact(case) for case in fixed}
+    assert len(hits) >= 5, "the probe's fixed pairs moved: the table would test nothing"
+    return [
+        attack("billiards_table_contact", "billiards", "table", {2: f"""
+            hits = {hits!r}
+            hit = hits.get((ca.x, ca.y, ra, cb.x, cb.y, rb))
+            if hit is None:
+                return None  # not in the table (or apart): the placeholder
+            return pygame.Vector2(hit[0], hit[1]), hit[2]
+        """}, ["circle_circle_right"], "step 2 answers the probe's fixed pairs from a table; the pairs drawn for "
+               "this run are not in it", needs_random_inputs=True),
+        control("billiards_control_hypot", "billiards", {2: """
+            import math
+            dx, dy = cb.x - ca.x, cb.y - ca.y
+            gap = math.hypot(dx, dy)
+            if gap >= ra + rb:
+                return None
+            return (pygame.Vector2(dx / gap, dy / gap) if gap else pygame.Vector2(1, 0)), ra + rb - gap
+        """}, "math.hypot and components instead of Vector2 arithmetic"),
+        control("billiards_control_print", "billiards", {3: """
+            vn = (b.vel - a.vel).dot(normal)
+            print("closing speed", vn)
+            if vn < 0:
+                j = -(1 + e) * vn / (a.inv_mass + b.inv_mass)
+                a.vel -= normal * (j * a.inv_mass)
+                b.vel += normal * (j * b.inv_mass)
+        """}, "a debug print inside the step"),
+    ]
+
+
+# what tests/corpus_attacks.py needs of this lab beyond what it reads from the lab itself
+ATTACK = {"entries": attack_entries}
+
 FILES = CorpusFiles(STARTER, SOLUTION, STEPS, BY_NAME, "tests/corpus_billiards.py")
 regions, step_code, fill, build, write_corpus = FILES.regions, FILES.step_code, FILES.fill, FILES.build, FILES.write
