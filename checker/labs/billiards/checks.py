@@ -1,8 +1,9 @@
 """Billiards: its checks (steps declared in probes.py, criteria on scenes.py's runs) and bounds (solution's beside)."""
 import math
 
-from checker.judging import lab_checks
-from checker.judging.checks import Fail, Hint, Registry
+from checker.judging import criteria, lab_checks
+from checker.judging.checks import Hint, Registry
+from checker.judging.criteria import Bound, Criterion
 from lesson11 import records as metrics
 from . import probes, scenes
 
@@ -37,59 +38,52 @@ for step in probes.STEPS:
     step.register(CHECKS, HINTS)
 
 
-@CHECKS.check(after=["loads", "handout_unchanged", "runtime_lines"] + [s.check for s in probes.STEPS],
-              needs_scenarios=True)
-def runs(sub):
-    """main() runs the checker's scenes to the end."""
-    records = lab_checks.scene_records(sub, scenes.SCENARIOS, HINTS["crash"], HINTS["runtime"])
-    for name, run in records.items():
-        if not metrics.finite(run.record["records"]):
-            raise Fail(f"a ball's position or speed became infinite or NaN.\nin the '{name}' scene.", HINTS["crash"])
-    return records
+lab_checks.register_runs(CHECKS, HINTS, scenes.SCENARIOS, ["loads", "handout_unchanged", "runtime_lines"]
+                         + [s.check for s in probes.STEPS], "main() runs the checker's scenes to the end.", "a ball",
+                         hint="crash")
 
 
-@CHECKS.check(depends=["runs"], needs_scenarios=True)
-def speeds_exchange(records):
-    """Two equal balls meeting head-on swap speeds, all but the share e = 0.95 keeps back."""
+def _exchange(records):
     last = metrics.dynamic(records["frictionless"].record["records"][-1])
     cue, hit = [metrics.speed(ball) / scenes.HEAD_ON_SPEED for ball in last[:2]]
-    if cue > CUE_KEEPS or hit < OBJECT_TAKES:
-        raise Fail(f"two equal balls meeting head-on do not swap speeds.\nthe cue ball kept {cue:.1%} of its speed "
-                   f"(at most {CUE_KEEPS:.0%}), the ball hit took {hit:.1%} (at least {OBJECT_TAKES:.0%}).",
-                   HINTS["bounce"])
-    return f"the cue ball kept {cue:.1%} of its speed, the ball it hit took {hit:.1%}"
+    return {"cue_ball_kept": cue, "ball_hit_took": hit}
 
 
-@CHECKS.check(depends=["runs"], needs_scenarios=True)
-def momentum_kept(records):
-    """On a frictionless cloth the balls' total momentum stays as it was."""
+def _momentum(records):
     frames = records["frictionless"].record["records"]
     start = scenes.momentum(frames[0])
-    drift, when = max((math.dist(scenes.momentum(f), start) / math.hypot(*start), f["frame"] / metrics.FPS)
-                      for f in frames)
-    if drift > DRIFT:
-        raise Fail(f"the balls' total momentum changes when they meet.\nat {when:.2f} s it was off by {drift:.1%} "
-                   f"(bound {DRIFT:.1%}).", HINTS["bounce"])
-    return f"total momentum kept to {drift:.1e} of itself"
+    drift, frame = max((math.dist(scenes.momentum(f), start) / math.hypot(*start), f["frame"]) for f in frames)
+    return {"momentum_off_by": drift, "frame": frame}
 
 
-@CHECKS.check(depends=["runs"], needs_scenarios=True)
-def no_overlap(records):
-    """In the break no ball sinks more than 2 px into another ball or a cushion."""
-    depth, what, when = max(scenes.overlap(f) + (f["frame"] / metrics.FPS,) for f in records["break"].record["records"])
-    if depth > OVERLAP:
-        raise Fail(f"balls sink into each other in the break.\n{what} overlapped by {depth:.1f} px at {when:.2f} s "
-                   f"(bound {OVERLAP:g} px).", HINTS["contact"])
-    return f"the deepest overlap was {depth:.2f} px ({what})"
+def _overlap(records):
+    depth, what, frame = max(scenes.overlap(f) + (f["frame"],) for f in records["break"].record["records"])
+    return {"deepest_overlap": depth, "what": what, "frame": frame}
 
 
-@CHECKS.check(depends=["runs"], needs_scenarios=True)
-def comes_to_rest(records):
-    """After the break every ball stops, exactly, within 5.5 s."""
+def _rest(records):
+    """When the last ball stopped (s); None when one still rolls in the last frame."""
     frames = records["break"].record["records"]
     rolling = [f["frame"] for f in frames if any(metrics.speed(ball) > 0 for ball in metrics.dynamic(f))]
-    rest = (rolling[-1] + 1) / metrics.FPS if rolling else 0.0
-    if rest > REST_BY:
-        said = f"the last stopped at {rest:.2f} s" if rolling[-1] < frames[-1]["frame"] else "one rolled to the end"
-        raise Fail(f"the balls do not come to rest after the break.\n{said} (bound {REST_BY:g} s).", HINTS["cloth"])
-    return f"every ball at rest from {rest:.2f} s"
+    if rolling and rolling[-1] == frames[-1]["frame"]:
+        return {"all_at_rest": None}
+    return {"all_at_rest": (rolling[-1] + 1) / metrics.FPS if rolling else 0.0}
+
+
+criteria.register(CHECKS, HINTS, (
+    Criterion("speeds_exchange", "Two equal balls meeting head-on swap speeds, all but the share e = 0.95 keeps "
+              "back.", _exchange, (
+                  Bound("cue_ball_kept", CUE_KEEPS, "two equal balls meeting head-on do not swap speeds", "bounce",
+                        "%", scale=100),
+                  Bound("ball_hit_took", OBJECT_TAKES, "two equal balls meeting head-on do not swap speeds",
+                        "bounce", "%", least=True, scale=100)), max_score=1),
+    Criterion("momentum_kept", "On a frictionless cloth the balls' total momentum stays as it was.", _momentum, (
+        Bound("momentum_off_by", DRIFT, "the balls' total momentum changes when they meet", "bounce", "%",
+              scale=100, frame="frame"),), max_score=1),
+    Criterion("no_overlap", "In the break no ball sinks more than 2 px into another ball or a cushion.", _overlap, (
+        Bound("deepest_overlap", OVERLAP, "balls sink into each other in the break ({what})", "contact", "px",
+              frame="frame"),), max_score=1),
+    Criterion("comes_to_rest", "After the break every ball stops, exactly, within 5.5 s.", _rest, (
+        Bound("all_at_rest", REST_BY, "the balls do not come to rest after the break", "cloth", "s"),),
+              max_score=1),
+))
