@@ -12,7 +12,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus_files import CorpusFiles, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
+from corpus_files import CorpusFiles, second_mistake, with_says  # noqa: E402  (tests/corpus_files.py: starter + steps + edits)
 from corpus_entries import makers  # noqa: E402  (tests/corpus_entries.py: Entry, wrong, correct)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -260,25 +260,12 @@ MISTAKE_IDS = {name: name for name in SAYS if name.split("_")[0] in ("contact", 
 
 # two mistakes of one step at once (tests/test_named_causes.py): the step fails, naming neither
 COMBINED = {
-    "billiards_contact_reversed_and_halved": ("circle_circle_right", {2: """
-        offset = ca - cb
-        depth = (ra + rb - offset.length()) / 2
-        if depth <= 0:
-            return None
-        if offset.length() == 0:
-            return pygame.Vector2(1, 0), depth
-        return offset.normalize(), depth
-    """}, ("from B to A", "halved")),
-    "billiards_bounce_e_alone_on_b_only": ("bounce_right", {3: """
-        vn = (b.vel - a.vel).dot(normal)
-        if vn < 0:
-            b.vel += normal * (-e * vn / (a.inv_mass + b.inv_mass) * b.inv_mass)
-    """}, ("e alone", "only B")),
-    "billiards_cloth_no_dt_and_reverses": ("cloth_slowing_right", {4: """
-        if vel.length() == 0:
-            return vel
-        return vel - vel.normalize() * (mu * G)
-    """}, ("leaves out dt", "turns round")),
+    "billiards_contact_reversed_and_halved": ("circle_circle_right", second_mistake(
+        WRONG, "contact_halved", 2, "offset = cb - ca", "offset = ca - cb"), ("from B to A", "halved")),
+    "billiards_bounce_e_alone_on_b_only": ("bounce_right", second_mistake(
+        WRONG, "bounce_b_only", 3, "j = -(1 + e) * vn", "j = -e * vn"), ("e alone", "only B")),
+    "billiards_cloth_no_dt_and_reverses": ("cloth_slowing_right", second_mistake(
+        WRONG, "cloth_reverses", 4, "(mu * G * dt)", "(mu * G)"), ("leaves out dt", "turns round")),
 }
 
 ENTRIES = CORRECT + WRONG
