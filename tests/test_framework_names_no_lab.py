@@ -27,9 +27,11 @@ CHECKER = os.path.dirname(labs.HERE)
 
 
 def framework_modules():
-    """Every Python file of checker/ outside checker/labs/ (the templates too)."""
+    """Every Python file of checker/ outside checker/labs/ (the platforms' templates too) but new-lab's lab template."""
     paths = glob.glob(os.path.join(CHECKER, "**", "*.py"), recursive=True)
-    return sorted(p for p in paths if not p.startswith(labs.HERE + os.sep))
+    # new-lab's template is the text a new lab is written from: a lab made with it has the template's check ids
+    template = os.path.join(CHECKER, "authoring", "lab_template.py")
+    return sorted(p for p in paths if not p.startswith(labs.HERE + os.sep) and p != template)
 
 
 def framework_checks():
