@@ -4,11 +4,14 @@ Acting is a declared.Step (the same cases, wrong forms, naming and words) for a 
 must leave its arguments alone: each call gets fresh arguments built from the case's plain inputs (bodies as
 cases), its answer may be read from them after the call, a vector it changed in place fails the step (mistake
 argument_changed), calls it makes to a hooked function are noted, the probed function may be a spliced one, and
-more Steps may be judged under the same check. fields() compares dict answers field by field.
+more Steps may be judged under the same check. fields() compares dict answers field by field, body_of() builds
+a case's body from its plain description, roles() tells which given objects a hooked call was passed.
 """
 from dataclasses import dataclass, field
 
 from pygame import Vector2
+
+from lesson11.physics2d import Body, Circle, box_points
 
 from . import lab_checks
 from .causes import mistake
@@ -25,6 +28,36 @@ def fields(same, keys):
 def first_differing(got, want, keys, same):
     """The first of `keys` whose field differs by `same` (None when all agree): which body to name."""
     return next((k for k in keys if not (isinstance(got, dict) and k in got and same(got[k], want[k]))), None)
+
+
+def described(**spec):
+    """A body's plain description for a case (its vectors pos and vel as lists): the keys of body_of()."""
+    return {key: list(value) if key in ("pos", "vel") else value for key, value in spec.items()}
+
+
+def body_of(spec):
+    """A fresh Body from a case's plain description: a circle of radius "r", a "w" × "h" box or a polygon's
+    "points"; every other key is Body's own (pos, mass, angle, vel, omega, restitution, friction)."""
+    shape = Circle(spec["r"]) if "r" in spec else box_points(spec["w"], spec["h"]) if "w" in spec else spec["points"]
+    return Body(shape, **{key: value for key, value in spec.items() if key not in ("r", "w", "h", "points")})
+
+
+def roles(given, params, args, named, which=None):
+    """Which item of `given` each argument of a hooked call is, for the parameters in `which` (default all):
+    "b a rb ra" (an object by identity, a vector within 1e-9 of one; "-" none): a call's order, for a hook's
+    describe."""
+    bound = dict(zip(params, args), **named)
+    return " ".join(next((name for name, value in given.items() if _is(bound.get(param), value)), "-")
+                    for param in which or params)
+
+
+def _is(argument, value):
+    if argument is value:
+        return True
+    try:
+        return isinstance(value, Vector2) and abs(argument[0] - value.x) <= 1e-9 and abs(argument[1] - value.y) <= 1e-9
+    except (TypeError, IndexError, ValueError):
+        return False
 
 
 class stood_in:

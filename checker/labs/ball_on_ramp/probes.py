@@ -1,40 +1,32 @@
-"""Probes of a Ball on the Ramp file's own functions, run inside the checker's child process.
+"""Ball on the Ramp's function steps, declared as data (checker/judging/declared.py, declared_acts.py).
 
-Each probe calls one of the student's functions on configurations chosen so
-that together they exercise every term of the lesson's formula, and returns
-plain data: the student's answer beside the lesson's on the same inputs
-(checker/labs/ball_on_ramp/checks.py compares them and names the first that differs).
-The lesson's answers are added in the grader only (`judging`, checker/judging/probe_kit.py),
-from the inputs as they were before the student's function got them.
-
+Each step's cases exercise every term of the lesson's formula; the probes run in the checker's child and record
+only the student's answers; the lesson's answers and those of the known wrong forms are computed in the grader
+(`@reference`), from the inputs as they were before the student's function got them:
     closest_on_segment  (step 2) points beside an edge, beyond either end, slanted and reversed edges
-    circle_outside      (step 2) circle_polygon() on circles outside or touching a polygon (near a
-                        face, near a corner, apart), with the solution's step 3 spliced in
-    circle_inside       (step 3) circle_polygon() with the center inside (near each kind of edge),
-                        run with the lesson's closest_on_segment in place of the student's
+    circle_outside      (step 2) circle_polygon() on circles outside or touching a polygon, with the
+                        solution's step 3 spliced in
+    circle_inside       (step 3) the center inside, with the lesson's closest_on_segment in the student's place
     separate            (step 4) two dynamic bodies of different mass, a static A, a static B
     disc_inertia        (step 5) masses and radii far from 1
     contact_point       (step 6) balls touching along several normals, with small and large depths
-    resolve             (step 7) a ball slipping on the static ramp (clamped and not), spinning in
-                        place, hitting a crate, on a frictionless surface; resolve() runs with a
-                        recorder in place of apply_impulse, so each impulse and where it acts is seen
-
+    resolve             (step 7) a ball slipping on the ramp (clamped and not), spinning, hitting a crate, on a
+                        frictionless surface; each apply_impulse call's order of bodies and lever arms is noted
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
 import math
-import numbers
 
 from pygame import Vector2
 
-from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
-from lesson11.physics2d import apply_impulse as lesson_apply_impulse
+from lesson11.physics2d import apply_impulse as lesson_apply_impulse, circle_polygon as lesson_circle_polygon
+from lesson11.physics2d import closest_on_segment as lesson_closest, effective_mass_inverse, relative_velocity
 
 from checker.judging.causes import arguments_hint
-from checker.judging.common import answer_number, close, real, same_point, value_text
+from checker.judging.common import answer_number, answer_point, close, same_point
 from checker.judging.declared import Form, Step
-from checker.judging.declared_acts import Acting, fields, first_differing
+from checker.judging.declared_acts import Acting, body_of, described, fields, first_differing, roles
 from checker.judging.lab_checks import vec_text
-from checker.judging.probe_kit import box, ngon, reference, with_reference_steps
+from checker.judging.probe_kit import _plain, box, ngon, reference, sat_answer, with_reference_steps
 from checker.judging.tape import run_rng
 
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
@@ -43,81 +35,19 @@ SLOP, PERCENT = 0.5, 0.4   # px, share: the handout's push-out constants
 RAMP_ANGLE = 22.0      # degrees
 
 
-def answer_point(value):
-    """A returned point as [x, y], or {"bad": what it is} when it is not a finite 2D point.
+# ---------------------------------------------------------------- the lesson's formulas and the ramp
 
-    A bare number is no point (Vector2(0.3) would make it (0.3, 0.3)): {"bad": ..., "number": value}.
-    """
-    if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        try:
-            return {"bad": f"the number {_short(value)}, not a point", "number": real(value)}
-        except ValueError:   # an int too large for a float
-            return {"bad": f"the number {_short(value)}, not a point"}
-    try:
-        point = Vector2(value)
-    except (TypeError, ValueError):
-        return {"bad": _short(value)}
-    if not (math.isfinite(point.x) and math.isfinite(point.y)):
-        return {"bad": f"a point that is not finite: {_short(value)}"}
-    return [point.x, point.y]
-
-
-def answer_hit(hit):
-    """circle_polygon's answer as None, {"normal": [x, y], "depth": d} or {"bad": what is wrong}."""
-    if hit is None:
-        return None
-    try:
-        first, second = hit
-    except (TypeError, ValueError):
-        return {"bad": f"a {type(hit).__name__} ({_short(hit)})"}
-    if isinstance(first, (int, float)) and not isinstance(second, (int, float)):
-        return {"bad": "(depth, normal)"}
-    try:
-        normal, depth = Vector2(first), real(second)
-    except (TypeError, ValueError):
-        return {"bad": f"({_short(first)}, {_short(second)})"}
-    if not (math.isfinite(normal.x) and math.isfinite(normal.y) and math.isfinite(depth)):
-        return {"bad": f"a normal or depth that is not finite: ({_short(first)}, {depth!r})"}
-    return {"normal": [normal.x, normal.y], "depth": depth}
-
-
-_short = value_text   # repr cut to 60 characters; safe for a 5000-digit int
-
-
-# ---------------------------------------------------------------- the lesson's formulas
-
-def lesson_closest(p, a, b):
-    """The lesson's closest_on_segment: a + ab t, t = clamp((p - a)·ab / ab·ab, 0, 1).
-
-    Also put in the student's place under circle_polygon() (step 3 graded on its own), so it runs
-    in the child as a stand-in; as a reference answer it is reference_closest, grader only.
-    """
-    ab = b - a
-    t = max(0.0, min(1.0, (p - a).dot(ab) / ab.dot(ab)))
-    return a + ab * t
-
-
+# the lesson's closest_on_segment also stands in for the student's under circle_polygon() (step 3 graded on its own),
+# so it runs in the child; as a reference answer it is reference_closest, grader only
 reference_closest = reference(lesson_closest)
+reference_circle_polygon = reference(lesson_circle_polygon)   # None, or (normal into the polygon, depth px)
+
+UP = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))   # the ramp's top face normal
+SLOPE = Vector2(math.cos(math.radians(RAMP_ANGLE)), math.sin(math.radians(RAMP_ANGLE)))   # down the ramp
 
 
-@reference
-def reference_circle_polygon(center, radius, points):
-    """The lesson's circle_polygon: None, or (normal from the circle into the polygon, depth px)."""
-    closest = min((reference_closest(center, points[i], points[(i + 1) % len(points)]) for i in range(len(points))),
-                  key=center.distance_squared_to)
-    offset = closest - center
-    dist = offset.length()
-    if dist < 1e-9:
-        return (centre_of(points) - center).normalize(), radius
-    if inside(center, points):
-        return -offset / dist, radius + dist
-    if dist >= radius:
-        return None
-    return offset / dist, radius - dist
-
-
-def _plain(hit):
-    return None if hit is None else {"normal": [hit[0].x, hit[0].y], "depth": hit[1]}
+def _ramp():
+    return box(420, 24, (230, 380), RAMP_ANGLE)
 
 
 # ---------------------------------------------------------------- step 2: closest_on_segment
@@ -190,19 +120,23 @@ def _closest_returned(cases, case):
     return Form(None, f"closest_on_segment() returned {what}{placeholder}")
 
 
+def _circles(cases):
+    """circle_polygon()'s cases as plain data."""
+    return [{"case": name, "center": list(center), "radius": radius, "points": [list(p) for p in points]}
+            for name, center, radius, points in cases]
+
+
 def _where(c):
     return f"for {c['case']} (p = {vec_text(c['p'])}, edge {vec_text(c['a'])} to {vec_text(c['b'])})"
 
 
 CLOSEST_OUTSIDE = Acting(
-    "closest_point", "", 2, "circle_polygon", lambda module: [
-        {"case": name, "center": list(center), "radius": radius, "points": [list(p) for p in points]}
-        for name, center, radius, points in outside_cases()],
+    "closest_point", "", 2, "circle_polygon", lambda module: _circles(outside_cases()),
     lambda circle_polygon, g: circle_polygon(g["center"], g["radius"], g["points"]),
     lambda c: _plain(reference_circle_polygon(Vector2(c["center"]), c["radius"], [Vector2(p) for p in c["points"]])),
     given=lambda c: {"center": Vector2(c["center"]), "radius": c["radius"], "points": [Vector2(p) for p in c["points"]]},
     function_of=lambda module, lab_path: with_reference_steps(module, lab_path, "circle_polygon", (3,)) or
-    module.circle_polygon, probe_name="circle_outside", answer=answer_hit, same=lambda got, want: hit_matches(got, want),
+    module.circle_polygon, probe_name="circle_outside", answer=sat_answer, same=lambda got, want: hit_matches(got, want),
     hint="closest", unnamed="circle_polygon() with your closest_on_segment() misses a ball outside the polygon",
     evidence=lambda c: f"for {c['case']} (center {vec_text(c['center'])}, radius {c['radius']:g}): "
                        f"{hit_difference(c['got'], c['want'])}.")
@@ -231,34 +165,26 @@ CLOSEST = Acting(
 
 # ---------------------------------------------------------------- steps 2 and 3: circle_polygon
 
-def _ramp():
-    return box(420, 24, (230, 380), RAMP_ANGLE)
-
-
 def outside_cases():
     """(name, center, radius, polygon points): circles outside, touching or apart from a polygon."""
-    ramp = _ramp()
-    up = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))
-    slope = Vector2(math.cos(math.radians(RAMP_ANGLE)), math.sin(math.radians(RAMP_ANGLE)))
-    crate = box(60, 40, (600, 540))
+    ramp, crate = _ramp(), box(60, 40, (600, 540))
     return [
-        ("a ball sunk 3 px into the ramp's top face", Vector2(230, 380) + up * (12 + 17), 20, ramp),
-        ("a ball overlapping the ramp's lower end corner", Vector2(230, 380) + slope * 222 + up * 14, 20, ramp),
+        ("a ball sunk 3 px into the ramp's top face", Vector2(230, 380) + UP * (12 + 17), 20, ramp),
+        ("a ball overlapping the ramp's lower end corner", Vector2(230, 380) + SLOPE * 222 + UP * 14, 20, ramp),
         ("a ball overlapping a crate's top-right corner", Vector2(643, 508), 20, crate),
         ("a ball beside a crate's left side", Vector2(556, 545), 16, crate),
         ("a ball near a pentagon's corner", Vector2(40, 0), 14, ngon(5, 30, (0, 0), 0)),
         ("a ball just apart from a crate's corner", Vector2(645, 505), 20, crate),
         ("a ball far from a turned crate", Vector2(0, 0), 20, box(50, 30, (200, 100), 30)),
-        ("a ball above the ramp, 10 px clear", Vector2(230, 380) + up * (12 + 30), 20, ramp),
+        ("a ball above the ramp, 10 px clear", Vector2(230, 380) + UP * (12 + 30), 20, ramp),
     ]
 
 
 def inside_cases():
     """(name, center, radius, polygon points): circles whose center is inside the polygon."""
     ramp = _ramp()
-    up = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))
     return [
-        ("a ball whose center is 5 px inside the ramp's top face", Vector2(230, 380) + up * 7, 20, ramp),
+        ("a ball whose center is 5 px inside the ramp's top face", Vector2(230, 380) + UP * 7, 20, ramp),
         ("a ball whose center is inside a crate, near its left side", Vector2(575, 538), 20, box(80, 60, (600, 530))),
         ("a ball whose center is inside a turned crate, near its top", Vector2(4, -10), 12, box(70, 40, (0, 0), 15)),
         ("a ball whose center is inside a triangle", Vector2(3, 8), 10, ngon(3, 40, (0, 0), 12)),
@@ -321,11 +247,9 @@ def _inside_mistake(cases, case):
 
 INSIDE = Acting(
     "inside_case", "Step 3: circle_polygon() pushes a ball whose center is inside the polygon back out the nearest "
-    "side.", 3, "circle_polygon", lambda module: [
-        {"case": name, "center": list(center), "radius": radius, "points": [list(p) for p in points]}
-        for name, center, radius, points in inside_cases()],
+    "side.", 3, "circle_polygon", lambda module: _circles(inside_cases()),
     CLOSEST_OUTSIDE.call, CLOSEST_OUTSIDE.lesson, given=CLOSEST_OUTSIDE.given, probe_name="circle_inside",
-    stand_ins=lambda module: {"closest_on_segment": lesson_closest}, answer=answer_hit, same=hit_matches,
+    stand_ins=lambda module: {"closest_on_segment": lesson_closest}, answer=sat_answer, same=hit_matches,
     hint="inside", diagnose=_inside_mistake, passed="the inside case matches the lesson in all {n} circles",
     extra={"toward": lambda c: list(_nearest(c)[0]), "dist": lambda c: _nearest(c)[1]},
     unnamed="circle_polygon() does not push a center inside out of the nearest side",
@@ -335,21 +259,13 @@ INSIDE = Acting(
 
 # ---------------------------------------------------------------- step 4: separate
 
-def ball(radius, pos, mass=None, **motion):
-    """A ball's plain description for body(): mass None is the lab's, its area / 1000."""
-    return dict(r=radius, pos=list(pos), mass=math.pi * radius ** 2 / 1000 if mass is None else mass,
-                **{key: list(value) if key == "vel" else value for key, value in motion.items()})
+def ball(radius, pos, **more):
+    """A ball's plain description (declared_acts.body_of): its mass is the lab's, its area / 1000."""
+    return described(r=radius, pos=pos, mass=math.pi * radius ** 2 / 1000, **more)
 
 
-def crate(w, h, pos, mass, **motion):
-    return dict(w=w, h=h, pos=list(pos), mass=mass, **{key: list(value) if key == "vel" else value
-                                                        for key, value in motion.items()})
-
-
-def body(spec):
-    """A fresh Body from its plain description (ball() or crate())."""
-    shape = Circle(spec["r"]) if "r" in spec else box_points(spec["w"], spec["h"])
-    return Body(shape, **{key: value for key, value in spec.items() if key not in ("r", "w", "h")})
+def crate(w, h, pos, mass, **more):
+    return described(w=w, h=h, pos=pos, mass=mass, **more)
 
 
 def separate_cases(module):
@@ -377,7 +293,7 @@ def separate_cases(module):
 @reference
 def _push(c):
     """The lesson's push-out, max(depth - slop, 0) · percent px, and the two bodies' inverse masses."""
-    return max(c["depth"] - c["slop"], 0.0) * c["percent"], {k: body(c[k]).inv_mass for k in ("a", "b")}
+    return max(c["depth"] - c["slop"], 0.0) * c["percent"], {k: body_of(c[k]).inv_mass for k in ("a", "b")}
 
 
 def _pushed(c):
@@ -424,7 +340,7 @@ def _split_evidence(c):
 SEPARATE = Acting(
     "push_out_split", "Step 4: separate() splits the push-out by inverse mass (a static body never moves).", 4,
     "separate", separate_cases, lambda separate, g: separate(g["a"], g["b"], g["normal"], g["depth"]), _pushed,
-    given=lambda c: {"a": body(c["a"]), "b": body(c["b"]), "normal": Vector2(c["normal"]), "depth": c["depth"]},
+    given=lambda c: {"a": body_of(c["a"]), "b": body_of(c["b"]), "normal": Vector2(c["normal"]), "depth": c["depth"]},
     outcome=lambda g, raw: {k: answer_point(g[k].pos) for k in ("a", "b")}, kept=("normal",),
     advice="scale a new vector, normal * share", label=lambda c: f"in '{c['case']}'", hint="split",
     same=fields(same_point, "ab"), bad=lambda got: any("bad" in got[k] for k in "ab" if isinstance(got[k], dict)),
@@ -474,11 +390,10 @@ INERTIA = Step(
 
 def contact_cases(module):
     """(name, center, radius, unit normal out of the ball, depth px), and one contact drawn for this run."""
-    down_ramp = Vector2(-math.sin(math.radians(RAMP_ANGLE)), math.cos(math.radians(RAMP_ANGLE)))
     rng = run_rng(module, "contact_point")
     return [{"case": name, "center": list(center), "radius": radius, "normal": list(normal), "depth": depth}
             for name, center, radius, normal, depth in (
-        ("a ball resting on the ramp", Vector2(240, 350), 20.0, down_ramp, 0.4),
+        ("a ball resting on the ramp", Vector2(240, 350), 20.0, -UP, 0.4),
         ("a ball against a crate on its right", Vector2(575, 538), 20.0, Vector2(1, 0), 3.0),
         ("a small ball touching a wall above it, to the left", Vector2(-30, 12), 8.0, Vector2(-3, -4).normalize(), 0.05),
         ("a big ball sunk deep into the floor", Vector2(400, 520), 45.0, Vector2(0, 1), 5.0),
@@ -523,27 +438,23 @@ def resolve_cases(module):
     """{case, a, b: the bodies' descriptions, normal: unit A→B, point: the contact, resting: the handout's cutoff}:
     each a contact resolve() is called on. The ramp and the floor are A (the world lists static bodies first), so
     the normal points from them into the ball; a ball hitting a crate is A."""
-    theta = math.radians(RAMP_ANGLE)
-    slope = Vector2(math.cos(theta), math.sin(theta))
-    up = Vector2(math.sin(theta), -math.cos(theta))
-    centre = Vector2(230, 380) + up * (12 + 20)
-    ramp = crate(420, 24, (230, 380), 0, angle=theta)
+    centre, ramp = Vector2(230, 380) + UP * (12 + 20), crate(420, 24, (230, 380), 0, angle=math.radians(RAMP_ANGLE))
 
     def on_ramp(vel, omega, friction=0.6):
-        return ramp, ball(20, centre, vel=vel, omega=omega, friction=friction), up, centre - up * 20
+        return ramp, ball(20, centre, vel=vel, omega=omega, friction=friction), UP, centre - UP * 20
 
     return [{"case": name, "a": a, "b": b, "normal": list(normal), "point": list(point),
              "resting": float(getattr(module, "RESTING_SPEED", RESTING_SPEED))} for name, (a, b, normal, point) in (
-        ("a ball landing on the ramp, slipping a little", on_ramp(slope * 50 - up * 40, 2.3)),
-        ("a ball landing on the ramp, sliding fast (friction clamped)", on_ramp(slope * 300 - up * 35, 0.0)),
-        ("a ball spinning backwards as it lands on the ramp", on_ramp(slope * 20 - up * 60, -9.0)),
+        ("a ball landing on the ramp, slipping a little", on_ramp(SLOPE * 50 - UP * 40, 2.3)),
+        ("a ball landing on the ramp, sliding fast (friction clamped)", on_ramp(SLOPE * 300 - UP * 35, 0.0)),
+        ("a ball spinning backwards as it lands on the ramp", on_ramp(SLOPE * 20 - UP * 60, -9.0)),
         ("a ball landing on the floor, rolling too fast for its speed",
          (crate(900, 40, (450, 580), 0), ball(15, (300, 545), vel=(40, 90), omega=6.0), Vector2(0, -1),
           Vector2(300, 560))),
         ("a ball hitting a crate's left side while it spins",
          (ball(20, (575, 530), vel=(250, 30), omega=4.0, restitution=0.3),
           crate(30, 80, (610, 520), 2.4, vel=(0, 10), omega=0.2, restitution=0.3), Vector2(1, 0), Vector2(595, 530))),
-        ("a ball on a frictionless ramp (mu = 0)", on_ramp(slope * 120 - up * 45, 0.0, friction=0.0)))]
+        ("a ball on a frictionless ramp (mu = 0)", on_ramp(SLOPE * 120 - UP * 45, 0.0, friction=0.0)))]
 
 
 @reference
@@ -563,8 +474,7 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     vn = rel.dot(normal)
     if vn >= 0:
         return
-    ran, rbn = cross(ra, normal), cross(rb, normal)
-    k = a.inv_mass + b.inv_mass + ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia
+    k = effective_mass_inverse(a, b, ra, rb, normal)
     e = min(a.restitution, b.restitution) if vn < -resting else 0.0
     j = -(1 + e) * vn / k
     lesson_apply_impulse(a, b, normal * j, ra, rb)
@@ -572,18 +482,10 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     tangent = rel - normal * rel.dot(normal)
     if tangent.length_squared() <= 1e-12 or variant == "none":
         return
-    t = tangent.normalize()
-    mu = math.sqrt(a.friction * b.friction)
-    rat, rbt = cross(ra, t), cross(rb, t)
-    kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
-    if variant == "no_spin_kt":
-        kt = a.inv_mass + b.inv_mass
-    elif variant == "kt_is_k":
-        kt = k
-    elif variant == "kt_no_a_spin":
-        kt = a.inv_mass + b.inv_mass + rbt * rbt * b.inv_inertia
-    elif variant == "kt_no_b_spin":
-        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia
+    t, mu, zero = tangent.normalize(), math.sqrt(a.friction * b.friction), Vector2()
+    # kt with both spin terms, or without one or both (a zero lever arm drops its body's term), or k itself
+    arms = {"no_spin_kt": (zero, zero), "kt_no_a_spin": (zero, rb), "kt_no_b_spin": (ra, zero)}.get(variant, (ra, rb))
+    kt = k if variant == "kt_is_k" else effective_mass_inverse(a, b, *arms, t)
     jt = -(rel.length() if variant == "whole_rel" else rel.dot(t)) / kt
     if variant == "always_full":
         jt = math.copysign(mu * j, jt)
@@ -596,11 +498,10 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     if variant == "sign":
         jt = -jt
     if variant == "at_centre":
-        ra, rb = Vector2(), Vector2()
+        ra, rb = zero, zero
     if variant == "bodies_swapped":
         a, b = b, a
-    lesson_apply_impulse(a, b, t * jt, ra, rb)
-    if variant == "twice":
+    for _ in range(2 if variant == "twice" else 1):
         lesson_apply_impulse(a, b, t * jt, ra, rb)
 
 
@@ -612,79 +513,51 @@ def _outcome(a, b):
 @reference
 def _resolved(c, variant="right"):
     """Both bodies' velocity and spin after the handout's resolve with the `variant` friction, from the case."""
-    a, b = body(c["a"]), body(c["b"])
+    a, b = body_of(c["a"]), body_of(c["b"])
     reference_resolve(a, b, Vector2(c["normal"]), Vector2(c["point"]), variant, c["resting"])
     return _outcome(a, b)
 
 
-def _near(v, w):
-    try:
-        return abs(v[0] - w[0]) <= 1e-9 and abs(v[1] - w[1]) <= 1e-9
-    except (TypeError, IndexError, ValueError):
-        return False
-
-
-def _impulse_call(given, args, named):
-    """An apply_impulse call as its order of bodies and lever arms: "ab" / "ba" (A first / B first) and "ra,rb" /
-    "rb,ra" / "other". Swapped bodies with swapped lever arms give the velocities of a flipped jt: only the call
-    tells them apart."""
-    a, b, ra, rb = given["a"], given["b"], given["ra"], given["rb"]
-    first, second, r1, r2 = (dict(zip(("a", "b", "impulse", "ra", "rb"), args), **named).get(key)
-                             for key in ("a", "b", "ra", "rb"))
-    order = "ab" if first is a and second is b else "ba" if first is b and second is a else "other"
-    return order + " " + ("ra,rb" if _near(r1, ra) and _near(r2, rb) else "rb,ra" if _near(r1, rb) and _near(r2, ra)
-                          else "other")
-
-
-def _state_matches(got, want):
-    """Both bodies' velocity and spin agree."""
-    return all(close(got[k]["omega"], want[k]["omega"]) and all(close(g, w) for g, w in zip(got[k]["vel"],
-                                                                                          want[k]["vel"]))
-               for k in ("a", "b"))
+def _motion_same(got, want):
+    """One body's velocity and spin agree."""
+    return close(got["omega"], want["omega"]) and all(close(g, w) for g, w in zip(got["vel"], want["vel"]))
 
 
 def _friction_state(c):
     """The first body whose motion differs, as "B ends with v (x, y) px/s, ω w rad/s; the lesson's ..."."""
     got, want = c["got"], c["want"]
-    k = next((k for k in "ab" if not _state_matches({"a": got[k], "b": got[k]}, {"a": want[k], "b": want[k]})), "b")
+    k = first_differing(got, want, "ab", _motion_same) or "b"
     return (f"in '{c['case']}' (mu = {c['mu']:.2g}): {k.upper()} ends with v {vec_text(got[k]['vel'])} px/s, ω "
             f"{got[k]['omega']:.3f} rad/s; the lesson's {vec_text(want[k]['vel'])} px/s, {want[k]['omega']:.3f} rad/s.")
 
 
-def _friction_form(variant, name, hint, text=None):
-    """A known wrong friction: the handout's resolve with reference_resolve's `variant`."""
-    return Form(name, text, lambda c: _resolved(c, variant), hint)
-
-
-# step 7's known wrong forms (text None: causes.SHARED's sentence, where Tumbling Crates names the same one)
-SIGN = _friction_form("sign", "friction_sign", "friction_sign")
-FRICTION_FORMS = (
-    _friction_form("none", "friction_missing", "friction_missing"), SIGN,
-    _friction_form("unclamped", "friction_unclamped", "friction_clamp"),
-    _friction_form("always_full", "friction_always_full", "friction_clamp"),
-    _friction_form("bound_mu", "friction_bound_mu", "friction_clamp"),
-    _friction_form("clamp_loses_sign", "friction_clamp_loses_sign", "friction_clamp"),
-    _friction_form("no_spin_kt", "kt_no_spin", "friction_kt"), _friction_form("kt_is_k", "kt_is_k", "friction_kt"),
-    _friction_form("kt_no_a_spin", "kt_missing_a_spin", "friction_kt",
-                   "kt lacks A's spin term (ra × t)²/I_A: it needs both bodies' terms"),
-    _friction_form("kt_no_b_spin", "kt_missing_b_spin", "friction_kt",
-                   "kt lacks B's spin term (rb × t)²/I_B: it needs both bodies' terms"),
-    _friction_form("twice", "friction_twice", "friction_missing"),
-    _friction_form("whole_rel", "friction_whole_rel", "friction_slip"),
-    _friction_form("at_centre", "friction_at_centre", "friction_centre",
-                   "the friction impulse changes no spin (applied at the centres, or the velocities changed without "
-                   "the spins): it cannot turn the ball"),
-    _friction_form("bodies_swapped", "friction_bodies_swapped", "friction_centre",
-                   "friction is applied with the bodies swapped, apply_impulse(b, a, t * jt, ra, rb)"))
-# a flipped jt and apply_impulse(b, a, t * jt, rb, ra) give the same velocities: the recorded calls tell them apart
+# step 7's known wrong forms: (reference_resolve's variant, the mistake's id, the hint) and the lab's own sentences
+# (the others are causes.SHARED's, where Tumbling Crates names the same mistake)
+FRICTION_TEXTS = {
+    "kt_missing_a_spin": "kt lacks A's spin term (ra × t)²/I_A: it needs both bodies' terms",
+    "kt_missing_b_spin": "kt lacks B's spin term (rb × t)²/I_B: it needs both bodies' terms",
+    "friction_at_centre": "the friction impulse changes no spin (applied at the centres, or the velocities changed "
+                          "without the spins): it cannot turn the ball",
+    "friction_bodies_swapped": "friction is applied with the bodies swapped, apply_impulse(b, a, t * jt, ra, rb)"}
+FRICTION_FORMS = tuple(Form(name, FRICTION_TEXTS.get(name), lambda c, variant=variant: _resolved(c, variant), hint)
+                       for variant, name, hint in (
+    ("none", "friction_missing", "friction_missing"), ("sign", "friction_sign", "friction_sign"),
+    ("unclamped", "friction_unclamped", "friction_clamp"), ("always_full", "friction_always_full", "friction_clamp"),
+    ("bound_mu", "friction_bound_mu", "friction_clamp"),
+    ("clamp_loses_sign", "friction_clamp_loses_sign", "friction_clamp"), ("no_spin_kt", "kt_no_spin", "friction_kt"),
+    ("kt_is_k", "kt_is_k", "friction_kt"), ("kt_no_a_spin", "kt_missing_a_spin", "friction_kt"),
+    ("kt_no_b_spin", "kt_missing_b_spin", "friction_kt"), ("twice", "friction_twice", "friction_missing"),
+    ("whole_rel", "friction_whole_rel", "friction_slip"), ("at_centre", "friction_at_centre", "friction_centre"),
+    ("bodies_swapped", "friction_bodies_swapped", "friction_centre")))
+# a flipped jt and apply_impulse(b, a, t * jt, rb, ra) give the same velocities: the noted calls tell them apart
 ARMS_SWAPPED = Form("friction_bodies_arms_swapped", "friction is applied as apply_impulse(b, a, t * jt, rb, ra): "
                     "bodies and lever arms swapped, so it pushes along the slip", hint="friction_order")
 
 
 def _arms_swapped(cases, case):
-    """ARMS_SWAPPED when the sign form is named and every second (friction) apply_impulse call was "ba rb,ra"."""
+    """ARMS_SWAPPED when the flipped jt is named and every second (friction) apply_impulse call was (b, a, rb, ra)."""
     seconds = [c["calls"][1] for c in cases if len(c["calls"]) == 2]
-    if seconds and all(call == "ba rb,ra" for call in seconds) and FRICTION.named(cases, case) is SIGN:
+    if seconds and all(call == "b a rb ra" for call in seconds) and FRICTION.named(cases, case) is FRICTION_FORMS[1]:
         return ARMS_SWAPPED
     return None
 
@@ -693,17 +566,19 @@ FRICTION = Acting(
     "friction_rolls", "Step 7: resolve()'s friction impulse, jt = -rel·t / kt clamped to ±mu j, acts at the contact "
     "and turns the ball.", 7, "resolve", resolve_cases,
     lambda resolve, g: resolve(g["a"], g["b"], g["normal"], g["point"]), _resolved,
-    given=lambda c: dict({k: body(c[k]) for k in "ab"}, normal=Vector2(c["normal"]), point=Vector2(c["point"]),
+    given=lambda c: dict({k: body_of(c[k]) for k in "ab"}, normal=Vector2(c["normal"]), point=Vector2(c["point"]),
                          ra=Vector2(c["point"]) - Vector2(c["a"]["pos"]), rb=Vector2(c["point"]) - Vector2(c["b"]["pos"])),
     outcome=lambda g, raw: _outcome(g["a"], g["b"]), kept=("normal", "point"), label=lambda c: f"in '{c['case']}'",
     advice="make new vectors (normal.rotate(90), not t = normal then t.rotate_ip(90))",
-    changed_hint=arguments_hint(7, "resolve"), hooks={"apply_impulse": _impulse_call}, same=_state_matches,
+    changed_hint=arguments_hint(7, "resolve"), same=fields(_motion_same, "ab"),
+    hooks={"apply_impulse": lambda g, args, named: roles(g, ("a", "b", "impulse", "ra", "rb"), args, named,
+                                                          ("a", "b", "ra", "rb"))},
     hint="friction_missing", wrong=FRICTION_FORMS, diagnose=_arms_swapped, evidence=_friction_state,
     unnamed="the velocities and spins after resolve() differ from the lesson's",
     passed="friction matches the lesson in all {n} contacts",
-    extra={"mu": lambda c: math.sqrt(body(c["a"]).friction * body(c["b"]).friction),
-           "ra": lambda c: [p - q for p, q in zip(c["point"], c["a"]["pos"])],
-           "rb": lambda c: [p - q for p, q in zip(c["point"], c["b"]["pos"])]})
+    extra={"mu": lambda c: math.sqrt(body_of(c["a"]).friction * body_of(c["b"]).friction),
+           "ra": lambda c: list(Vector2(c["point"]) - Vector2(c["a"]["pos"])),
+           "rb": lambda c: list(Vector2(c["point"]) - Vector2(c["b"]["pos"]))})
 
 
 # the spliced functions the probes use: (function, the lab's solution's steps put in it)
