@@ -8,12 +8,8 @@ Order of checks (stable), one per lesson step where a step is the student's:
   knocks_crate_over, pushed_out_of_crate.
 Checks are worth 1 point, the four criteria 2 points each.
 
-The function checks compare the student's functions with the lesson's
-formulas on the configurations of checker/labs/ball_on_ramp/probes.py and name the first
-configuration that differs (and the mistake, when it is a known one). The
-scenes (checker/labs/ball_on_ramp/scenes.py) run only when every function check passes,
-so a mistake is reported once, under its own step. handout_unchanged and
-runtime_lines are the bodies every lab shares (checker/judging/common.py).
+The function steps are declared in probes.py; the scenes (scenes.py) run only when every function check
+passes, so a mistake is reported once, under its own step.
 
 Every bound of the criteria comes from the issue (rolling within 2 % and 3 %,
 sliding within 1 %, sinking at most 1 px) or was set from what
@@ -111,8 +107,7 @@ SCENE_SECONDS = {"knock": 0.8, "ramp": 0.3, "inside": 0.3}
 
 # ---------------------------------------------------------------- loading, the handout and the steps (probes.py)
 
-lab_checks.register_common(CHECKS, HINTS, ("closest_on_segment", "circle_polygon", "separate", "disc_inertia",
-                                            "contact_point", "resolve", "main"))
+lab_checks.register_common(CHECKS, HINTS, probes.REQUIRED)
 for step in (probes.CLOSEST, probes.INSIDE, probes.SEPARATE, probes.INERTIA, probes.CONTACT, probes.FRICTION):
     step.register(CHECKS, HINTS)
 

@@ -46,9 +46,7 @@ UP = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANG
 SLOPE = Vector2(math.cos(math.radians(RAMP_ANGLE)), math.sin(math.radians(RAMP_ANGLE)))   # down the ramp
 
 
-def _ramp():
-    return box(420, 24, (230, 380), RAMP_ANGLE)
-
+RAMP = box(420, 24, (230, 380), RAMP_ANGLE)   # its corners
 
 # ---------------------------------------------------------------- step 2: closest_on_segment
 
@@ -126,6 +124,11 @@ def _circles(cases):
             for name, center, radius, points in cases]
 
 
+def _lesson_hit(c):
+    """The lesson's circle_polygon() answer for a case, as plain data."""
+    return _plain(reference_circle_polygon(Vector2(c["center"]), c["radius"], [Vector2(p) for p in c["points"]]))
+
+
 def _where(c):
     return f"for {c['case']} (p = {vec_text(c['p'])}, edge {vec_text(c['a'])} to {vec_text(c['b'])})"
 
@@ -133,7 +136,7 @@ def _where(c):
 CLOSEST_OUTSIDE = Acting(
     "closest_point", "", 2, "circle_polygon", lambda module: _circles(outside_cases()),
     lambda circle_polygon, g: circle_polygon(g["center"], g["radius"], g["points"]),
-    lambda c: _plain(reference_circle_polygon(Vector2(c["center"]), c["radius"], [Vector2(p) for p in c["points"]])),
+    _lesson_hit,
     given=lambda c: {"center": Vector2(c["center"]), "radius": c["radius"], "points": [Vector2(p) for p in c["points"]]},
     function_of=lambda module, lab_path: with_reference_steps(module, lab_path, "circle_polygon", (3,)) or
     module.circle_polygon, probe_name="circle_outside", answer=sat_answer, same=lambda got, want: hit_matches(got, want),
@@ -167,24 +170,23 @@ CLOSEST = Acting(
 
 def outside_cases():
     """(name, center, radius, polygon points): circles outside, touching or apart from a polygon."""
-    ramp, crate = _ramp(), box(60, 40, (600, 540))
+    crate = box(60, 40, (600, 540))
     return [
-        ("a ball sunk 3 px into the ramp's top face", Vector2(230, 380) + UP * (12 + 17), 20, ramp),
-        ("a ball overlapping the ramp's lower end corner", Vector2(230, 380) + SLOPE * 222 + UP * 14, 20, ramp),
+        ("a ball sunk 3 px into the ramp's top face", Vector2(230, 380) + UP * (12 + 17), 20, RAMP),
+        ("a ball overlapping the ramp's lower end corner", Vector2(230, 380) + SLOPE * 222 + UP * 14, 20, RAMP),
         ("a ball overlapping a crate's top-right corner", Vector2(643, 508), 20, crate),
         ("a ball beside a crate's left side", Vector2(556, 545), 16, crate),
         ("a ball near a pentagon's corner", Vector2(40, 0), 14, ngon(5, 30, (0, 0), 0)),
         ("a ball just apart from a crate's corner", Vector2(645, 505), 20, crate),
         ("a ball far from a turned crate", Vector2(0, 0), 20, box(50, 30, (200, 100), 30)),
-        ("a ball above the ramp, 10 px clear", Vector2(230, 380) + UP * (12 + 30), 20, ramp),
+        ("a ball above the ramp, 10 px clear", Vector2(230, 380) + UP * (12 + 30), 20, RAMP),
     ]
 
 
 def inside_cases():
     """(name, center, radius, polygon points): circles whose center is inside the polygon."""
-    ramp = _ramp()
     return [
-        ("a ball whose center is 5 px inside the ramp's top face", Vector2(230, 380) + UP * 7, 20, ramp),
+        ("a ball whose center is 5 px inside the ramp's top face", Vector2(230, 380) + UP * 7, 20, RAMP),
         ("a ball whose center is inside a crate, near its left side", Vector2(575, 538), 20, box(80, 60, (600, 530))),
         ("a ball whose center is inside a turned crate, near its top", Vector2(4, -10), 12, box(70, 40, (0, 0), 15)),
         ("a ball whose center is inside a triangle", Vector2(3, 8), 10, ngon(3, 40, (0, 0), 12)),
@@ -215,15 +217,6 @@ def hit_difference(got, want):
     return f"{show_hit(got)}; expected {show_hit(want)}"
 
 
-@reference
-def _nearest(c):
-    """The direction (unit) from the case's center to the nearest point of its polygon's outline, and its distance."""
-    center, points = Vector2(c["center"]), [Vector2(p) for p in c["points"]]
-    closest = min((reference_closest(center, p, points[(i + 1) % len(points)]) for i, p in enumerate(points)),
-                  key=center.distance_squared_to)
-    return (closest - center).normalize(), center.distance_to(closest)
-
-
 def _inside_mistake(cases, case):
     """The inside case's mistake, read from this case: which of the normal and the depth are the outside case's."""
     got, want = case["got"], case["want"]
@@ -248,10 +241,11 @@ def _inside_mistake(cases, case):
 INSIDE = Acting(
     "inside_case", "Step 3: circle_polygon() pushes a ball whose center is inside the polygon back out the nearest "
     "side.", 3, "circle_polygon", lambda module: _circles(inside_cases()),
-    CLOSEST_OUTSIDE.call, CLOSEST_OUTSIDE.lesson, given=CLOSEST_OUTSIDE.given, probe_name="circle_inside",
+    CLOSEST_OUTSIDE.call, _lesson_hit, given=CLOSEST_OUTSIDE.given, probe_name="circle_inside",
     stand_ins=lambda module: {"closest_on_segment": lesson_closest}, answer=sat_answer, same=hit_matches,
     hint="inside", diagnose=_inside_mistake, passed="the inside case matches the lesson in all {n} circles",
-    extra={"toward": lambda c: list(_nearest(c)[0]), "dist": lambda c: _nearest(c)[1]},
+    # a center inside: the lesson's normal points away from the nearest edge, its depth is radius + dist
+    extra={"toward": lambda c: [-x for x in _lesson_hit(c)["normal"]], "dist": lambda c: _lesson_hit(c)["depth"] - c["radius"]},
     unnamed="circle_polygon() does not push a center inside out of the nearest side",
     evidence=lambda c: f"for {c['case']} (center {vec_text(c['center'])}, {c['dist']:.2f} px in from the edge): "
                        f"{hit_difference(c['got'], c['want'])}.")
@@ -459,15 +453,9 @@ def resolve_cases(module):
 
 @reference
 def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEED):
-    """The handout's resolve() with the lesson's friction ("right") or a plausible mistake in step 7.
-
-    Variants: "none" no friction; "sign" the clamped impulse pushed along the slip; "unclamped"
-    no Coulomb clamp; "no_spin_kt" kt without the spin terms; "kt_is_k" the normal's k used as kt;
-    "at_centre" the friction impulse applied at the centres (ra = rb = 0); "always_full" friction
-    always mu j, against the slip; "bodies_swapped" apply_impulse(b, a, t jt, ra, rb); "twice" the friction
-    impulse applied twice; "bound_mu" clamped to ±mu; "whole_rel" -|rel| / kt (the whole relative speed, not
-    the slip rel·t); "kt_no_a_spin" / "kt_no_b_spin" kt without A's / B's spin term; "clamp_loses_sign"
-    `if abs(jt) > mu * j: jt = mu * j`.
+    """The handout's resolve() with the lesson's friction ("right") or one plausible mistake in step 7: each
+    variant of FRICTION_FORMS changes one thing (its mistake id says which); "clamp_loses_sign" is
+    `if abs(jt) > mu * j: jt = mu * j`, "whole_rel" -|rel| / kt.
     """
     ra, rb = point - a.pos, point - b.pos
     rel = relative_velocity(a, b, ra, rb)
