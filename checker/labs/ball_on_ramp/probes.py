@@ -209,7 +209,10 @@ def show_hit(hit):
 
 
 def hit_difference(got, want):
-    """"<yours>; expected <the lesson's>", of the normal alone or the depth alone when only it differs."""
+    """"<yours>; expected <the lesson's>", of the normal alone or the depth alone when only it differs; a malformed
+    answer alone."""
+    if got and "bad" in got:
+        return got["bad"]
     if got and want and "bad" not in got and close(got["depth"], want["depth"]):
         return f"normal {vec_text(got['normal'])}; expected {vec_text(want['normal'])}"
     if got and want and "bad" not in got and same_point(got["normal"], want["normal"]):
