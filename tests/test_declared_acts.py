@@ -19,7 +19,8 @@ from checker.judging import declared_acts
 from checker.judging.checks import Fail, Hint, Passed, Registry
 from checker.judging.common import answer_point, same_point
 from checker.judging.declared import Form
-from checker.judging.declared_acts import Acting, body_of, described, fields, first_differing, roles
+from checker.judging.declared_acts import (Acting, body_of, described, fields, first_differing, motion_difference,
+                                           motions, roles, rows, same_motion)
 
 HINTS = {"move": Hint(4, "moving apart", "A back, B forward."), "crash": Hint(1, "run the file", "Run it."),
          "arguments": Hint(4, "the offset", "Leave it alone.")}
@@ -90,8 +91,8 @@ def test_a_vector_changed_in_place_fails_first_with_argument_changed():
         graded(step(), make)
     fail = caught.value
     assert fail.mistake.id == "argument_changed" and fail.hint == HINTS["arguments"]
-    assert fail.rationale == ("move() changed its argument offset in place: make a new vector.\n"
-                              "for two balls, offset went from (1.00, 2.00) to (2.00, 4.00); the caller goes on using it.")
+    assert fail.rationale == ("move() changed its argument offset in place: make a new vector.\nfor two balls, "
+                              "offset went from (1.00, 2.00) to (2.00, 4.00); the caller goes on using it.")
 
 
 def test_the_wrong_forms_are_named_from_the_answers_read_after_the_call():
@@ -158,3 +159,18 @@ def test_answer_point_words_what_is_not_a_finite_point():
     assert answer_point(0.5) == {"bad": "the number 0.5, not a point", "number": 0.5}
     assert answer_point(Vector2(math.inf, 0))["bad"].startswith("a point that is not finite")
     assert "bad" in answer_point("(1, 2)") and "number" not in answer_point(10 ** 400)
+
+
+def test_motions_are_compared_body_by_body_and_the_first_difference_worded():
+    a, b = body_of(described(r=5, pos=(0, 0), mass=1.0, vel=(1, 2), omega=0.5)), body_of(described(r=5, pos=(9, 0)))
+    got = motions(a=a, b=b)
+    assert got == {"a": {"vel": [1.0, 2.0], "omega": 0.5}, "b": {"vel": [0.0, 0.0], "omega": 0.0}}
+    want = {"a": got["a"], "b": {"vel": [0.0, 1.0], "omega": 0.0}}
+    assert same_motion(got["a"], want["a"]) and not fields(same_motion, "ab")(got, want)
+    assert motion_difference(got, want, "ab") == ("B ends with v (0.00, 0.00) px/s, ω 0.000 rad/s; the lesson's "
+                                                  "(0.00, 1.00) px/s, 0.000 rad/s")
+
+
+def test_rows_make_plain_cases_of_a_table():
+    assert rows(("case", "p", "points", "r"), [("one", Vector2(1, 2), [Vector2(3, 4)], 5)]) == [
+        {"case": "one", "p": [1.0, 2.0], "points": [[3.0, 4.0]], "r": 5}]

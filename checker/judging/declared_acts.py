@@ -4,8 +4,9 @@ Acting is a declared.Step (the same cases, wrong forms, naming and words) for a 
 must leave its arguments alone: each call gets fresh arguments built from the case's plain inputs (bodies as
 cases), its answer may be read from them after the call, a vector it changed in place fails the step (mistake
 argument_changed), calls it makes to a hooked function are noted, the probed function may be a spliced one, and
-more Steps may be judged under the same check. fields() compares dict answers field by field, body_of() builds
-a case's body from its plain description, roles() tells which given objects a hooked call was passed.
+more Steps may be judged under the same check. rows() makes cases of a table, fields() compares dict answers field by field, body_of() builds
+a case's body from its plain description, motions() reads bodies' motion back, roles() tells which given objects
+a hooked call was passed.
 """
 from dataclasses import dataclass, field
 
@@ -16,6 +17,7 @@ from lesson11.physics2d import Body, Circle, box_points
 from . import lab_checks
 from .causes import mistake
 from .checks import Fail, Hint, Passed
+from .common import close
 from .declared import Step, lesson_answers
 from .tape import judging
 
@@ -30,6 +32,15 @@ def first_differing(got, want, keys, same):
     return next((k for k in keys if not (isinstance(got, dict) and k in got and same(got[k], want[k]))), None)
 
 
+def rows(keys, table):
+    """A step's cases as plain dicts from a table of tuples, {key: value} in `keys`' order: Vector2s (also in
+    lists) become lists, as the tape and the messages want them."""
+    def plain(value):
+        return list(value) if isinstance(value, Vector2) else [plain(v) for v in value] if isinstance(value, list) \
+            else value
+    return [{key: plain(value) for key, value in zip(keys, row)} for row in table]
+
+
 def described(**spec):
     """A body's plain description for a case (its vectors pos and vel as lists): the keys of body_of()."""
     return {key: list(value) if key in ("pos", "vel") else value for key, value in spec.items()}
@@ -40,6 +51,26 @@ def body_of(spec):
     "points"; every other key is Body's own (pos, mass, angle, vel, omega, restitution, friction)."""
     shape = Circle(spec["r"]) if "r" in spec else box_points(spec["w"], spec["h"]) if "w" in spec else spec["points"]
     return Body(shape, **{key: value for key, value in spec.items() if key not in ("r", "w", "h", "points")})
+
+
+def motions(**bodies):
+    """Each body's motion as plain data, {name: {"vel": [x, y], "omega": w}} (px/s, rad/s): an answer read from
+    the bodies a step changed."""
+    return {name: {"vel": [body.vel.x, body.vel.y], "omega": body.omega} for name, body in bodies.items()}
+
+
+def same_motion(got, want):
+    """One body's motion (motions()) agrees: its velocity and spin, each number by common.close."""
+    return close(got["omega"], want["omega"]) and all(close(g, w) for g, w in zip(got["vel"], want["vel"]))
+
+
+def motion_difference(got, want, keys):
+    """The first of `keys` whose motion differs (else the last), as "B ends with v (x, y) px/s, ω w rad/s; the
+    lesson's (x, y) px/s, w rad/s"."""
+    key = first_differing(got, want, keys, same_motion) or keys[-1]
+    mine, lesson = got[key], want[key]
+    return (f"{key.upper()} ends with v {lab_checks.vec_text(mine['vel'])} px/s, ω {mine['omega']:.3f} rad/s; the "
+            f"lesson's {lab_checks.vec_text(lesson['vel'])} px/s, {lesson['omega']:.3f} rad/s")
 
 
 def roles(given, params, args, named, which=None):

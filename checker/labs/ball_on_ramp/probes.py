@@ -24,7 +24,8 @@ from lesson11.physics2d import closest_on_segment as lesson_closest, effective_m
 from checker.judging.causes import arguments_hint
 from checker.judging.common import answer_number, answer_point, close, same_point
 from checker.judging.declared import Form, Step
-from checker.judging.declared_acts import Acting, body_of, described, fields, first_differing, roles
+from checker.judging.declared_acts import (Acting, body_of, described, fields, first_differing, motion_difference,
+                                           motions, roles, rows, same_motion)
 from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import _plain, box, ngon, reference, sat_answer, with_reference_steps
 from checker.judging.tape import run_rng
@@ -47,6 +48,7 @@ SLOPE = Vector2(math.cos(math.radians(RAMP_ANGLE)), math.sin(math.radians(RAMP_A
 
 
 RAMP = box(420, 24, (230, 380), RAMP_ANGLE)   # its corners
+CIRCLE = ("case", "center", "radius", "points")   # circle_polygon()'s cases
 
 # ---------------------------------------------------------------- step 2: closest_on_segment
 
@@ -118,12 +120,6 @@ def _closest_returned(cases, case):
     return Form(None, f"closest_on_segment() returned {what}{placeholder}")
 
 
-def _circles(cases):
-    """circle_polygon()'s cases as plain data."""
-    return [{"case": name, "center": list(center), "radius": radius, "points": [list(p) for p in points]}
-            for name, center, radius, points in cases]
-
-
 def _lesson_hit(c):
     """The lesson's circle_polygon() answer for a case, as plain data."""
     return _plain(reference_circle_polygon(Vector2(c["center"]), c["radius"], [Vector2(p) for p in c["points"]]))
@@ -134,21 +130,22 @@ def _where(c):
 
 
 CLOSEST_OUTSIDE = Acting(
-    "closest_point", "", 2, "circle_polygon", lambda module: _circles(outside_cases()),
+    "closest_point", "", 2, "circle_polygon", lambda module: rows(CIRCLE, outside_cases()),
     lambda circle_polygon, g: circle_polygon(g["center"], g["radius"], g["points"]),
     _lesson_hit,
-    given=lambda c: {"center": Vector2(c["center"]), "radius": c["radius"], "points": [Vector2(p) for p in c["points"]]},
+    given=lambda c: {"center": Vector2(c["center"]), "radius": c["radius"],
+                     "points": [Vector2(p) for p in c["points"]]},
     function_of=lambda module, lab_path: with_reference_steps(module, lab_path, "circle_polygon", (3,)) or
-    module.circle_polygon, probe_name="circle_outside", answer=sat_answer, same=lambda got, want: hit_matches(got, want),
+    module.circle_polygon, probe_name="circle_outside", answer=sat_answer,
+    same=lambda got, want: hit_matches(got, want),
     hint="closest", unnamed="circle_polygon() with your closest_on_segment() misses a ball outside the polygon",
     evidence=lambda c: f"for {c['case']} (center {vec_text(c['center'])}, radius {c['radius']:g}): "
                        f"{hit_difference(c['got'], c['want'])}.")
 
 CLOSEST = Acting(
     "closest_point", "Step 2: closest_on_segment() gives the point of the edge nearest to p (t clamped to [0, 1]).",
-    2, "closest_on_segment", lambda module: [
-        {"case": name, "p": list(p), "a": list(a), "b": list(b)}
-        for name, p, a, b in segment_cases() + drawn_segment_cases(run_rng(module, "closest_on_segment"))],
+    2, "closest_on_segment", lambda module: rows(
+        ("case", "p", "a", "b"), segment_cases() + drawn_segment_cases(run_rng(module, "closest_on_segment"))),
     lambda closest_on_segment, g: closest_on_segment(g["p"], g["a"], g["b"]),
     lambda c: _on_edge(c, _along(c) / _ab2(c)), given=lambda c: {k: Vector2(c[k]) for k in ("p", "a", "b")},
     kept=("p", "a", "b"), advice="return a new point, a + ab t", answer=answer_point, same=same_point,
@@ -158,7 +155,8 @@ CLOSEST = Acting(
     f"{_where(c)}, yours is {vec_text(c['got'])}; expected {vec_text(c['want'])}.",
     wrong=(_closest_form("line", "your point lies on the edge's line beyond the edge: t is not clamped to [0, 1]",
                          lambda c, ab: _along(c) / ab.dot(ab), "clamp", clamp=False),
-           _closest_form("unsquared", "t is divided by |ab|, not by ab·ab = |ab|²", lambda c, ab: _along(c) / ab.length()),
+           _closest_form("unsquared", "t is divided by |ab|, not by ab·ab = |ab|²",
+                         lambda c, ab: _along(c) / ab.length()),
            _closest_form("undivided", "t = (p - a)·ab is not divided by ab·ab = |ab|²", lambda c, ab: _along(c)),
            _closest_form("from_b", "t is measured from b, (p - b)·ab; the lesson measures from a, (p - a)·ab",
                          lambda c, ab: _along(c, "b") / ab.dot(ab))),
@@ -227,7 +225,8 @@ def _inside_mistake(cases, case):
         return Form(None, "circle_polygon() says apart for a center inside the polygon, the deepest overlap of all")
     if "bad" in got:
         return Form(None, "circle_polygon() must return (normal, depth) or None")
-    flipped, outside_depth = same_point(got["normal"], case["toward"]), close(got["depth"], case["radius"] - case["dist"])
+    flipped = same_point(got["normal"], case["toward"])
+    outside_depth = close(got["depth"], case["radius"] - case["dist"])
     if flipped and close(got["depth"], want["depth"]):
         return Form("inside_not_flipped", "your normal points from the center towards the nearest edge: flip it, or "
                                           "the push drives the ball through")
@@ -243,12 +242,13 @@ def _inside_mistake(cases, case):
 
 INSIDE = Acting(
     "inside_case", "Step 3: circle_polygon() pushes a ball whose center is inside the polygon back out the nearest "
-    "side.", 3, "circle_polygon", lambda module: _circles(inside_cases()),
+    "side.", 3, "circle_polygon", lambda module: rows(CIRCLE, inside_cases()),
     CLOSEST_OUTSIDE.call, _lesson_hit, given=CLOSEST_OUTSIDE.given, probe_name="circle_inside",
     stand_ins=lambda module: {"closest_on_segment": lesson_closest}, answer=sat_answer, same=hit_matches,
     hint="inside", diagnose=_inside_mistake, passed="the inside case matches the lesson in all {n} circles",
     # a center inside: the lesson's normal points away from the nearest edge, its depth is radius + dist
-    extra={"toward": lambda c: [-x for x in _lesson_hit(c)["normal"]], "dist": lambda c: _lesson_hit(c)["depth"] - c["radius"]},
+    extra={"toward": lambda c: [-x for x in _lesson_hit(c)["normal"]],
+           "dist": lambda c: _lesson_hit(c)["depth"] - c["radius"]},
     unnamed="circle_polygon() does not push a center inside out of the nearest side",
     evidence=lambda c: f"for {c['case']} (center {vec_text(c['center'])}, {c['dist']:.2f} px in from the edge): "
                        f"{hit_difference(c['got'], c['want'])}.")
@@ -270,17 +270,20 @@ def separate_cases(module):
     lab's own push-out constants (a changed one is the handout's business)."""
     normal = Vector2(1, -2).normalize()
     rng = run_rng(module, "separate")   # the drawn pair: a crate (mass far from 1) and a ball
-    crate_pos, push_dir = Vector2(rng.uniform(200, 700), rng.uniform(200, 500)), Vector2(1, 0).rotate(rng.uniform(0, 360))
+    crate_pos = Vector2(rng.uniform(200, 700), rng.uniform(200, 500))
+    push_dir = Vector2(1, 0).rotate(rng.uniform(0, 360))
     drawn = crate(rng.uniform(30, 90), rng.uniform(30, 90), crate_pos, rng.uniform(2.5, 9.0))
-    return [{"case": name, "a": a, "b": b, "normal": list(n), "depth": depth, "slop": float(getattr(module, "SLOP", SLOP)),
-             "percent": float(getattr(module, "PERCENT", PERCENT))} for name, a, b, n, depth in (
+    slop, percent = float(getattr(module, "SLOP", SLOP)), float(getattr(module, "PERCENT", PERCENT))
+    return [{"case": name, "a": a, "b": b, "normal": list(n), "depth": depth, "slop": slop, "percent": percent}
+            for name, a, b, n, depth in (
         # inverse masses 0.21 and 2.2: their total (2.4) is far from 1, so a missing "/ total" shows plainly
         ("a heavy crate (A) and a light ball (B)", crate(80, 60, (600, 530), 4.8), ball(12, (583, 538)),
          Vector2(-1, 0), 25.0),
         ("a static ramp (A) and a ball (B)", crate(420, 24, (230, 380), 0, angle=math.radians(22)),
          ball(20, (240, 350)), normal, 3.0),
         ("a ball (A) and a static floor (B)", ball(15, (300, 546)), crate(900, 40, (450, 580), 0), Vector2(0, 1), 1.7),
-        ("a light ball (A) and a heavy ball (B)", ball(10, (0, 0)), ball(30, (38, 5)), Vector2(38, 5).normalize(), 1.66),
+        ("a light ball (A) and a heavy ball (B)", ball(10, (0, 0)), ball(30, (38, 5)), Vector2(38, 5).normalize(),
+         1.66),
         ("a ball (A) and a crate (B) overlapping less than the slop", ball(20, (0, 0)), crate(40, 40, (39.7, 0), 1.6),
          Vector2(1, 0), 0.3),
         ("a crate (A) and a ball (B) drawn for this run", drawn, ball(rng.uniform(6, 30), crate_pos + push_dir * 40),
@@ -388,14 +391,13 @@ INERTIA = Step(
 def contact_cases(module):
     """(name, center, radius, unit normal out of the ball, depth px), and one contact drawn for this run."""
     rng = run_rng(module, "contact_point")
-    return [{"case": name, "center": list(center), "radius": radius, "normal": list(normal), "depth": depth}
-            for name, center, radius, normal, depth in (
+    return rows(("case", "center", "radius", "normal", "depth"), (
         ("a ball resting on the ramp", Vector2(240, 350), 20.0, -UP, 0.4),
         ("a ball against a crate on its right", Vector2(575, 538), 20.0, Vector2(1, 0), 3.0),
         ("a small ball touching a wall above it, to the left", Vector2(-30, 12), 8.0, Vector2(-3, -4).normalize(), 0.05),
         ("a big ball sunk deep into the floor", Vector2(400, 520), 45.0, Vector2(0, 1), 5.0),
         ("a ball touching something drawn for this run", Vector2(rng.uniform(50, 800), rng.uniform(50, 550)),
-         rng.uniform(6, 45), Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(0.5, 5.0)))]
+         rng.uniform(6, 45), Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(0.5, 5.0))))
 
 
 @reference
@@ -497,29 +499,12 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
 
 
 
-def _outcome(a, b):
-    return {"a": {"vel": [a.vel.x, a.vel.y], "omega": a.omega}, "b": {"vel": [b.vel.x, b.vel.y], "omega": b.omega}}
-
-
 @reference
 def _resolved(c, variant="right"):
     """Both bodies' velocity and spin after the handout's resolve with the `variant` friction, from the case."""
     a, b = body_of(c["a"]), body_of(c["b"])
     reference_resolve(a, b, Vector2(c["normal"]), Vector2(c["point"]), variant, c["resting"])
-    return _outcome(a, b)
-
-
-def _motion_same(got, want):
-    """One body's velocity and spin agree."""
-    return close(got["omega"], want["omega"]) and all(close(g, w) for g, w in zip(got["vel"], want["vel"]))
-
-
-def _friction_state(c):
-    """The first body whose motion differs, as "B ends with v (x, y) px/s, ω w rad/s; the lesson's ..."."""
-    got, want = c["got"], c["want"]
-    k = first_differing(got, want, "ab", _motion_same) or "b"
-    return (f"in '{c['case']}' (mu = {c['mu']:.2g}): {k.upper()} ends with v {vec_text(got[k]['vel'])} px/s, ω "
-            f"{got[k]['omega']:.3f} rad/s; the lesson's {vec_text(want[k]['vel'])} px/s, {want[k]['omega']:.3f} rad/s.")
+    return motions(a=a, b=b)
 
 
 # step 7's known wrong forms: (reference_resolve's variant, the mistake's id, the hint) and the lab's own sentences
@@ -558,13 +543,15 @@ FRICTION = Acting(
     "and turns the ball.", 7, "resolve", resolve_cases,
     lambda resolve, g: resolve(g["a"], g["b"], g["normal"], g["point"]), _resolved,
     given=lambda c: dict({k: body_of(c[k]) for k in "ab"}, normal=Vector2(c["normal"]), point=Vector2(c["point"]),
-                         ra=Vector2(c["point"]) - Vector2(c["a"]["pos"]), rb=Vector2(c["point"]) - Vector2(c["b"]["pos"])),
-    outcome=lambda g, raw: _outcome(g["a"], g["b"]), kept=("normal", "point"), label=lambda c: f"in '{c['case']}'",
+                         ra=Vector2(c["point"]) - Vector2(c["a"]["pos"]),
+                         rb=Vector2(c["point"]) - Vector2(c["b"]["pos"])),
+    outcome=lambda g, raw: motions(a=g["a"], b=g["b"]), kept=("normal", "point"), label=lambda c: f"in '{c['case']}'",
     advice="make new vectors (normal.rotate(90), not t = normal then t.rotate_ip(90))",
-    changed_hint=arguments_hint(7, "resolve"), same=fields(_motion_same, "ab"),
+    changed_hint=arguments_hint(7, "resolve"), same=fields(same_motion, "ab"),
     hooks={"apply_impulse": lambda g, args, named: roles(g, ("a", "b", "impulse", "ra", "rb"), args, named,
                                                           ("a", "b", "ra", "rb"))},
-    hint="friction_missing", wrong=FRICTION_FORMS, diagnose=_arms_swapped, evidence=_friction_state,
+    hint="friction_missing", wrong=FRICTION_FORMS, diagnose=_arms_swapped,
+    evidence=lambda c: f"in '{c['case']}' (mu = {c['mu']:.2g}): {motion_difference(c['got'], c['want'], 'ab')}.",
     unnamed="the velocities and spins after resolve() differ from the lesson's",
     passed="friction matches the lesson in all {n} contacts",
     extra={"mu": lambda c: math.sqrt(body_of(c["a"]).friction * body_of(c["b"]).friction),
