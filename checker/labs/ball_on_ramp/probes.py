@@ -45,10 +45,9 @@ reference_circle_polygon = reference(lesson_circle_polygon)   # None, or (normal
 
 UP = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))   # the ramp's top face normal
 SLOPE = Vector2(math.cos(math.radians(RAMP_ANGLE)), math.sin(math.radians(RAMP_ANGLE)))   # down the ramp
-
-
 RAMP = box(420, 24, (230, 380), RAMP_ANGLE)   # its corners
 CIRCLE = ("case", "center", "radius", "points")   # circle_polygon()'s cases
+
 
 # ---------------------------------------------------------------- step 2: closest_on_segment
 
