@@ -174,3 +174,16 @@ def test_motions_are_compared_body_by_body_and_the_first_difference_worded():
 def test_rows_make_plain_cases_of_a_table():
     assert rows(("case", "p", "points", "r"), [("one", Vector2(1, 2), [Vector2(3, 4)], 5)]) == [
         {"case": "one", "p": [1.0, 2.0], "points": [[3.0, 4.0]], "r": 5}]
+
+
+def test_a_collision_tests_answer_is_compared_and_worded():
+    from checker.judging.declared_hits import hit_difference, hit_text, same_hit
+    want = {"normal": [0.0, 1.0], "depth": 2.0}
+    assert same_hit({"normal": [0.0, 1.0], "depth": 2.0}, want) and not same_hit(None, want)
+    assert same_hit(None, None) and same_hit({"normal": [1.0, 0.0], "depth": 1e-7}, None)   # exactly touching
+    assert not same_hit({"bad": "(depth, normal)"}, want) and not same_hit({"normal": [1.0, 0.0], "depth": 1.0}, None)
+    assert hit_text(None) == "None (apart)" and hit_text(want) == "normal (0.00, 1.00), depth 2.000 px"
+    assert hit_difference({"normal": [0.0, -1.0], "depth": 2.0}, want) == "normal (0.00, -1.00); expected (0.00, 1.00)"
+    assert hit_difference({"normal": [0.0, 1.0], "depth": 1.0}, want) == "depth 1.000 px; expected 2.000 px"
+    assert hit_difference(None, want) == "None (apart); expected normal (0.00, 1.00), depth 2.000 px"
+    assert hit_difference({"bad": "(depth, normal)"}, want) == "(depth, normal)"

@@ -4,9 +4,9 @@ Acting is a declared.Step (the same cases, wrong forms, naming and words) for a 
 must leave its arguments alone: each call gets fresh arguments built from the case's plain inputs (bodies as
 cases), its answer may be read from them after the call, a vector it changed in place fails the step (mistake
 argument_changed), calls it makes to a hooked function are noted, the probed function may be a spliced one, and
-more Steps may be judged under the same check. rows() makes cases of a table, fields() compares dict answers field by field, body_of() builds
-a case's body from its plain description, motions() reads bodies' motion back, roles() tells which given objects
-a hooked call was passed.
+more Steps may be judged under the same check. Helpers: rows() makes cases of a table, body_of() a case's body
+from its plain description, motions() reads bodies' motion back, fields() compares dict answers field by field,
+roles() tells which given objects a hooked call was passed.
 """
 from dataclasses import dataclass, field
 
@@ -83,6 +83,7 @@ def roles(given, params, args, named, which=None):
 
 
 def _is(argument, value):
+    """`argument` is `value` itself, or a vector within 1e-9 of the Vector2 `value`."""
     if argument is value:
         return True
     try:
@@ -96,7 +97,7 @@ class stood_in:
 
     def __init__(self, module, functions):
         self.module, self.functions = module, functions
-        self.own = {name: getattr(module, name, None) for name in functions}
+        self.own = {name: getattr(module, name) for name in functions}
 
     def __enter__(self):
         for name, function in self.functions.items():
@@ -148,6 +149,7 @@ class Acting(Step):
             return [self.record(module, function, case) for case in self.cases(module)]
 
     def record(self, module, function, case):
+        """One case's record: the case, the student's answer, what changed in place and the noted calls."""
         given = self.given(case)
         before = {name: Vector2(given[name]) for name in self.kept}
         calls = []

@@ -26,6 +26,7 @@ from checker.judging.common import answer_number, answer_point, close, same_poin
 from checker.judging.declared import Form, Step
 from checker.judging.declared_acts import (Acting, body_of, described, fields, first_differing, motion_difference,
                                            motions, roles, rows, same_motion)
+from checker.judging.declared_hits import hit_difference, same_hit
 from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import _plain, box, ngon, reference, sat_answer, with_reference_steps
 from checker.judging.tape import run_rng
@@ -136,7 +137,7 @@ CLOSEST_OUTSIDE = Acting(
                      "points": [Vector2(p) for p in c["points"]]},
     function_of=lambda module, lab_path: with_reference_steps(module, lab_path, "circle_polygon", (3,)) or
     module.circle_polygon, probe_name="circle_outside", answer=sat_answer,
-    same=lambda got, want: hit_matches(got, want),
+    same=same_hit,
     hint="closest", unnamed="circle_polygon() with your closest_on_segment() misses a ball outside the polygon",
     evidence=lambda c: f"for {c['case']} (center {vec_text(c['center'])}, radius {c['radius']:g}): "
                        f"{hit_difference(c['got'], c['want'])}.")
@@ -191,32 +192,6 @@ def inside_cases():
     ]
 
 
-def hit_matches(got, want):
-    """A circle_polygon() answer is the lesson's: the same normal and depth, or apart (exactly touching may count)."""
-    if want is None:
-        return got is None or ("bad" not in got and got["depth"] <= 1e-6)
-    return got is not None and "bad" not in got and same_point(got["normal"], want["normal"]) and \
-        close(got["depth"], want["depth"])
-
-
-def show_hit(hit):
-    if hit is None:
-        return "None (apart)"
-    return hit["bad"] if "bad" in hit else f"normal {vec_text(hit['normal'])}, depth {hit['depth']:.3f} px"
-
-
-def hit_difference(got, want):
-    """"<yours>; expected <the lesson's>", of the normal alone or the depth alone when only it differs; a malformed
-    answer alone."""
-    if got and "bad" in got:
-        return got["bad"]
-    if got and want and "bad" not in got and close(got["depth"], want["depth"]):
-        return f"normal {vec_text(got['normal'])}; expected {vec_text(want['normal'])}"
-    if got and want and "bad" not in got and same_point(got["normal"], want["normal"]):
-        return f"depth {got['depth']:.3f} px; expected {want['depth']:.3f} px"
-    return f"{show_hit(got)}; expected {show_hit(want)}"
-
-
 def _inside_mistake(cases, case):
     """The inside case's mistake, read from this case: which of the normal and the depth are the outside case's."""
     got, want = case["got"], case["want"]
@@ -243,7 +218,7 @@ INSIDE = Acting(
     "inside_case", "Step 3: circle_polygon() pushes a ball whose center is inside the polygon back out the nearest "
     "side.", 3, "circle_polygon", lambda module: rows(CIRCLE, inside_cases()),
     CLOSEST_OUTSIDE.call, _lesson_hit, given=CLOSEST_OUTSIDE.given, probe_name="circle_inside",
-    stand_ins=lambda module: {"closest_on_segment": lesson_closest}, answer=sat_answer, same=hit_matches,
+    stand_ins=lambda module: {"closest_on_segment": lesson_closest}, answer=sat_answer, same=same_hit,
     hint="inside", diagnose=_inside_mistake, passed="the inside case matches the lesson in all {n} circles",
     # a center inside: the lesson's normal points away from the nearest edge, its depth is radius + dist
     extra={"toward": lambda c: [-x for x in _lesson_hit(c)["normal"]],

@@ -19,7 +19,8 @@ from pygame import Vector2
 from lesson11 import records
 from lesson11.physics2d import relative_velocity
 
-from checker.judging.declared_acts import body_of
+from checker.judging.declared_acts import body_of, fields, same_motion
+from checker.judging.declared_hits import same_hit
 from checker.replay.show_cases import ImpulseCase, PolygonCase
 from checker.replay.show_kit import (BACK, BLUE, GREY, LESSON, ORANGE, SIZE, STUDENT, TEXT, Case, arrow, close,
                                      cross, data, is_point, numbered, point_text, text_font, vec, view)
@@ -55,20 +56,6 @@ def _bad(got):
 
 def _same_point(got, want):
     return isinstance(got, list) and all(close(g, w) for g, w in zip(got, want))
-
-
-def _hit_matches(got, want):
-    """A circle_polygon() answer against the lesson's: exactly touching may count as apart."""
-    if want is None:
-        return got is None or (not _bad(got) and got["depth"] <= 1e-6)
-    return got is not None and not _bad(got) and _same_point(got["normal"], want["normal"]) and \
-        close(got["depth"], want["depth"])
-
-
-def _state_matches(got, want):
-    """Both bodies' velocity and spin after resolve() against the lesson's."""
-    return all(close(got[k]["omega"], want[k]["omega"])
-               and all(close(g, w) for g, w in zip(got[k]["vel"], want[k]["vel"])) for k in ("a", "b"))
 
 
 def failing(functions, probe, wrong):
@@ -263,11 +250,11 @@ def closest_cases(functions, seed):
     closest = failing(functions, "closest_on_segment", lambda c: not _same_point(c["got"], c["want"]))
     if closest:
         return numbered(ClosestCase, closest)
-    return numbered(CircleCase, failing(functions, "circle_outside", lambda c: not _hit_matches(c["got"], c["want"])))
+    return numbered(CircleCase, failing(functions, "circle_outside", lambda c: not same_hit(c["got"], c["want"])))
 
 
 def inside_cases(functions, seed):
-    return numbered(CircleCase, failing(functions, "circle_inside", lambda c: not _hit_matches(c["got"], c["want"])))
+    return numbered(CircleCase, failing(functions, "circle_inside", lambda c: not same_hit(c["got"], c["want"])))
 
 
 def separate_cases(functions, seed):
@@ -287,7 +274,7 @@ def contact_cases(functions, seed):
 def friction_cases(functions, seed):
     geometry = _resolve_geometry()
     wrong = failing(functions, "resolve", lambda c: c["case"] in geometry and
-                    not _state_matches(c["got"], c["want"]))
+                    not fields(same_motion, "ab")(c["got"], c["want"]))
     return [friction_case(c, k + 1, len(wrong), geometry[c["case"]]) for k, c in enumerate(wrong)]
 
 
