@@ -1,7 +1,10 @@
 """What the checks of every lab share: accounts of failed runs, numbers shown beside their bounds, and the kinds of
 the values a student's function returns (a number, a vector) told apart from what only looks like one."""
+import math
 import numbers
 import re
+
+from pygame import Vector2
 
 from lesson11.mistakes import VALUE_RULE, meaning, number_problem, value_text, vector_problem  # noqa: F401
 
@@ -182,3 +185,22 @@ def answer_number(value):
         return real(value)
     except (TypeError, ValueError):
         return {"bad": value_text(value)}
+
+
+def answer_point(value):
+    """A returned point as [x, y], or {"bad": what it is} when it is not a finite 2D point.
+
+    A bare number is no point (Vector2(0.3) would make it (0.3, 0.3)): {"bad": ..., "number": value}.
+    """
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        try:
+            return {"bad": f"the number {value_text(value)}, not a point", "number": real(value)}
+        except ValueError:   # an int too large for a float
+            return {"bad": f"the number {value_text(value)}, not a point"}
+    try:
+        point = Vector2(value)
+    except (TypeError, ValueError):
+        return {"bad": value_text(value)}
+    if not (math.isfinite(point.x) and math.isfinite(point.y)):
+        return {"bad": f"a point that is not finite: {value_text(value)}"}
+    return [point.x, point.y]

@@ -1,38 +1,34 @@
-"""Probes of a Ball on the Ramp file's own functions, run inside the checker's child process.
+"""Ball on the Ramp's function steps, declared as data (checker/judging/declared.py, declared_acts.py).
 
-Each probe calls one of the student's functions on configurations chosen so
-that together they exercise every term of the lesson's formula, and returns
-plain data: the student's answer beside the lesson's on the same inputs
-(checker/labs/ball_on_ramp/checks.py compares them and names the first that differs).
-The lesson's answers are added in the grader only (`judging`, checker/judging/probe_kit.py),
-from the inputs as they were before the student's function got them.
-
+Each step's cases exercise every term of the lesson's formula; the probes run in the checker's child and record
+only the student's answers; the lesson's answers and those of the known wrong forms are computed in the grader
+(`@reference`), from the inputs as they were before the student's function got them:
     closest_on_segment  (step 2) points beside an edge, beyond either end, slanted and reversed edges
-    circle_outside      (step 2) circle_polygon() on circles outside or touching a polygon (near a
-                        face, near a corner, apart), with the solution's step 3 spliced in
-    circle_inside       (step 3) circle_polygon() with the center inside (near each kind of edge),
-                        run with the lesson's closest_on_segment in place of the student's
+    circle_outside      (step 2) circle_polygon() on circles outside or touching a polygon, with the
+                        solution's step 3 spliced in
+    circle_inside       (step 3) the center inside, with the lesson's closest_on_segment in the student's place
     separate            (step 4) two dynamic bodies of different mass, a static A, a static B
     disc_inertia        (step 5) masses and radii far from 1
     contact_point       (step 6) balls touching along several normals, with small and large depths
-    resolve             (step 7) a ball slipping on the static ramp (clamped and not), spinning in
-                        place, hitting a crate, on a frictionless surface; resolve() runs with a
-                        recorder in place of apply_impulse, so each impulse and where it acts is seen
-
+    resolve             (step 7) a ball slipping on the ramp (clamped and not), spinning, hitting a crate, on a
+                        frictionless surface; each apply_impulse call's order of bodies and lever arms is noted
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
 import math
-import numbers
 
 from pygame import Vector2
 
-from lesson11.physics2d import Body, Circle, box_points, centre_of, cross, inside, relative_velocity
-from lesson11.physics2d import apply_impulse as lesson_apply_impulse
+from lesson11.physics2d import apply_impulse as lesson_apply_impulse, circle_polygon as lesson_circle_polygon
+from lesson11.physics2d import closest_on_segment as lesson_closest, effective_mass_inverse, relative_velocity
 
-from checker.judging.common import answer_number, close, real, same_point, value_text
+from checker.judging.causes import arguments_hint
+from checker.judging.common import answer_number, answer_point, close, same_point
 from checker.judging.declared import Form, Step
+from checker.judging.declared_acts import (Acting, body_of, described, fields, first_differing, motion_difference,
+                                           motions, roles, rows, same_motion)
+from checker.judging.declared_hits import hit_difference, same_hit
 from checker.judging.lab_checks import vec_text
-from checker.judging.probe_kit import box, changed_vectors, judging, ngon, reference, twin, with_reference_steps
+from checker.judging.probe_kit import _plain, box, ngon, reference, sat_answer, with_reference_steps
 from checker.judging.tape import run_rng
 
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
@@ -41,81 +37,17 @@ SLOP, PERCENT = 0.5, 0.4   # px, share: the handout's push-out constants
 RAMP_ANGLE = 22.0      # degrees
 
 
-def answer_point(value):
-    """A returned point as [x, y], or {"bad": what it is} when it is not a finite 2D point.
+# ---------------------------------------------------------------- the lesson's formulas and the ramp
 
-    A bare number is no point (Vector2(0.3) would make it (0.3, 0.3)): {"bad": ..., "number": value}.
-    """
-    if isinstance(value, numbers.Real) and not isinstance(value, bool):
-        try:
-            return {"bad": f"the number {_short(value)}, not a point", "number": real(value)}
-        except ValueError:   # an int too large for a float
-            return {"bad": f"the number {_short(value)}, not a point"}
-    try:
-        point = Vector2(value)
-    except (TypeError, ValueError):
-        return {"bad": _short(value)}
-    if not (math.isfinite(point.x) and math.isfinite(point.y)):
-        return {"bad": f"a point that is not finite: {_short(value)}"}
-    return [point.x, point.y]
-
-
-def answer_hit(hit):
-    """circle_polygon's answer as None, {"normal": [x, y], "depth": d} or {"bad": what is wrong}."""
-    if hit is None:
-        return None
-    try:
-        first, second = hit
-    except (TypeError, ValueError):
-        return {"bad": f"a {type(hit).__name__} ({_short(hit)})"}
-    if isinstance(first, (int, float)) and not isinstance(second, (int, float)):
-        return {"bad": "(depth, normal)"}
-    try:
-        normal, depth = Vector2(first), real(second)
-    except (TypeError, ValueError):
-        return {"bad": f"({_short(first)}, {_short(second)})"}
-    if not (math.isfinite(normal.x) and math.isfinite(normal.y) and math.isfinite(depth)):
-        return {"bad": f"a normal or depth that is not finite: ({_short(first)}, {depth!r})"}
-    return {"normal": [normal.x, normal.y], "depth": depth}
-
-
-_short = value_text   # repr cut to 60 characters; safe for a 5000-digit int
-
-
-# ---------------------------------------------------------------- the lesson's formulas
-
-def lesson_closest(p, a, b):
-    """The lesson's closest_on_segment: a + ab t, t = clamp((p - a)·ab / ab·ab, 0, 1).
-
-    Also put in the student's place under circle_polygon() (step 3 graded on its own), so it runs
-    in the child as a stand-in; as a reference answer it is reference_closest, grader only.
-    """
-    ab = b - a
-    t = max(0.0, min(1.0, (p - a).dot(ab) / ab.dot(ab)))
-    return a + ab * t
-
-
+# the lesson's closest_on_segment also stands in for the student's under circle_polygon() (step 3 graded on its own),
+# so it runs in the child; as a reference answer it is reference_closest, grader only
 reference_closest = reference(lesson_closest)
+reference_circle_polygon = reference(lesson_circle_polygon)   # None, or (normal into the polygon, depth px)
 
-
-@reference
-def reference_circle_polygon(center, radius, points):
-    """The lesson's circle_polygon: None, or (normal from the circle into the polygon, depth px)."""
-    closest = min((reference_closest(center, points[i], points[(i + 1) % len(points)]) for i in range(len(points))),
-                  key=center.distance_squared_to)
-    offset = closest - center
-    dist = offset.length()
-    if dist < 1e-9:
-        return (centre_of(points) - center).normalize(), radius
-    if inside(center, points):
-        return -offset / dist, radius + dist
-    if dist >= radius:
-        return None
-    return offset / dist, radius - dist
-
-
-def _plain(hit):
-    return None if hit is None else {"normal": [hit[0].x, hit[0].y], "depth": hit[1]}
+UP = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))   # the ramp's top face normal
+SLOPE = Vector2(math.cos(math.radians(RAMP_ANGLE)), math.sin(math.radians(RAMP_ANGLE)))   # down the ramp
+RAMP = box(420, 24, (230, 380), RAMP_ANGLE)   # its corners
+CIRCLE = ("case", "center", "radius", "points")   # circle_polygon()'s cases
 
 
 # ---------------------------------------------------------------- step 2: closest_on_segment
@@ -151,66 +83,108 @@ def drawn_segment_cases(rng, count=3):
     return cases
 
 
-def probe_closest(module, lab_path):
-    """The student's closest_on_segment(p, a, b) on each case beside the lesson's and the unclamped answer."""
-    cases = []
-    for name, p, a, b in segment_cases() + drawn_segment_cases(run_rng(module, "closest_on_segment")):
-        given = {"p": Vector2(p), "a": Vector2(a), "b": Vector2(b)}   # copies: a change shows, and stays here
-        got = module.closest_on_segment(given["p"], given["a"], given["b"])
-        changed = {key: list(value) for key, value in given.items() if value != {"p": p, "a": a, "b": b}[key]}
-        case = {"case": name, "p": list(p), "a": list(a), "b": list(b), "got": answer_point(got), "changed": changed}
-        if judging(module):
-            case.update(_closest_reference(p, a, b))
-        cases.append(case)
-    return cases
-
-
 @reference
-def _closest_reference(p, a, b):
-    """The lesson's closest point and, by name, the points of the known wrong formulas (CLOSEST_MISTAKES).
+def _along(case, start="a"):
+    """(p - start)·ab of the case's p and edge ab, measured from a (the lesson) or from b."""
+    a, b = Vector2(case["a"]), Vector2(case["b"])
+    return (Vector2(case["p"]) - Vector2(case[start])).dot(b - a)
 
-    Also the lesson's t, for a function that returns t instead of the point.
-    """
-    ab = b - a
 
-    def clamped(t):
-        return list(a + ab * max(0.0, min(1.0, t)))
-    along = (p - a).dot(ab)
-    return {"want": list(reference_closest(p, a, b)), "t": max(0.0, min(1.0, along / ab.dot(ab))),
-            "mistakes": {"line": list(a + ab * (along / ab.dot(ab))), "unsquared": clamped(along / ab.length()),
-                         "undivided": clamped(along), "from_b": clamped((p - b).dot(ab) / ab.dot(ab))}}
+def _ab2(case):
+    """ab·ab, the case's edge's length squared."""
+    return (Vector2(case["b"]) - Vector2(case["a"])).length_squared()
+
+
+def _on_edge(case, t, clamp=True):
+    """The point a + ab t of the case's edge, t clamped to [0, 1] (or not)."""
+    a, b = Vector2(case["a"]), Vector2(case["b"])
+    return list(a + (b - a) * (max(0.0, min(1.0, t)) if clamp else t))
+
+
+def _closest_form(name, text, t, hint="closest", clamp=True):
+    """A known wrong closest point: a + ab t(case, ab), t clamped unless `clamp` is False."""
+    return Form(f"closest_{name}", text, lambda c: _on_edge(c, t(c, Vector2(c["b"]) - Vector2(c["a"])), clamp), hint)
+
+
+def _closest_returned(cases, case):
+    """A number or no point at all, read from this case: t itself is a named mistake."""
+    got = case["got"]
+    if not isinstance(got, dict):
+        return None
+    if "number" in got and close(got["number"], case["t"]):
+        return Form("closest_returns_t", "closest_on_segment() returns t, not the point a + ab t",
+                    line=f"closest_on_segment() returned the number {got['number']:.4g}: that is t; return the point "
+                         "a + ab t")
+    what = f"the number {got['number']:.4g}" if "number" in got else got["bad"]
+    placeholder = " (the handout's placeholder: write step 2)" if "inf" in got["bad"] else ""
+    return Form(None, f"closest_on_segment() returned {what}{placeholder}")
+
+
+def _lesson_hit(c):
+    """The lesson's circle_polygon() answer for a case, as plain data."""
+    return _plain(reference_circle_polygon(Vector2(c["center"]), c["radius"], [Vector2(p) for p in c["points"]]))
+
+
+def _where(c):
+    return f"for {c['case']} (p = {vec_text(c['p'])}, edge {vec_text(c['a'])} to {vec_text(c['b'])})"
+
+
+CLOSEST_OUTSIDE = Acting(
+    "closest_point", "", 2, "circle_polygon", lambda module: rows(CIRCLE, outside_cases()),
+    lambda circle_polygon, g: circle_polygon(g["center"], g["radius"], g["points"]),
+    _lesson_hit,
+    given=lambda c: {"center": Vector2(c["center"]), "radius": c["radius"],
+                     "points": [Vector2(p) for p in c["points"]]},
+    function_of=lambda module, lab_path: with_reference_steps(module, lab_path, "circle_polygon", (3,)) or
+    module.circle_polygon, probe_name="circle_outside", answer=sat_answer,
+    same=same_hit,
+    hint="closest", unnamed="circle_polygon() with your closest_on_segment() misses a ball outside the polygon",
+    evidence=lambda c: f"for {c['case']} (center {vec_text(c['center'])}, radius {c['radius']:g}): "
+                       f"{hit_difference(c['got'], c['want'])}.")
+
+CLOSEST = Acting(
+    "closest_point", "Step 2: closest_on_segment() gives the point of the edge nearest to p (t clamped to [0, 1]).",
+    2, "closest_on_segment", lambda module: rows(
+        ("case", "p", "a", "b"), segment_cases() + drawn_segment_cases(run_rng(module, "closest_on_segment"))),
+    lambda closest_on_segment, g: closest_on_segment(g["p"], g["a"], g["b"]),
+    lambda c: _on_edge(c, _along(c) / _ab2(c)), given=lambda c: {k: Vector2(c[k]) for k in ("p", "a", "b")},
+    kept=("p", "a", "b"), advice="return a new point, a + ab t", answer=answer_point, same=same_point,
+    hint="closest", extra={"t": lambda c: max(0.0, min(1.0, _along(c) / _ab2(c)))}, diagnose=_closest_returned,
+    unnamed="closest_on_segment() does not give the edge's nearest point",
+    evidence=lambda c: f"{_where(c)}, expected the point {vec_text(c['want'])}." if isinstance(c["got"], dict) else
+    f"{_where(c)}, yours is {vec_text(c['got'])}; expected {vec_text(c['want'])}.",
+    wrong=(_closest_form("line", "your point lies on the edge's line beyond the edge: t is not clamped to [0, 1]",
+                         lambda c, ab: _along(c) / ab.dot(ab), "clamp", clamp=False),
+           _closest_form("unsquared", "t is divided by |ab|, not by ab·ab = |ab|²",
+                         lambda c, ab: _along(c) / ab.length()),
+           _closest_form("undivided", "t = (p - a)·ab is not divided by ab·ab = |ab|²", lambda c, ab: _along(c)),
+           _closest_form("from_b", "t is measured from b, (p - b)·ab; the lesson measures from a, (p - a)·ab",
+                         lambda c, ab: _along(c, "b") / ab.dot(ab))),
+    also=(CLOSEST_OUTSIDE,), joint=lambda lists: f"the closest point matches the lesson in all {len(lists[0])} edges "
+                                                 f"and {len(lists[1])} circles outside a polygon")
 
 
 # ---------------------------------------------------------------- steps 2 and 3: circle_polygon
 
-def _ramp():
-    return box(420, 24, (230, 380), RAMP_ANGLE)
-
-
 def outside_cases():
     """(name, center, radius, polygon points): circles outside, touching or apart from a polygon."""
-    ramp = _ramp()
-    up = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))
-    slope = Vector2(math.cos(math.radians(RAMP_ANGLE)), math.sin(math.radians(RAMP_ANGLE)))
     crate = box(60, 40, (600, 540))
     return [
-        ("a ball sunk 3 px into the ramp's top face", Vector2(230, 380) + up * (12 + 17), 20, ramp),
-        ("a ball overlapping the ramp's lower end corner", Vector2(230, 380) + slope * 222 + up * 14, 20, ramp),
+        ("a ball sunk 3 px into the ramp's top face", Vector2(230, 380) + UP * (12 + 17), 20, RAMP),
+        ("a ball overlapping the ramp's lower end corner", Vector2(230, 380) + SLOPE * 222 + UP * 14, 20, RAMP),
         ("a ball overlapping a crate's top-right corner", Vector2(643, 508), 20, crate),
         ("a ball beside a crate's left side", Vector2(556, 545), 16, crate),
         ("a ball near a pentagon's corner", Vector2(40, 0), 14, ngon(5, 30, (0, 0), 0)),
         ("a ball just apart from a crate's corner", Vector2(645, 505), 20, crate),
         ("a ball far from a turned crate", Vector2(0, 0), 20, box(50, 30, (200, 100), 30)),
-        ("a ball above the ramp, 10 px clear", Vector2(230, 380) + up * (12 + 30), 20, ramp),
+        ("a ball above the ramp, 10 px clear", Vector2(230, 380) + UP * (12 + 30), 20, RAMP),
     ]
 
 
 def inside_cases():
     """(name, center, radius, polygon points): circles whose center is inside the polygon."""
-    ramp = _ramp()
-    up = Vector2(math.sin(math.radians(RAMP_ANGLE)), -math.cos(math.radians(RAMP_ANGLE)))
     return [
-        ("a ball whose center is 5 px inside the ramp's top face", Vector2(230, 380) + up * 7, 20, ramp),
+        ("a ball whose center is 5 px inside the ramp's top face", Vector2(230, 380) + UP * 7, 20, RAMP),
         ("a ball whose center is inside a crate, near its left side", Vector2(575, 538), 20, box(80, 60, (600, 530))),
         ("a ball whose center is inside a turned crate, near its top", Vector2(4, -10), 12, box(70, 40, (0, 0), 15)),
         ("a ball whose center is inside a triangle", Vector2(3, 8), 10, ngon(3, 40, (0, 0), 12)),
@@ -218,105 +192,138 @@ def inside_cases():
     ]
 
 
-def _circle_cases(module, function, cases):
-    out = []
-    for name, center, radius, points in cases:
-        got = function(Vector2(center), radius, [Vector2(p) for p in points])
-        case = {"case": name, "center": list(center), "radius": radius, "points": [list(p) for p in points],
-                "got": answer_hit(got)}
-        if judging(module):
-            case.update(_circle_reference(center, radius, points))
-        out.append(case)
-    return out
+def _inside_mistake(cases, case):
+    """The inside case's mistake, read from this case: which of the normal and the depth are the outside case's."""
+    got, want = case["got"], case["want"]
+    if got is None:
+        return Form(None, "circle_polygon() says apart for a center inside the polygon, the deepest overlap of all")
+    if "bad" in got:
+        return Form(None, "circle_polygon() must return (normal, depth) or None")
+    flipped = same_point(got["normal"], case["toward"])
+    outside_depth = close(got["depth"], case["radius"] - case["dist"])
+    if flipped and close(got["depth"], want["depth"]):
+        return Form("inside_not_flipped", "your normal points from the center towards the nearest edge: flip it, or "
+                                          "the push drives the ball through")
+    if flipped and outside_depth:
+        return Form("inside_missing", "there is no inside case: a center inside gets the outside answer (normal "
+                                      "towards the edge, depth radius - dist)")
+    if same_point(got["normal"], want["normal"]):
+        return Form("inside_shallow_depth", "the depth is radius - dist, the outside case's; inside it is radius + "
+                                            "dist") if outside_depth else \
+            Form(None, "the normal is right but not the depth: inside it is radius + dist")
+    return None
 
 
-@reference
-def _circle_reference(center, radius, points):
-    """The lesson's circle_polygon answer, the distance to the outline and the direction to its closest point."""
-    closest = min((reference_closest(center, points[i], points[(i + 1) % len(points)])
-                   for i in range(len(points))), key=center.distance_squared_to)
-    return {"want": _plain(reference_circle_polygon(center, radius, points)),
-            "dist": center.distance_to(closest), "toward": list((closest - center).normalize())}
-
-
-def probe_circle_outside(module, lab_path):
-    """circle_polygon() on the outside cases, with the solution's step 3 spliced in (step 2 graded on its own).
-
-    Falls back to the student's own circle_polygon when the markers cannot be found.
-    """
-    function = with_reference_steps(module, lab_path, "circle_polygon", (3,)) or \
-        module.circle_polygon
-    return _circle_cases(module, function, outside_cases())
-
-
-def probe_circle_inside(module, lab_path):
-    """circle_polygon() on the inside cases, with the lesson's closest_on_segment in place of the student's."""
-    own = module.closest_on_segment
-    module.closest_on_segment = lesson_closest
-    try:
-        return _circle_cases(module, module.circle_polygon, inside_cases())
-    finally:
-        module.closest_on_segment = own
+INSIDE = Acting(
+    "inside_case", "Step 3: circle_polygon() pushes a ball whose center is inside the polygon back out the nearest "
+    "side.", 3, "circle_polygon", lambda module: rows(CIRCLE, inside_cases()),
+    CLOSEST_OUTSIDE.call, _lesson_hit, given=CLOSEST_OUTSIDE.given, probe_name="circle_inside",
+    stand_ins=lambda module: {"closest_on_segment": lesson_closest}, answer=sat_answer, same=same_hit,
+    hint="inside", diagnose=_inside_mistake, passed="the inside case matches the lesson in all {n} circles",
+    # a center inside: the lesson's normal points away from the nearest edge, its depth is radius + dist
+    extra={"toward": lambda c: [-x for x in _lesson_hit(c)["normal"]],
+           "dist": lambda c: _lesson_hit(c)["depth"] - c["radius"]},
+    unnamed="circle_polygon() does not push a center inside out of the nearest side",
+    evidence=lambda c: f"for {c['case']} (center {vec_text(c['center'])}, {c['dist']:.2f} px in from the edge): "
+                       f"{hit_difference(c['got'], c['want'])}.")
 
 
 # ---------------------------------------------------------------- step 4: separate
 
-def _ball(radius, pos, mass=None, friction=0.6, vel=(0, 0), omega=0.0, restitution=0.2):
-    mass = math.pi * radius ** 2 / 1000 if mass is None else mass
-    return Body(Circle(radius), pos, mass, vel=vel, omega=omega, friction=friction, restitution=restitution)
+def ball(radius, pos, **more):
+    """A ball's plain description (declared_acts.body_of): its mass is the lab's, its area / 1000."""
+    return described(r=radius, pos=pos, mass=math.pi * radius ** 2 / 1000, **more)
 
 
-def separate_cases():
-    """(name, body A, body B, unit normal A→B, depth px)."""
+def crate(w, h, pos, mass, **more):
+    return described(w=w, h=h, pos=pos, mass=mass, **more)
+
+
+def separate_cases(module):
+    """{case, a, b: the bodies' descriptions, normal: unit A→B, depth px}, one pair drawn for this run, and the
+    lab's own push-out constants (a changed one is the handout's business)."""
     normal = Vector2(1, -2).normalize()
-    return [
-        # inverse masses 0.21 and 2.2: their total (2.4) is far from 1, so a missing "/ total" shows plainly
-        ("a heavy crate (A) and a light ball (B)", Body(box_points(80, 60), (600, 530), 4.8),
-         _ball(12, (583, 538)), Vector2(-1, 0), 25.0),
-        ("a static ramp (A) and a ball (B)", Body(box_points(420, 24), (230, 380), 0, angle=math.radians(22)),
-         _ball(20, (240, 350)), normal, 3.0),
-        ("a ball (A) and a static floor (B)", _ball(15, (300, 546)), Body(box_points(900, 40), (450, 580), 0),
-         Vector2(0, 1), 1.7),
-        ("a light ball (A) and a heavy ball (B)", _ball(10, (0, 0)), _ball(30, (38, 5)),
-         Vector2(38, 5).normalize(), 1.66),
-        ("a ball (A) and a crate (B) overlapping less than the slop", _ball(20, (0, 0)),
-         Body(box_points(40, 40), (39.7, 0), 1.6), Vector2(1, 0), 0.3),
-    ]
-
-
-def probe_separate(module, lab_path):
-    """The student's separate() on each case: both positions before, after and as the lesson moves them."""
-    cases = []
-    slop = float(getattr(module, "SLOP", SLOP))   # the lab's own constants: a changed one is the handout's business
-    percent = float(getattr(module, "PERCENT", PERCENT))
-    rng = run_rng(module, "separate")   # and one pair drawn for this run: a crate (mass far from 1) and a ball
+    rng = run_rng(module, "separate")   # the drawn pair: a crate (mass far from 1) and a ball
     crate_pos = Vector2(rng.uniform(200, 700), rng.uniform(200, 500))
     push_dir = Vector2(1, 0).rotate(rng.uniform(0, 360))
-    drawn = [("a crate (A) and a ball (B) drawn for this run",
-              Body(box_points(rng.uniform(30, 90), rng.uniform(30, 90)), crate_pos, rng.uniform(2.5, 9.0)),
-              _ball(rng.uniform(6, 30), crate_pos + push_dir * 40), push_dir, rng.uniform(2.0, 12.0))]
-    for name, a, b, normal, depth in separate_cases() + drawn:
-        given = (twin(a), twin(b))   # the bodies as separate() gets them
-        normal_given = Vector2(normal)   # a copy: a change to it shows
-        module.separate(a, b, normal_given, depth)
-        case = {"case": name, "normal": list(normal), "depth": depth,
-                "normal_after": None if normal_given == normal else list(normal_given),
-                "after": {"a": answer_point(a.pos), "b": answer_point(b.pos)}}
-        if judging(module):
-            case.update(_separate_reference(*given, normal, depth, slop, percent))
-        cases.append(case)
-    return cases
+    drawn = crate(rng.uniform(30, 90), rng.uniform(30, 90), crate_pos, rng.uniform(2.5, 9.0))
+    slop, percent = float(getattr(module, "SLOP", SLOP)), float(getattr(module, "PERCENT", PERCENT))
+    return [{"case": name, "a": a, "b": b, "normal": list(n), "depth": depth, "slop": slop, "percent": percent}
+            for name, a, b, n, depth in (
+        # inverse masses 0.21 and 2.2: their total (2.4) is far from 1, so a missing "/ total" shows plainly
+        ("a heavy crate (A) and a light ball (B)", crate(80, 60, (600, 530), 4.8), ball(12, (583, 538)),
+         Vector2(-1, 0), 25.0),
+        ("a static ramp (A) and a ball (B)", crate(420, 24, (230, 380), 0, angle=math.radians(22)),
+         ball(20, (240, 350)), normal, 3.0),
+        ("a ball (A) and a static floor (B)", ball(15, (300, 546)), crate(900, 40, (450, 580), 0), Vector2(0, 1), 1.7),
+        ("a light ball (A) and a heavy ball (B)", ball(10, (0, 0)), ball(30, (38, 5)), Vector2(38, 5).normalize(),
+         1.66),
+        ("a ball (A) and a crate (B) overlapping less than the slop", ball(20, (0, 0)), crate(40, 40, (39.7, 0), 1.6),
+         Vector2(1, 0), 0.3),
+        ("a crate (A) and a ball (B) drawn for this run", drawn, ball(rng.uniform(6, 30), crate_pos + push_dir * 40),
+         push_dir, rng.uniform(2.0, 12.0)))]
 
 
 @reference
-def _separate_reference(a, b, normal, depth, slop, percent):
-    """The lesson's push-out of a and b (as given): max(depth - slop, 0) · percent px, split by inverse mass."""
-    total = a.inv_mass + b.inv_mass
-    push = max(depth - slop, 0.0) * percent
-    return {"push": push, "inv": {"a": a.inv_mass, "b": b.inv_mass}, "mass": {"a": a.mass, "b": b.mass},
-            "before": {"a": list(a.pos), "b": list(b.pos)},
-            "want": {"a": list(a.pos - normal * (push * a.inv_mass / total)),
-                     "b": list(b.pos + normal * (push * b.inv_mass / total))}}
+def _push(c):
+    """The lesson's push-out, max(depth - slop, 0) · percent px, and the two bodies' inverse masses."""
+    return max(c["depth"] - c["slop"], 0.0) * c["percent"], {k: body_of(c[k]).inv_mass for k in ("a", "b")}
+
+
+def _pushed(c):
+    """Both positions after the lesson's push-out: A back along the normal, B forward, by inverse mass."""
+    push, inv = _push(c)
+    return {k: list(Vector2(c[k]["pos"]) + Vector2(c["normal"]) * (sign * push * inv[k] / (inv["a"] + inv["b"])))
+            for k, sign in (("a", -1), ("b", 1))}
+
+
+def _moved(c, k, where="got"):
+    return math.dist(c[where][k], c[k]["pos"])
+
+
+def _split_mistake(cases, case):
+    """The push-out's mistake, read from the first body that moved wrong: how far it moved."""
+    k = first_differing(case["got"], case["want"], "ab", same_point)
+    other, push, inv, total = "ba"["ab".index(k)], case["push"], case["inv"], case["inv"]["a"] + case["inv"]["b"]
+    moved, should = _moved(case, k), _moved(case, k, "want")
+    if inv[k] == 0 and moved > 0:
+        return Form("static_moved", f"{k.upper()} is static (1/m = 0) and must never move")
+    if close(moved, push) and not close(should, push):
+        return Form("push_not_split", "each body got the whole push instead of its share by inverse mass")
+    if close(moved, push / 2) and not close(should, push / 2):
+        return Form("push_halved", "the push was halved, not split by inverse mass")
+    if total and close(moved, push * inv[other] / total):
+        return Form("push_shares_swapped", "the shares are swapped: each body got the other's")
+    if total and not close(total, 1.0) and close(moved, push * inv[k]):
+        return Form("push_missing_total", f"each share is push × 1/m without dividing by the total 1/m_A + 1/m_B = "
+                                          f"{total:.3g}")
+    if should and close(moved, should):
+        return Form("push_wrong_way", "the right distance but the wrong way: A moves back along the normal, B forward")
+    return None
+
+
+def _split_where(c):
+    return f"in '{c['case']}' (push {c['push']:.3f} px, 1/m {c['inv']['a']:.3g} and {c['inv']['b']:.3g})"
+
+
+def _split_evidence(c):
+    k = first_differing(c["got"], c["want"], "ab", same_point)
+    return f"{_split_where(c)}, {k.upper()} moved {_moved(c, k):.3f} px; expected {_moved(c, k, 'want'):.3f} px."
+
+
+SEPARATE = Acting(
+    "push_out_split", "Step 4: separate() splits the push-out by inverse mass (a static body never moves).", 4,
+    "separate", separate_cases, lambda separate, g: separate(g["a"], g["b"], g["normal"], g["depth"]), _pushed,
+    given=lambda c: {"a": body_of(c["a"]), "b": body_of(c["b"]), "normal": Vector2(c["normal"]), "depth": c["depth"]},
+    outcome=lambda g, raw: {k: answer_point(g[k].pos) for k in ("a", "b")}, kept=("normal",),
+    advice="scale a new vector, normal * share", label=lambda c: f"in '{c['case']}'", hint="split",
+    same=fields(same_point, "ab"), bad=lambda got: any("bad" in got[k] for k in "ab" if isinstance(got[k], dict)),
+    malformed=lambda c: next(f"separate() left {k.upper()}'s position {c['got'][k]['bad']}.\n{_split_where(c)}."
+                            for k in "ab" if isinstance(c["got"][k], dict)),
+    diagnose=_split_mistake, evidence=_split_evidence, unnamed="separate() does not split the push by inverse mass",
+    passed="the push-out is split by inverse mass in all {n} cases",
+    extra={"push": lambda c: _push(c)[0], "inv": lambda c: _push(c)[1],
+           "before": lambda c: {k: c[k]["pos"] for k in ("a", "b")}})
 
 
 # ---------------------------------------------------------------- step 5: disc_inertia
@@ -357,16 +364,14 @@ INERTIA = Step(
 
 def contact_cases(module):
     """(name, center, radius, unit normal out of the ball, depth px), and one contact drawn for this run."""
-    down_ramp = Vector2(-math.sin(math.radians(RAMP_ANGLE)), math.cos(math.radians(RAMP_ANGLE)))
     rng = run_rng(module, "contact_point")
-    return [{"case": name, "center": list(center), "radius": radius, "normal": list(normal), "depth": depth}
-            for name, center, radius, normal, depth in (
-        ("a ball resting on the ramp", Vector2(240, 350), 20.0, down_ramp, 0.4),
+    return rows(("case", "center", "radius", "normal", "depth"), (
+        ("a ball resting on the ramp", Vector2(240, 350), 20.0, -UP, 0.4),
         ("a ball against a crate on its right", Vector2(575, 538), 20.0, Vector2(1, 0), 3.0),
         ("a small ball touching a wall above it, to the left", Vector2(-30, 12), 8.0, Vector2(-3, -4).normalize(), 0.05),
         ("a big ball sunk deep into the floor", Vector2(400, 520), 45.0, Vector2(0, 1), 5.0),
         ("a ball touching something drawn for this run", Vector2(rng.uniform(50, 800), rng.uniform(50, 550)),
-         rng.uniform(6, 45), Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(0.5, 5.0)))]
+         rng.uniform(6, 45), Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(0.5, 5.0))))
 
 
 @reference
@@ -402,63 +407,41 @@ CONTACT = Step(
 
 # ---------------------------------------------------------------- step 7: friction in resolve
 
-def resolve_cases():
-    """(name, body A, body B, unit normal A→B, contact point): each a contact resolve() is called on.
-
-    The ramp and the floor are A (the world lists static bodies first), so the
-    normal points from them into the ball; a ball hitting a crate is A.
-    """
-    theta = math.radians(RAMP_ANGLE)
-    slope = Vector2(math.cos(theta), math.sin(theta))
-    up = Vector2(math.sin(theta), -math.cos(theta))
-    centre = Vector2(230, 380) + up * (12 + 20)
-    touch = centre - up * 20
+def resolve_cases(module):
+    """{case, a, b: the bodies' descriptions, normal: unit A→B, point: the contact, resting: the handout's cutoff}:
+    each a contact resolve() is called on. The ramp and the floor are A (the world lists static bodies first), so
+    the normal points from them into the ball; a ball hitting a crate is A."""
+    centre, ramp = Vector2(230, 380) + UP * (12 + 20), crate(420, 24, (230, 380), 0, angle=math.radians(RAMP_ANGLE))
 
     def on_ramp(vel, omega, friction=0.6):
-        ball = _ball(20, centre, vel=vel, omega=omega, friction=friction)
-        return Body(box_points(420, 24), (230, 380), 0, angle=theta), ball
+        return ramp, ball(20, centre, vel=vel, omega=omega, friction=friction), UP, centre - UP * 20
 
-    return [
-        ("a ball landing on the ramp, slipping a little",) + on_ramp(slope * 50 - up * 40, 2.3) + (up, touch),
-        ("a ball landing on the ramp, sliding fast (friction clamped)",) + on_ramp(slope * 300 - up * 35, 0.0)
-        + (up, touch),
-        ("a ball spinning backwards as it lands on the ramp",) + on_ramp(slope * 20 - up * 60, -9.0) + (up, touch),
+    return [{"case": name, "a": a, "b": b, "normal": list(normal), "point": list(point),
+             "resting": float(getattr(module, "RESTING_SPEED", RESTING_SPEED))} for name, (a, b, normal, point) in (
+        ("a ball landing on the ramp, slipping a little", on_ramp(SLOPE * 50 - UP * 40, 2.3)),
+        ("a ball landing on the ramp, sliding fast (friction clamped)", on_ramp(SLOPE * 300 - UP * 35, 0.0)),
+        ("a ball spinning backwards as it lands on the ramp", on_ramp(SLOPE * 20 - UP * 60, -9.0)),
         ("a ball landing on the floor, rolling too fast for its speed",
-         Body(box_points(900, 40), (450, 580), 0), _ball(15, (300, 545), vel=(40, 90), omega=6.0),
-         Vector2(0, -1), Vector2(300, 560)),
+         (crate(900, 40, (450, 580), 0), ball(15, (300, 545), vel=(40, 90), omega=6.0), Vector2(0, -1),
+          Vector2(300, 560))),
         ("a ball hitting a crate's left side while it spins",
-         _ball(20, (575, 530), vel=(250, 30), omega=4.0, restitution=0.3),
-         Body(box_points(30, 80), (610, 520), 2.4, vel=(0, 10), omega=0.2, restitution=0.3),
-         Vector2(1, 0), Vector2(595, 530)),
-        ("a ball on a frictionless ramp (mu = 0)",) + on_ramp(slope * 120 - up * 45, 0.0, friction=0.0)
-        + (up, touch),
-    ]
-
-
-FRICTION_VARIANTS = ("right", "none", "sign", "unclamped", "no_spin_kt", "kt_is_k", "at_centre", "always_full",
-                     "bodies_swapped", "twice", "bound_mu", "whole_rel", "kt_no_a_spin", "kt_no_b_spin",
-                     "clamp_loses_sign")
+         (ball(20, (575, 530), vel=(250, 30), omega=4.0, restitution=0.3),
+          crate(30, 80, (610, 520), 2.4, vel=(0, 10), omega=0.2, restitution=0.3), Vector2(1, 0), Vector2(595, 530))),
+        ("a ball on a frictionless ramp (mu = 0)", on_ramp(SLOPE * 120 - UP * 45, 0.0, friction=0.0)))]
 
 
 @reference
 def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEED):
-    """The handout's resolve() with the lesson's friction ("right") or a plausible mistake in step 7.
-
-    Variants: "none" no friction; "sign" the clamped impulse pushed along the slip; "unclamped"
-    no Coulomb clamp; "no_spin_kt" kt without the spin terms; "kt_is_k" the normal's k used as kt;
-    "at_centre" the friction impulse applied at the centres (ra = rb = 0); "always_full" friction
-    always mu j, against the slip; "bodies_swapped" apply_impulse(b, a, t jt, ra, rb); "twice" the friction
-    impulse applied twice; "bound_mu" clamped to ±mu; "whole_rel" -|rel| / kt (the whole relative speed, not
-    the slip rel·t); "kt_no_a_spin" / "kt_no_b_spin" kt without A's / B's spin term; "clamp_loses_sign"
-    `if abs(jt) > mu * j: jt = mu * j`.
+    """The handout's resolve() with the lesson's friction ("right") or one plausible mistake in step 7: each
+    variant of FRICTION_FORMS changes one thing (its mistake id says which); "clamp_loses_sign" is
+    `if abs(jt) > mu * j: jt = mu * j`, "whole_rel" -|rel| / kt.
     """
     ra, rb = point - a.pos, point - b.pos
     rel = relative_velocity(a, b, ra, rb)
     vn = rel.dot(normal)
     if vn >= 0:
         return
-    ran, rbn = cross(ra, normal), cross(rb, normal)
-    k = a.inv_mass + b.inv_mass + ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia
+    k = effective_mass_inverse(a, b, ra, rb, normal)
     e = min(a.restitution, b.restitution) if vn < -resting else 0.0
     j = -(1 + e) * vn / k
     lesson_apply_impulse(a, b, normal * j, ra, rb)
@@ -466,18 +449,10 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     tangent = rel - normal * rel.dot(normal)
     if tangent.length_squared() <= 1e-12 or variant == "none":
         return
-    t = tangent.normalize()
-    mu = math.sqrt(a.friction * b.friction)
-    rat, rbt = cross(ra, t), cross(rb, t)
-    kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
-    if variant == "no_spin_kt":
-        kt = a.inv_mass + b.inv_mass
-    elif variant == "kt_is_k":
-        kt = k
-    elif variant == "kt_no_a_spin":
-        kt = a.inv_mass + b.inv_mass + rbt * rbt * b.inv_inertia
-    elif variant == "kt_no_b_spin":
-        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia
+    t, mu, zero = tangent.normalize(), math.sqrt(a.friction * b.friction), Vector2()
+    # kt with both spin terms, or without one or both (a zero lever arm drops its body's term), or k itself
+    arms = {"no_spin_kt": (zero, zero), "kt_no_a_spin": (zero, rb), "kt_no_b_spin": (ra, zero)}.get(variant, (ra, rb))
+    kt = k if variant == "kt_is_k" else effective_mass_inverse(a, b, *arms, t)
     jt = -(rel.length() if variant == "whole_rel" else rel.dot(t)) / kt
     if variant == "always_full":
         jt = math.copysign(mu * j, jt)
@@ -490,89 +465,72 @@ def reference_resolve(a, b, normal, point, variant="right", resting=RESTING_SPEE
     if variant == "sign":
         jt = -jt
     if variant == "at_centre":
-        ra, rb = Vector2(), Vector2()
+        ra, rb = zero, zero
     if variant == "bodies_swapped":
         a, b = b, a
-    lesson_apply_impulse(a, b, t * jt, ra, rb)
-    if variant == "twice":
+    for _ in range(2 if variant == "twice" else 1):
         lesson_apply_impulse(a, b, t * jt, ra, rb)
 
 
-def _outcome(a, b):
-    return {"a": {"vel": [a.vel.x, a.vel.y], "omega": a.omega}, "b": {"vel": [b.vel.x, b.vel.y], "omega": b.omega}}
-
-
-def probe_resolve(module, lab_path):
-    """The student's resolve() on each contact: both bodies' velocities and spins after it.
-
-    Beside them: the same after the handout's resolve with the lesson's friction ("right")
-    and with each plausible step-7 mistake (FRICTION_VARIANTS), from the same start. Also
-    the slip speed and the impulses involved, for the message. The library's apply_impulse
-    is the lab's (imported), so only step 7 can differ.
-    """
-    cases = []
-    resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
-    for name, a, b, normal, point in resolve_cases():
-        given = (twin(a), twin(b))   # the bodies as resolve() gets them
-        vectors = {"normal": Vector2(normal), "point": Vector2(point)}   # copies: a change in place shows
-        calls = []
-        with _calls_recorded(module, a, b, point, calls):
-            module.resolve(a, b, vectors["normal"], vectors["point"])
-        case = {"case": name, "got": _outcome(a, b), "changed": changed_vectors(vectors, normal=normal, point=point),
-                "calls": calls}
-        if judging(module):
-            case.update(_resolve_reference(*given, normal, point, resting))
-        cases.append(case)
-    return cases
-
-
-class _calls_recorded:
-    """While resolve() runs, the module's apply_impulse also notes each call's order of bodies and lever arms in
-    `calls`: "ab" / "ba" (A first / B first) and "ra,rb" / "rb,ra" / "other". Swapped bodies with swapped lever
-    arms give the same velocities as a flipped jt: only the call tells them apart."""
-
-    def __init__(self, module, a, b, point, calls):
-        self.module, self.original = module, getattr(module, "apply_impulse", None)
-        self.a, self.b, self.calls = a, b, calls
-        self.ra, self.rb = point - a.pos, point - b.pos
-
-    def __enter__(self):
-        if callable(self.original):
-            def recorder(*args, **named):
-                given = dict(zip(("a", "b", "impulse", "ra", "rb"), args), **named)
-                first, second, r1, r2 = (given.get(key) for key in ("a", "b", "ra", "rb"))
-                order = "ab" if first is self.a and second is self.b else \
-                    "ba" if first is self.b and second is self.a else "other"
-                arms = "ra,rb" if _near(r1, self.ra) and _near(r2, self.rb) else \
-                    "rb,ra" if _near(r1, self.rb) and _near(r2, self.ra) else "other"
-                self.calls.append(order + " " + arms)
-                return self.original(*args, **named)
-            self.module.apply_impulse = recorder
-        return self
-
-    def __exit__(self, *exc):
-        if callable(self.original):
-            self.module.apply_impulse = self.original
-        return False
-
-
-def _near(v, w):
-    try:
-        return abs(v[0] - w[0]) <= 1e-9 and abs(v[1] - w[1]) <= 1e-9
-    except (TypeError, IndexError, ValueError):
-        return False
-
 
 @reference
-def _resolve_reference(a, b, normal, point, resting):
-    """The outcome of the handout's resolve with each friction variant, from a and b as given; mu, ra and rb."""
-    variants = {}
-    for variant in FRICTION_VARIANTS:
-        ca, cb = twin(a), twin(b)
-        reference_resolve(ca, cb, Vector2(normal), Vector2(point), variant, resting)
-        variants[variant] = _outcome(ca, cb)
-    return {"mu": math.sqrt(a.friction * b.friction), "variants": variants,
-            "ra": list(point - a.pos), "rb": list(point - b.pos)}
+def _resolved(c, variant="right"):
+    """Both bodies' velocity and spin after the handout's resolve with the `variant` friction, from the case."""
+    a, b = body_of(c["a"]), body_of(c["b"])
+    reference_resolve(a, b, Vector2(c["normal"]), Vector2(c["point"]), variant, c["resting"])
+    return motions(a=a, b=b)
+
+
+# step 7's known wrong forms: (reference_resolve's variant, the mistake's id, the hint) and the lab's own sentences
+# (the others are causes.SHARED's, where Tumbling Crates names the same mistake)
+FRICTION_TEXTS = {
+    "kt_missing_a_spin": "kt lacks A's spin term (ra × t)²/I_A: it needs both bodies' terms",
+    "kt_missing_b_spin": "kt lacks B's spin term (rb × t)²/I_B: it needs both bodies' terms",
+    "friction_at_centre": "the friction impulse changes no spin (applied at the centres, or the velocities changed "
+                          "without the spins): it cannot turn the ball",
+    "friction_bodies_swapped": "friction is applied with the bodies swapped, apply_impulse(b, a, t * jt, ra, rb)"}
+FRICTION_FORMS = tuple(Form(name, FRICTION_TEXTS.get(name), lambda c, variant=variant: _resolved(c, variant), hint)
+                       for variant, name, hint in (
+    ("none", "friction_missing", "friction_missing"), ("sign", "friction_sign", "friction_sign"),
+    ("unclamped", "friction_unclamped", "friction_clamp"), ("always_full", "friction_always_full", "friction_clamp"),
+    ("bound_mu", "friction_bound_mu", "friction_clamp"),
+    ("clamp_loses_sign", "friction_clamp_loses_sign", "friction_clamp"), ("no_spin_kt", "kt_no_spin", "friction_kt"),
+    ("kt_is_k", "kt_is_k", "friction_kt"), ("kt_no_a_spin", "kt_missing_a_spin", "friction_kt"),
+    ("kt_no_b_spin", "kt_missing_b_spin", "friction_kt"), ("twice", "friction_twice", "friction_missing"),
+    ("whole_rel", "friction_whole_rel", "friction_slip"), ("at_centre", "friction_at_centre", "friction_centre"),
+    ("bodies_swapped", "friction_bodies_swapped", "friction_centre")))
+# a flipped jt and apply_impulse(b, a, t * jt, rb, ra) give the same velocities: the noted calls tell them apart
+ARMS_SWAPPED = Form("friction_bodies_arms_swapped", "friction is applied as apply_impulse(b, a, t * jt, rb, ra): "
+                    "bodies and lever arms swapped, so it pushes along the slip", hint="friction_order")
+
+
+def _arms_swapped(cases, case):
+    """ARMS_SWAPPED when the flipped jt is named and every second (friction) apply_impulse call was (b, a, rb, ra)."""
+    seconds = [c["calls"][1] for c in cases if len(c["calls"]) == 2]
+    if seconds and all(call == "b a rb ra" for call in seconds) and FRICTION.named(cases, case) is FRICTION_FORMS[1]:
+        return ARMS_SWAPPED
+    return None
+
+
+FRICTION = Acting(
+    "friction_rolls", "Step 7: resolve()'s friction impulse, jt = -rel·t / kt clamped to ±mu j, acts at the contact "
+    "and turns the ball.", 7, "resolve", resolve_cases,
+    lambda resolve, g: resolve(g["a"], g["b"], g["normal"], g["point"]), _resolved,
+    given=lambda c: dict({k: body_of(c[k]) for k in "ab"}, normal=Vector2(c["normal"]), point=Vector2(c["point"]),
+                         ra=Vector2(c["point"]) - Vector2(c["a"]["pos"]),
+                         rb=Vector2(c["point"]) - Vector2(c["b"]["pos"])),
+    outcome=lambda g, raw: motions(a=g["a"], b=g["b"]), kept=("normal", "point"), label=lambda c: f"in '{c['case']}'",
+    advice="make new vectors (normal.rotate(90), not t = normal then t.rotate_ip(90))",
+    changed_hint=arguments_hint(7, "resolve"), same=fields(same_motion, "ab"),
+    hooks={"apply_impulse": lambda g, args, named: roles(g, ("a", "b", "impulse", "ra", "rb"), args, named,
+                                                          ("a", "b", "ra", "rb"))},
+    hint="friction_missing", wrong=FRICTION_FORMS, diagnose=_arms_swapped,
+    evidence=lambda c: f"in '{c['case']}' (mu = {c['mu']:.2g}): {motion_difference(c['got'], c['want'], 'ab')}.",
+    unnamed="the velocities and spins after resolve() differ from the lesson's",
+    passed="friction matches the lesson in all {n} contacts",
+    extra={"mu": lambda c: math.sqrt(body_of(c["a"]).friction * body_of(c["b"]).friction),
+           "ra": lambda c: list(Vector2(c["point"]) - Vector2(c["a"]["pos"])),
+           "rb": lambda c: list(Vector2(c["point"]) - Vector2(c["b"]["pos"]))})
 
 
 # the spliced functions the probes use: (function, the lab's solution's steps put in it)
@@ -584,12 +542,5 @@ PURE = ("closest_on_segment", "circle_polygon", "disc_inertia", "contact_point")
 
 # probe name -> (the lab function it needs, the probe); the spliced probe (circle_outside) runs last, so nothing it
 # leaves (a step 2 that keeps the spliced circle_polygon somewhere) reaches a graded call of the student's own functions
-PROBES = {
-    "closest_on_segment": ("closest_on_segment", probe_closest),
-    "circle_inside": ("circle_polygon", probe_circle_inside),
-    "separate": ("separate", probe_separate),
-    **INERTIA.probes(),
-    **CONTACT.probes(),
-    "resolve": ("resolve", probe_resolve),
-    "circle_outside": ("circle_polygon", probe_circle_outside),
-}
+PROBES = {**CLOSEST.probes(), **INSIDE.probes(), **SEPARATE.probes(), **INERTIA.probes(), **CONTACT.probes(),
+          **FRICTION.probes(), **CLOSEST_OUTSIDE.probes()}

@@ -19,6 +19,8 @@ from pygame import Vector2
 from lesson11 import records
 from lesson11.physics2d import relative_velocity
 
+from checker.judging.declared_acts import body_of, fields, same_motion
+from checker.judging.declared_hits import same_hit
 from checker.replay.show_cases import ImpulseCase, PolygonCase
 from checker.replay.show_kit import (BACK, BLUE, GREY, LESSON, ORANGE, SIZE, STUDENT, TEXT, Case, arrow, close,
                                      cross, data, is_point, numbered, point_text, text_font, vec, view)
@@ -56,23 +58,9 @@ def _same_point(got, want):
     return isinstance(got, list) and all(close(g, w) for g, w in zip(got, want))
 
 
-def _hit_matches(got, want):
-    """A circle_polygon() answer against the lesson's: exactly touching may count as apart."""
-    if want is None:
-        return got is None or (not _bad(got) and got["depth"] <= 1e-6)
-    return got is not None and not _bad(got) and _same_point(got["normal"], want["normal"]) and \
-        close(got["depth"], want["depth"])
-
-
-def _state_matches(got, want):
-    """Both bodies' velocity and spin after resolve() against the lesson's."""
-    return all(close(got[k]["omega"], want[k]["omega"])
-               and all(close(g, w) for g, w in zip(got[k]["vel"], want[k]["vel"])) for k in ("a", "b"))
-
-
 def failing(functions, probe, wrong):
-    """The probe's cases with a lesson's answer ("want", or the "right" variant) that `wrong` finds wrong."""
-    return [c for c in data(functions, probe) or [] if ("want" in c or "variants" in c) and wrong(c)]
+    """The probe's cases with a lesson's answer ("want") that `wrong` finds wrong."""
+    return [c for c in data(functions, probe) or [] if "want" in c and wrong(c)]
 
 
 # ---------------------------------------------------------------- the cases
@@ -150,7 +138,7 @@ class SeparateCase(Case):
     def moves(self, side):
         """(the student's move, the lesson's) of body `side` (px), the student's None when it is no point."""
         before = Vector2(self.case["before"][side])
-        got = self.case["after"][side]
+        got = self.case["got"][side]
         return (Vector2(got) - before if is_point(got) else None), Vector2(self.case["want"][side]) - before
 
     def lines(self):
@@ -221,10 +209,10 @@ def friction_case(case, number, count, geometry):
     a, b, normal, point = geometry
     before = {"a": {"vel": list(a.vel), "omega": a.omega}, "b": {"vel": list(b.vel), "omega": b.omega}}
     return ImpulseCase({"case": f"{case['case']} (mu = {case['mu']:.2g})", "before": before, "after": case["got"],
-                        "expected": case["variants"]["right"], "impulse": list(normal), "impulse_label": "normal n",
+                        "expected": case["want"], "impulse": list(normal), "impulse_label": "normal n",
                         "ra": case["ra"], "rb": case["rb"],
                         "friction": friction_arrows(a, b, Vector2(normal), case["ra"], case["rb"], case["got"],
-                                                    case["variants"]["right"])}, number, count)
+                                                    case["want"])}, number, count)
 
 
 def friction_arrows(a, b, normal, ra, rb, got, want):
@@ -242,7 +230,8 @@ def friction_arrows(a, b, normal, ra, rb, got, want):
 
 
 def _resolve_geometry():
-    return {name: (a, b, normal, point) for name, a, b, normal, point in probes.resolve_cases()}
+    return {c["case"]: (body_of(c["a"]), body_of(c["b"]), Vector2(c["normal"]), Vector2(c["point"]))
+            for c in probes.resolve_cases(None)}
 
 
 def _disc(case):
@@ -261,16 +250,16 @@ def closest_cases(functions, seed):
     closest = failing(functions, "closest_on_segment", lambda c: not _same_point(c["got"], c["want"]))
     if closest:
         return numbered(ClosestCase, closest)
-    return numbered(CircleCase, failing(functions, "circle_outside", lambda c: not _hit_matches(c["got"], c["want"])))
+    return numbered(CircleCase, failing(functions, "circle_outside", lambda c: not same_hit(c["got"], c["want"])))
 
 
 def inside_cases(functions, seed):
-    return numbered(CircleCase, failing(functions, "circle_inside", lambda c: not _hit_matches(c["got"], c["want"])))
+    return numbered(CircleCase, failing(functions, "circle_inside", lambda c: not same_hit(c["got"], c["want"])))
 
 
 def separate_cases(functions, seed):
     return numbered(SeparateCase, failing(functions, "separate", lambda c: any(
-        not _same_point(c["after"][s], c["want"][s]) for s in ("a", "b"))))
+        not _same_point(c["got"][s], c["want"][s]) for s in ("a", "b"))))
 
 
 def inertia_cases(functions, seed):
@@ -285,7 +274,7 @@ def contact_cases(functions, seed):
 def friction_cases(functions, seed):
     geometry = _resolve_geometry()
     wrong = failing(functions, "resolve", lambda c: c["case"] in geometry and
-                    not _state_matches(c["got"], c["variants"]["right"]))
+                    not fields(same_motion, "ab")(c["got"], c["want"]))
     return [friction_case(c, k + 1, len(wrong), geometry[c["case"]]) for k, c in enumerate(wrong)]
 
 
