@@ -32,6 +32,8 @@ from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TUR
                                    PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
                                    TIPPED_FLAT)
 from checker.judging.checks import Fail, Hint, Passed, Registry
+from checker.judging.declared import Form, forms_of
+from checker.judging.declared_shared import SharedStep, unchanged_arguments
 
 TITLE = "Tumbling Crates"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -354,71 +356,60 @@ K_MISTAKES = {
 }
 
 
-@CHECKS.check(depends=["loads"])
-def resolve_k(sub, functions):
-    """Step 4: resolve() applies the normal impulse j = -(1 + e) vn / k with both spin terms in k."""
-    cases = _function(sub, functions, "resolve", "resolve", 4)
-    for case in cases:
-        if case["calls"] == 0 or case["j"] is None:
-            raise Fail(f"resolve() applied no normal impulse where the contact closes.\nin '{case['case']}', "
-                       f"closing at {-case['vn']:.1f} px/s.", HINTS["k_spin"])
-        want_j = -(1 + case["e"]) * case["vn"] / case["k"]["right"]
-        if _close(case["j"], want_j):
-            continue
-        k = -(1 + case["e"]) * case["vn"] / case["j"] if case["j"] else math.inf
-        # a k fits a case when j·k = -(1 + e) vn (no division: a wrong k may be 0)
-        named = consistent_mistake(
-            cases, lambda c, key: c["j"] is not None and _close(c["j"] * c["k"][key], -(1 + c["e"]) * c["vn"]),
-            [key for key in K_MISTAKES if not _close(case["k"][key], case["k"]["right"])])
-        found = mistake(f"k_{named}", K_MISTAKES[named]) if named else None
-        first = found.text if found else "the normal impulse's k is not the lesson's"
-        raise Fail(f"{first}.\nin '{case['case']}', your j = {case['j']:.4g}, so your k = {k:.4g}; expected k = "
-                   f"{case['k']['right']:.4g} (j = {want_j:.4g}).", HINTS["k_spin"], found)
-    return Passed(f"k and j match the lesson in all {len(cases)} contacts", value=cases)
+def _same(got, want):
+    return got is not None and want is not None and _close(got, want)
 
 
-def _unchanged_arguments(cases, function, why, hint):
-    """Fail when `function` changed a vector argument in place in some case (the probe's `changed`)."""
-    for case in cases:
-        for name, now in sorted((case.get("changed") or {}).items()):
-            text = f"{function}() changed its argument {name} in place: make new vectors (v * s, v.rotate(90)), " \
-                   "not v *= s or v.rotate_ip(90)"
-            raise Fail(f"{text}.\nin '{case['case']}', {name} became {_vec(now)}: {why.format(name=name)}.", hint,
-                       mistake("argument_changed"))
+def _push(case):
+    """-(1 + e) vn: the normal impulse j times k."""
+    return -(1 + case["e"]) * case["vn"]
 
 
-# the known wrong clamps of step 5, by name (_clamp_forms): the sentence and the hint
-CLAMP_MISTAKES = {
-    "unclamped": ("friction_unclamped", "(min(mu·j, jt) alone clamps nothing: jt <= 0 here)", "friction_clamp"),
-    "vn_signed": ("friction_bound_vn_signed", "the clamp uses mu × vn, the closing speed with its sign, where "
-                  "Coulomb's law uses mu × j", "friction_clamp"),
-    "vn_abs": ("friction_bound_vn", "the clamp uses mu × the closing speed |vn| where Coulomb's law uses mu × j",
-               "friction_clamp"),
-    "slip": ("friction_bound_slip", "the clamp uses mu × the slip speed where Coulomb's law uses mu × j",
-             "friction_clamp"),
-    "rel": ("friction_bound_rel", "the clamp uses mu × the relative speed |rel| where Coulomb's law uses mu × j",
-            "friction_clamp"),
-    "k": ("friction_bound_k", "the clamp uses mu × k where Coulomb's law uses mu × j", "friction_clamp"),
-    "mu": ("friction_bound_mu", "", "friction_clamp"),
-    "half": ("friction_bound_half", "the bound is mu·j / 2; Coulomb's law lets |jt| reach mu·j", "friction_clamp"),
-    "always_full": ("friction_always_full", "", "friction_clamp"),
-    "clamp_loses_sign": ("friction_clamp_loses_sign", "", "friction_clamp"),
-    "sign": ("friction_sign", "(a flipped jt, or min(|jt|, mu·j), which loses jt's sign)", "friction_sign"),
-}
+def _k_evidence(case):
+    j = case["j"]
+    return (f"in '{case['case']}', your j = {j:.4g}, so your k = {_push(case) / j if j else math.inf:.4g}; expected "
+            f"k = {case['k']['right']:.4g} (j = {case['want']:.4g}).")
 
 
-def _clamp_mistake(named):
-    """(Mistake, the first line, hint key) of CLAMP_MISTAKES[named]: the shared sentence (causes.SHARED, the same
-    words as Ball on the Ramp's) and this lab's note, or the lab's own sentence."""
-    name, text, key = CLAMP_MISTAKES[named]
-    if name in SHARED:
-        found = mistake(name)
-        return found, (f"{found.text} {text}" if text else found.text), key
-    return mistake(name, text), text, key
+SharedStep(
+    "resolve_k", "Step 4: resolve() applies the normal impulse j = -(1 + e) vn / k with both spin terms in k.", 4,
+    "resolve", probe_name="resolve", read=lambda c: c["j"], lesson=lambda c: _push(c) / c["k"]["right"],
+    wrong=forms_of(K_MISTAKES, lambda c: {key: _push(c) / k for key, k in c["k"].items() if k}, "k_"), same=_same,
+    bad=lambda got: got is None, malformed=lambda c: "resolve() applied no normal impulse where the contact closes."
+    f"\nin '{c['case']}', closing at {-c['vn']:.1f} px/s.", evidence=_k_evidence,
+    unnamed="the normal impulse's k is not the lesson's", hint="k_spin",
+    passed="k and j match the lesson in all {n} contacts").register(CHECKS, HINTS)
+
+
+def _clamp_form(name, mistake_id, note, hint="friction_clamp"):
+    """The wrong clamp `name` of _clamp_forms: a shared mistake (causes.SHARED, Ball on the Ramp's words) with this
+    lab's note after its sentence, or the lab's own sentence."""
+    shared = mistake_id in SHARED
+    return Form(mistake_id, None if shared else note, lambda case: _clamp_forms(case)[name], hint,
+                f"{SHARED[mistake_id]} {note}" if shared and note else None)
+
+
+# the known wrong clamps of step 5 (_clamp_forms): the mistake, its note or sentence, the hint
+CLAMP_FORMS = (
+    _clamp_form("unclamped", "friction_unclamped", "(min(mu·j, jt) alone clamps nothing: jt <= 0 here)"),
+    _clamp_form("vn_signed", "friction_bound_vn_signed", "the clamp uses mu × vn, the closing speed with its sign, "
+                "where Coulomb's law uses mu × j"),
+    _clamp_form("vn_abs", "friction_bound_vn", "the clamp uses mu × the closing speed |vn| where Coulomb's law uses "
+                "mu × j"),
+    _clamp_form("slip", "friction_bound_slip", "the clamp uses mu × the slip speed where Coulomb's law uses mu × j"),
+    _clamp_form("rel", "friction_bound_rel", "the clamp uses mu × the relative speed |rel| where Coulomb's law uses "
+                "mu × j"),
+    _clamp_form("k", "friction_bound_k", "the clamp uses mu × k where Coulomb's law uses mu × j"),
+    _clamp_form("mu", "friction_bound_mu", ""),
+    _clamp_form("half", "friction_bound_half", "the bound is mu·j / 2; Coulomb's law lets |jt| reach mu·j"),
+    _clamp_form("always_full", "friction_always_full", ""),
+    _clamp_form("clamp_loses_sign", "friction_clamp_loses_sign", ""),
+    _clamp_form("sign", "friction_sign", "(a flipped jt, or min(|jt|, mu·j), which loses jt's sign)", "friction_sign"),
+)
 
 
 def _clamp_forms(case):
-    """{name: the friction impulse jt a known wrong clamp gives in this case} (CLAMP_MISTAKES), from the
+    """{name: the friction impulse jt a known wrong clamp gives in this case} (CLAMP_FORMS), from the
     case's own j, so a mistake in step 4 does not show here."""
     friction, j, mu, vn = case["friction"], case["j"], case["mu"], case["vn"]
     stop = friction["stop"]
@@ -432,107 +423,131 @@ def _clamp_forms(case):
             "clamp_loses_sign": mu * j if abs(stop) > mu * j else stop}
 
 
-@CHECKS.check(depends=["loads"])
-def resolve_friction(sub, functions):
-    """Step 5: resolve() clamps friction with Coulomb's law, |jt| <= mu j, and leaves smaller jt alone."""
-    cases = _function(sub, functions, "resolve", "resolve", 5)
-    _unchanged_arguments(cases, "resolve", "the World goes on using the contact's {name} for its other contact "
-                         "points and the push-out", arguments_hint(5, "resolve"))
+def _friction_graded(cases, sub=None):
+    """The contacts with a normal impulse and a slip to grade; Fail when none is (nothing graded is no pass)."""
+    unchanged_arguments("resolve", "the World goes on using the contact's {name} for its other contact points and "
+                        "the push-out", arguments_hint(5, "resolve"))(cases)
     graded = [case for case in cases if case["friction"] is not None and case["j"] is not None]
-    if not graded:   # nothing to compare is no pass: a resolve() that returns before step 4 applies no impulse
+    if not graded:   # a resolve() that returns before step 4 applies no impulse
         said = "applied no impulse" if all(case["calls"] == 0 for case in cases) else "left no slip to stop"
         raise Fail(f"resolve() {said} in any of the {len(cases)} contacts: nothing was graded.\n"
                    "Write step 4 (the normal impulse) first, then step 5's friction after it.",
                    HINTS["friction_clamp"])
-    for case in graded:
-        friction, j, mu = case["friction"], case["j"], case["mu"]
-        stop, jt = friction["stop"], friction["jt"]
-        bound = mu * j  # with your own j, so a mistake in step 4 does not show here
-        want = max(-bound, min(bound, stop))
-        if _close(jt, want) and friction["off_tangent"] <= ABS + REL * abs(jt):
-            continue
-        active = abs(stop) > abs(bound)
-        where = f"in '{case['case']}'" + (", where |jt| > mu·j" if active else "")
-        numbers = (f"{where}: the slip needs jt = {stop:.4g}, mu·j = {mu:.2g} × {j:.4g} = {bound:.4g}, so jt = "
-                   f"{want:.4g}; yours {jt:.4g}.")
-        if friction.get("missing"):
-            found = mistake("friction_missing")
-            raise Fail(f"{found.text}.\n{numbers}", HINTS["friction_clamp"], found)
-        fitting = fitting_mistakes(graded, lambda c, name: _close(c["friction"]["jt"], _clamp_forms(c)[name]),
-                                   [name for name, value in _clamp_forms(case).items() if not _close(value, want)])
-        if sorted(fitting) == ["clamp_loses_sign", "sign"]:
-            fitting = ["sign"]   # every case that decides it binds: the sign's sentence names both forms
-        if len(fitting) == 1:
-            found, first, key = _clamp_mistake(fitting[0])
-            raise Fail(f"{first}.\n{numbers}", HINTS[key], found)
-        if jt * stop < 0:
-            raise Fail(f"friction pushes the slide along instead of against it.\n{numbers}", HINTS["friction_sign"])
-        if active and _close(jt, stop):
-            raise Fail(f"the friction impulse was not clamped here (no clamp, or a bound above mu·j).\n{numbers}",
-                       HINTS["friction_clamp"])
-        if not active and _close(abs(jt), abs(bound)):
-            raise Fail(f"friction takes its full mu·j where a smaller impulse already stops the slip.\n{numbers}",
-                       HINTS["friction_clamp"])
-        if active and abs(jt) < abs(bound):
-            raise Fail(f"the clamp is too tight: |jt| may reach mu·j.\n{numbers}", HINTS["friction_clamp"])
-        raise Fail(f"the friction impulse is not Coulomb's clamped jt.\n{numbers}", HINTS["friction_clamp"])
-    active = sum(1 for c in cases if c["friction"] and abs(c["friction"]["stop"]) > c["mu"] * abs(c["j"] or 0))
-    return f"friction matches Coulomb's law in all {len(cases)} contacts ({active} of them clamped)"
+    return graded
+
+
+def _friction_read(case):
+    """The student's jt, or nan when the friction impulse also pushes off the tangent."""
+    jt = case["friction"]["jt"]
+    return jt if case["friction"]["off_tangent"] <= ABS + REL * abs(jt) else math.nan
+
+
+def _friction_diagnosis(cases, case):
+    """No friction impulse at all; or a clamp that loses the sign, which a flipped jt gives too wherever a case
+    tells them apart (every case that decides it binds): the sign's sentence names both."""
+    if case["friction"].get("missing"):
+        return Form("friction_missing", None)
+    fitting = [form for form in CLAMP_FORMS if not _same(case["forms"][form.id], case["want"])
+               and all(_same(c["got"], c["forms"][form.id]) for c in cases)]
+    return fitting[-1] if [form.id for form in fitting] == ["friction_clamp_loses_sign", "friction_sign"] else None
+
+
+def _friction_fallback(cases, case):
+    """What one case shows when no known clamp is named."""
+    stop, jt, bound = case["friction"]["stop"], case["friction"]["jt"], case["mu"] * case["j"]
+    active = abs(stop) > abs(bound)
+    if jt * stop < 0:
+        return Form(None, "friction pushes the slide along instead of against it", hint="friction_sign")
+    if active and _close(jt, stop):
+        return Form(None, "the friction impulse was not clamped here (no clamp, or a bound above mu·j)")
+    if not active and _close(abs(jt), abs(bound)):
+        return Form(None, "friction takes its full mu·j where a smaller impulse already stops the slip")
+    return Form(None, "the clamp is too tight: |jt| may reach mu·j") if active and abs(jt) < abs(bound) else None
+
+
+def _clamping(cases):
+    return sum(1 for case in cases if abs(case["friction"]["stop"]) > case["mu"] * abs(case["j"]))
+
+
+def _friction_evidence(case):
+    stop, j, mu = case["friction"]["stop"], case["j"], case["mu"]
+    where = f"in '{case['case']}'" + (", where |jt| > mu·j" if abs(stop) > abs(mu * j) else "")
+    return (f"{where}: the slip needs jt = {stop:.4g}, mu·j = {mu:.2g} × {j:.4g} = {mu * j:.4g}, so jt = "
+            f"{case['want']:.4g}; yours {case['friction']['jt']:.4g}.")
+
+
+SharedStep(
+    "resolve_friction", "Step 5: resolve() clamps friction with Coulomb's law, |jt| <= mu j, and leaves smaller jt "
+    "alone.", 5, "resolve", probe_name="resolve", screen=_friction_graded, read=_friction_read,
+    lesson=lambda c: max(-c["mu"] * c["j"], min(c["mu"] * c["j"], c["friction"]["stop"])),   # with your own j
+    wrong=CLAMP_FORMS, same=_same, diagnose=_friction_diagnosis, fallback=_friction_fallback,
+    evidence=_friction_evidence, unnamed="the friction impulse is not Coulomb's clamped jt", hint="friction_clamp",
+    passed=lambda cases: f"friction matches Coulomb's law in all {len(cases)} contacts ({_clamping(cases)} of them "
+    "clamped)").register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- step 6: apply_impulse()
 
-def _spin_mistake(case, body, delta, want):
-    """(Mistake, hint key) naming a plausible step-6 mistake for one body's spin change, or None."""
-    sign = -1 if body == "a" else 1
-    other = "b" if body == "a" else "a"
-    inv_mass, inv_inertia = case["inv"][body]
-    letter = body.upper()
-    candidates = [
-        (0.0, "spin_missing", f"{letter}'s spin did not change: its spin update is missing", "spin_missing"),
-        (-want, "spin_wrong_way", f"{letter}'s spin changed the wrong way: A uses -=, B uses += (cross(ra, P) = "
-                                  "-cross(P, ra))", "spin_swapped"),
-        (sign * case["cross"][body] * inv_mass, "spin_inv_mass",
-         f"{letter}'s spin update uses inv_mass where inv_inertia belongs", "spin_terms"),
-        (sign * case["cross"][other] * inv_inertia, "spin_other_lever",
-         f"{letter}'s spin update uses r{other} where r{body} belongs", "spin_terms"),
-        (sign * case["cross"][body] * case["inv"][other][1], "spin_other_inertia",
-         f"{letter}'s spin update uses {other.upper()}'s inv_inertia", "spin_terms"),
-    ]
-    for value, name, text, key in candidates:
-        if _close(delta, value) and not _close(value, want):
-            return mistake(name, text), key
-    return None
+def _motion(bodies):
+    """Both bodies' motion laid flat: [vA.x, vA.y, ωA, vB.x, vB.y, ωB]."""
+    return [x for side in "ab" for x in (*bodies[side]["vel"], bodies[side]["omega"])]
 
 
-@CHECKS.check(depends=["loads"])
-def apply_impulse_spin(sub, functions):
-    """Step 6: apply_impulse() changes both spins, A by -(ra × P)/I_A and B by +(rb × P)/I_B."""
-    cases = _function(sub, functions, "apply_impulse", "apply_impulse", 6)
-    _unchanged_arguments(cases, "apply_impulse", "resolve() goes on using its {name} for the friction impulse",
-                         arguments_hint(6, "apply_impulse"))
-    for case in cases:
-        for body in ("a", "b"):
-            before, after, want = case["before"][body], case["after"][body], case["expected"][body]
-            letter = body.upper()
-            if not all(_close(g, w) for g, w in zip(after["vel"], want["vel"])):
-                raise Fail(f"{letter}'s velocity changed: keep the handout's velocity lines (a.vel -= impulse * "
-                           f"a.inv_mass, b.vel +=).\nin '{case['case']}', {letter} moves at {_vec(after['vel'])} px/s "
-                           f"after the impulse; expected {_vec(want['vel'])}.", HINTS["spin_terms"])
-            if _close(after["omega"], want["omega"]):
-                continue
-            delta = after["omega"] - before["omega"]
-            change = want["omega"] - before["omega"]
-            named = _spin_mistake(case, body, delta, change)
-            if _close(after["omega"], change) and not _close(change, want["omega"]):
-                named = (mistake("spin_assigned", f"{letter}'s spin was set to the change instead of changed by it: "
-                                                  f"use {body}.omega {'-' if body == 'a' else '+'}="), "spin_terms")
-            found, key = named or (None, "spin_terms")
-            first = found.text if found else f"{letter}'s spin change is not -(ra × P)/I_A, +(rb × P)/I_B"
-            raise Fail(f"{first}.\nin '{case['case']}', ω{letter} went from {before['omega']:.4g} to "
-                       f"{after['omega']:.4g} rad/s; expected {want['omega']:.4g} ({change:+.4g}).", HINTS[key],
-                       found)
-    return f"both spins change as the lesson says in all {len(cases)} cases"
+def _first_wrong(case):
+    """("a" or "b", "vel" or "omega"): the first part of the two bodies' motion that is not the lesson's."""
+    for side in "ab":
+        after, want = case["after"][side], case["expected"][side]
+        if not all(_close(g, w) for g, w in zip(after["vel"], want["vel"])):
+            return side, "vel"
+        if not _close(after["omega"], want["omega"]):
+            return side, "omega"
+
+
+def _spin_diagnosis(cases, case):
+    """The step-6 mistake one body's motion shows in this case: its velocity changed, or a known wrong spin update."""
+    body, part = _first_wrong(case)
+    letter, other, sign = body.upper(), "b" if body == "a" else "a", -1 if body == "a" else 1
+    if part == "vel":
+        return Form(None, f"{letter}'s velocity changed: keep the handout's velocity lines (a.vel -= impulse * "
+                          "a.inv_mass, b.vel +=)")
+    before, after, want = (case[key][body]["omega"] for key in ("before", "after", "expected"))
+    change, inv_mass, inv_inertia = want - before, *case["inv"][body]
+    if _close(after, change) and not _close(change, want):
+        return Form("spin_assigned", f"{letter}'s spin was set to the change instead of changed by it: use "
+                                     f"{body}.omega {'-' if body == 'a' else '+'}=")
+    for value, name, text, key in (
+            (0.0, "spin_missing", f"{letter}'s spin did not change: its spin update is missing", "spin_missing"),
+            (-change, "spin_wrong_way", f"{letter}'s spin changed the wrong way: A uses -=, B uses += (cross(ra, P) "
+                                        "= -cross(P, ra))", "spin_swapped"),
+            (sign * case["cross"][body] * inv_mass, "spin_inv_mass",
+             f"{letter}'s spin update uses inv_mass where inv_inertia belongs", "spin_terms"),
+            (sign * case["cross"][other] * inv_inertia, "spin_other_lever",
+             f"{letter}'s spin update uses r{other} where r{body} belongs", "spin_terms"),
+            (sign * case["cross"][body] * case["inv"][other][1], "spin_other_inertia",
+             f"{letter}'s spin update uses {other.upper()}'s inv_inertia", "spin_terms")):
+        if _close(after - before, value) and not _close(value, change):
+            return Form(name, text, hint=key)
+    return Form(None, f"{letter}'s spin change is not -(ra × P)/I_A, +(rb × P)/I_B")
+
+
+def _spin_evidence(case):
+    body, part = _first_wrong(case)
+    letter, (before, after, want) = body.upper(), (case[key][body] for key in ("before", "after", "expected"))
+    if part == "vel":
+        return (f"in '{case['case']}', {letter} moves at {_vec(after['vel'])} px/s after the impulse; expected "
+                f"{_vec(want['vel'])}.")
+    return (f"in '{case['case']}', ω{letter} went from {before['omega']:.4g} to {after['omega']:.4g} rad/s; expected "
+            f"{want['omega']:.4g} ({want['omega'] - before['omega']:+.4g}).")
+
+
+SharedStep(
+    "apply_impulse_spin", "Step 6: apply_impulse() changes both spins, A by -(ra × P)/I_A and B by +(rb × P)/I_B.",
+    6, "apply_impulse", probe_name="apply_impulse", read=lambda c: _motion(c["after"]),
+    lesson=lambda c: _motion(c["expected"]), same=lambda got, want: all(_close(g, w) for g, w in zip(got, want)),
+    screen=unchanged_arguments("apply_impulse", "resolve() goes on using its {name} for the friction impulse",
+                               arguments_hint(6, "apply_impulse")),
+    diagnose=_spin_diagnosis, evidence=_spin_evidence, hint="spin_terms",
+    passed="both spins change as the lesson says in all {n} cases").register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- the scenes and the lesson's criteria
