@@ -162,21 +162,26 @@ def _overlaps(case):
     return probes.axis_overlaps(pa, pb), len(probes.edge_normals(pa))
 
 
-def _depth_mistake(case, depth):
-    """The Mistake of a plausible step-2 loop that gives `depth` for this overlapping pair, or None."""
+def _gap_side(case):
+    overlaps, count_a = _overlaps(case)
+    return "A's" if any(o <= 0 for _, o, _ in overlaps[:count_a]) else "B's"
+
+
+def _depth_form(case, depth):
+    """The Form of a plausible step-2 loop that gives `depth` for this overlapping pair, or None."""
     overlaps, count_a = _overlaps(case)
     lesson = [o for _, o, _ in overlaps]
     if _close(depth, max(lesson)):
-        return mistake("sat_largest", "that is the LARGEST overlap: keep the smallest (best_depth starts at "
-                                      "math.inf, update when overlap < best_depth)")
+        return Form("sat_largest", "that is the LARGEST overlap: keep the smallest (best_depth starts at math.inf, "
+                                   "update when overlap < best_depth)")
     closing = lesson[:count_a - 1] + lesson[count_a:-1]  # every edge but each shape's closing edge
     if closing and _close(depth, min(closing)):
-        return mistake("sat_closing_edge", "that is the smallest overlap with the closing edge left out: test "
-                                           "every edge, the last point back to the first too")
+        return Form("sat_closing_edge", "that is the smallest overlap with the closing edge left out: test every "
+                                        "edge, the last point back to the first too")
     if _close(depth, min(lesson[:count_a])) or _close(depth, min(lesson[count_a:])):
         which = "A's" if _close(depth, min(lesson[:count_a])) else "B's"
-        return mistake("sat_one_shape", f"that is the smallest overlap over {which} edge normals only: loop over "
-                                        "both shapes' edge normals")
+        return Form("sat_one_shape", f"that is the smallest overlap over {which} edge normals only: loop over both "
+                                     "shapes' edge normals")
     return None
 
 
@@ -194,30 +199,37 @@ SAT_MISTAKES = {
 
 
 def _same_hit(got, form):
-    """The student's sat() answer is `form` (a probes.SAT_LOOPS answer): both None, or the same depth and axis
-    up to its sign (step 3, the lesson's in the step-2 probe, may have turned it round)."""
+    """Two sat() answers agree: both None, or the same depth and axis up to its sign (step 3, the lesson's in the
+    step-2 probe, may have turned it round). "raises" (a probes.SAT_LOOPS loop that keeps no axis) and a malformed
+    answer agree with nothing."""
     if got is None or form is None:
         return got is None and form is None
-    if form == "raises" or "bad" in got:
+    if "raises" in (got, form) or "bad" in got:
         return False
     return _close(abs(got["depth"]), form["depth"]) and any(
         all(_close(g, sign * f) for g, f in zip(got["normal"], form["normal"])) for sign in (1, -1))
 
 
-def _sat_mistake(cases, case):
-    """The Mistake of the one known wrong step-2 loop that gives the student's answer for every pair, or None."""
-    differs = [name for name, form in case.get("mistakes", {}).items() if not _same_hit(case["lesson"], form)
-               and name in SAT_MISTAKES]
-    named = consistent_mistake(cases, lambda c, name: _same_hit(c["got"], c["mistakes"][name]), differs)
-    return mistake(f"sat_{named}", SAT_MISTAKES[named]) if named else None
+def _sat_fault(case):
+    """What is wrong with sat()'s answer for one pair (step 2), or None: "gap" (a hit where the shapes are
+    apart), "apart" (None where they overlap), "depth", "unit" (the normal's length) or "axis"."""
+    got, want = case["got"], case["lesson"]
+    if want is None:
+        touching = "touching" in case["pair"] and got is not None and abs(got["depth"]) <= TOUCHING
+        return "gap" if got is not None and not touching else None
+    if got is None:
+        return "apart"
+    matches = [ref for ref in (want, case["short"]) if _close(abs(got["depth"]), ref["depth"])]
+    if not matches:   # the depth's sign is step 3's business
+        return "depth"
+    if abs(math.hypot(*got["normal"]) - 1) > 1e-6:
+        return "unit"
+    ref = matches[0]["normal"]
+    return "axis" if abs(abs(got["normal"][0] * ref[0] + got["normal"][1] * ref[1]) - 1) > 1e-6 else None
 
 
-@CHECKS.check(depends=["loads"])
-def sat_axes(sub, functions):
-    """Step 2: sat() finds the smallest overlap over both shapes' edge normals (depth and axis), and None when apart."""
-    cases = _function(sub, functions, "sat_step2", "sat", 2)  # your step 2 with the lesson's step 3
-    if cases is None:  # the step markers are broken (handout_unchanged says so): grade sat() as it is
-        cases = _function(sub, functions, "sat", "sat", 2)
+def _sat_screen(cases, sub):
+    """Fail first on an answer that is not (normal, depth) or None, and when sat() says apart for every hit."""
     for case in cases:
         if case["got"] is not None and "bad" in case["got"]:
             raise Fail(f"sat() must return (normal, depth) or None.\nfor {_label(case)} it returned "
@@ -232,46 +244,51 @@ def sat_axes(sub, functions):
             text, found = "sat() returned None for every pair, even those that overlap", None
         raise Fail(f"{text}.\nsat() said apart for all {len(hits)} overlapping pairs, e.g. {_label(hits[0])}, "
                    f"{hits[0]['lesson']['depth']:.2f} px deep.", HINTS["sat_none"], found)
-    for case in cases:
-        got, want, short = case["got"], case["lesson"], case["short"]
-        label = _label(case)
-        if want is None:
-            if got is not None and not ("touching" in case["pair"] and abs(got["depth"]) <= TOUCHING):
-                overlaps, count_a = _overlaps(case)
-                gap_a = any(o <= 0 for _, o, _ in overlaps[:count_a])
-                where = "A's" if gap_a else "B's"
-                found = _sat_mistake(cases, case) or mistake("sat_misses_gap", "sat() says overlap where one "
-                                                                               "edge normal shows a gap")
-                first = found.text if found.id != "sat_misses_gap" else \
-                    f"sat() misses a gap: one of {where} edge normals shows a gap between the shadows"
-                raise Fail(f"{first}.\nfor {label}, sat() says they overlap by {got['depth']:.2f} px; one of "
-                           f"{where} edge normals shows a gap.", HINTS["sat_apart"], found)
-            continue
-        if got is None:
-            found = _sat_mistake(cases, case)
-            first = found.text if found else "sat() says apart where the shapes overlap"
-            raise Fail(f"{first}.\nfor {label}, the smallest overlap is {want['depth']:.2f} px along "
-                       f"{_vec(want['normal'])}; sat() says apart.", HINTS["sat_depth"], found)
-        depth = abs(got["depth"])  # the depth's sign is step 3's business
-        matches = [ref for ref in (want, short) if _close(depth, ref["depth"])]
-        if not matches:
-            deep = " (one shape deep inside the other)" if not _close(want["depth"], short["depth"]) else ""
-            found = _sat_mistake(cases, case) or _depth_mistake(case, depth)
-            first = found.text if found else "sat() does not find the smallest overlap"
-            raise Fail(f"{first}.\nfor {label}{deep}: depth {depth:.4g} px; the smallest overlap is "
-                       f"{want['depth']:.4g} px along {_vec(want['normal'])}.", HINTS["sat_depth"], found)
-        ref = matches[0]["normal"]
-        length = math.hypot(*got["normal"])
-        if abs(length - 1) > 1e-6:
-            found = _sat_mistake(cases, case)
-            first = found.text if found else "sat()'s normal is not a unit vector (edge_normals gives unit axes)"
-            raise Fail(f"{first}.\nfor {label}, the normal has length {length:.4g}.", HINTS["sat_depth"], found)
-        along = got["normal"][0] * ref[0] + got["normal"][1] * ref[1]
-        if abs(abs(along) - 1) > 1e-6:
-            text = "the depth is right but not its axis: keep best_axis and best_depth together"
-            raise Fail(f"{text}.\nfor {label}: axis {_vec(got['normal'])}; the smallest overlap is along "
-                       f"{_vec(ref)} (or its opposite).", HINTS["sat_depth"], mistake("sat_axis_apart", text))
-    return Passed(f"all {len(cases)} pairs give the lesson's depth and axis", value=cases)
+    return cases
+
+
+def _sat_diagnosis(cases, case):
+    """A depth right on the wrong axis; a hit where one edge normal shows a gap (a known loop, else the gap)."""
+    fault = _sat_fault(case)
+    if fault == "axis":
+        return Form("sat_axis_apart", "the depth is right but not its axis: keep best_axis and best_depth together")
+    if fault == "gap":
+        form = SAT_AXES.named(cases, case)
+        return Form(form.id, form.text, hint="sat_apart") if form else Form(
+            "sat_misses_gap", "sat() says overlap where one edge normal shows a gap", hint="sat_apart",
+            line=f"sat() misses a gap: one of {_gap_side(case)} edge normals shows a gap between the shadows")
+    return None
+
+
+def _sat_evidence(case):
+    got, want, label, fault = case["got"], case["lesson"], _label(case), _sat_fault(case)
+    if fault == "gap":
+        return (f"for {label}, sat() says they overlap by {got['depth']:.2f} px; one of {_gap_side(case)} edge "
+                "normals shows a gap.")
+    if fault == "apart":
+        return f"for {label}, the smallest overlap is {want['depth']:.2f} px along {_vec(want['normal'])}; sat() says apart."
+    if fault == "depth":
+        deep = " (one shape deep inside the other)" if not _close(want["depth"], case["short"]["depth"]) else ""
+        return (f"for {label}{deep}: depth {abs(got['depth']):.4g} px; the smallest overlap is {want['depth']:.4g} px "
+                f"along {_vec(want['normal'])}.")
+    if fault == "unit":
+        return f"for {label}, the normal has length {math.hypot(*got['normal']):.4g}."
+    ref = (want if _close(abs(got["depth"]), want["depth"]) else case["short"])["normal"]
+    return f"for {label}: axis {_vec(got['normal'])}; the smallest overlap is along {_vec(ref)} (or its opposite)."
+
+
+SAT_UNNAMED = {"apart": "sat() says apart where the shapes overlap", "depth": "sat() does not find the smallest overlap",
+               "unit": "sat()'s normal is not a unit vector (edge_normals gives unit axes)"}
+SAT_AXES = SharedStep(
+    "sat_axes", "Step 2: sat() finds the smallest overlap over both shapes' edge normals (depth and axis), and None "
+    "when apart.", 2, "sat", probe_name="sat_step2", fallbacks=("sat",),   # your step 2 with the lesson's step 3;
+    screen=_sat_screen, read=lambda c: c["got"], lesson=lambda c: c["lesson"],   # sat() as it is if no markers
+    wrong=forms_of(SAT_MISTAKES, lambda c: c["mistakes"], "sat_"), same=_same_hit,
+    passes=lambda c: _sat_fault(c) is None, diagnose=_sat_diagnosis,
+    fallback=lambda cases, c: _depth_form(c, abs(c["got"]["depth"])) if _sat_fault(c) == "depth" else None,
+    evidence=_sat_evidence, unnamed=lambda c: SAT_UNNAMED[_sat_fault(c)], hint="sat_depth",
+    passed="all {n} pairs give the lesson's depth and axis")
+SAT_AXES.register(CHECKS, HINTS)
 
 
 # step 3's known wrong flips (probes._flip_mistakes_reference), named when one gives every pair's normal
@@ -285,55 +302,69 @@ FLIP_MISTAKES = {
 }
 
 
-def _flip_mistake(cases, case):
-    """The Mistake of the one known wrong step-3 flip that gives the student's normal for every pair, or None."""
-    def gives(c, name):
-        form = c.get("flips", {}).get(name)
-        if form is None:   # the pair is apart: sat_axes already holds the student's None there
-            return c["got"] is None
-        return c["got"] is not None and all(_close(g, f) for g, f in zip(c["got"]["normal"], form))
-    differs = [name for name, form in case.get("flips", {}).items()
-               if not all(_close(f, w) for f, w in zip(form, case["lesson"]["normal"])) and name in FLIP_MISTAKES]
-    named = consistent_mistake(cases, gives, differs)
-    return mistake(f"normal_{named}", FLIP_MISTAKES[named]) if named else None
+def _normal_fault(case):
+    """What is wrong with sat()'s answer for one pair after step 3, or None: "found" (step 3 changed what step 2
+    found), "part" (more than the direction), "depth" (negated) or "flip" (the normal points from B to A)."""
+    got, want, before = case["got"], case["lesson"], case["before"]
+    if (got is None) != (before is None) or (got is not None and "bad" in got):
+        return "found"
+    if got is None or want is None:
+        return None
+    if not _close(abs(got["depth"]), abs(before["depth"])) or \
+            abs(abs(got["normal"][0] * before["normal"][0] + got["normal"][1] * before["normal"][1]) - 1) > 1e-6:
+        return "part"
+    if got["depth"] < 0:
+        return "depth"
+    towards_b = (case["centre_b"][0] - case["centre_a"][0]) * got["normal"][0] + \
+                (case["centre_b"][1] - case["centre_a"][1]) * got["normal"][1]
+    return "flip" if towards_b < 0 else None
 
 
-@CHECKS.check(depends=["loads", "sat_axes"])
-def sat_normal(sub, functions, step2_cases):
-    """Step 3: the normal sat() returns points from A to B, with a positive depth."""
-    cases = _function(sub, functions, "sat", "sat", 3)
-    if not any(case["got"] is not None and case["lesson"] is not None for case in cases):   # no vacuous pass
+def _normal_screen(cases, sub, step2_cases):
+    """No vacuous pass; each pair with what step 2 alone found for it (sat_axes' cases)."""
+    if not any(case["got"] is not None and case["lesson"] is not None for case in cases):
         raise Fail(f"sat() found no overlap in any of the {len(cases)} pairs.\nSo the direction of its normal could "
                    "not be graded (nothing was graded).", HINTS["normal_flipped"])
-    for case, step2 in zip(cases, step2_cases):
-        got, want, before = case["got"], case["lesson"], step2["got"]
-        if (got is None) != (before is None) or (got is not None and "bad" in got):
-            said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
-                                                f"overlaps by {got['depth']:.2f} px")
-            raise Fail(f"your step 3 changes what sat() finds; it only turns the normal round.\nfor "
-                       f"{_label(case)} sat() says {said}; with step 2 alone it was "
-                       f"{'apart' if before is None else 'a hit'}.", HINTS["normal_flipped"])
-        if got is None or want is None:
-            continue
-        if not _close(abs(got["depth"]), abs(before["depth"])) or \
-                abs(abs(got["normal"][0] * before["normal"][0] + got["normal"][1] * before["normal"][1]) - 1) > 1e-6:
-            text = "your step 3 changes more than the normal's direction: turn the whole axis, best_axis = -best_axis"
-            raise Fail(f"{text}.\nfor {_label(case)} step 2 found {abs(before['depth']):.2f} px along "
-                       f"{_vec(before['normal'])}; sat() returns {got['depth']:.2f} px along {_vec(got['normal'])}.",
-                       HINTS["normal_flipped"], mistake("normal_part_flipped", text))
-        if got["depth"] < 0:
-            text = "sat() gives a negative depth: flip the axis (best_axis = -best_axis), not the depth"
-            raise Fail(f"{text}.\nfor {_label(case)}: depth {got['depth']:.2f} px.", HINTS["normal_flipped"],
-                       mistake("normal_depth_negated", text))
-        towards_b = (case["centre_b"][0] - case["centre_a"][0]) * got["normal"][0] + \
-                    (case["centre_b"][1] - case["centre_a"][1]) * got["normal"][1]
-        if towards_b < 0:
-            flipped = (-got["normal"][0], -got["normal"][1])
-            found = _flip_mistake(cases, case)
-            first = found.text if found else "sat()'s normal points from B to A"
-            raise Fail(f"{first}.\nfor {_label(case)} the normal {_vec(got['normal'])} points from B to A; expected "
-                       f"{_vec(flipped)}.", HINTS["normal_flipped"], found)
-    return f"the normal points from A to B in all {len(cases)} pairs"
+    return [dict(case, before=step2["got"]) for case, step2 in zip(cases, step2_cases)]
+
+
+NORMAL_FAULTS = {
+    "found": Form(None, "your step 3 changes what sat() finds; it only turns the normal round"),
+    "part": Form("normal_part_flipped", "your step 3 changes more than the normal's direction: turn the whole "
+                                        "axis, best_axis = -best_axis"),
+    "depth": Form("normal_depth_negated", "sat() gives a negative depth: flip the axis (best_axis = -best_axis), "
+                                          "not the depth"),
+}
+
+
+def _normal_evidence(case):
+    got, before, label, fault = case["got"], case["before"], _label(case), _normal_fault(case)
+    if fault == "found":
+        said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
+                                            f"overlaps by {got['depth']:.2f} px")
+        return f"for {label} sat() says {said}; with step 2 alone it was {'apart' if before is None else 'a hit'}."
+    if fault == "part":
+        return (f"for {label} step 2 found {abs(before['depth']):.2f} px along {_vec(before['normal'])}; sat() "
+                f"returns {got['depth']:.2f} px along {_vec(got['normal'])}.")
+    if fault == "depth":
+        return f"for {label}: depth {got['depth']:.2f} px."
+    return (f"for {label} the normal {_vec(got['normal'])} points from B to A; expected "
+            f"{_vec((-got['normal'][0], -got['normal'][1]))}.")
+
+
+def _same_normal(got, want):
+    return (got is None) == (want is None) and (got is None or all(_close(g, w) for g, w in zip(got, want)))
+
+
+SharedStep(
+    "sat_normal", "Step 3: the normal sat() returns points from A to B, with a positive depth.", 3, "sat",
+    probe_name="sat", screen=_normal_screen, read=lambda c: c["got"] and c["got"].get("normal"),
+    lesson=lambda c: c["lesson"] and c["lesson"]["normal"], wrong=forms_of(FLIP_MISTAKES, lambda c: c["flips"],
+                                                                           "normal_"),
+    same=_same_normal, passes=lambda c: _normal_fault(c) is None, diagnose=lambda cases, c: NORMAL_FAULTS.get(
+        _normal_fault(c)), evidence=_normal_evidence, unnamed="sat()'s normal points from B to A",
+    hint="normal_flipped", passed="the normal points from A to B in all {n} pairs",
+).register(CHECKS, HINTS, depends=("loads", "sat_axes"))
 
 
 # ---------------------------------------------------------------- steps 4 and 5: resolve()
