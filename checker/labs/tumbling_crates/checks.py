@@ -1,22 +1,12 @@
 """Tumbling Crates (Lesson 11 practice exercise): the checks, their bounds and the hints.
 
-Order of checks (stable), one per lesson step where a step is the student's:
-  loads, handout_unchanged, runtime_lines,
-  sat_axes (step 2), sat_normal (step 3), resolve_k (step 4), resolve_friction (step 5),
-  apply_impulse_spin (step 6),
-  runs, then the lesson's four done-criteria: corner_tips, ramp_holds, pile_stable, fast_movers_zero.
-Checks are worth 1 point, the four criteria 2 points each.
-
-The function checks compare the student's sat, resolve and apply_impulse with
-the lesson's formulas on the configurations of checker/labs/tumbling_crates/probes.py and
-name the first configuration that differs. resolve is probed with the
-library's apply_impulse, so steps 4 and 5 can be confirmed before step 6 is
-written. The scenes run only when every function check passes (the criteria
-depend on them), so a mistake is reported once, under its own step.
-
-Every bound of the criteria was set from what solutions/tumbling_crates.py
-measures in the same scenario (lesson11/crate_scenes.py has the scenes and the bounds),
-with the measured value noted next to it.
+Checks, in order: loads, handout_unchanged, runtime_lines; sat_axes (step 2), sat_normal (step 3), resolve_k
+(step 4), resolve_friction (step 5), apply_impulse_spin (step 6), each declared (a SharedStep over the probes of
+probes.py: the lesson's answer, the known wrong forms); runs, then the four done-criteria, 2 points each:
+corner_tips, ramp_holds, pile_stable, fast_movers_zero. resolve is probed with the library's apply_impulse, so
+steps 4 and 5 are graded before step 6 is written; the scenes run only when every function check passes, so a
+mistake is reported once, under its own step. Every bound was measured on solutions/tumbling_crates.py in the
+same scene (lesson11/crate_scenes.py has the scenes and the bounds, each beside its measured value).
 """
 import ast
 import math
@@ -26,12 +16,12 @@ from . import probes
 from . import scenes
 from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
-from checker.judging.causes import SHARED, arguments_hint, consistent_mistake, fitting_mistakes, mistake
+from checker.judging.causes import SHARED, arguments_hint, mistake
 from lesson11 import records as metrics
 from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TURN, PAIR_OVERLAP, PENETRATION,
                                    PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
                                    TIPPED_FLAT)
-from checker.judging.checks import Fail, Hint, Passed, Registry
+from checker.judging.checks import Fail, Hint, Registry
 from checker.judging.declared import Form, forms_of
 from checker.judging.declared_shared import SharedStep, unchanged_arguments
 
@@ -49,9 +39,6 @@ STEP_ADVICE = {2: "write the loop over both shapes' edge normals yourself (proje
 REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
 ABS = 1e-7      # absolute floor of the same (px, px/s, rad/s, impulse units)
 TOUCHING = 1e-6  # px: a depth this small for shapes exactly touching counts as "apart"
-
-# ---------------------------------------------------------------- bounds (measured on the solution)
-# beside the scenes they were measured on, in lesson11/crate_scenes.py (imported above)
 
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
@@ -122,11 +109,6 @@ def _close(got, want):
 
 
 _vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
-
-
-def _function(sub, functions, probe, function, step):
-    """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped."""
-    return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
 
 
 # ---------------------------------------------------------------- loading and the handout
@@ -266,7 +248,8 @@ def _sat_evidence(case):
         return (f"for {label}, sat() says they overlap by {got['depth']:.2f} px; one of {_gap_side(case)} edge "
                 "normals shows a gap.")
     if fault == "apart":
-        return f"for {label}, the smallest overlap is {want['depth']:.2f} px along {_vec(want['normal'])}; sat() says apart."
+        return (f"for {label}, the smallest overlap is {want['depth']:.2f} px along {_vec(want['normal'])}; sat() "
+                "says apart.")
     if fault == "depth":
         deep = " (one shape deep inside the other)" if not _close(want["depth"], case["short"]["depth"]) else ""
         return (f"for {label}{deep}: depth {abs(got['depth']):.4g} px; the smallest overlap is {want['depth']:.4g} px "
@@ -305,7 +288,7 @@ FLIP_MISTAKES = {
 def _normal_fault(case):
     """What is wrong with sat()'s answer for one pair after step 3, or None: "found" (step 3 changed what step 2
     found), "part" (more than the direction), "depth" (negated) or "flip" (the normal points from B to A)."""
-    got, want, before = case["got"], case["lesson"], case["before"]
+    got, want, before = case["answer"], case["lesson"], case["before"]
     if (got is None) != (before is None) or (got is not None and "bad" in got):
         return "found"
     if got is None or want is None:
@@ -321,11 +304,11 @@ def _normal_fault(case):
 
 
 def _normal_screen(cases, sub, step2_cases):
-    """No vacuous pass; each pair with what step 2 alone found for it (sat_axes' cases)."""
+    """No vacuous pass; each pair with sat()'s whole answer (its normal is graded) and what step 2 alone found."""
     if not any(case["got"] is not None and case["lesson"] is not None for case in cases):
         raise Fail(f"sat() found no overlap in any of the {len(cases)} pairs.\nSo the direction of its normal could "
                    "not be graded (nothing was graded).", HINTS["normal_flipped"])
-    return [dict(case, before=step2["got"]) for case, step2 in zip(cases, step2_cases)]
+    return [dict(case, answer=case["got"], before=step2["got"]) for case, step2 in zip(cases, step2_cases)]
 
 
 NORMAL_FAULTS = {
@@ -338,7 +321,7 @@ NORMAL_FAULTS = {
 
 
 def _normal_evidence(case):
-    got, before, label, fault = case["got"], case["before"], _label(case), _normal_fault(case)
+    got, before, label, fault = case["answer"], case["before"], _label(case), _normal_fault(case)
     if fault == "found":
         said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
                                             f"overlaps by {got['depth']:.2f} px")
