@@ -193,21 +193,30 @@ def _same_hit(got, form):
 
 
 def _sat_fault(case):
-    """What is wrong with sat()'s answer for one pair (step 2), or None: "gap" (a hit where the shapes are
-    apart), "apart" (None where they overlap), "depth", "unit" (the normal's length) or "axis"."""
-    got, want = case["got"], case["lesson"]
+    """(what is wrong with sat()'s answer for one pair in step 2, the evidence), (None, None) when nothing is: "gap"
+    (a hit where the shapes are apart), "apart" (None where they overlap), "depth", "unit" (the normal's length),
+    "axis"."""
+    got, want, label = case["got"], case["lesson"], _label(case)
     if want is None:
-        touching = "touching" in case["pair"] and got is not None and abs(got["depth"]) <= TOUCHING
-        return "gap" if got is not None and not touching else None
+        if got is None or ("touching" in case["pair"] and abs(got["depth"]) <= TOUCHING):
+            return None, None
+        return "gap", (f"for {label}, sat() says they overlap by {got['depth']:.2f} px; one of {_gap_side(case)} "
+                       "edge normals shows a gap.")
     if got is None:
-        return "apart"
+        return "apart", (f"for {label}, the smallest overlap is {want['depth']:.2f} px along {_vec(want['normal'])}; "
+                         "sat() says apart.")
     matches = [ref for ref in (want, case["short"]) if _close(abs(got["depth"]), ref["depth"])]
     if not matches:   # the depth's sign is step 3's business
-        return "depth"
-    if abs(math.hypot(*got["normal"]) - 1) > 1e-6:
-        return "unit"
-    ref = matches[0]["normal"]
-    return "axis" if abs(abs(got["normal"][0] * ref[0] + got["normal"][1] * ref[1]) - 1) > 1e-6 else None
+        deep = " (one shape deep inside the other)" if not _close(want["depth"], case["short"]["depth"]) else ""
+        return "depth", (f"for {label}{deep}: depth {abs(got['depth']):.4g} px; the smallest overlap is "
+                         f"{want['depth']:.4g} px along {_vec(want['normal'])}.")
+    length, ref = math.hypot(*got["normal"]), matches[0]["normal"]
+    if abs(length - 1) > 1e-6:
+        return "unit", f"for {label}, the normal has length {length:.4g}."
+    if abs(abs(got["normal"][0] * ref[0] + got["normal"][1] * ref[1]) - 1) > 1e-6:
+        return "axis", (f"for {label}: axis {_vec(got['normal'])}; the smallest overlap is along {_vec(ref)} (or its "
+                        "opposite).")
+    return None, None
 
 
 def _sat_screen(cases, sub):
@@ -231,7 +240,7 @@ def _sat_screen(cases, sub):
 
 def _sat_diagnosis(cases, case):
     """A depth right on the wrong axis; a hit where one edge normal shows a gap (a known loop, else the gap)."""
-    fault = _sat_fault(case)
+    fault = _sat_fault(case)[0]
     if fault == "axis":
         return Form("sat_axis_apart", "the depth is right but not its axis: keep best_axis and best_depth together")
     if fault == "gap":
@@ -242,34 +251,16 @@ def _sat_diagnosis(cases, case):
     return None
 
 
-def _sat_evidence(case):
-    got, want, label, fault = case["got"], case["lesson"], _label(case), _sat_fault(case)
-    if fault == "gap":
-        return (f"for {label}, sat() says they overlap by {got['depth']:.2f} px; one of {_gap_side(case)} edge "
-                "normals shows a gap.")
-    if fault == "apart":
-        return (f"for {label}, the smallest overlap is {want['depth']:.2f} px along {_vec(want['normal'])}; sat() "
-                "says apart.")
-    if fault == "depth":
-        deep = " (one shape deep inside the other)" if not _close(want["depth"], case["short"]["depth"]) else ""
-        return (f"for {label}{deep}: depth {abs(got['depth']):.4g} px; the smallest overlap is {want['depth']:.4g} px "
-                f"along {_vec(want['normal'])}.")
-    if fault == "unit":
-        return f"for {label}, the normal has length {math.hypot(*got['normal']):.4g}."
-    ref = (want if _close(abs(got["depth"]), want["depth"]) else case["short"])["normal"]
-    return f"for {label}: axis {_vec(got['normal'])}; the smallest overlap is along {_vec(ref)} (or its opposite)."
-
-
-SAT_UNNAMED = {"apart": "sat() says apart where the shapes overlap", "depth": "sat() does not find the smallest overlap",
-               "unit": "sat()'s normal is not a unit vector (edge_normals gives unit axes)"}
+SAT_UNNAMED = {"apart": "sat() says apart where the shapes overlap",
+               "depth": "sat() does not find the smallest overlap", "unit": "sat()'s normal is not a unit vector (edge_normals gives unit axes)"}
 SAT_AXES = SharedStep(
     "sat_axes", "Step 2: sat() finds the smallest overlap over both shapes' edge normals (depth and axis), and None "
     "when apart.", 2, "sat", probe_name="sat_step2", fallbacks=("sat",),   # your step 2 with the lesson's step 3;
     screen=_sat_screen, read=lambda c: c["got"], lesson=lambda c: c["lesson"],   # sat() as it is if no markers
     wrong=forms_of(SAT_MISTAKES, lambda c: c["mistakes"], "sat_"), same=_same_hit,
-    passes=lambda c: _sat_fault(c) is None, diagnose=_sat_diagnosis,
-    fallback=lambda cases, c: _depth_form(c, abs(c["got"]["depth"])) if _sat_fault(c) == "depth" else None,
-    evidence=_sat_evidence, unnamed=lambda c: SAT_UNNAMED[_sat_fault(c)], hint="sat_depth",
+    passes=lambda c: _sat_fault(c)[0] is None, diagnose=_sat_diagnosis,
+    fallback=lambda cases, c: _depth_form(c, abs(c["got"]["depth"])) if _sat_fault(c)[0] == "depth" else None,
+    evidence=lambda c: _sat_fault(c)[1], unnamed=lambda c: SAT_UNNAMED[_sat_fault(c)[0]], hint="sat_depth",
     passed="all {n} pairs give the lesson's depth and axis")
 SAT_AXES.register(CHECKS, HINTS)
 
@@ -286,21 +277,29 @@ FLIP_MISTAKES = {
 
 
 def _normal_fault(case):
-    """What is wrong with sat()'s answer for one pair after step 3, or None: "found" (step 3 changed what step 2
-    found), "part" (more than the direction), "depth" (negated) or "flip" (the normal points from B to A)."""
-    got, want, before = case["answer"], case["lesson"], case["before"]
+    """(what is wrong with sat()'s answer for one pair after step 3, the evidence), (None, None) when nothing is:
+    "found" (step 3 changed what step 2 found), "part" (more than the direction), "depth" (negated) or "flip" (the
+    normal points from B to A)."""
+    got, want, before, label = case["answer"], case["lesson"], case["before"], _label(case)
     if (got is None) != (before is None) or (got is not None and "bad" in got):
-        return "found"
+        said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
+                                            f"overlaps by {got['depth']:.2f} px")
+        return "found", (f"for {label} sat() says {said}; with step 2 alone it was "
+                         f"{'apart' if before is None else 'a hit'}.")
     if got is None or want is None:
-        return None
+        return None, None
     if not _close(abs(got["depth"]), abs(before["depth"])) or \
             abs(abs(got["normal"][0] * before["normal"][0] + got["normal"][1] * before["normal"][1]) - 1) > 1e-6:
-        return "part"
+        return "part", (f"for {label} step 2 found {abs(before['depth']):.2f} px along {_vec(before['normal'])}; sat() "
+                        f"returns {got['depth']:.2f} px along {_vec(got['normal'])}.")
     if got["depth"] < 0:
-        return "depth"
+        return "depth", f"for {label}: depth {got['depth']:.2f} px."
     towards_b = (case["centre_b"][0] - case["centre_a"][0]) * got["normal"][0] + \
                 (case["centre_b"][1] - case["centre_a"][1]) * got["normal"][1]
-    return "flip" if towards_b < 0 else None
+    if towards_b < 0:
+        return "flip", (f"for {label} the normal {_vec(got['normal'])} points from B to A; expected "
+                        f"{_vec((-got['normal'][0], -got['normal'][1]))}.")
+    return None, None
 
 
 def _normal_screen(cases, sub, step2_cases):
@@ -320,21 +319,6 @@ NORMAL_FAULTS = {
 }
 
 
-def _normal_evidence(case):
-    got, before, label, fault = case["answer"], case["before"], _label(case), _normal_fault(case)
-    if fault == "found":
-        said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
-                                            f"overlaps by {got['depth']:.2f} px")
-        return f"for {label} sat() says {said}; with step 2 alone it was {'apart' if before is None else 'a hit'}."
-    if fault == "part":
-        return (f"for {label} step 2 found {abs(before['depth']):.2f} px along {_vec(before['normal'])}; sat() "
-                f"returns {got['depth']:.2f} px along {_vec(got['normal'])}.")
-    if fault == "depth":
-        return f"for {label}: depth {got['depth']:.2f} px."
-    return (f"for {label} the normal {_vec(got['normal'])} points from B to A; expected "
-            f"{_vec((-got['normal'][0], -got['normal'][1]))}.")
-
-
 def _same_normal(got, want):
     return (got is None) == (want is None) and (got is None or all(_close(g, w) for g, w in zip(got, want)))
 
@@ -344,8 +328,8 @@ SharedStep(
     probe_name="sat", screen=_normal_screen, read=lambda c: c["got"] and c["got"].get("normal"),
     lesson=lambda c: c["lesson"] and c["lesson"]["normal"], wrong=forms_of(FLIP_MISTAKES, lambda c: c["flips"],
                                                                            "normal_"),
-    same=_same_normal, passes=lambda c: _normal_fault(c) is None, diagnose=lambda cases, c: NORMAL_FAULTS.get(
-        _normal_fault(c)), evidence=_normal_evidence, unnamed="sat()'s normal points from B to A",
+    same=_same_normal, passes=lambda c: _normal_fault(c)[0] is None, diagnose=lambda cases, c: NORMAL_FAULTS.get(
+        _normal_fault(c)[0]), evidence=lambda c: _normal_fault(c)[1], unnamed="sat()'s normal points from B to A",
     hint="normal_flipped", passed="the normal points from A to B in all {n} pairs",
 ).register(CHECKS, HINTS, depends=("loads", "sat_axes"))
 
@@ -508,18 +492,21 @@ def _motion(bodies):
 
 
 def _first_wrong(case):
-    """("a" or "b", "vel" or "omega"): the first part of the two bodies' motion that is not the lesson's."""
+    """(body "a" or "b", "vel" or "omega", the evidence): the first part of the motion that is not the lesson's."""
     for side in "ab":
-        after, want = case["after"][side], case["expected"][side]
+        (before, after, want), letter = (case[key][side] for key in ("before", "after", "expected")), side.upper()
         if not all(_close(g, w) for g, w in zip(after["vel"], want["vel"])):
-            return side, "vel"
+            return side, "vel", (f"in '{case['case']}', {letter} moves at {_vec(after['vel'])} px/s after the "
+                                 f"impulse; expected {_vec(want['vel'])}.")
         if not _close(after["omega"], want["omega"]):
-            return side, "omega"
+            return side, "omega", (f"in '{case['case']}', ω{letter} went from {before['omega']:.4g} to "
+                                   f"{after['omega']:.4g} rad/s; expected {want['omega']:.4g} "
+                                   f"({want['omega'] - before['omega']:+.4g}).")
 
 
 def _spin_diagnosis(cases, case):
     """The step-6 mistake one body's motion shows in this case: its velocity changed, or a known wrong spin update."""
-    body, part = _first_wrong(case)
+    body, part, _ = _first_wrong(case)
     letter, other, sign = body.upper(), "b" if body == "a" else "a", -1 if body == "a" else 1
     if part == "vel":
         return Form(None, f"{letter}'s velocity changed: keep the handout's velocity lines (a.vel -= impulse * "
@@ -544,23 +531,13 @@ def _spin_diagnosis(cases, case):
     return Form(None, f"{letter}'s spin change is not -(ra × P)/I_A, +(rb × P)/I_B")
 
 
-def _spin_evidence(case):
-    body, part = _first_wrong(case)
-    letter, (before, after, want) = body.upper(), (case[key][body] for key in ("before", "after", "expected"))
-    if part == "vel":
-        return (f"in '{case['case']}', {letter} moves at {_vec(after['vel'])} px/s after the impulse; expected "
-                f"{_vec(want['vel'])}.")
-    return (f"in '{case['case']}', ω{letter} went from {before['omega']:.4g} to {after['omega']:.4g} rad/s; expected "
-            f"{want['omega']:.4g} ({want['omega'] - before['omega']:+.4g}).")
-
-
 SharedStep(
     "apply_impulse_spin", "Step 6: apply_impulse() changes both spins, A by -(ra × P)/I_A and B by +(rb × P)/I_B.",
     6, "apply_impulse", probe_name="apply_impulse", read=lambda c: _motion(c["after"]),
     lesson=lambda c: _motion(c["expected"]), same=lambda got, want: all(_close(g, w) for g, w in zip(got, want)),
     screen=unchanged_arguments("apply_impulse", "resolve() goes on using its {name} for the friction impulse",
                                arguments_hint(6, "apply_impulse")),
-    diagnose=_spin_diagnosis, evidence=_spin_evidence, hint="spin_terms",
+    diagnose=_spin_diagnosis, evidence=lambda c: _first_wrong(c)[2], hint="spin_terms",
     passed="both spins change as the lesson says in all {n} cases").register(CHECKS, HINTS)
 
 
