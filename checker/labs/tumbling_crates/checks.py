@@ -168,7 +168,7 @@ def _depth_form(case, depth):
 
 
 # step 2's known wrong loops named by their own words (probes.SAT_LOOPS); the others (the largest overlap, one
-# shape's normals, the closing edge left out, `break`) keep _depth_mistake's and the apart message's words
+# shape's normals, the closing edge left out, `break`) keep _depth_form's and the apart message's words
 SAT_MISTAKES = {
     "gap_continue": "on an axis with a gap, sat() goes on to the next axis (`continue`) instead of returning None",
     "one_sided": "overlap = max_a - min_b holds only while B lies on A's positive side: the overlap is "
