@@ -19,10 +19,10 @@ from .declared import Step
 @dataclass
 class SharedStep(Step):
     """A declared.Step graded on the records of the existing probe `probe_name` (see the module docstring);
-    cases and call are not used. read(record): the student's answer (it replaces the record's own "got"); screen(records, sub, *given): the
-    records to grade (given: what the checks this one depends on returned); fallbacks: probes read, in order,
-    when probe_name holds no data (None); fallback(cases, case): a Form read from the case when no wrong form
-    is named (its id None: words and a hint only)."""
+    cases and call are not used. read(record): the student's answer (it replaces the record's own "got");
+    screen(records, sub, *given): the records to grade (given: what the checks this one depends on returned);
+    fallbacks: probes read, in order, when probe_name holds no data (None); fallback(cases, case): a Form read
+    from the case when no wrong form is named (its id None: words and a hint only)."""
     cases: object = None
     call: object = None
     lesson: object = None

@@ -252,11 +252,13 @@ def _sat_diagnosis(cases, case):
 
 
 SAT_UNNAMED = {"apart": "sat() says apart where the shapes overlap",
-               "depth": "sat() does not find the smallest overlap", "unit": "sat()'s normal is not a unit vector (edge_normals gives unit axes)"}
+               "depth": "sat() does not find the smallest overlap",
+               "unit": "sat()'s normal is not a unit vector (edge_normals gives unit axes)"}
+# graded on your step 2 with the lesson's step 3 (sat_step2); on sat() as it is when the step markers are broken
 SAT_AXES = SharedStep(
     "sat_axes", "Step 2: sat() finds the smallest overlap over both shapes' edge normals (depth and axis), and None "
-    "when apart.", 2, "sat", probe_name="sat_step2", fallbacks=("sat",),   # your step 2 with the lesson's step 3;
-    screen=_sat_screen, read=lambda c: c["got"], lesson=lambda c: c["lesson"],   # sat() as it is if no markers
+    "when apart.", 2, "sat", probe_name="sat_step2", fallbacks=("sat",),
+    screen=_sat_screen, read=lambda c: c["got"], lesson=lambda c: c["lesson"],
     wrong=forms_of(SAT_MISTAKES, lambda c: c["mistakes"], "sat_"), same=_same_hit,
     passes=lambda c: _sat_fault(c)[0] is None, diagnose=_sat_diagnosis,
     fallback=lambda cases, c: _depth_form(c, abs(c["got"]["depth"])) if _sat_fault(c)[0] == "depth" else None,
