@@ -1,22 +1,12 @@
 """Tumbling Crates (Lesson 11 practice exercise): the checks, their bounds and the hints.
 
-Order of checks (stable), one per lesson step where a step is the student's:
-  loads, handout_unchanged, runtime_lines,
-  sat_axes (step 2), sat_normal (step 3), resolve_k (step 4), resolve_friction (step 5),
-  apply_impulse_spin (step 6),
-  runs, then the lesson's four done-criteria: corner_tips, ramp_holds, pile_stable, fast_movers_zero.
-Checks are worth 1 point, the four criteria 2 points each.
-
-The function checks compare the student's sat, resolve and apply_impulse with
-the lesson's formulas on the configurations of checker/labs/tumbling_crates/probes.py and
-name the first configuration that differs. resolve is probed with the
-library's apply_impulse, so steps 4 and 5 can be confirmed before step 6 is
-written. The scenes run only when every function check passes (the criteria
-depend on them), so a mistake is reported once, under its own step.
-
-Every bound of the criteria was set from what solutions/tumbling_crates.py
-measures in the same scenario (lesson11/crate_scenes.py has the scenes and the bounds),
-with the measured value noted next to it.
+Checks, in order: loads, handout_unchanged, runtime_lines; sat_axes (step 2), sat_normal (step 3), resolve_k
+(step 4), resolve_friction (step 5), apply_impulse_spin (step 6), each declared (a SharedStep over the probes of
+probes.py: the lesson's answer, the known wrong forms); runs, then the four done-criteria, 2 points each:
+corner_tips, ramp_holds, pile_stable, fast_movers_zero. resolve is probed with the library's apply_impulse, so
+steps 4 and 5 are graded before step 6 is written; the scenes run only when every function check passes, so a
+mistake is reported once, under its own step. Every bound was measured on solutions/tumbling_crates.py in the
+same scene (lesson11/crate_scenes.py has the scenes and the bounds, each beside its measured value).
 """
 import ast
 import math
@@ -26,12 +16,14 @@ from . import probes
 from . import scenes
 from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
-from checker.judging.causes import SHARED, arguments_hint, consistent_mistake, fitting_mistakes, mistake
+from checker.judging.causes import SHARED, arguments_hint, mistake
 from lesson11 import records as metrics
 from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TURN, PAIR_OVERLAP, PENETRATION,
                                    PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
                                    TIPPED_FLAT)
-from checker.judging.checks import Fail, Hint, Passed, Registry
+from checker.judging.checks import Fail, Hint, Registry
+from checker.judging.declared import Form, forms_of
+from checker.judging.declared_shared import SharedStep, unchanged_arguments
 
 TITLE = "Tumbling Crates"
 # the library functions each step asks the student to write: a step that calls one fails (checker/reading/step_rules.py)
@@ -47,9 +39,6 @@ STEP_ADVICE = {2: "write the loop over both shapes' edge normals yourself (proje
 REL = 1e-7      # relative difference allowed against the reference (same inputs, other order of operations)
 ABS = 1e-7      # absolute floor of the same (px, px/s, rad/s, impulse units)
 TOUCHING = 1e-6  # px: a depth this small for shapes exactly touching counts as "apart"
-
-# ---------------------------------------------------------------- bounds (measured on the solution)
-# beside the scenes they were measured on, in lesson11/crate_scenes.py (imported above)
 
 # ---------------------------------------------------------------- the hints, in the lesson's terms
 HINTS = {
@@ -122,11 +111,6 @@ def _close(got, want):
 _vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
 
 
-def _function(sub, functions, probe, function, step):
-    """The data of one probe of a lab function; Error (under the check for `step`) if it raised or looped."""
-    return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
-
-
 # ---------------------------------------------------------------- loading and the handout
 
 lab_checks.register_common(CHECKS, HINTS, ("sat", "apply_impulse", "resolve", "main"))
@@ -160,26 +144,31 @@ def _overlaps(case):
     return probes.axis_overlaps(pa, pb), len(probes.edge_normals(pa))
 
 
-def _depth_mistake(case, depth):
-    """The Mistake of a plausible step-2 loop that gives `depth` for this overlapping pair, or None."""
+def _gap_side(case):
+    overlaps, count_a = _overlaps(case)
+    return "A's" if any(o <= 0 for _, o, _ in overlaps[:count_a]) else "B's"
+
+
+def _depth_form(case, depth):
+    """The Form of a plausible step-2 loop that gives `depth` for this overlapping pair, or None."""
     overlaps, count_a = _overlaps(case)
     lesson = [o for _, o, _ in overlaps]
     if _close(depth, max(lesson)):
-        return mistake("sat_largest", "that is the LARGEST overlap: keep the smallest (best_depth starts at "
-                                      "math.inf, update when overlap < best_depth)")
+        return Form("sat_largest", "that is the LARGEST overlap: keep the smallest (best_depth starts at math.inf, "
+                                   "update when overlap < best_depth)")
     closing = lesson[:count_a - 1] + lesson[count_a:-1]  # every edge but each shape's closing edge
     if closing and _close(depth, min(closing)):
-        return mistake("sat_closing_edge", "that is the smallest overlap with the closing edge left out: test "
-                                           "every edge, the last point back to the first too")
+        return Form("sat_closing_edge", "that is the smallest overlap with the closing edge left out: test every "
+                                        "edge, the last point back to the first too")
     if _close(depth, min(lesson[:count_a])) or _close(depth, min(lesson[count_a:])):
         which = "A's" if _close(depth, min(lesson[:count_a])) else "B's"
-        return mistake("sat_one_shape", f"that is the smallest overlap over {which} edge normals only: loop over "
-                                        "both shapes' edge normals")
+        return Form("sat_one_shape", f"that is the smallest overlap over {which} edge normals only: loop over both "
+                                     "shapes' edge normals")
     return None
 
 
 # step 2's known wrong loops named by their own words (probes.SAT_LOOPS); the others (the largest overlap, one
-# shape's normals, the closing edge left out, `break`) keep _depth_mistake's and the apart message's words
+# shape's normals, the closing edge left out, `break`) keep _depth_form's and the apart message's words
 SAT_MISTAKES = {
     "gap_continue": "on an axis with a gap, sat() goes on to the next axis (`continue`) instead of returning None",
     "one_sided": "overlap = max_a - min_b holds only while B lies on A's positive side: the overlap is "
@@ -192,30 +181,46 @@ SAT_MISTAKES = {
 
 
 def _same_hit(got, form):
-    """The student's sat() answer is `form` (a probes.SAT_LOOPS answer): both None, or the same depth and axis
-    up to its sign (step 3, the lesson's in the step-2 probe, may have turned it round)."""
+    """Two sat() answers agree: both None, or the same depth and axis up to its sign (step 3, the lesson's in the
+    step-2 probe, may have turned it round). "raises" (a probes.SAT_LOOPS loop that keeps no axis) and a malformed
+    answer agree with nothing."""
     if got is None or form is None:
         return got is None and form is None
-    if form == "raises" or "bad" in got:
+    if "raises" in (got, form) or "bad" in got:
         return False
     return _close(abs(got["depth"]), form["depth"]) and any(
         all(_close(g, sign * f) for g, f in zip(got["normal"], form["normal"])) for sign in (1, -1))
 
 
-def _sat_mistake(cases, case):
-    """The Mistake of the one known wrong step-2 loop that gives the student's answer for every pair, or None."""
-    differs = [name for name, form in case.get("mistakes", {}).items() if not _same_hit(case["lesson"], form)
-               and name in SAT_MISTAKES]
-    named = consistent_mistake(cases, lambda c, name: _same_hit(c["got"], c["mistakes"][name]), differs)
-    return mistake(f"sat_{named}", SAT_MISTAKES[named]) if named else None
+def _sat_fault(case):
+    """(what is wrong with sat()'s answer for one pair in step 2, the evidence), (None, None) when nothing is: "gap"
+    (a hit where the shapes are apart), "apart" (None where they overlap), "depth", "unit" (the normal's length),
+    "axis"."""
+    got, want, label = case["got"], case["lesson"], _label(case)
+    if want is None:
+        if got is None or ("touching" in case["pair"] and abs(got["depth"]) <= TOUCHING):
+            return None, None
+        return "gap", (f"for {label}, sat() says they overlap by {got['depth']:.2f} px; one of {_gap_side(case)} "
+                       "edge normals shows a gap.")
+    if got is None:
+        return "apart", (f"for {label}, the smallest overlap is {want['depth']:.2f} px along {_vec(want['normal'])}; "
+                         "sat() says apart.")
+    matches = [ref for ref in (want, case["short"]) if _close(abs(got["depth"]), ref["depth"])]
+    if not matches:   # the depth's sign is step 3's business
+        deep = " (one shape deep inside the other)" if not _close(want["depth"], case["short"]["depth"]) else ""
+        return "depth", (f"for {label}{deep}: depth {abs(got['depth']):.4g} px; the smallest overlap is "
+                         f"{want['depth']:.4g} px along {_vec(want['normal'])}.")
+    length, ref = math.hypot(*got["normal"]), matches[0]["normal"]
+    if abs(length - 1) > 1e-6:
+        return "unit", f"for {label}, the normal has length {length:.4g}."
+    if abs(abs(got["normal"][0] * ref[0] + got["normal"][1] * ref[1]) - 1) > 1e-6:
+        return "axis", (f"for {label}: axis {_vec(got['normal'])}; the smallest overlap is along {_vec(ref)} (or its "
+                        "opposite).")
+    return None, None
 
 
-@CHECKS.check(depends=["loads"])
-def sat_axes(sub, functions):
-    """Step 2: sat() finds the smallest overlap over both shapes' edge normals (depth and axis), and None when apart."""
-    cases = _function(sub, functions, "sat_step2", "sat", 2)  # your step 2 with the lesson's step 3
-    if cases is None:  # the step markers are broken (handout_unchanged says so): grade sat() as it is
-        cases = _function(sub, functions, "sat", "sat", 2)
+def _sat_screen(cases, sub):
+    """Fail first on an answer that is not (normal, depth) or None, and when sat() says apart for every hit."""
     for case in cases:
         if case["got"] is not None and "bad" in case["got"]:
             raise Fail(f"sat() must return (normal, depth) or None.\nfor {_label(case)} it returned "
@@ -230,46 +235,36 @@ def sat_axes(sub, functions):
             text, found = "sat() returned None for every pair, even those that overlap", None
         raise Fail(f"{text}.\nsat() said apart for all {len(hits)} overlapping pairs, e.g. {_label(hits[0])}, "
                    f"{hits[0]['lesson']['depth']:.2f} px deep.", HINTS["sat_none"], found)
-    for case in cases:
-        got, want, short = case["got"], case["lesson"], case["short"]
-        label = _label(case)
-        if want is None:
-            if got is not None and not ("touching" in case["pair"] and abs(got["depth"]) <= TOUCHING):
-                overlaps, count_a = _overlaps(case)
-                gap_a = any(o <= 0 for _, o, _ in overlaps[:count_a])
-                where = "A's" if gap_a else "B's"
-                found = _sat_mistake(cases, case) or mistake("sat_misses_gap", "sat() says overlap where one "
-                                                                               "edge normal shows a gap")
-                first = found.text if found.id != "sat_misses_gap" else \
-                    f"sat() misses a gap: one of {where} edge normals shows a gap between the shadows"
-                raise Fail(f"{first}.\nfor {label}, sat() says they overlap by {got['depth']:.2f} px; one of "
-                           f"{where} edge normals shows a gap.", HINTS["sat_apart"], found)
-            continue
-        if got is None:
-            found = _sat_mistake(cases, case)
-            first = found.text if found else "sat() says apart where the shapes overlap"
-            raise Fail(f"{first}.\nfor {label}, the smallest overlap is {want['depth']:.2f} px along "
-                       f"{_vec(want['normal'])}; sat() says apart.", HINTS["sat_depth"], found)
-        depth = abs(got["depth"])  # the depth's sign is step 3's business
-        matches = [ref for ref in (want, short) if _close(depth, ref["depth"])]
-        if not matches:
-            deep = " (one shape deep inside the other)" if not _close(want["depth"], short["depth"]) else ""
-            found = _sat_mistake(cases, case) or _depth_mistake(case, depth)
-            first = found.text if found else "sat() does not find the smallest overlap"
-            raise Fail(f"{first}.\nfor {label}{deep}: depth {depth:.4g} px; the smallest overlap is "
-                       f"{want['depth']:.4g} px along {_vec(want['normal'])}.", HINTS["sat_depth"], found)
-        ref = matches[0]["normal"]
-        length = math.hypot(*got["normal"])
-        if abs(length - 1) > 1e-6:
-            found = _sat_mistake(cases, case)
-            first = found.text if found else "sat()'s normal is not a unit vector (edge_normals gives unit axes)"
-            raise Fail(f"{first}.\nfor {label}, the normal has length {length:.4g}.", HINTS["sat_depth"], found)
-        along = got["normal"][0] * ref[0] + got["normal"][1] * ref[1]
-        if abs(abs(along) - 1) > 1e-6:
-            text = "the depth is right but not its axis: keep best_axis and best_depth together"
-            raise Fail(f"{text}.\nfor {label}: axis {_vec(got['normal'])}; the smallest overlap is along "
-                       f"{_vec(ref)} (or its opposite).", HINTS["sat_depth"], mistake("sat_axis_apart", text))
-    return Passed(f"all {len(cases)} pairs give the lesson's depth and axis", value=cases)
+    return cases
+
+
+def _sat_diagnosis(cases, case):
+    """A depth right on the wrong axis; a hit where one edge normal shows a gap (a known loop, else the gap)."""
+    fault = _sat_fault(case)[0]
+    if fault == "axis":
+        return Form("sat_axis_apart", "the depth is right but not its axis: keep best_axis and best_depth together")
+    if fault == "gap":
+        form = SAT_AXES.named(cases, case)
+        return Form(form.id, form.text, hint="sat_apart") if form else Form(
+            "sat_misses_gap", "sat() says overlap where one edge normal shows a gap", hint="sat_apart",
+            line=f"sat() misses a gap: one of {_gap_side(case)} edge normals shows a gap between the shadows")
+    return None
+
+
+SAT_UNNAMED = {"apart": "sat() says apart where the shapes overlap",
+               "depth": "sat() does not find the smallest overlap",
+               "unit": "sat()'s normal is not a unit vector (edge_normals gives unit axes)"}
+# graded on your step 2 with the lesson's step 3 (sat_step2); on sat() as it is when the step markers are broken
+SAT_AXES = SharedStep(
+    "sat_axes", "Step 2: sat() finds the smallest overlap over both shapes' edge normals (depth and axis), and None "
+    "when apart.", 2, "sat", probe_name="sat_step2", fallbacks=("sat",),
+    screen=_sat_screen, read=lambda c: c["got"], lesson=lambda c: c["lesson"],
+    wrong=forms_of(SAT_MISTAKES, lambda c: c["mistakes"], "sat_"), same=_same_hit,
+    passes=lambda c: _sat_fault(c)[0] is None, diagnose=_sat_diagnosis,
+    fallback=lambda cases, c: _depth_form(c, abs(c["got"]["depth"])) if _sat_fault(c)[0] == "depth" else None,
+    evidence=lambda c: _sat_fault(c)[1], unnamed=lambda c: SAT_UNNAMED[_sat_fault(c)[0]], hint="sat_depth",
+    passed="all {n} pairs give the lesson's depth and axis")
+SAT_AXES.register(CHECKS, HINTS)
 
 
 # step 3's known wrong flips (probes._flip_mistakes_reference), named when one gives every pair's normal
@@ -283,55 +278,62 @@ FLIP_MISTAKES = {
 }
 
 
-def _flip_mistake(cases, case):
-    """The Mistake of the one known wrong step-3 flip that gives the student's normal for every pair, or None."""
-    def gives(c, name):
-        form = c.get("flips", {}).get(name)
-        if form is None:   # the pair is apart: sat_axes already holds the student's None there
-            return c["got"] is None
-        return c["got"] is not None and all(_close(g, f) for g, f in zip(c["got"]["normal"], form))
-    differs = [name for name, form in case.get("flips", {}).items()
-               if not all(_close(f, w) for f, w in zip(form, case["lesson"]["normal"])) and name in FLIP_MISTAKES]
-    named = consistent_mistake(cases, gives, differs)
-    return mistake(f"normal_{named}", FLIP_MISTAKES[named]) if named else None
+def _normal_fault(case):
+    """(what is wrong with sat()'s answer for one pair after step 3, the evidence), (None, None) when nothing is:
+    "found" (step 3 changed what step 2 found), "part" (more than the direction), "depth" (negated) or "flip" (the
+    normal points from B to A)."""
+    got, want, before, label = case["answer"], case["lesson"], case["before"], _label(case)
+    if (got is None) != (before is None) or (got is not None and "bad" in got):
+        said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
+                                            f"overlaps by {got['depth']:.2f} px")
+        return "found", (f"for {label} sat() says {said}; with step 2 alone it was "
+                         f"{'apart' if before is None else 'a hit'}.")
+    if got is None or want is None:
+        return None, None
+    if not _close(abs(got["depth"]), abs(before["depth"])) or \
+            abs(abs(got["normal"][0] * before["normal"][0] + got["normal"][1] * before["normal"][1]) - 1) > 1e-6:
+        return "part", (f"for {label} step 2 found {abs(before['depth']):.2f} px along {_vec(before['normal'])}; sat() "
+                        f"returns {got['depth']:.2f} px along {_vec(got['normal'])}.")
+    if got["depth"] < 0:
+        return "depth", f"for {label}: depth {got['depth']:.2f} px."
+    towards_b = (case["centre_b"][0] - case["centre_a"][0]) * got["normal"][0] + \
+                (case["centre_b"][1] - case["centre_a"][1]) * got["normal"][1]
+    if towards_b < 0:
+        return "flip", (f"for {label} the normal {_vec(got['normal'])} points from B to A; expected "
+                        f"{_vec((-got['normal'][0], -got['normal'][1]))}.")
+    return None, None
 
 
-@CHECKS.check(depends=["loads", "sat_axes"])
-def sat_normal(sub, functions, step2_cases):
-    """Step 3: the normal sat() returns points from A to B, with a positive depth."""
-    cases = _function(sub, functions, "sat", "sat", 3)
-    if not any(case["got"] is not None and case["lesson"] is not None for case in cases):   # no vacuous pass
+def _normal_screen(cases, sub, step2_cases):
+    """No vacuous pass; each pair with sat()'s whole answer (its normal is graded) and what step 2 alone found."""
+    if not any(case["got"] is not None and case["lesson"] is not None for case in cases):
         raise Fail(f"sat() found no overlap in any of the {len(cases)} pairs.\nSo the direction of its normal could "
                    "not be graded (nothing was graded).", HINTS["normal_flipped"])
-    for case, step2 in zip(cases, step2_cases):
-        got, want, before = case["got"], case["lesson"], step2["got"]
-        if (got is None) != (before is None) or (got is not None and "bad" in got):
-            said = "apart" if got is None else (f"returns {got['bad']}" if "bad" in got else
-                                                f"overlaps by {got['depth']:.2f} px")
-            raise Fail(f"your step 3 changes what sat() finds; it only turns the normal round.\nfor "
-                       f"{_label(case)} sat() says {said}; with step 2 alone it was "
-                       f"{'apart' if before is None else 'a hit'}.", HINTS["normal_flipped"])
-        if got is None or want is None:
-            continue
-        if not _close(abs(got["depth"]), abs(before["depth"])) or \
-                abs(abs(got["normal"][0] * before["normal"][0] + got["normal"][1] * before["normal"][1]) - 1) > 1e-6:
-            text = "your step 3 changes more than the normal's direction: turn the whole axis, best_axis = -best_axis"
-            raise Fail(f"{text}.\nfor {_label(case)} step 2 found {abs(before['depth']):.2f} px along "
-                       f"{_vec(before['normal'])}; sat() returns {got['depth']:.2f} px along {_vec(got['normal'])}.",
-                       HINTS["normal_flipped"], mistake("normal_part_flipped", text))
-        if got["depth"] < 0:
-            text = "sat() gives a negative depth: flip the axis (best_axis = -best_axis), not the depth"
-            raise Fail(f"{text}.\nfor {_label(case)}: depth {got['depth']:.2f} px.", HINTS["normal_flipped"],
-                       mistake("normal_depth_negated", text))
-        towards_b = (case["centre_b"][0] - case["centre_a"][0]) * got["normal"][0] + \
-                    (case["centre_b"][1] - case["centre_a"][1]) * got["normal"][1]
-        if towards_b < 0:
-            flipped = (-got["normal"][0], -got["normal"][1])
-            found = _flip_mistake(cases, case)
-            first = found.text if found else "sat()'s normal points from B to A"
-            raise Fail(f"{first}.\nfor {_label(case)} the normal {_vec(got['normal'])} points from B to A; expected "
-                       f"{_vec(flipped)}.", HINTS["normal_flipped"], found)
-    return f"the normal points from A to B in all {len(cases)} pairs"
+    return [dict(case, answer=case["got"], before=step2["got"]) for case, step2 in zip(cases, step2_cases)]
+
+
+NORMAL_FAULTS = {
+    "found": Form(None, "your step 3 changes what sat() finds; it only turns the normal round"),
+    "part": Form("normal_part_flipped", "your step 3 changes more than the normal's direction: turn the whole "
+                                        "axis, best_axis = -best_axis"),
+    "depth": Form("normal_depth_negated", "sat() gives a negative depth: flip the axis (best_axis = -best_axis), "
+                                          "not the depth"),
+}
+
+
+def _same_normal(got, want):
+    return (got is None) == (want is None) and (got is None or all(_close(g, w) for g, w in zip(got, want)))
+
+
+SharedStep(
+    "sat_normal", "Step 3: the normal sat() returns points from A to B, with a positive depth.", 3, "sat",
+    probe_name="sat", screen=_normal_screen, read=lambda c: c["got"] and c["got"].get("normal"),
+    lesson=lambda c: c["lesson"] and c["lesson"]["normal"], wrong=forms_of(FLIP_MISTAKES, lambda c: c["flips"],
+                                                                           "normal_"),
+    same=_same_normal, passes=lambda c: _normal_fault(c)[0] is None, diagnose=lambda cases, c: NORMAL_FAULTS.get(
+        _normal_fault(c)[0]), evidence=lambda c: _normal_fault(c)[1], unnamed="sat()'s normal points from B to A",
+    hint="normal_flipped", passed="the normal points from A to B in all {n} pairs",
+).register(CHECKS, HINTS, depends=("loads", "sat_axes"))
 
 
 # ---------------------------------------------------------------- steps 4 and 5: resolve()
@@ -354,71 +356,60 @@ K_MISTAKES = {
 }
 
 
-@CHECKS.check(depends=["loads"])
-def resolve_k(sub, functions):
-    """Step 4: resolve() applies the normal impulse j = -(1 + e) vn / k with both spin terms in k."""
-    cases = _function(sub, functions, "resolve", "resolve", 4)
-    for case in cases:
-        if case["calls"] == 0 or case["j"] is None:
-            raise Fail(f"resolve() applied no normal impulse where the contact closes.\nin '{case['case']}', "
-                       f"closing at {-case['vn']:.1f} px/s.", HINTS["k_spin"])
-        want_j = -(1 + case["e"]) * case["vn"] / case["k"]["right"]
-        if _close(case["j"], want_j):
-            continue
-        k = -(1 + case["e"]) * case["vn"] / case["j"] if case["j"] else math.inf
-        # a k fits a case when j·k = -(1 + e) vn (no division: a wrong k may be 0)
-        named = consistent_mistake(
-            cases, lambda c, key: c["j"] is not None and _close(c["j"] * c["k"][key], -(1 + c["e"]) * c["vn"]),
-            [key for key in K_MISTAKES if not _close(case["k"][key], case["k"]["right"])])
-        found = mistake(f"k_{named}", K_MISTAKES[named]) if named else None
-        first = found.text if found else "the normal impulse's k is not the lesson's"
-        raise Fail(f"{first}.\nin '{case['case']}', your j = {case['j']:.4g}, so your k = {k:.4g}; expected k = "
-                   f"{case['k']['right']:.4g} (j = {want_j:.4g}).", HINTS["k_spin"], found)
-    return Passed(f"k and j match the lesson in all {len(cases)} contacts", value=cases)
+def _same(got, want):
+    return got is not None and want is not None and _close(got, want)
 
 
-def _unchanged_arguments(cases, function, why, hint):
-    """Fail when `function` changed a vector argument in place in some case (the probe's `changed`)."""
-    for case in cases:
-        for name, now in sorted((case.get("changed") or {}).items()):
-            text = f"{function}() changed its argument {name} in place: make new vectors (v * s, v.rotate(90)), " \
-                   "not v *= s or v.rotate_ip(90)"
-            raise Fail(f"{text}.\nin '{case['case']}', {name} became {_vec(now)}: {why.format(name=name)}.", hint,
-                       mistake("argument_changed"))
+def _push(case):
+    """-(1 + e) vn: the normal impulse j times k."""
+    return -(1 + case["e"]) * case["vn"]
 
 
-# the known wrong clamps of step 5, by name (_clamp_forms): the sentence and the hint
-CLAMP_MISTAKES = {
-    "unclamped": ("friction_unclamped", "(min(mu·j, jt) alone clamps nothing: jt <= 0 here)", "friction_clamp"),
-    "vn_signed": ("friction_bound_vn_signed", "the clamp uses mu × vn, the closing speed with its sign, where "
-                  "Coulomb's law uses mu × j", "friction_clamp"),
-    "vn_abs": ("friction_bound_vn", "the clamp uses mu × the closing speed |vn| where Coulomb's law uses mu × j",
-               "friction_clamp"),
-    "slip": ("friction_bound_slip", "the clamp uses mu × the slip speed where Coulomb's law uses mu × j",
-             "friction_clamp"),
-    "rel": ("friction_bound_rel", "the clamp uses mu × the relative speed |rel| where Coulomb's law uses mu × j",
-            "friction_clamp"),
-    "k": ("friction_bound_k", "the clamp uses mu × k where Coulomb's law uses mu × j", "friction_clamp"),
-    "mu": ("friction_bound_mu", "", "friction_clamp"),
-    "half": ("friction_bound_half", "the bound is mu·j / 2; Coulomb's law lets |jt| reach mu·j", "friction_clamp"),
-    "always_full": ("friction_always_full", "", "friction_clamp"),
-    "clamp_loses_sign": ("friction_clamp_loses_sign", "", "friction_clamp"),
-    "sign": ("friction_sign", "(a flipped jt, or min(|jt|, mu·j), which loses jt's sign)", "friction_sign"),
-}
+def _k_evidence(case):
+    j = case["j"]
+    return (f"in '{case['case']}', your j = {j:.4g}, so your k = {_push(case) / j if j else math.inf:.4g}; expected "
+            f"k = {case['k']['right']:.4g} (j = {case['want']:.4g}).")
 
 
-def _clamp_mistake(named):
-    """(Mistake, the first line, hint key) of CLAMP_MISTAKES[named]: the shared sentence (causes.SHARED, the same
-    words as Ball on the Ramp's) and this lab's note, or the lab's own sentence."""
-    name, text, key = CLAMP_MISTAKES[named]
-    if name in SHARED:
-        found = mistake(name)
-        return found, (f"{found.text} {text}" if text else found.text), key
-    return mistake(name, text), text, key
+SharedStep(
+    "resolve_k", "Step 4: resolve() applies the normal impulse j = -(1 + e) vn / k with both spin terms in k.", 4,
+    "resolve", probe_name="resolve", read=lambda c: c["j"], lesson=lambda c: _push(c) / c["k"]["right"],
+    wrong=forms_of(K_MISTAKES, lambda c: {key: _push(c) / k for key, k in c["k"].items() if k}, "k_"), same=_same,
+    bad=lambda got: got is None, malformed=lambda c: "resolve() applied no normal impulse where the contact closes."
+    f"\nin '{c['case']}', closing at {-c['vn']:.1f} px/s.", evidence=_k_evidence,
+    unnamed="the normal impulse's k is not the lesson's", hint="k_spin",
+    passed="k and j match the lesson in all {n} contacts").register(CHECKS, HINTS)
+
+
+def _clamp_form(name, mistake_id, note, hint="friction_clamp"):
+    """The wrong clamp `name` of _clamp_forms: a shared mistake (causes.SHARED, Ball on the Ramp's words) with this
+    lab's note after its sentence, or the lab's own sentence."""
+    shared = mistake_id in SHARED
+    return Form(mistake_id, None if shared else note, lambda case: _clamp_forms(case)[name], hint,
+                f"{SHARED[mistake_id]} {note}" if shared and note else None)
+
+
+# the known wrong clamps of step 5 (_clamp_forms): the mistake, its note or sentence, the hint
+CLAMP_FORMS = (
+    _clamp_form("unclamped", "friction_unclamped", "(min(mu·j, jt) alone clamps nothing: jt <= 0 here)"),
+    _clamp_form("vn_signed", "friction_bound_vn_signed", "the clamp uses mu × vn, the closing speed with its sign, "
+                "where Coulomb's law uses mu × j"),
+    _clamp_form("vn_abs", "friction_bound_vn", "the clamp uses mu × the closing speed |vn| where Coulomb's law uses "
+                "mu × j"),
+    _clamp_form("slip", "friction_bound_slip", "the clamp uses mu × the slip speed where Coulomb's law uses mu × j"),
+    _clamp_form("rel", "friction_bound_rel", "the clamp uses mu × the relative speed |rel| where Coulomb's law uses "
+                "mu × j"),
+    _clamp_form("k", "friction_bound_k", "the clamp uses mu × k where Coulomb's law uses mu × j"),
+    _clamp_form("mu", "friction_bound_mu", ""),
+    _clamp_form("half", "friction_bound_half", "the bound is mu·j / 2; Coulomb's law lets |jt| reach mu·j"),
+    _clamp_form("always_full", "friction_always_full", ""),
+    _clamp_form("clamp_loses_sign", "friction_clamp_loses_sign", ""),
+    _clamp_form("sign", "friction_sign", "(a flipped jt, or min(|jt|, mu·j), which loses jt's sign)", "friction_sign"),
+)
 
 
 def _clamp_forms(case):
-    """{name: the friction impulse jt a known wrong clamp gives in this case} (CLAMP_MISTAKES), from the
+    """{name: the friction impulse jt a known wrong clamp gives in this case} (CLAMP_FORMS), from the
     case's own j, so a mistake in step 4 does not show here."""
     friction, j, mu, vn = case["friction"], case["j"], case["mu"], case["vn"]
     stop = friction["stop"]
@@ -432,107 +423,124 @@ def _clamp_forms(case):
             "clamp_loses_sign": mu * j if abs(stop) > mu * j else stop}
 
 
-@CHECKS.check(depends=["loads"])
-def resolve_friction(sub, functions):
-    """Step 5: resolve() clamps friction with Coulomb's law, |jt| <= mu j, and leaves smaller jt alone."""
-    cases = _function(sub, functions, "resolve", "resolve", 5)
-    _unchanged_arguments(cases, "resolve", "the World goes on using the contact's {name} for its other contact "
-                         "points and the push-out", arguments_hint(5, "resolve"))
+def _friction_graded(cases, sub=None):
+    """The contacts with a normal impulse and a slip to grade; Fail when none is (nothing graded is no pass)."""
+    unchanged_arguments("resolve", "the World goes on using the contact's {name} for its other contact points and "
+                        "the push-out", arguments_hint(5, "resolve"))(cases)
     graded = [case for case in cases if case["friction"] is not None and case["j"] is not None]
-    if not graded:   # nothing to compare is no pass: a resolve() that returns before step 4 applies no impulse
+    if not graded:   # a resolve() that returns before step 4 applies no impulse
         said = "applied no impulse" if all(case["calls"] == 0 for case in cases) else "left no slip to stop"
         raise Fail(f"resolve() {said} in any of the {len(cases)} contacts: nothing was graded.\n"
                    "Write step 4 (the normal impulse) first, then step 5's friction after it.",
                    HINTS["friction_clamp"])
-    for case in graded:
-        friction, j, mu = case["friction"], case["j"], case["mu"]
-        stop, jt = friction["stop"], friction["jt"]
-        bound = mu * j  # with your own j, so a mistake in step 4 does not show here
-        want = max(-bound, min(bound, stop))
-        if _close(jt, want) and friction["off_tangent"] <= ABS + REL * abs(jt):
-            continue
-        active = abs(stop) > abs(bound)
-        where = f"in '{case['case']}'" + (", where |jt| > mu·j" if active else "")
-        numbers = (f"{where}: the slip needs jt = {stop:.4g}, mu·j = {mu:.2g} × {j:.4g} = {bound:.4g}, so jt = "
-                   f"{want:.4g}; yours {jt:.4g}.")
-        if friction.get("missing"):
-            found = mistake("friction_missing")
-            raise Fail(f"{found.text}.\n{numbers}", HINTS["friction_clamp"], found)
-        fitting = fitting_mistakes(graded, lambda c, name: _close(c["friction"]["jt"], _clamp_forms(c)[name]),
-                                   [name for name, value in _clamp_forms(case).items() if not _close(value, want)])
-        if sorted(fitting) == ["clamp_loses_sign", "sign"]:
-            fitting = ["sign"]   # every case that decides it binds: the sign's sentence names both forms
-        if len(fitting) == 1:
-            found, first, key = _clamp_mistake(fitting[0])
-            raise Fail(f"{first}.\n{numbers}", HINTS[key], found)
-        if jt * stop < 0:
-            raise Fail(f"friction pushes the slide along instead of against it.\n{numbers}", HINTS["friction_sign"])
-        if active and _close(jt, stop):
-            raise Fail(f"the friction impulse was not clamped here (no clamp, or a bound above mu·j).\n{numbers}",
-                       HINTS["friction_clamp"])
-        if not active and _close(abs(jt), abs(bound)):
-            raise Fail(f"friction takes its full mu·j where a smaller impulse already stops the slip.\n{numbers}",
-                       HINTS["friction_clamp"])
-        if active and abs(jt) < abs(bound):
-            raise Fail(f"the clamp is too tight: |jt| may reach mu·j.\n{numbers}", HINTS["friction_clamp"])
-        raise Fail(f"the friction impulse is not Coulomb's clamped jt.\n{numbers}", HINTS["friction_clamp"])
-    active = sum(1 for c in cases if c["friction"] and abs(c["friction"]["stop"]) > c["mu"] * abs(c["j"] or 0))
-    return f"friction matches Coulomb's law in all {len(cases)} contacts ({active} of them clamped)"
+    return graded
+
+
+def _friction_read(case):
+    """The student's jt, or nan when the friction impulse also pushes off the tangent."""
+    jt = case["friction"]["jt"]
+    return jt if case["friction"]["off_tangent"] <= ABS + REL * abs(jt) else math.nan
+
+
+def _friction_diagnosis(cases, case):
+    """No friction impulse at all; or a clamp that loses the sign, which a flipped jt gives too wherever a case
+    tells them apart (every case that decides it binds): the sign's sentence names both."""
+    if case["friction"].get("missing"):
+        return Form("friction_missing", None)
+    fitting = [form for form in CLAMP_FORMS if not _same(case["forms"][form.id], case["want"])
+               and all(_same(c["got"], c["forms"][form.id]) for c in cases)]
+    return fitting[-1] if [form.id for form in fitting] == ["friction_clamp_loses_sign", "friction_sign"] else None
+
+
+def _friction_fallback(cases, case):
+    """What one case shows when no known clamp is named."""
+    stop, jt, bound = case["friction"]["stop"], case["friction"]["jt"], case["mu"] * case["j"]
+    active = abs(stop) > abs(bound)
+    if jt * stop < 0:
+        return Form(None, "friction pushes the slide along instead of against it", hint="friction_sign")
+    if active and _close(jt, stop):
+        return Form(None, "the friction impulse was not clamped here (no clamp, or a bound above mu·j)")
+    if not active and _close(abs(jt), abs(bound)):
+        return Form(None, "friction takes its full mu·j where a smaller impulse already stops the slip")
+    return Form(None, "the clamp is too tight: |jt| may reach mu·j") if active and abs(jt) < abs(bound) else None
+
+
+def _clamping(cases):
+    return sum(1 for case in cases if abs(case["friction"]["stop"]) > case["mu"] * abs(case["j"]))
+
+
+def _friction_evidence(case):
+    stop, j, mu = case["friction"]["stop"], case["j"], case["mu"]
+    where = f"in '{case['case']}'" + (", where |jt| > mu·j" if abs(stop) > abs(mu * j) else "")
+    return (f"{where}: the slip needs jt = {stop:.4g}, mu·j = {mu:.2g} × {j:.4g} = {mu * j:.4g}, so jt = "
+            f"{case['want']:.4g}; yours {case['friction']['jt']:.4g}.")
+
+
+SharedStep(
+    "resolve_friction", "Step 5: resolve() clamps friction with Coulomb's law, |jt| <= mu j, and leaves smaller jt "
+    "alone.", 5, "resolve", probe_name="resolve", screen=_friction_graded, read=_friction_read,
+    lesson=lambda c: max(-c["mu"] * c["j"], min(c["mu"] * c["j"], c["friction"]["stop"])),   # with your own j
+    wrong=CLAMP_FORMS, same=_same, diagnose=_friction_diagnosis, fallback=_friction_fallback,
+    evidence=_friction_evidence, unnamed="the friction impulse is not Coulomb's clamped jt", hint="friction_clamp",
+    passed=lambda cases: f"friction matches Coulomb's law in all {len(cases)} contacts ({_clamping(cases)} of them "
+    "clamped)").register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- step 6: apply_impulse()
 
-def _spin_mistake(case, body, delta, want):
-    """(Mistake, hint key) naming a plausible step-6 mistake for one body's spin change, or None."""
-    sign = -1 if body == "a" else 1
-    other = "b" if body == "a" else "a"
-    inv_mass, inv_inertia = case["inv"][body]
-    letter = body.upper()
-    candidates = [
-        (0.0, "spin_missing", f"{letter}'s spin did not change: its spin update is missing", "spin_missing"),
-        (-want, "spin_wrong_way", f"{letter}'s spin changed the wrong way: A uses -=, B uses += (cross(ra, P) = "
-                                  "-cross(P, ra))", "spin_swapped"),
-        (sign * case["cross"][body] * inv_mass, "spin_inv_mass",
-         f"{letter}'s spin update uses inv_mass where inv_inertia belongs", "spin_terms"),
-        (sign * case["cross"][other] * inv_inertia, "spin_other_lever",
-         f"{letter}'s spin update uses r{other} where r{body} belongs", "spin_terms"),
-        (sign * case["cross"][body] * case["inv"][other][1], "spin_other_inertia",
-         f"{letter}'s spin update uses {other.upper()}'s inv_inertia", "spin_terms"),
-    ]
-    for value, name, text, key in candidates:
-        if _close(delta, value) and not _close(value, want):
-            return mistake(name, text), key
-    return None
+def _motion(bodies):
+    """Both bodies' motion laid flat: [vA.x, vA.y, ωA, vB.x, vB.y, ωB]."""
+    return [x for side in "ab" for x in (*bodies[side]["vel"], bodies[side]["omega"])]
 
 
-@CHECKS.check(depends=["loads"])
-def apply_impulse_spin(sub, functions):
-    """Step 6: apply_impulse() changes both spins, A by -(ra × P)/I_A and B by +(rb × P)/I_B."""
-    cases = _function(sub, functions, "apply_impulse", "apply_impulse", 6)
-    _unchanged_arguments(cases, "apply_impulse", "resolve() goes on using its {name} for the friction impulse",
-                         arguments_hint(6, "apply_impulse"))
-    for case in cases:
-        for body in ("a", "b"):
-            before, after, want = case["before"][body], case["after"][body], case["expected"][body]
-            letter = body.upper()
-            if not all(_close(g, w) for g, w in zip(after["vel"], want["vel"])):
-                raise Fail(f"{letter}'s velocity changed: keep the handout's velocity lines (a.vel -= impulse * "
-                           f"a.inv_mass, b.vel +=).\nin '{case['case']}', {letter} moves at {_vec(after['vel'])} px/s "
-                           f"after the impulse; expected {_vec(want['vel'])}.", HINTS["spin_terms"])
-            if _close(after["omega"], want["omega"]):
-                continue
-            delta = after["omega"] - before["omega"]
-            change = want["omega"] - before["omega"]
-            named = _spin_mistake(case, body, delta, change)
-            if _close(after["omega"], change) and not _close(change, want["omega"]):
-                named = (mistake("spin_assigned", f"{letter}'s spin was set to the change instead of changed by it: "
-                                                  f"use {body}.omega {'-' if body == 'a' else '+'}="), "spin_terms")
-            found, key = named or (None, "spin_terms")
-            first = found.text if found else f"{letter}'s spin change is not -(ra × P)/I_A, +(rb × P)/I_B"
-            raise Fail(f"{first}.\nin '{case['case']}', ω{letter} went from {before['omega']:.4g} to "
-                       f"{after['omega']:.4g} rad/s; expected {want['omega']:.4g} ({change:+.4g}).", HINTS[key],
-                       found)
-    return f"both spins change as the lesson says in all {len(cases)} cases"
+def _first_wrong(case):
+    """(body "a" or "b", "vel" or "omega", the evidence): the first part of the motion that is not the lesson's."""
+    for side in "ab":
+        (before, after, want), letter = (case[key][side] for key in ("before", "after", "expected")), side.upper()
+        if not all(_close(g, w) for g, w in zip(after["vel"], want["vel"])):
+            return side, "vel", (f"in '{case['case']}', {letter} moves at {_vec(after['vel'])} px/s after the "
+                                 f"impulse; expected {_vec(want['vel'])}.")
+        if not _close(after["omega"], want["omega"]):
+            return side, "omega", (f"in '{case['case']}', ω{letter} went from {before['omega']:.4g} to "
+                                   f"{after['omega']:.4g} rad/s; expected {want['omega']:.4g} "
+                                   f"({want['omega'] - before['omega']:+.4g}).")
+
+
+def _spin_diagnosis(cases, case):
+    """The step-6 mistake one body's motion shows in this case: its velocity changed, or a known wrong spin update."""
+    body, part, _ = _first_wrong(case)
+    letter, other, sign = body.upper(), "b" if body == "a" else "a", -1 if body == "a" else 1
+    if part == "vel":
+        return Form(None, f"{letter}'s velocity changed: keep the handout's velocity lines (a.vel -= impulse * "
+                          "a.inv_mass, b.vel +=)")
+    before, after, want = (case[key][body]["omega"] for key in ("before", "after", "expected"))
+    change, inv_mass, inv_inertia = want - before, *case["inv"][body]
+    if _close(after, change) and not _close(change, want):
+        return Form("spin_assigned", f"{letter}'s spin was set to the change instead of changed by it: use "
+                                     f"{body}.omega {'-' if body == 'a' else '+'}=")
+    for value, name, text, key in (
+            (0.0, "spin_missing", f"{letter}'s spin did not change: its spin update is missing", "spin_missing"),
+            (-change, "spin_wrong_way", f"{letter}'s spin changed the wrong way: A uses -=, B uses += (cross(ra, P) "
+                                        "= -cross(P, ra))", "spin_swapped"),
+            (sign * case["cross"][body] * inv_mass, "spin_inv_mass",
+             f"{letter}'s spin update uses inv_mass where inv_inertia belongs", "spin_terms"),
+            (sign * case["cross"][other] * inv_inertia, "spin_other_lever",
+             f"{letter}'s spin update uses r{other} where r{body} belongs", "spin_terms"),
+            (sign * case["cross"][body] * case["inv"][other][1], "spin_other_inertia",
+             f"{letter}'s spin update uses {other.upper()}'s inv_inertia", "spin_terms")):
+        if _close(after - before, value) and not _close(value, change):
+            return Form(name, text, hint=key)
+    return Form(None, f"{letter}'s spin change is not -(ra × P)/I_A, +(rb × P)/I_B")
+
+
+SharedStep(
+    "apply_impulse_spin", "Step 6: apply_impulse() changes both spins, A by -(ra × P)/I_A and B by +(rb × P)/I_B.",
+    6, "apply_impulse", probe_name="apply_impulse", read=lambda c: _motion(c["after"]),
+    lesson=lambda c: _motion(c["expected"]), same=lambda got, want: all(_close(g, w) for g, w in zip(got, want)),
+    screen=unchanged_arguments("apply_impulse", "resolve() goes on using its {name} for the friction impulse",
+                               arguments_hint(6, "apply_impulse")),
+    diagnose=_spin_diagnosis, evidence=lambda c: _first_wrong(c)[2], hint="spin_terms",
+    passed="both spins change as the lesson says in all {n} cases").register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- the scenes and the lesson's criteria

@@ -1,25 +1,17 @@
-"""Probes of a Tumbling Crates file's own functions, run inside the checker's child process.
+"""Probes of a Tumbling Crates file's own functions, run in the checker's child process: each calls one of the
+student's functions on configurations that together exercise every term of the lesson's formulas and records
+plain data. The lesson's answers and the known wrong forms' are added in the grader only (`judging`, a
+@reference: checker/judging/probe_kit.py), from the inputs as they were before the student's function got them;
+checks.py's declared steps compare and name.
 
-Each probe calls one of the student's functions on a set of configurations
-chosen so that together they exercise every term of the lesson's formulas,
-and returns plain data: what the student's function gave and what the
-lesson's formula gives on the same inputs (the reference is exact arithmetic
-on the same numbers, so the checks compare with a tight tolerance). The
-lesson's answers are added in the grader only (`judging`, checker/judging/probe_kit.py),
-from the inputs as they were before the student's function got them. The checks
-in checker/labs/tumbling_crates/checks.py read this data in the grading process and name
-the first configuration that differs.
-
-    sat            (step 2, step 3) lesson pairs, turned boxes, a pentagon, a hexagon, a deep hit,
-                   exact touching, far apart; every pair also with A and B swapped. Beside the lesson's
-                   answer, what step 2's known wrong loops (SAT_LOOPS) and step 3's known wrong flips
-                   give, so a message names one only when it alone fits every pair
-    apply_impulse  (step 6) both bodies moving, A static, B static; masses and inertias far from 1,
-                   off-centre points, spinning bodies
-    resolve        (steps 4, 5) the same kinds of pairs, sliding both ways, the Coulomb clamp active
-                   and not, impacts above and below the 30 px/s resting cutoff. resolve() runs with
-                   the library's apply_impulse in place of the student's, recording each impulse,
-                   so steps 4 and 5 are graded before step 6 is written.
+    sat            (steps 2, 3) lesson pairs, turned boxes, a pentagon, a hexagon, a deep hit, exact touching, far
+                   apart, each also with A and B swapped; beside the lesson's answer, what step 2's known wrong
+                   loops (SAT_LOOPS) and step 3's known wrong flips give
+    apply_impulse  (step 6) both bodies moving, A static, B static; masses and inertias far from 1, off-centre
+                   points, spinning bodies
+    resolve        (steps 4, 5) the same kinds of pairs, sliding both ways, the Coulomb clamp active and not,
+                   impacts above and below the 30 px/s resting cutoff; resolve() runs with the library's
+                   apply_impulse, recording each impulse, so steps 4 and 5 are graded before step 6 is written.
 
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
@@ -358,33 +350,26 @@ def _resolve_case(name, a, b, normal, point, resting, calls):
     first = calls[0]
     case["j"] = first["impulse"].dot(normal)
     case["j_off_normal"] = (first["impulse"] - normal * case["j"]).length()
-    # the state after the student's normal impulse, from the bodies as given (not as resolve() left them)
+    # the state after the student's normal impulse, from the bodies as given (not as resolve() left them); the
+    # friction impulse is the second call (none: "missing", what it should have been at the contact point)
     a, b = twin(a), twin(b)
     lesson_apply_impulse(a, b, Vector2(first["impulse"]), Vector2(first["ra"]), Vector2(first["rb"]))
-    if len(calls) >= 2:
-        second = calls[1]
-        rel = relative_velocity(a, b, second["ra"], second["rb"])
-        tangent = rel - normal * rel.dot(normal)
-        if tangent.length_squared() > 1e-12:
-            t = tangent.normalize()
-            rat, rbt = cross(second["ra"], t), cross(second["rb"], t)
-            kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
-            case["friction"] = {
-                "slip": rel.dot(t),                         # px/s along t before friction
-                "stop": -rel.dot(t) / kt,                   # the impulse that would stop the slip
-                "jt": second["impulse"].dot(t),             # what the student applied along t
-                "off_tangent": (second["impulse"] - t * second["impulse"].dot(t)).length(),
-                "rel_length": rel.length(), "vn_now": rel.dot(normal),
-            }
-    else:
-        # no friction impulse was applied: record what it should have been
-        rel = relative_velocity(a, b, ra, rb)
-        tangent = rel - normal * rel.dot(normal)
-        if tangent.length_squared() > 1e-12:
-            t = tangent.normalize()
-            kt = a.inv_mass + b.inv_mass + cross(ra, t) ** 2 * a.inv_inertia + cross(rb, t) ** 2 * b.inv_inertia
-            case["friction"] = {"slip": rel.dot(t), "stop": -rel.dot(t) / kt, "jt": 0.0, "off_tangent": 0.0,
-                                "rel_length": rel.length(), "vn_now": rel.dot(normal), "missing": True}
+    second = calls[1] if len(calls) >= 2 else {"impulse": Vector2(), "ra": ra, "rb": rb}
+    rel = relative_velocity(a, b, second["ra"], second["rb"])
+    tangent = rel - normal * rel.dot(normal)
+    if tangent.length_squared() > 1e-12:
+        t = tangent.normalize()
+        rat, rbt = cross(second["ra"], t), cross(second["rb"], t)
+        kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+        case["friction"] = {
+            "slip": rel.dot(t),                         # px/s along t before friction
+            "stop": -rel.dot(t) / kt,                   # the impulse that would stop the slip
+            "jt": second["impulse"].dot(t),             # what the student applied along t
+            "off_tangent": (second["impulse"] - t * second["impulse"].dot(t)).length(),
+            "rel_length": rel.length(), "vn_now": rel.dot(normal),
+        }
+        if len(calls) < 2:
+            case["friction"].update(jt=0.0, missing=True)
     return case
 
 
