@@ -27,7 +27,7 @@ from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, 
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from checker.judging import probe_kit
-from checker.judging.common import close, real, value_text
+from checker.judging.common import close, real, same_point, value_text
 from checker.judging.declared import Form, Step, forms_of
 from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import judging, reference
@@ -39,6 +39,7 @@ from checker.judging.tape import run_rng
 
 REQUIRED = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes", "sat", "build", "main")
 PARALLEL = 1e-6   # |sin| below which two axes are parallel (the handout's PARALLEL)
+TOUCHING = 1e-6   # px: a depth this small for shapes exactly touching counts as "apart"
 
 
 def _plain(points):
@@ -177,25 +178,60 @@ def drawn_outline(rng):
             .rotate(turn) for a in angles]
 
 
-def probe_polygon_centroid(module, lab_path):
-    """The student's polygon_centroid on each outline, both windings, beside the area-weighted centroid."""
-    cases = []
+def _outlines(module):
+    """centroid_cases() and an outline drawn for this run, each also the other way round."""
     drawn = [("an outline drawn for this run", drawn_outline(run_rng(module, "polygon_centroid")))]
-    for name, corners in centroid_cases() + drawn:
-        for order, points in (("", corners), (" (the other way round)", list(reversed(corners)))):
-            pts = [Vector2(p) for p in points]
-            cases.append({"case": name + order, "points": _plain(pts),
-                          "got": _vector(module.polygon_centroid([Vector2(p) for p in pts]))})
-            if judging(module):
-                cases[-1].update(_centroid_reference(pts))
-    return cases
+    return [{"case": name + order, "points": _plain(points)} for name, corners in centroid_cases() + drawn
+            for order, points in (("", corners), (" (the other way round)", list(reversed(corners))))]
+
+
+def _size(case):
+    return max(1.0, *(abs(v) for p in case["points"] for v in p))
+
+
+def _scaled(got, want, size, factor=1.0):
+    """got is want × factor to 1e-7 of the outline's size (and of want): the same sum in another order."""
+    return want is not None and all(close(g, factor * w, floor=1e-7 * size) for g, w in zip(got, want))
 
 
 @reference
-def _centroid_reference(pts):
-    """The area-weighted centroid, the average of the corners (a mistake to name) and the signed area."""
-    average = sum(pts, Vector2()) / len(pts)
-    return {"want": list(reference_centroid(pts)), "average": [average.x, average.y], "area": polygon_area(pts)}
+def _centroid_forms(case):
+    """What the corners' average, the x and y sums swapped and the sum without the closing edge give."""
+    pts, want = [Vector2(p) for p in case["points"]], reference_centroid([Vector2(p) for p in case["points"]])
+    weights = [cross(a, b) for a, b in zip(pts, pts[1:])]   # every edge but the last point back to the first
+    open_sum = sum(((a + b) * w for (a, b), w in zip(zip(pts, pts[1:]), weights)), Vector2())
+    return {"average": list(sum(pts, Vector2()) / len(pts)), "xy_swapped": [want.y, want.x],
+            "no_closing_edge": list(open_sum / (6 * polygon_area(pts)))}
+
+
+def _centroid_case(cases, case):
+    """What this case's centroid shows by itself: -C (one winding's sign), or C times a wrong divisor."""
+    got, want, size = case["got"], case["want"], _size(case)
+    if _scaled(got, want, size, -1):
+        return Form("centroid_sign", "your centroid has its sign flipped when the points wind the other way: a × b "
+                                     "and A must both be signed, or both not")
+    return next((Form("centroid_divisor", f"your centroid is {factor:g} × the lesson's: the sum is divided by {by}, "
+                                          "not 6A") for factor, by in ((3, "2A"), (6, "A"), (2, "3A"), (1 / 2, "12A"))
+                 if _scaled(got, want, size, factor)), None)
+
+
+CENTROID = Step(
+    "centroid", "Step 3: polygon_centroid() is the area-weighted centroid Σ (a + b)(a × b) / (6 A), either winding.",
+    3, "polygon_centroid", _outlines, lambda centroid, c: centroid([Vector2(p) for p in c["points"]]),
+    lambda c: list(reference_centroid([Vector2(p) for p in c["points"]])), answer=_vector, hint="centroid",
+    bad=lambda got: isinstance(got, str), accepts=lambda c: _scaled(c["got"], c["want"], _size(c)),
+    same=lambda got, want: same_point(got, want), diagnose=_centroid_case,
+    malformed=lambda c: f"polygon_centroid() must return a point (a Vector2).\nfor {c['case']} it returned {c['got']}.",
+    evidence=lambda c: f"for {c['case']}, yours is {vec_text(c['got'])}; the area-weighted centroid "
+                       f"{vec_text(c['want'])}.", unnamed="polygon_centroid() is not the area-weighted centroid",
+    passed="the centroid of all {n} outlines (both windings) is the area-weighted one",
+    wrong=forms_of({"average": "your centroid is the corners' average, the centre of mass only for triangles and "
+                               "symmetric shapes: weight by area",
+                    "xy_swapped": "your centroid has x and y swapped: the x sum takes the x coordinates, "
+                                  "Σ (a.x + b.x)(a × b)",
+                    "no_closing_edge": "the edge from the last point back to the first is missing: wrap round with "
+                                       "(i + 1) % len(points)"}, _centroid_forms, "centroid_"),
+    extra={"average": lambda c: _centroid_forms(c)["average"]})   # drawn by --show
 
 
 # ---------------------------------------------------------------- step 4: polygon_inertia
@@ -333,25 +369,33 @@ def distinct_directions(axes):
     return kept
 
 
-def probe_separating_axes(module, lab_path):
-    """The student's separating_axes(pa, pb) beside all edge normals of both and the distinct directions."""
-    cases = []
-    for name, pa, pb in axis_pairs():
-        for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
-            got = module.separating_axes([Vector2(p) for p in first], [Vector2(p) for p in second])
-            cases.append({"pair": name, "order": order, "got": _points(got)})
-            if judging(module):
-                normals_a, normals_b = edge_normals(first), edge_normals(second)
-                cases[-1].update(normals_a=_plain(normals_a), normals_b=_plain(normals_b),
-                                 want=_plain(distinct_directions(normals_a + normals_b)),
-                                 forms=_axes_forms(normals_a, normals_b))
-    return cases
+def _pairs(pairs):
+    """The cases of step 5's probes: each pair of world points, then the same pair with A and B swapped."""
+    return lambda module: [{"pair": name, "order": order, "a": _plain(first), "b": _plain(second)}
+                           for name, pa, pb in pairs() for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa))]
+
+
+def _call_pair(function, case):
+    return function([Vector2(p) for p in case["a"]], [Vector2(p) for p in case["b"]])
+
+
+def _label(case):
+    return f"for '{case['pair']}'" + (" with A and B swapped" if case["order"] == "B, A" else "")
+
+
+def _normals(case, side, plain=True):
+    """The edge normals of the case's shape A ("a") or B ("b"), as plain [x, y] or (plain=False) Vector2s."""
+    normals = edge_normals([Vector2(p) for p in case[side]])
+    return _plain(normals) if plain else normals
 
 
 @reference
-def _axes_forms(normals_a, normals_b):
-    """What the known wrong ways of skipping parallel axes keep, by name (checks.AXES_MISTAKES)."""
-    def kept_by(keep, normals=normals_a + normals_b):
+def _axes_forms(case):
+    """What the known wrong ways of skipping parallel axes keep, by name (AXES_MISTAKES)."""
+    normals_a = _normals(case, "a", plain=False)
+    normals = normals_a + _normals(case, "b", plain=False)
+
+    def kept_by(keep, normals=normals):
         kept = []
         for axis in normals:
             if keep(axis, kept):
@@ -368,34 +412,113 @@ def _axes_forms(normals_a, normals_b):
     }
 
 
-def probe_sat(module, lab_path):
-    """The lab's sat() (the handout's loop over the student's axes) on the axis pairs and Tumbling Crates' pairs."""
-    cases = []
-    pairs = axis_pairs() + probe_kit.sat_pairs()
-    for name, pa, pb in pairs:
-        for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
-            got = module.sat([Vector2(p) for p in first], [Vector2(p) for p in second])
-            cases.append({"pair": name, "order": order, "got": probe_kit.sat_answer(got)})
-            if judging(module):
-                want = probe_kit.reference_sat(first, second, "lesson")
-                cases[-1].update(want=None if want is None else {"normal": list(want[0]), "depth": want[1]},
-                                 ties=[] if want is None else _tied_normals(first, second, want[1]))
-    return cases
+# the known wrong ways of skipping parallel axes, by the name _axes_forms gives what they keep
+AXES_MISTAKES = {
+    "dot_not_cross": "an axis is skipped when |axis · kept| is small, i.e. perpendicular; parallel means |axis × kept| "
+                     "near 0",
+    "same_way_only": "only an axis pointing the same way as a kept one is skipped; one pointing the opposite way is "
+                     "parallel too",
+    "cross_without_abs": "the test cross(axis, kept) > PARALLEL has no abs(): an axis turned the other way is "
+                         "skipped though not parallel",
+    "only_a": "only A's edge normals are there: B's edges give directions of their own",
+    "dot_threshold": "the test 1 - |axis · kept| <= PARALLEL merges axes up to 0.08° apart: compare |axis × kept| "
+                     "with PARALLEL",
+    "last_kept_only": "each axis is compared with the last kept axis only: compare it with every kept axis",
+    "none_skipped": "no axis is skipped: every parallel twin is kept",
+}
+
+
+def _parallel(u, v):
+    return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-6
+
+
+def _axes_fault(case):
+    """None when the student's axes are every edge normal's direction of A and B once, as unit vectors; else
+    (the Form this pair shows by itself, or None: the one-formula rule's; the first line then; the evidence)."""
+    got, label, normals = case["got"], _label(case), case["normals_a"] + case["normals_b"]
+    odd = next((a for a in got if abs(math.hypot(*a) - 1) > 1e-6), None)
+    if odd is not None:
+        return (Form("axes_not_unit", "an axis is not a unit vector: axes are unit edge normals (edge_normals gives "
+                     "them)"), None, f"{label}, the axis {vec_text(odd)} has length {math.hypot(*odd):.4g}.")
+    stray = next((a for a in got if not any(_parallel(a, n) for n in normals)), None)
+    if stray is not None:
+        return (Form(None, "separating_axes() gives an axis that is not the normal of any edge of A or B"), None,
+                f"{label}: {vec_text(stray)}.")
+    counts = f"{len(got)} axes for {len(case['want'])} directions"
+    missing = next((n for n in normals if not any(_parallel(a, n) for a in got)), None)
+    if missing is not None:
+        whose = "A's" if missing in case["normals_a"] else "B's"
+        near = next((a for a in got if 1 - abs(a[0] * missing[0] + a[1] * missing[1]) <= 1e-6), None)
+        if near is not None:   # merged by a dot-product test: 1 - |a·b| ≈ θ²/2 is tiny long before θ is
+            angle = math.degrees(math.asin(min(1.0, abs(near[0] * missing[1] - near[1] * missing[0]))))
+            return (Form("axes_dot_threshold", AXES_MISTAKES["dot_threshold"]), None, f"{label}, {whose} edge normal "
+                    f"{vec_text(missing)} is missing, {angle:.2g}° from the kept axis {vec_text(near)}.")
+        return (None, "a direction that is not parallel to a kept axis was skipped",
+                f"{label}, no axis along {whose} edge normal {vec_text(missing)}: {counts}.")
+    twins = next(((a, b) for i, a in enumerate(got) for b in got[i + 1:] if _parallel(a, b)), None)
+    if twins is not None:
+        way = "the same way" if twins[0][0] * twins[1][0] + twins[0][1] * twins[1][1] > 0 else "opposite ways"
+        return (None, "a parallel axis is kept twice: skip one parallel to any kept axis", f"{label}, "
+                f"{vec_text(twins[0])} and {vec_text(twins[1])} are parallel (pointing {way}): {counts}.")
+    return None
+
+
+AXES = Step(
+    "parallel_axes", "", 5, "separating_axes", _pairs(axis_pairs), _call_pair,
+    lambda c: _plain(distinct_directions(_normals(c, "a", plain=False) + _normals(c, "b", plain=False))),
+    answer=_points,
+    hint="axes", bad=lambda got: isinstance(got, str), accepts=lambda c: _axes_fault(c) is None,
+    same=lambda got, want: not isinstance(got, str) and len(got) == len(want) and all(same_point(g, w) for g, w in
+                                                                                      zip(got, want)),
+    malformed=lambda c: f"separating_axes() must return a list of unit Vector2 axes.\n{_label(c)} it returned "
+                        f"{c['got']}.", diagnose=lambda cases, c: _axes_fault(c)[0],
+    unnamed=lambda c: _axes_fault(c)[1], evidence=lambda c: _axes_fault(c)[2],
+    wrong=forms_of({name: f"your skip rule, in every pair: {text}" for name, text in AXES_MISTAKES.items()},
+                   _axes_forms, "axes_"),
+    extra={"normals_a": lambda c: _normals(c, "a"), "normals_b": lambda c: _normals(c, "b")})
 
 
 @reference
-def _tied_normals(pa, pb, depth):
-    """Every edge normal (turned to point from A to B) whose overlap equals the smallest, `depth`.
-
-    When two directions tie, the axis sat() keeps depends on the order of the axes, and either
-    is a right answer; the check accepts any of them.
-    """
+def _sat_reference(case):
+    """The lesson's sat() for the pair, None or {"normal", "depth"}, and every edge normal (turned to point from A to
+    B) whose overlap equals the smallest: when two directions tie, the axis sat() keeps depends on the order of the
+    axes, and either is a right answer."""
+    pa, pb = [Vector2(p) for p in case["a"]], [Vector2(p) for p in case["b"]]
+    want = probe_kit.reference_sat(pa, pb, "lesson")
+    if want is None:
+        return None, []
     towards_b = probe_kit.centre_of(pb) - probe_kit.centre_of(pa)
-    tied = []
-    for axis, overlap, _ in probe_kit.axis_overlaps(pa, pb):
-        if abs(overlap - depth) <= 1e-9 * max(1.0, depth):
-            tied.append(list(axis if towards_b.dot(axis) >= 0 else -axis))
-    return tied
+    return {"normal": list(want[0]), "depth": want[1]}, [
+        list(axis if towards_b.dot(axis) >= 0 else -axis) for axis, overlap, _ in probe_kit.axis_overlaps(pa, pb)
+        if abs(overlap - want[1]) <= 1e-9 * max(1.0, want[1])]
+
+
+def _sat_fault(case):
+    """None when sat() on the student's axes is the lesson's for this pair (apart, or the smallest overlap along
+    one of the tied normals); else (the first line, the evidence)."""
+    got, want, label = case["got"], case["want"], _label(case)
+    if want is None:
+        if got is None or ("touching" in case["pair"] and abs(got["depth"]) <= TOUCHING):
+            return None
+        return ("with your axes sat() misses a gap: the shapes are apart along an edge normal",
+                f"{label}, sat() says they overlap by {got['depth']:.2f} px.")
+    if got is None:
+        return "with your axes sat() says apart where the shapes overlap", f"{label}, they overlap by " \
+                                                                           f"{want['depth']:.2f} px."
+    along = max(got["normal"][0] * t[0] + got["normal"][1] * t[1] for t in case["ties"] or [want["normal"]])
+    if close(got["depth"], want["depth"]) and abs(along - 1) <= 1e-6:
+        return None
+    return ("with your axes sat() misses the smallest overlap", f"{label}: {got['depth']:.4g} px along "
+            f"{vec_text(got['normal'])}; expected {want['depth']:.4g} px along {vec_text(want['normal'])}.")
+
+
+SAT = Step(
+    "parallel_axes", "", 5, "sat", _pairs(lambda: axis_pairs() + probe_kit.sat_pairs()), _call_pair,
+    lambda c: _sat_reference(c)[0], answer=probe_kit.sat_answer, hint="axes",
+    bad=lambda got: got is not None and "bad" in got, accepts=lambda c: _sat_fault(c) is None,
+    malformed=lambda c: f"sat() must return (normal, depth) or None.\n{_label(c)} it returned {c['got']['bad']}.",
+    unnamed=lambda c: _sat_fault(c)[0], evidence=lambda c: _sat_fault(c)[1],
+    extra={"ties": lambda c: _sat_reference(c)[1]})
 
 
 # ---------------------------------------------------------------- the lab's bodies
@@ -443,8 +566,8 @@ PURE = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_ax
 
 # probe name -> (the lab function it needs, the probe)
 PROBES = {**CORNERS.probes(),
-          "polygon_centroid": ("polygon_centroid", probe_polygon_centroid),
+          **CENTROID.probes(),
           **INERTIA.probes(),
-          "separating_axes": ("separating_axes", probe_separating_axes),
-          "sat": ("sat", probe_sat),
+          **AXES.probes(),
+          **SAT.probes(),
           "bodies": ("build", probe_bodies)}
