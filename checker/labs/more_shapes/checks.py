@@ -7,15 +7,9 @@ Order of checks (stable), one per lesson step where a step is the student's:
   runs, then the scenes' criteria: triangle_tips, hexagon_tips, pile_stable, ramp_holds.
 Checks are worth 1 point, the five criteria 2 points each.
 
-The function checks compare the student's regular_polygon, polygon_centroid,
-polygon_inertia and separating_axes (and the handout's sat() running on the
-student's axes) with the lesson's formulas on checker/labs/more_shapes/probes.py's
-configurations and name the first that differs, and the mistake when it is
-a usual one. The scenes (checker/labs/more_shapes/scenes.py) run only when every
-function check passes. The lab's build() makes every scene body with the
-student's functions, so the scenes exercise them.
-
-Every bound of the criteria was set from what solutions/more_shapes.py
+The function checks are declared in probes.py (cases, the lesson's answers, the known wrong forms). The scenes
+(scenes.py) run only when every function check passes; build() makes every scene body with the student's
+functions, so the scenes exercise them. Every bound of the criteria was set from what solutions/more_shapes.py
 measures in the same scene, with the measured value noted next to it.
 """
 import math
@@ -96,8 +90,7 @@ SCENE_SECONDS = {"solo": 1.9, "pile": 1.8}
 
 # ---------------------------------------------------------------- loading and the handout
 
-lab_checks.register_common(CHECKS, HINTS, ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes",
-                                            "sat", "build", "main"))
+lab_checks.register_common(CHECKS, HINTS, probes.REQUIRED)
 
 
 # ---------------------------------------------------------------- step 2: regular_polygon

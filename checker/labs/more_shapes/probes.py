@@ -1,22 +1,12 @@
-"""Probes of a More Shapes file's own functions, run inside the checker's child process.
+"""More Shapes' function steps declared as data (checker/judging/declared.py), and the probe of the lab's bodies.
 
-Each probe calls one of the student's functions on configurations chosen to
-show the mistakes a student makes, and returns plain data: what the student's
-function gave, what the lesson's formula gives on the same inputs, and (where
-it helps name a mistake) what the usual wrong formulas give. The checks in
-checker/labs/more_shapes/checks.py compare them in the grading process. The lesson's
-answers are added in the grader only (`judging`, checker/judging/probe_kit.py).
-
-    regular_polygon    (step 2) 3 to 12 sides, radii from 5 to 40 px
-    polygon_centroid   (step 3) right triangles, a house, a trapezoid, irregular hexagons far from
-                       (0, 0), both windings; the average of the corners is recorded to name that mistake
-    polygon_inertia    (step 4) regular polygons (3-8 sides) and boxes against their analytic inertias,
-                       irregular centred polygons, both windings
-    separating_axes    (step 5) pairs of boxes, triangles, pentagons and hexagons, aligned (parallel
-                       edges to skip) and turned (none to skip), a nearly-parallel pair that must be kept
-    sat                (step 5) the same pairs and Tumbling Crates' pairs through the lab's sat()
-    bodies             build() for every kind: the lab's bodies' mass and inertia (the inertia criterion)
-
+Each Step holds its cases, the lesson's answer (computed in the grader only) and the known wrong forms:
+    regular_polygon   (step 2) 3 to 12 sides, radii from 5 to 40 px, and one polygon drawn for the run
+    polygon_centroid  (step 3) a right triangle, a house, a trapezoid, irregular outlines far from (0, 0), both windings
+    polygon_inertia   (step 4) regular polygons and boxes (their analytic inertias), irregular centred outlines
+    separating_axes   (step 5) pairs aligned (parallel edges to skip), turned (none to skip), nearly parallel (keep)
+    sat               (step 5) the same pairs and Tumbling Crates' pairs, through the lab's sat() on the student's axes
+    bodies            build() for every kind: the lab's bodies' mass and inertia (the inertia criterion)
 Units: px, s, rad; mass = area / 1000.
 """
 import math
@@ -27,7 +17,8 @@ from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, 
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from checker.judging import probe_kit
-from checker.judging.common import close, real, same_point, value_text
+from checker.judging.answer_kinds import as_number, as_point, as_points, is_text
+from checker.judging.common import close, same_point
 from checker.judging.declared import Form, Step, forms_of
 from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import judging, reference
@@ -44,30 +35,6 @@ TOUCHING = 1e-6   # px: a depth this small for shapes exactly touching counts as
 
 def _plain(points):
     return [[float(p[0]), float(p[1])] for p in points]
-
-
-def _points(value):
-    """The student's list of points as plain [[x, y], ...], or a string saying what is wrong with it."""
-    try:
-        return [[float(Vector2(p).x), float(Vector2(p).y)] for p in value]
-    except (TypeError, ValueError):
-        return value_text(value)
-
-
-def _number(value):
-    try:
-        number = real(value)
-    except (TypeError, ValueError):
-        return value_text(value)
-    return number
-
-
-def _vector(value):
-    try:
-        v = Vector2(value)
-    except (TypeError, ValueError):
-        return value_text(value)
-    return [v.x, v.y]
 
 
 # ---------------------------------------------------------------- step 2: regular_polygon
@@ -134,9 +101,9 @@ def _polygons(module):
 
 CORNERS = Step(
     "polygon_corners", "Step 2: regular_polygon(sides, radius) puts corner k at radius (cos θk, sin θk), θk = 2πk / "
-    "sides.", 2, "regular_polygon", _polygons, lambda polygon, c: _points(polygon(c["sides"], c["radius"])),
+    "sides.", 2, "regular_polygon", _polygons, lambda polygon, c: as_points(polygon(c["sides"], c["radius"])),
     lambda c: _plain(reference_regular_polygon(c["sides"], c["radius"])), hint="corners",
-    same=lambda got, want: _same_corners(got, want, math.hypot(*want[0])), bad=lambda got: isinstance(got, str),
+    same=lambda got, want: _same_corners(got, want, math.hypot(*want[0])), bad=is_text,
     kind="a list of points", show=lambda points: f"{len(points)} corners from {vec_text(points[0])}",
     label=lambda c: f"regular_polygon({c['sides']}, {c['radius']:g})", diagnose=_corner_mistake,
     evidence=_first_corner, unnamed="regular_polygon() does not put corner k at θk = 2πk / sides",
@@ -218,8 +185,8 @@ def _centroid_case(cases, case):
 CENTROID = Step(
     "centroid", "Step 3: polygon_centroid() is the area-weighted centroid Σ (a + b)(a × b) / (6 A), either winding.",
     3, "polygon_centroid", _outlines, lambda centroid, c: centroid([Vector2(p) for p in c["points"]]),
-    lambda c: list(reference_centroid([Vector2(p) for p in c["points"]])), answer=_vector, hint="centroid",
-    bad=lambda got: isinstance(got, str), accepts=lambda c: _scaled(c["got"], c["want"], _size(c)),
+    lambda c: list(reference_centroid([Vector2(p) for p in c["points"]])), answer=as_point, hint="centroid",
+    bad=is_text, accepts=lambda c: _scaled(c["got"], c["want"], _size(c)),
     same=lambda got, want: same_point(got, want), diagnose=_centroid_case,
     malformed=lambda c: f"polygon_centroid() must return a point (a Vector2).\nfor {c['case']} it returned {c['got']}.",
     evidence=lambda c: f"for {c['case']}, yours is {vec_text(c['got'])}; the area-weighted centroid "
@@ -325,9 +292,9 @@ INERTIA_MISTAKES = {
 INERTIA = Step(
     "inertia_sum", "Step 4: polygon_inertia() is the triangle-fan sum m Σ |a × b|(a·a + a·b + b·b) / (6 Σ |a × b|).",
     4, "polygon_inertia", _inertia_cases, lambda inertia, c: inertia([Vector2(p) for p in c["points"]], c["mass"]),
-    lambda c: reference_inertia([Vector2(p) for p in c["points"]], c["mass"]), answer=_number, hint="inertia",
+    lambda c: reference_inertia([Vector2(p) for p in c["points"]], c["mass"]), answer=as_number, hint="inertia",
     same=lambda got, want: not isinstance(got, str) and want is not None and close(got, want),
-    bad=lambda got: isinstance(got, str), kind="a number", show=lambda value: f"{value:.6g}",
+    bad=is_text, kind="a number", show=lambda value: f"{value:.6g}",
     label=lambda c: f"polygon_inertia() for {c['case']}", unnamed="polygon_inertia() is not the triangle-fan sum",
     wrong=forms_of(INERTIA_MISTAKES, lambda c: _inertia_forms(c["points"], c["mass"]), "polygon_inertia_"),
     extra={"analytic": lambda c: analytic_inertia(**c["analytic_of"]) if c["analytic_of"] else None})
@@ -466,8 +433,8 @@ def _axes_fault(case):
 AXES = Step(
     "parallel_axes", "", 5, "separating_axes", _pairs(axis_pairs), _call_pair,
     lambda c: _plain(distinct_directions(_normals(c, "a", plain=False) + _normals(c, "b", plain=False))),
-    answer=_points,
-    hint="axes", bad=lambda got: isinstance(got, str), accepts=lambda c: _axes_fault(c) is None,
+    answer=as_points,
+    hint="axes", bad=is_text, accepts=lambda c: _axes_fault(c) is None,
     same=lambda got, want: not isinstance(got, str) and len(got) == len(want) and all(same_point(g, w) for g, w in
                                                                                       zip(got, want)),
     malformed=lambda c: f"separating_axes() must return a list of unit Vector2 axes.\n{_label(c)} it returned "
