@@ -93,19 +93,10 @@ SCENE_SECONDS = {"solo": 1.9, "pile": 1.8}
 lab_checks.register_common(CHECKS, HINTS, probes.REQUIRED)
 
 
-# ---------------------------------------------------------------- step 2: regular_polygon
+# ---------------------------------------------------------------- steps 2-4, declared in probes.py
 
-probes.CORNERS.register(CHECKS, HINTS)   # declared in probes.py
-
-
-# ---------------------------------------------------------------- step 3: polygon_centroid
-
-probes.CENTROID.register(CHECKS, HINTS)   # declared in probes.py
-
-
-# ---------------------------------------------------------------- step 4: polygon_inertia
-
-probes.INERTIA.register(CHECKS, HINTS)   # declared in probes.py
+for declared_step in (probes.CORNERS, probes.CENTROID, probes.INERTIA):
+    declared_step.register(CHECKS, HINTS)
 
 
 # ---------------------------------------------------------------- step 5: separating_axes (and sat on them)

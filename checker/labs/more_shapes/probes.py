@@ -187,7 +187,7 @@ CENTROID = Step(
     3, "polygon_centroid", _outlines, lambda centroid, c: centroid([Vector2(p) for p in c["points"]]),
     lambda c: list(reference_centroid([Vector2(p) for p in c["points"]])), answer=as_point, hint="centroid",
     bad=is_text, accepts=lambda c: _scaled(c["got"], c["want"], _size(c)),
-    same=lambda got, want: same_point(got, want), diagnose=_centroid_case,
+    same=same_point, diagnose=_centroid_case,
     malformed=lambda c: f"polygon_centroid() must return a point (a Vector2).\nfor {c['case']} it returned {c['got']}.",
     evidence=lambda c: f"for {c['case']}, yours is {vec_text(c['got'])}; the area-weighted centroid "
                        f"{vec_text(c['want'])}.", unnamed="polygon_centroid() is not the area-weighted centroid",
@@ -213,34 +213,32 @@ def analytic_inertia(kind, mass, radius=None, w=None, h=None, sides=None):
 
 @reference
 def _inertia_forms(points, mass):
-    """What the usual mistakes give for these centred points, by name (to name the student's)."""
+    """What the usual mistakes give for these centred points, by name (to name the student's): mostly the lesson's
+    triangle-fan sum with one part changed (fan's switches)."""
     pts = [Vector2(p) for p in points]
     pairs = [(a, pts[(i + 1) % len(pts)]) for i, a in enumerate(pts)]
-    signed = [cross(a, b) for a, b in pairs]
-    weights = [abs(s) for s in signed]
-    terms = [a.dot(a) + a.dot(b) + b.dot(b) for a, b in pairs]
-    total = sum(weights)
-    right = mass * sum(w * t for w, t in zip(weights, terms)) / (6 * total)
-    dots = [abs(a.dot(b)) for a, b in pairs]
-    forms = {
-        "inverse": 1 / right,
-        "dot_weight": mass * sum(d * t for d, t in zip(dots, terms)) / (6 * sum(dots)) if sum(dots) else None,
-        "no_six": mass * sum(w * t for w, t in zip(weights, terms)) / total,
-        "twelve": mass * sum(w * t for w, t in zip(weights, terms)) / (12 * total),
-        "no_mass": sum(w * t for w, t in zip(weights, terms)) / (6 * total),
-        "no_cross_term": mass * sum(w * (a.dot(a) + b.dot(b)) for w, (a, b) in zip(weights, pairs)) / (6 * total),
-        "unweighted": mass * sum(terms) / (6 * len(terms)),
+    total = sum(abs(cross(a, b)) for a, b in pairs)
+
+    def fan(m=mass, weight=lambda a, b: abs(cross(a, b)), term=lambda a, b: a.dot(a) + a.dot(b) + b.dot(b), six=6):
+        weights = [weight(a, b) for a, b in pairs]
+        return m * sum(w * term(a, b) for w, (a, b) in zip(weights, pairs)) / (six * sum(weights)) if sum(weights) \
+            else None
+    return {
+        "inverse": 1 / fan(),
+        "dot_weight": fan(weight=lambda a, b: abs(a.dot(b))),
+        "no_six": fan(six=1),
+        "twelve": fan(six=12),
+        "no_mass": fan(m=1),
+        "no_cross_term": fan(term=lambda a, b: a.dot(a) + b.dot(b)),
+        "unweighted": fan(weight=lambda a, b: 1),
         "corner_radii": mass * sum(p.length_squared() for p in pts) / len(pts),
-        "times_mass_squared": mass * mass * sum(w * t for w, t in zip(weights, terms)) / (6 * total),
-        "precedence": mass * sum(w * t for w, t in zip(weights, terms)) / 6 * total,
-        "minus_cross_term": mass * sum(w * (a.dot(a) - a.dot(b) + b.dot(b)) for w, (a, b) in zip(weights, pairs))
-        / (6 * total),
+        "times_mass_squared": fan(m=mass * mass),
+        "precedence": fan() * total * total,   # mass * num / 6 * den: the weights' sum multiplies
+        "minus_cross_term": fan(term=lambda a, b: a.dot(a) - a.dot(b) + b.dot(b)),
         # issue 40: the mass argument ignored, recomputed from the area (the handout's DENSITY, 1/1000 per px²)
-        "mass_from_area": (total / 2 / 1000) * sum(w * t for w, t in zip(weights, terms)) / (6 * total),
+        "mass_from_area": fan(m=total / 2 / 1000),
+        "no_abs": fan(weight=cross),   # None when the signed weights cancel
     }
-    if abs(sum(signed)) > 0:
-        forms["no_abs"] = mass * sum(s * t for s, t in zip(signed, terms)) / (6 * sum(signed))
-    return forms
 
 
 def inertia_cases():
@@ -517,12 +515,8 @@ def probe_bodies(module, lab_path):
 def _body_reference(item, mass, local):
     """For a body build() made of `item`: its outline's area and centroid, the analytic and the lesson's inertia."""
     kind = item["kind"]
-    if kind in SIDES:
-        analytic = analytic_inertia(kind, mass, radius=item["size"], sides=SIDES[kind])
-    elif kind == "box":
-        analytic = analytic_inertia("box", mass, w=item["w"], h=item["h"])
-    else:
-        analytic = None
+    analytic = (analytic_inertia(kind, mass, radius=item["size"], sides=SIDES[kind]) if kind in SIDES else
+                analytic_inertia("box", mass, w=item["w"], h=item["h"]) if kind == "box" else None)
     return {"area": abs(polygon_area(local)), "centroid": list(reference_centroid(local)), "analytic": analytic,
             "reference": reference_inertia(convex_polygon(local), mass)}
 
@@ -532,9 +526,5 @@ def _body_reference(item, mass, local):
 PURE = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes")
 
 # probe name -> (the lab function it needs, the probe)
-PROBES = {**CORNERS.probes(),
-          **CENTROID.probes(),
-          **INERTIA.probes(),
-          **AXES.probes(),
-          **SAT.probes(),
+PROBES = {**CORNERS.probes(), **CENTROID.probes(), **INERTIA.probes(), **AXES.probes(), **SAT.probes(),
           "bodies": ("build", probe_bodies)}
