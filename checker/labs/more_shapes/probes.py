@@ -397,7 +397,7 @@ def _parallel(u, v):
     return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-6
 
 
-def _axes_fault(case):
+def axes_fault(case):
     """None when the student's axes are every edge normal's direction of A and B once, as unit vectors; else
     (the Form this pair shows by itself, or None: the one-formula rule's; the first line then; the evidence)."""
     got, label, normals = case["got"], _label(case), case["normals_a"] + case["normals_b"]
@@ -432,12 +432,12 @@ AXES = Step(
     "parallel_axes", "", 5, "separating_axes", _pairs(axis_pairs), _call_pair,
     lambda c: _plain(distinct_directions(_normals(c, "a", plain=False) + _normals(c, "b", plain=False))),
     answer=as_points,
-    hint="axes", bad=is_text, accepts=lambda c: _axes_fault(c) is None,
+    hint="axes", bad=is_text, accepts=lambda c: axes_fault(c) is None,
     same=lambda got, want: not isinstance(got, str) and len(got) == len(want) and all(same_point(g, w) for g, w in
                                                                                       zip(got, want)),
     malformed=lambda c: f"separating_axes() must return a list of unit Vector2 axes.\n{_label(c)} it returned "
-                        f"{c['got']}.", diagnose=lambda cases, c: _axes_fault(c)[0],
-    unnamed=lambda c: _axes_fault(c)[1], evidence=lambda c: _axes_fault(c)[2],
+                        f"{c['got']}.", diagnose=lambda cases, c: axes_fault(c)[0],
+    unnamed=lambda c: axes_fault(c)[1], evidence=lambda c: axes_fault(c)[2],
     wrong=forms_of({name: f"your skip rule, in every pair: {text}" for name, text in AXES_MISTAKES.items()},
                    _axes_forms, "axes_"),
     extra={"normals_a": lambda c: _normals(c, "a"), "normals_b": lambda c: _normals(c, "b")})
@@ -458,7 +458,7 @@ def _sat_reference(case):
         if abs(overlap - want[1]) <= 1e-9 * max(1.0, want[1])]
 
 
-def _sat_fault(case):
+def sat_fault(case):
     """None when sat() on the student's axes is the lesson's for this pair (apart, or the smallest overlap along
     one of the tied normals); else (the first line, the evidence)."""
     got, want, label = case["got"], case["want"], _label(case)
@@ -480,9 +480,9 @@ def _sat_fault(case):
 SAT = Step(
     "parallel_axes", "", 5, "sat", _pairs(lambda: axis_pairs() + probe_kit.sat_pairs()), _call_pair,
     lambda c: _sat_reference(c)[0], answer=probe_kit.sat_answer, hint="axes",
-    bad=lambda got: got is not None and "bad" in got, accepts=lambda c: _sat_fault(c) is None,
+    bad=lambda got: got is not None and "bad" in got, accepts=lambda c: sat_fault(c) is None,
     malformed=lambda c: f"sat() must return (normal, depth) or None.\n{_label(c)} it returned {c['got']['bad']}.",
-    unnamed=lambda c: _sat_fault(c)[0], evidence=lambda c: _sat_fault(c)[1],
+    unnamed=lambda c: sat_fault(c)[0], evidence=lambda c: sat_fault(c)[1],
     extra={"ties": lambda c: _sat_reference(c)[1]})
 
 
