@@ -325,11 +325,12 @@ def axis_pairs():
 
 
 @reference
-def distinct_directions(axes):
-    """The lesson's answer: the axes in order, each kept unless parallel (|a × b| <= PARALLEL) to one kept."""
+def distinct_directions(axes, keep=lambda axis, kept: all(abs(cross(axis, other)) > PARALLEL for other in kept)):
+    """The lesson's answer: the axes in order, each kept unless parallel (|a × b| <= PARALLEL) to one kept; with
+    another rule keep(axis, kept), what that rule keeps (a known wrong form)."""
     kept = []
     for axis in axes:
-        if all(abs(cross(axis, other)) > PARALLEL for other in kept):
+        if keep(axis, kept):
             kept.append(axis)
     return kept
 
@@ -361,11 +362,7 @@ def _axes_forms(case):
     normals = normals_a + _normals(case, "b", plain=False)
 
     def kept_by(keep, normals=normals):
-        kept = []
-        for axis in normals:
-            if keep(axis, kept):
-                kept.append(axis)
-        return _plain(kept)
+        return _plain(distinct_directions(normals, keep))
     return {
         "dot_not_cross": kept_by(lambda a, kept: all(abs(a.dot(k)) > PARALLEL for k in kept)),
         "same_way_only": kept_by(lambda a, kept: all(a.dot(k) < 1 - PARALLEL for k in kept)),
@@ -431,10 +428,8 @@ def axes_fault(case):
 AXES = Step(
     "parallel_axes", "", 5, "separating_axes", _pairs(axis_pairs), _call_pair,
     lambda c: _plain(distinct_directions(_normals(c, "a", plain=False) + _normals(c, "b", plain=False))),
-    answer=as_points,
-    hint="axes", bad=is_text, accepts=lambda c: axes_fault(c) is None,
-    same=lambda got, want: not isinstance(got, str) and len(got) == len(want) and all(same_point(g, w) for g, w in
-                                                                                      zip(got, want)),
+    answer=as_points, hint="axes", bad=is_text, accepts=lambda c: axes_fault(c) is None,
+    same=lambda got, want: not is_text(got) and len(got) == len(want) and all(map(same_point, got, want)),
     malformed=lambda c: f"separating_axes() must return a list of unit Vector2 axes.\n{_label(c)} it returned "
                         f"{c['got']}.", diagnose=lambda cases, c: axes_fault(c)[0],
     unnamed=lambda c: axes_fault(c)[1], evidence=lambda c: axes_fault(c)[2],
