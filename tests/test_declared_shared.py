@@ -7,7 +7,7 @@ numbers (k). Two SharedSteps read it, as two steps of one function do in a lab:
   - a screen fails before the cases (an argument changed in place: causes.SHARED's argument_changed) or keeps
     the records to grade, and receives what the checks it depends on returned;
   - a probe that holds no data (None) hands over to the step's fallback probes;
-  - `passes` decides a pass from more of the case than its two answers; a fallback Form after the forms.
+  - `accepts` decides a pass from more of the case than its two answers; a fallback Form after the forms.
 """
 import types
 
@@ -90,8 +90,8 @@ def test_a_probe_without_data_hands_over_to_the_fallback_probe():
     assert check(SUB, functions).message == "j = 2 k in all 1 cases"
 
 
-def test_passes_reads_the_whole_case_and_a_fallback_form_follows_the_forms():
-    strict = step(passes=lambda c: c["got"] == c["want"] and c["k"] > 0,
+def test_accepts_reads_the_whole_case_and_a_fallback_form_follows_the_forms():
+    strict = step(accepts=lambda c: c["got"] == c["want"] and c["k"] > 0,
                   fallback=lambda cases, c: declared.Form(None, "k must be positive", hint="args") if c["k"] <= 0
                   else None)
     with pytest.raises(Fail) as caught:
@@ -102,9 +102,9 @@ def test_passes_reads_the_whole_case_and_a_fallback_form_follows_the_forms():
     assert caught.value.mistake.id == "push_half"
 
 
-def test_a_step_without_passes_compares_its_two_answers():
+def test_a_step_without_accepts_compares_its_two_answers():
     plain = declared.Step("doubles", "Step 2: double(x) is 2 x.", 2, "double", lambda module: [{"x": 1}],
                           lambda double, c: double(c["x"]), lambda c: 2 * c["x"], hint="double")
-    assert plain.passes is None
+    assert plain.accepts is None
     assert plain.judge([{"x": 1, "got": 2, "want": 2, "forms": {}}], {"double": None}).message == \
         "all 1 cases match the lesson"

@@ -109,8 +109,8 @@ class Step:
     label: object = None      # label(case): the case as the messages name it (None: "for <case>")
     show: object = None       # show(answer): an answer as the messages write it (None: as it is)
     kind: str = "the lesson's kind of answer"   # what the function must return, for the default malformed
-    passes: object = None     # passes(case): the case is the lesson's, for a pass that reads more of the case than
-    #                           its two answers (None: same(got, want))
+    accepts: object = None    # accepts(case): the answer counts as the lesson's, where that needs the case's inputs
+    #                           (its size, the ties it allows); None: same(got, want). Forms still match by same.
 
     def __post_init__(self):
         assert self.hint is not None, f"{self.check}: a Step needs the key of its hint"
@@ -178,7 +178,7 @@ class Step:
         for case in cases:
             if self.bad is not None and self.bad(case["got"]):
                 raise Fail(self.malformed(case), hints[self.hint])
-            if not (self.passes(case) if self.passes else self.same(case["got"], case["want"])):
+            if not (self.accepts(case) if self.accepts else self.same(case["got"], case["want"])):
                 form = (self.diagnose and self.diagnose(cases, case)) or self.named(cases, case)
                 found = mistake(form.id, form.text) if form and form.id else None
                 first = (form and form.line) or (found.text if found else form.text if form else

@@ -19,6 +19,7 @@ from .causes import mistake
 from .checks import Fail, Hint, Passed
 from .common import close
 from .declared import Step, lesson_answers
+from .declared_together import register_together
 from .tape import judging
 
 
@@ -177,13 +178,6 @@ class Acting(Step):
         """declared.Step.register, judging the `also` steps after this one under the same check."""
         if not self.also:
             return super().register(registry, hints, depends, after, max_score)
-
-        def check(sub, functions):
-            lists = [step.judge(lab_checks.function_data(sub, functions, step.probe_id, step.function, step.step,
-                                                         hints["crash"]), hints).value
-                     for step in (self,) + tuple(self.also)]
-            return Passed(self.joint(lists), value=lists[0])
-        check.__name__ = check.__qualname__ = self.check
-        check.__doc__ = self.doc
-        registry.check(depends=list(depends), after=list(after), max_score=max_score)(check)
-        return check
+        return register_together((self,) + tuple(self.also), registry, hints, self.check, self.doc,
+                                 lambda *passed: Passed(self.joint([p.value for p in passed]), value=passed[0].value),
+                                 depends, after, max_score)

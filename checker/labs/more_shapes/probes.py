@@ -1,22 +1,12 @@
-"""Probes of a More Shapes file's own functions, run inside the checker's child process.
+"""More Shapes' function steps declared as data (checker/judging/declared.py), and the probe of the lab's bodies.
 
-Each probe calls one of the student's functions on configurations chosen to
-show the mistakes a student makes, and returns plain data: what the student's
-function gave, what the lesson's formula gives on the same inputs, and (where
-it helps name a mistake) what the usual wrong formulas give. The checks in
-checker/labs/more_shapes/checks.py compare them in the grading process. The lesson's
-answers are added in the grader only (`judging`, checker/judging/probe_kit.py).
-
-    regular_polygon    (step 2) 3 to 12 sides, radii from 5 to 40 px
-    polygon_centroid   (step 3) right triangles, a house, a trapezoid, irregular hexagons far from
-                       (0, 0), both windings; the average of the corners is recorded to name that mistake
-    polygon_inertia    (step 4) regular polygons (3-8 sides) and boxes against their analytic inertias,
-                       irregular centred polygons, both windings
-    separating_axes    (step 5) pairs of boxes, triangles, pentagons and hexagons, aligned (parallel
-                       edges to skip) and turned (none to skip), a nearly-parallel pair that must be kept
-    sat                (step 5) the same pairs and Tumbling Crates' pairs through the lab's sat()
-    bodies             build() for every kind: the lab's bodies' mass and inertia (the inertia criterion)
-
+Each Step holds its cases, the lesson's answer (computed in the grader only) and the known wrong forms:
+    regular_polygon   (step 2) 3 to 12 sides, radii from 5 to 40 px, and one polygon drawn for the run
+    polygon_centroid  (step 3) a right triangle, a house, a trapezoid, irregular outlines far from (0, 0), both windings
+    polygon_inertia   (step 4) regular polygons and boxes (their analytic inertias), irregular centred outlines
+    separating_axes   (step 5) pairs aligned (parallel edges to skip), turned (none to skip), nearly parallel (keep)
+    sat               (step 5) the same pairs and Tumbling Crates' pairs, through the lab's sat() on the student's axes
+    bodies            build() for every kind: the lab's bodies' mass and inertia (the inertia criterion)
 Units: px, s, rad; mass = area / 1000.
 """
 import math
@@ -27,7 +17,8 @@ from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, 
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from checker.judging import probe_kit
-from checker.judging.common import close, real, value_text
+from checker.judging.answer_kinds import as_number, as_point, as_points, is_text
+from checker.judging.common import close, same_point
 from checker.judging.declared import Form, Step, forms_of
 from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import judging, reference
@@ -39,34 +30,11 @@ from checker.judging.tape import run_rng
 
 REQUIRED = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes", "sat", "build", "main")
 PARALLEL = 1e-6   # |sin| below which two axes are parallel (the handout's PARALLEL)
+TOUCHING = 1e-6   # px: a depth this small for shapes exactly touching counts as "apart"
 
 
 def _plain(points):
     return [[float(p[0]), float(p[1])] for p in points]
-
-
-def _points(value):
-    """The student's list of points as plain [[x, y], ...], or a string saying what is wrong with it."""
-    try:
-        return [[float(Vector2(p).x), float(Vector2(p).y)] for p in value]
-    except (TypeError, ValueError):
-        return value_text(value)
-
-
-def _number(value):
-    try:
-        number = real(value)
-    except (TypeError, ValueError):
-        return value_text(value)
-    return number
-
-
-def _vector(value):
-    try:
-        v = Vector2(value)
-    except (TypeError, ValueError):
-        return value_text(value)
-    return [v.x, v.y]
 
 
 # ---------------------------------------------------------------- step 2: regular_polygon
@@ -133,9 +101,9 @@ def _polygons(module):
 
 CORNERS = Step(
     "polygon_corners", "Step 2: regular_polygon(sides, radius) puts corner k at radius (cos θk, sin θk), θk = 2πk / "
-    "sides.", 2, "regular_polygon", _polygons, lambda polygon, c: _points(polygon(c["sides"], c["radius"])),
+    "sides.", 2, "regular_polygon", _polygons, lambda polygon, c: as_points(polygon(c["sides"], c["radius"])),
     lambda c: _plain(reference_regular_polygon(c["sides"], c["radius"])), hint="corners",
-    same=lambda got, want: _same_corners(got, want, math.hypot(*want[0])), bad=lambda got: isinstance(got, str),
+    same=lambda got, want: _same_corners(got, want, math.hypot(*want[0])), bad=is_text,
     kind="a list of points", show=lambda points: f"{len(points)} corners from {vec_text(points[0])}",
     label=lambda c: f"regular_polygon({c['sides']}, {c['radius']:g})", diagnose=_corner_mistake,
     evidence=_first_corner, unnamed="regular_polygon() does not put corner k at θk = 2πk / sides",
@@ -177,25 +145,60 @@ def drawn_outline(rng):
             .rotate(turn) for a in angles]
 
 
-def probe_polygon_centroid(module, lab_path):
-    """The student's polygon_centroid on each outline, both windings, beside the area-weighted centroid."""
-    cases = []
+def _outlines(module):
+    """centroid_cases() and an outline drawn for this run, each also the other way round."""
     drawn = [("an outline drawn for this run", drawn_outline(run_rng(module, "polygon_centroid")))]
-    for name, corners in centroid_cases() + drawn:
-        for order, points in (("", corners), (" (the other way round)", list(reversed(corners)))):
-            pts = [Vector2(p) for p in points]
-            cases.append({"case": name + order, "points": _plain(pts),
-                          "got": _vector(module.polygon_centroid([Vector2(p) for p in pts]))})
-            if judging(module):
-                cases[-1].update(_centroid_reference(pts))
-    return cases
+    return [{"case": name + order, "points": _plain(points)} for name, corners in centroid_cases() + drawn
+            for order, points in (("", corners), (" (the other way round)", list(reversed(corners))))]
+
+
+def _size(case):
+    return max(1.0, *(abs(v) for p in case["points"] for v in p))
+
+
+def _scaled(got, want, size, factor=1.0):
+    """got is want × factor to 1e-7 of the outline's size (and of want): the same sum in another order."""
+    return want is not None and all(close(g, factor * w, floor=1e-7 * size) for g, w in zip(got, want))
 
 
 @reference
-def _centroid_reference(pts):
-    """The area-weighted centroid, the average of the corners (a mistake to name) and the signed area."""
-    average = sum(pts, Vector2()) / len(pts)
-    return {"want": list(reference_centroid(pts)), "average": [average.x, average.y], "area": polygon_area(pts)}
+def _centroid_forms(case):
+    """What the corners' average, the x and y sums swapped and the sum without the closing edge give."""
+    pts, want = [Vector2(p) for p in case["points"]], reference_centroid([Vector2(p) for p in case["points"]])
+    weights = [cross(a, b) for a, b in zip(pts, pts[1:])]   # every edge but the last point back to the first
+    open_sum = sum(((a + b) * w for (a, b), w in zip(zip(pts, pts[1:]), weights)), Vector2())
+    return {"average": list(sum(pts, Vector2()) / len(pts)), "xy_swapped": [want.y, want.x],
+            "no_closing_edge": list(open_sum / (6 * polygon_area(pts)))}
+
+
+def _centroid_case(cases, case):
+    """What this case's centroid shows by itself: -C (one winding's sign), or C times a wrong divisor."""
+    got, want, size = case["got"], case["want"], _size(case)
+    if _scaled(got, want, size, -1):
+        return Form("centroid_sign", "your centroid has its sign flipped when the points wind the other way: a × b "
+                                     "and A must both be signed, or both not")
+    return next((Form("centroid_divisor", f"your centroid is {factor:g} × the lesson's: the sum is divided by {by}, "
+                                          "not 6A") for factor, by in ((3, "2A"), (6, "A"), (2, "3A"), (1 / 2, "12A"))
+                 if _scaled(got, want, size, factor)), None)
+
+
+CENTROID = Step(
+    "centroid", "Step 3: polygon_centroid() is the area-weighted centroid Σ (a + b)(a × b) / (6 A), either winding.",
+    3, "polygon_centroid", _outlines, lambda centroid, c: centroid([Vector2(p) for p in c["points"]]),
+    lambda c: list(reference_centroid([Vector2(p) for p in c["points"]])), answer=as_point, hint="centroid",
+    bad=is_text, accepts=lambda c: _scaled(c["got"], c["want"], _size(c)),
+    same=same_point, diagnose=_centroid_case,
+    malformed=lambda c: f"polygon_centroid() must return a point (a Vector2).\nfor {c['case']} it returned {c['got']}.",
+    evidence=lambda c: f"for {c['case']}, yours is {vec_text(c['got'])}; the area-weighted centroid "
+                       f"{vec_text(c['want'])}.", unnamed="polygon_centroid() is not the area-weighted centroid",
+    passed="the centroid of all {n} outlines (both windings) is the area-weighted one",
+    wrong=forms_of({"average": "your centroid is the corners' average, the centre of mass only for triangles and "
+                               "symmetric shapes: weight by area",
+                    "xy_swapped": "your centroid has x and y swapped: the x sum takes the x coordinates, "
+                                  "Σ (a.x + b.x)(a × b)",
+                    "no_closing_edge": "the edge from the last point back to the first is missing: wrap round with "
+                                       "(i + 1) % len(points)"}, _centroid_forms, "centroid_"),
+    extra={"average": lambda c: _centroid_forms(c)["average"]})   # drawn by --show
 
 
 # ---------------------------------------------------------------- step 4: polygon_inertia
@@ -210,34 +213,32 @@ def analytic_inertia(kind, mass, radius=None, w=None, h=None, sides=None):
 
 @reference
 def _inertia_forms(points, mass):
-    """What the usual mistakes give for these centred points, by name (to name the student's)."""
+    """What the usual mistakes give for these centred points, by name (to name the student's): mostly the lesson's
+    triangle-fan sum with one part changed (fan's switches)."""
     pts = [Vector2(p) for p in points]
     pairs = [(a, pts[(i + 1) % len(pts)]) for i, a in enumerate(pts)]
-    signed = [cross(a, b) for a, b in pairs]
-    weights = [abs(s) for s in signed]
-    terms = [a.dot(a) + a.dot(b) + b.dot(b) for a, b in pairs]
-    total = sum(weights)
-    right = mass * sum(w * t for w, t in zip(weights, terms)) / (6 * total)
-    dots = [abs(a.dot(b)) for a, b in pairs]
-    forms = {
-        "inverse": 1 / right,
-        "dot_weight": mass * sum(d * t for d, t in zip(dots, terms)) / (6 * sum(dots)) if sum(dots) else None,
-        "no_six": mass * sum(w * t for w, t in zip(weights, terms)) / total,
-        "twelve": mass * sum(w * t for w, t in zip(weights, terms)) / (12 * total),
-        "no_mass": sum(w * t for w, t in zip(weights, terms)) / (6 * total),
-        "no_cross_term": mass * sum(w * (a.dot(a) + b.dot(b)) for w, (a, b) in zip(weights, pairs)) / (6 * total),
-        "unweighted": mass * sum(terms) / (6 * len(terms)),
+    total = sum(abs(cross(a, b)) for a, b in pairs)
+
+    def fan(m=mass, weight=lambda a, b: abs(cross(a, b)), term=lambda a, b: a.dot(a) + a.dot(b) + b.dot(b), six=6):
+        weights = [weight(a, b) for a, b in pairs]
+        return m * sum(w * term(a, b) for w, (a, b) in zip(weights, pairs)) / (six * sum(weights)) if sum(weights) \
+            else None
+    return {
+        "inverse": 1 / fan(),
+        "dot_weight": fan(weight=lambda a, b: abs(a.dot(b))),
+        "no_six": fan(six=1),
+        "twelve": fan(six=12),
+        "no_mass": fan(m=1),
+        "no_cross_term": fan(term=lambda a, b: a.dot(a) + b.dot(b)),
+        "unweighted": fan(weight=lambda a, b: 1),
         "corner_radii": mass * sum(p.length_squared() for p in pts) / len(pts),
-        "times_mass_squared": mass * mass * sum(w * t for w, t in zip(weights, terms)) / (6 * total),
-        "precedence": mass * sum(w * t for w, t in zip(weights, terms)) / 6 * total,
-        "minus_cross_term": mass * sum(w * (a.dot(a) - a.dot(b) + b.dot(b)) for w, (a, b) in zip(weights, pairs))
-        / (6 * total),
+        "times_mass_squared": fan(m=mass * mass),
+        "precedence": fan() * total * total,   # mass * num / 6 * den: the weights' sum multiplies
+        "minus_cross_term": fan(term=lambda a, b: a.dot(a) - a.dot(b) + b.dot(b)),
         # issue 40: the mass argument ignored, recomputed from the area (the handout's DENSITY, 1/1000 per px²)
-        "mass_from_area": (total / 2 / 1000) * sum(w * t for w, t in zip(weights, terms)) / (6 * total),
+        "mass_from_area": fan(m=total / 2 / 1000),
+        "no_abs": fan(weight=cross),   # None when the signed weights cancel
     }
-    if abs(sum(signed)) > 0:
-        forms["no_abs"] = mass * sum(s * t for s, t in zip(signed, terms)) / (6 * sum(signed))
-    return forms
 
 
 def inertia_cases():
@@ -289,9 +290,9 @@ INERTIA_MISTAKES = {
 INERTIA = Step(
     "inertia_sum", "Step 4: polygon_inertia() is the triangle-fan sum m Σ |a × b|(a·a + a·b + b·b) / (6 Σ |a × b|).",
     4, "polygon_inertia", _inertia_cases, lambda inertia, c: inertia([Vector2(p) for p in c["points"]], c["mass"]),
-    lambda c: reference_inertia([Vector2(p) for p in c["points"]], c["mass"]), answer=_number, hint="inertia",
+    lambda c: reference_inertia([Vector2(p) for p in c["points"]], c["mass"]), answer=as_number, hint="inertia",
     same=lambda got, want: not isinstance(got, str) and want is not None and close(got, want),
-    bad=lambda got: isinstance(got, str), kind="a number", show=lambda value: f"{value:.6g}",
+    bad=is_text, kind="a number", show=lambda value: f"{value:.6g}",
     label=lambda c: f"polygon_inertia() for {c['case']}", unnamed="polygon_inertia() is not the triangle-fan sum",
     wrong=forms_of(INERTIA_MISTAKES, lambda c: _inertia_forms(c["points"], c["mass"]), "polygon_inertia_"),
     extra={"analytic": lambda c: analytic_inertia(**c["analytic_of"]) if c["analytic_of"] else None})
@@ -324,39 +325,44 @@ def axis_pairs():
 
 
 @reference
-def distinct_directions(axes):
-    """The lesson's answer: the axes in order, each kept unless parallel (|a × b| <= PARALLEL) to one kept."""
+def distinct_directions(axes, keep=lambda axis, kept: all(abs(cross(axis, other)) > PARALLEL for other in kept)):
+    """The lesson's answer: the axes in order, each kept unless parallel (|a × b| <= PARALLEL) to one kept; with
+    another rule keep(axis, kept), what that rule keeps (a known wrong form)."""
     kept = []
     for axis in axes:
-        if all(abs(cross(axis, other)) > PARALLEL for other in kept):
+        if keep(axis, kept):
             kept.append(axis)
     return kept
 
 
-def probe_separating_axes(module, lab_path):
-    """The student's separating_axes(pa, pb) beside all edge normals of both and the distinct directions."""
-    cases = []
-    for name, pa, pb in axis_pairs():
-        for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
-            got = module.separating_axes([Vector2(p) for p in first], [Vector2(p) for p in second])
-            cases.append({"pair": name, "order": order, "got": _points(got)})
-            if judging(module):
-                normals_a, normals_b = edge_normals(first), edge_normals(second)
-                cases[-1].update(normals_a=_plain(normals_a), normals_b=_plain(normals_b),
-                                 want=_plain(distinct_directions(normals_a + normals_b)),
-                                 forms=_axes_forms(normals_a, normals_b))
-    return cases
+def _pairs(pairs):
+    """The cases of step 5's probes: each pair of world points, then the same pair with A and B swapped."""
+    return lambda module: [{"pair": name, "order": order, "a": _plain(first), "b": _plain(second)}
+                           for name, pa, pb in pairs() for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa))]
+
+
+def _call_pair(function, case):
+    return function([Vector2(p) for p in case["a"]], [Vector2(p) for p in case["b"]])
+
+
+def _label(case):
+    return f"for '{case['pair']}'" + (" with A and B swapped" if case["order"] == "B, A" else "")
+
+
+def _normals(case, side, plain=True):
+    """The edge normals of the case's shape A ("a") or B ("b"), as plain [x, y] or (plain=False) Vector2s."""
+    normals = edge_normals([Vector2(p) for p in case[side]])
+    return _plain(normals) if plain else normals
 
 
 @reference
-def _axes_forms(normals_a, normals_b):
-    """What the known wrong ways of skipping parallel axes keep, by name (checks.AXES_MISTAKES)."""
-    def kept_by(keep, normals=normals_a + normals_b):
-        kept = []
-        for axis in normals:
-            if keep(axis, kept):
-                kept.append(axis)
-        return _plain(kept)
+def _axes_forms(case):
+    """What the known wrong ways of skipping parallel axes keep, by name (AXES_MISTAKES)."""
+    normals_a = _normals(case, "a", plain=False)
+    normals = normals_a + _normals(case, "b", plain=False)
+
+    def kept_by(keep, normals=normals):
+        return _plain(distinct_directions(normals, keep))
     return {
         "dot_not_cross": kept_by(lambda a, kept: all(abs(a.dot(k)) > PARALLEL for k in kept)),
         "same_way_only": kept_by(lambda a, kept: all(a.dot(k) < 1 - PARALLEL for k in kept)),
@@ -368,34 +374,111 @@ def _axes_forms(normals_a, normals_b):
     }
 
 
-def probe_sat(module, lab_path):
-    """The lab's sat() (the handout's loop over the student's axes) on the axis pairs and Tumbling Crates' pairs."""
-    cases = []
-    pairs = axis_pairs() + probe_kit.sat_pairs()
-    for name, pa, pb in pairs:
-        for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa)):
-            got = module.sat([Vector2(p) for p in first], [Vector2(p) for p in second])
-            cases.append({"pair": name, "order": order, "got": probe_kit.sat_answer(got)})
-            if judging(module):
-                want = probe_kit.reference_sat(first, second, "lesson")
-                cases[-1].update(want=None if want is None else {"normal": list(want[0]), "depth": want[1]},
-                                 ties=[] if want is None else _tied_normals(first, second, want[1]))
-    return cases
+# the known wrong ways of skipping parallel axes, by the name _axes_forms gives what they keep
+AXES_MISTAKES = {
+    "dot_not_cross": "an axis is skipped when |axis · kept| is small, i.e. perpendicular; parallel means |axis × kept| "
+                     "near 0",
+    "same_way_only": "only an axis pointing the same way as a kept one is skipped; one pointing the opposite way is "
+                     "parallel too",
+    "cross_without_abs": "the test cross(axis, kept) > PARALLEL has no abs(): an axis turned the other way is "
+                         "skipped though not parallel",
+    "only_a": "only A's edge normals are there: B's edges give directions of their own",
+    "dot_threshold": "the test 1 - |axis · kept| <= PARALLEL merges axes up to 0.08° apart: compare |axis × kept| "
+                     "with PARALLEL",
+    "last_kept_only": "each axis is compared with the last kept axis only: compare it with every kept axis",
+    "none_skipped": "no axis is skipped: every parallel twin is kept",
+}
+
+
+def _parallel(u, v):
+    return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-6
+
+
+def axes_fault(case):
+    """None when the student's axes are every edge normal's direction of A and B once, as unit vectors; else
+    (the Form this pair shows by itself, or None: the one-formula rule's; the first line then; the evidence)."""
+    got, label, normals = case["got"], _label(case), case["normals_a"] + case["normals_b"]
+    odd = next((a for a in got if abs(math.hypot(*a) - 1) > 1e-6), None)
+    if odd is not None:
+        return (Form("axes_not_unit", "an axis is not a unit vector: axes are unit edge normals (edge_normals gives "
+                     "them)"), None, f"{label}, the axis {vec_text(odd)} has length {math.hypot(*odd):.4g}.")
+    stray = next((a for a in got if not any(_parallel(a, n) for n in normals)), None)
+    if stray is not None:
+        return (Form(None, "separating_axes() gives an axis that is not the normal of any edge of A or B"), None,
+                f"{label}: {vec_text(stray)}.")
+    counts = f"{len(got)} axes for {len(case['want'])} directions"
+    missing = next((n for n in normals if not any(_parallel(a, n) for a in got)), None)
+    if missing is not None:
+        whose = "A's" if missing in case["normals_a"] else "B's"
+        near = next((a for a in got if 1 - abs(a[0] * missing[0] + a[1] * missing[1]) <= 1e-6), None)
+        if near is not None:   # merged by a dot-product test: 1 - |a·b| ≈ θ²/2 is tiny long before θ is
+            angle = math.degrees(math.asin(min(1.0, abs(near[0] * missing[1] - near[1] * missing[0]))))
+            return (Form("axes_dot_threshold", AXES_MISTAKES["dot_threshold"]), None, f"{label}, {whose} edge normal "
+                    f"{vec_text(missing)} is missing, {angle:.2g}° from the kept axis {vec_text(near)}.")
+        return (None, "a direction that is not parallel to a kept axis was skipped",
+                f"{label}, no axis along {whose} edge normal {vec_text(missing)}: {counts}.")
+    twins = next(((a, b) for i, a in enumerate(got) for b in got[i + 1:] if _parallel(a, b)), None)
+    if twins is not None:
+        way = "the same way" if twins[0][0] * twins[1][0] + twins[0][1] * twins[1][1] > 0 else "opposite ways"
+        return (None, "a parallel axis is kept twice: skip one parallel to any kept axis", f"{label}, "
+                f"{vec_text(twins[0])} and {vec_text(twins[1])} are parallel (pointing {way}): {counts}.")
+    return None
+
+
+AXES = Step(
+    "parallel_axes", "", 5, "separating_axes", _pairs(axis_pairs), _call_pair,
+    lambda c: _plain(distinct_directions(_normals(c, "a", plain=False) + _normals(c, "b", plain=False))),
+    answer=as_points, hint="axes", bad=is_text, accepts=lambda c: axes_fault(c) is None,
+    same=lambda got, want: not is_text(got) and len(got) == len(want) and all(map(same_point, got, want)),
+    malformed=lambda c: f"separating_axes() must return a list of unit Vector2 axes.\n{_label(c)} it returned "
+                        f"{c['got']}.", diagnose=lambda cases, c: axes_fault(c)[0],
+    unnamed=lambda c: axes_fault(c)[1], evidence=lambda c: axes_fault(c)[2],
+    wrong=forms_of({name: f"your skip rule, in every pair: {text}" for name, text in AXES_MISTAKES.items()},
+                   _axes_forms, "axes_"),
+    extra={"normals_a": lambda c: _normals(c, "a"), "normals_b": lambda c: _normals(c, "b")})
 
 
 @reference
-def _tied_normals(pa, pb, depth):
-    """Every edge normal (turned to point from A to B) whose overlap equals the smallest, `depth`.
-
-    When two directions tie, the axis sat() keeps depends on the order of the axes, and either
-    is a right answer; the check accepts any of them.
-    """
+def _sat_reference(case):
+    """The lesson's sat() for the pair, None or {"normal", "depth"}, and every edge normal (turned to point from A to
+    B) whose overlap equals the smallest: when two directions tie, the axis sat() keeps depends on the order of the
+    axes, and either is a right answer."""
+    pa, pb = [Vector2(p) for p in case["a"]], [Vector2(p) for p in case["b"]]
+    want = probe_kit.reference_sat(pa, pb, "lesson")
+    if want is None:
+        return None, []
     towards_b = probe_kit.centre_of(pb) - probe_kit.centre_of(pa)
-    tied = []
-    for axis, overlap, _ in probe_kit.axis_overlaps(pa, pb):
-        if abs(overlap - depth) <= 1e-9 * max(1.0, depth):
-            tied.append(list(axis if towards_b.dot(axis) >= 0 else -axis))
-    return tied
+    return {"normal": list(want[0]), "depth": want[1]}, [
+        list(axis if towards_b.dot(axis) >= 0 else -axis) for axis, overlap, _ in probe_kit.axis_overlaps(pa, pb)
+        if abs(overlap - want[1]) <= 1e-9 * max(1.0, want[1])]
+
+
+def sat_fault(case):
+    """None when sat() on the student's axes is the lesson's for this pair (apart, or the smallest overlap along
+    one of the tied normals); else (the first line, the evidence)."""
+    got, want, label = case["got"], case["want"], _label(case)
+    if want is None:
+        if got is None or ("touching" in case["pair"] and abs(got["depth"]) <= TOUCHING):
+            return None
+        return ("with your axes sat() misses a gap: the shapes are apart along an edge normal",
+                f"{label}, sat() says they overlap by {got['depth']:.2f} px.")
+    if got is None:
+        return "with your axes sat() says apart where the shapes overlap", f"{label}, they overlap by " \
+                                                                           f"{want['depth']:.2f} px."
+    along = max(got["normal"][0] * t[0] + got["normal"][1] * t[1] for t in case["ties"] or [want["normal"]])
+    if close(got["depth"], want["depth"]) and abs(along - 1) <= 1e-6:
+        return None
+    return ("with your axes sat() misses the smallest overlap", f"{label}: {got['depth']:.4g} px along "
+            f"{vec_text(got['normal'])}; expected {want['depth']:.4g} px along {vec_text(want['normal'])}.")
+
+
+SAT = Step(
+    "parallel_axes", "", 5, "sat", _pairs(lambda: axis_pairs() + probe_kit.sat_pairs()), _call_pair,
+    lambda c: _sat_reference(c)[0], answer=probe_kit.sat_answer, hint="axes",
+    bad=lambda got: got is not None and "bad" in got, accepts=lambda c: sat_fault(c) is None,
+    malformed=lambda c: f"sat() must return (normal, depth) or None.\n{_label(c)} it returned {c['got']['bad']}.",
+    unnamed=lambda c: sat_fault(c)[0], evidence=lambda c: sat_fault(c)[1],
+    extra={"ties": lambda c: _sat_reference(c)[1]})
 
 
 # ---------------------------------------------------------------- the lab's bodies
@@ -427,12 +510,8 @@ def probe_bodies(module, lab_path):
 def _body_reference(item, mass, local):
     """For a body build() made of `item`: its outline's area and centroid, the analytic and the lesson's inertia."""
     kind = item["kind"]
-    if kind in SIDES:
-        analytic = analytic_inertia(kind, mass, radius=item["size"], sides=SIDES[kind])
-    elif kind == "box":
-        analytic = analytic_inertia("box", mass, w=item["w"], h=item["h"])
-    else:
-        analytic = None
+    analytic = (analytic_inertia(kind, mass, radius=item["size"], sides=SIDES[kind]) if kind in SIDES else
+                analytic_inertia("box", mass, w=item["w"], h=item["h"]) if kind == "box" else None)
     return {"area": abs(polygon_area(local)), "centroid": list(reference_centroid(local)), "analytic": analytic,
             "reference": reference_inertia(convex_polygon(local), mass)}
 
@@ -442,9 +521,5 @@ def _body_reference(item, mass, local):
 PURE = ("regular_polygon", "polygon_centroid", "polygon_inertia", "separating_axes")
 
 # probe name -> (the lab function it needs, the probe)
-PROBES = {**CORNERS.probes(),
-          "polygon_centroid": ("polygon_centroid", probe_polygon_centroid),
-          **INERTIA.probes(),
-          "separating_axes": ("separating_axes", probe_separating_axes),
-          "sat": ("sat", probe_sat),
+PROBES = {**CORNERS.probes(), **CENTROID.probes(), **INERTIA.probes(), **AXES.probes(), **SAT.probes(),
           "bodies": ("build", probe_bodies)}

@@ -45,21 +45,10 @@ SERIES = {
 
 # ---------------------------------------------------------------- regular_polygon() and separating_axes()
 
-def _parallel(u, v):
-    return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-6
-
-
 def axes_wrong(case):
     """True when the student's axes for this pair are not every edge direction of both shapes once, unit length
-    (as More Shapes' parallel_axes judges them)."""
-    got = case.get("got")
-    if isinstance(got, str):
-        return True
-    normals = case["normals_a"] + case["normals_b"]
-    return (any(abs(math.hypot(*a) - 1) > 1e-6 for a in got)
-            or any(not any(_parallel(a, n) for n in normals) for a in got)
-            or any(not any(_parallel(a, n) for a in got) for n in normals)
-            or any(_parallel(a, b) for i, a in enumerate(got) for b in got[i + 1:]))
+    (parallel_axes' own rule, probes.axes_fault)."""
+    return isinstance(case.get("got"), str) or probes.axes_fault(case) is not None
 
 
 def _axes_text(axes, most=5):
@@ -111,16 +100,10 @@ class AxesCase(Case):
 
 
 def sat_wrong(case):
-    """True when sat() on the student's axes differs from the lesson's for this pair (parallel_axes' rule)."""
-    got, want = case.get("got"), case.get("want")
-    if got is not None and "bad" in got:
-        return True
-    if want is None:
-        return got is not None and not ("touching" in case["pair"] and abs(got["depth"]) <= 1e-6)
-    if got is None:
-        return True
-    along = max(got["normal"][0] * t[0] + got["normal"][1] * t[1] for t in case.get("ties") or [want["normal"]])
-    return abs(got["depth"] - want["depth"]) > 1e-7 + 1e-7 * abs(want["depth"]) or abs(along - 1) > 1e-6
+    """True when sat() on the student's axes differs from the lesson's for this pair (parallel_axes' own rule,
+    probes.sat_fault)."""
+    got = case.get("got")
+    return (got is not None and "bad" in got) or probes.sat_fault(case) is not None
 
 
 def _pairs():

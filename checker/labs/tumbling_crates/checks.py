@@ -260,7 +260,7 @@ SAT_AXES = SharedStep(
     "when apart.", 2, "sat", probe_name="sat_step2", fallbacks=("sat",),
     screen=_sat_screen, read=lambda c: c["got"], lesson=lambda c: c["lesson"],
     wrong=forms_of(SAT_MISTAKES, lambda c: c["mistakes"], "sat_"), same=_same_hit,
-    passes=lambda c: _sat_fault(c)[0] is None, diagnose=_sat_diagnosis,
+    accepts=lambda c: _sat_fault(c)[0] is None, diagnose=_sat_diagnosis,
     fallback=lambda cases, c: _depth_form(c, abs(c["got"]["depth"])) if _sat_fault(c)[0] == "depth" else None,
     evidence=lambda c: _sat_fault(c)[1], unnamed=lambda c: SAT_UNNAMED[_sat_fault(c)[0]], hint="sat_depth",
     passed="all {n} pairs give the lesson's depth and axis")
@@ -330,7 +330,7 @@ SharedStep(
     probe_name="sat", screen=_normal_screen, read=lambda c: c["got"] and c["got"].get("normal"),
     lesson=lambda c: c["lesson"] and c["lesson"]["normal"], wrong=forms_of(FLIP_MISTAKES, lambda c: c["flips"],
                                                                            "normal_"),
-    same=_same_normal, passes=lambda c: _normal_fault(c)[0] is None, diagnose=lambda cases, c: NORMAL_FAULTS.get(
+    same=_same_normal, accepts=lambda c: _normal_fault(c)[0] is None, diagnose=lambda cases, c: NORMAL_FAULTS.get(
         _normal_fault(c)[0]), evidence=lambda c: _normal_fault(c)[1], unnamed="sat()'s normal points from B to A",
     hint="normal_flipped", passed="the normal points from A to B in all {n} pairs",
 ).register(CHECKS, HINTS, depends=("loads", "sat_axes"))
