@@ -1,5 +1,6 @@
 """What the checks of every lab share: accounts of failed runs, numbers shown beside their bounds, and the kinds of
 the values a student's function returns (a number, a vector) told apart from what only looks like one."""
+import math
 import numbers
 import re
 
@@ -176,9 +177,13 @@ def same_point(got, want):
     return isinstance(got, list) and len(got) == len(want) and all(close(g, w) for g, w in zip(got, want))
 
 
-def answer_number(value):
-    """A returned number as a float, or {"bad": what it is} (a string, a bool, a tuple, ...)."""
+def answer_number(value, none=False, finite=False):
+    """A returned number as a float, or {"bad": what it is} (a string, a bool, a tuple, ...); with `none`, None
+    stays None (an answer that may be "nothing"); with `finite`, NaN and infinity are bad too."""
+    if none and value is None:
+        return None
     try:
-        return real(value)
+        number = real(value)
     except (TypeError, ValueError):
         return {"bad": value_text(value)}
+    return number if not finite or math.isfinite(number) else {"bad": f"a number that is not finite: {number!r}"}

@@ -87,8 +87,8 @@ def _function(sub, functions, probe, function, step):
     return lab_checks.function_data(sub, functions, probe, function, step, HINTS["crash"])
 
 
-lab_checks.register_common(CHECKS, HINTS, ("circle_toi", "bounding_radius", "time_of_impact", "swept_move",
-                                            "BulletWorld", "apply_mode", "make_wall", "make_bullet", "main"), kind="names")
+lab_checks.register_common(CHECKS, HINTS, ("circle_toi", "bounding_radius", "time_of_impact", "swept_move", "BulletWorld",
+                                            "apply_mode", "make_wall", "make_bullet", "main"), kind="names")
 for step in probes.STEPS:   # declared in probes.py; circle_toi() is also done-criterion 3
     step.register(CHECKS, HINTS, max_score=2 if step is probes.TOI else 1)
 FUNCTION_CHECKS = [step.check for step in probes.STEPS]

@@ -1,14 +1,10 @@
-"""Bullets' probes, run in the checker's child process; the lesson's answers are added in the grader only.
+"""Bullets' probes, run in the checker's child; the lesson's answers are added in the grader only (@reference).
 
-Steps 2-5 are declared (checker/judging/declared.py): their cases, the lesson's answer (a @reference), their
-known wrong forms and words. A step runs with the lesson's code in place of the steps it calls (time_of_impact
-with the lesson's circle_toi and bounding_radius, swept_move with the lesson's time_of_impact): a mistake is
-graded once, under its own step.
-    circle_toi      (step 2) head-on, glancing, touching, apart, parallel, missing, too far; the analytic
-                    answer is the geometric one (closest approach, then back along the path), not the quadratic
+Steps 2-5 are declared (checker/judging/declared.py), each run with the lesson's code in place of the steps it
+calls, so a mistake is graded once, under its own step:
+    circle_toi      (step 2) against the geometric answer (closest approach, then back along the path)
     bounding_radius (step 3) boxes, turned boxes, a triangle and a pentagon around their centres
-    time_of_impact  (step 4) crates hit, missed, grazed at a corner, reached from inside the bounding circle;
-                    the exact swept tests are counted (the broad test must skip them)
+    time_of_impact  (step 4) crates hit, missed, grazed, reached from inside; its exact swept tests counted
     swept_move      (step 5) one swept move against a wall, a crate and nothing
     shots, crate_hit (criteria 1, 2 and 4) the lab's own BulletWorld: >= 100 shots at 3000-12000 px/s with CCD,
                     shots at 12000 px/s with sub-steps x8, a bullet into a free crate
@@ -20,7 +16,7 @@ from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
-from checker.judging.common import close, real, same_point, value_text
+from checker.judging.common import answer_number, close, real, same_point, value_text
 from checker.judging.declared import Form, Step
 from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import box, judging, ngon, reference, twin
@@ -36,16 +32,8 @@ TOI_TOLERANCE = 1e-9                    # s (the issue); solution: at most 5e-16
 
 
 def answer_time(value):
-    """A returned time as a float, None, or {"bad": what it is}."""
-    if value is None:
-        return None
-    if isinstance(value, bool):
-        return {"bad": repr(value)}
-    try:
-        t = real(value)
-    except (TypeError, ValueError):
-        return {"bad": _short(value)}
-    return t if math.isfinite(t) else {"bad": f"a number that is not finite: {t!r}"}
+    """A returned time (or radius) as a float, None, or {"bad": what it is}."""
+    return answer_number(value, none=True, finite=True)
 
 
 _short = value_text   # repr cut to 60 characters; safe for a 5000-digit int
@@ -269,12 +257,11 @@ def _bounding_form(name, text, answer):
     return Form(f"bounding_{name}", text, answer)
 
 
-def _sticks_out(cases, c):
-    """A named wrong radius, else "corners stick out" for a radius short of the farthest corner."""
-    named = BOUNDING.named(cases, c)
-    if named is None and isinstance(c["got"], float) and c["got"] < c["want"]:
-        return Form(None, "corners stick out of your circle, so bullets aimed at them are skipped")
-    return named
+def _sticks_out(c):
+    """The first line when no wrong radius is named: corners stick out of a radius short of the farthest one."""
+    if isinstance(c["got"], float) and c["got"] < c["want"]:
+        return "corners stick out of your circle, so bullets aimed at them are skipped"
+    return "bounding_radius() is not the farthest corner's distance from the centre"
 
 
 BOUNDING = Step(
@@ -282,9 +269,8 @@ BOUNDING = Step(
     "outline.", 3, "bounding_radius", _bounding_cases,
     lambda radius, c: answer_time(radius([Vector2(p) for p in c["points"]], Vector2(c["centre"]))),
     lambda c: reference_bounding_radius([Vector2(p) for p in c["points"]], Vector2(c["centre"])), hint="bounding",
-    same=lambda got, want: isinstance(got, float) and close(got, want), diagnose=_sticks_out,
+    same=lambda got, want: isinstance(got, float) and close(got, want), unnamed=_sticks_out,
     label=lambda c: f"bounding_radius() for {c['case']}", show=lambda r: "None" if r is None else f"{r:.6g} px",
-    unnamed="bounding_radius() is not the farthest corner's distance from the centre",
     wrong=(_bounding_form("squared", "the radius is the squared distance: take its square root",
                           lambda c: max(d * d for d in _distances(c))),
            _bounding_form("from_origin", "the radius is the farthest corner's distance from (0, 0); measure from "
@@ -443,34 +429,21 @@ def swept_cases(module):
     """{"case", "make": a function making a fresh (world, bullet)} for one swept move of 1/120 s each."""
     wall_x = float(getattr(module, "WALL_X", 640.0))
 
-    def wall_world(speed, y=240.0, vy=0.0):
-        def make():
-            wall = module.make_wall()
-            bullet = _bullet((wall_x - 60, y), (speed, vy))
-            return module.BulletWorld([wall, bullet], effects={"ccd", "restitution"}, substeps=1), bullet
+    def maker(other, pos, vel, effects=("ccd", "restitution")):
+        def make():   # the bullet against the lab's wall, a free 40 x 40 crate or nothing
+            bullet = _bullet(pos, vel)
+            first = [] if other is None else [module.make_wall() if other == "wall" else _crate(40, 40, (380, 300))]
+            return module.BulletWorld(first + [bullet], effects=set(effects), substeps=1), bullet
         return make
 
-    def crate_world():
-        crate = _crate(40, 40, (380, 300))
-        bullet = _bullet((300, 300), (9000, 0))
-        return module.BulletWorld([crate, bullet], effects={"ccd", "restitution"}, substeps=1), bullet
-
-    def slanted():   # off-centre and at a slant, with friction and spin: the contact point's lever arm counts
-        crate = _crate(40, 40, (380, 300))
-        bullet = _bullet((300, 290), (9000, 3000))
-        return module.BulletWorld([crate, bullet], effects={"ccd", "restitution", "friction", "rotation"},
-                                  substeps=1), bullet
-
-    def nothing():
-        bullet = _bullet((100, 100), (5000, 700))
-        return module.BulletWorld([bullet], effects={"ccd"}, substeps=1), bullet
-
-    return [{"case": name, "make": make} for name, make in (
-        ("a bullet at 12000 px/s hitting the wall 60 px ahead", wall_world(12000.0)),
-        ("a bullet at 9000 px/s hitting the wall at a slant", wall_world(9000.0, 200.0, 3000.0)),
-        ("a bullet at 9000 px/s hitting a free crate head-on", crate_world),
-        ("a bullet at 9000 px/s striking a free crate 10 px off-centre at a slant (friction, spin)", slanted),
-        ("a bullet with nothing in its way", nothing))]
+    return [{"case": name, "make": maker(*how)} for name, *how in (
+        ("a bullet at 12000 px/s hitting the wall 60 px ahead", "wall", (wall_x - 60, 240.0), (12000.0, 0.0)),
+        ("a bullet at 9000 px/s hitting the wall at a slant", "wall", (wall_x - 60, 200.0), (9000.0, 3000.0)),
+        ("a bullet at 9000 px/s hitting a free crate head-on", "crate", (300, 300), (9000, 0)),
+        # off-centre and at a slant, with friction and spin: the contact point's lever arm counts
+        ("a bullet at 9000 px/s striking a free crate 10 px off-centre at a slant (friction, spin)", "crate",
+         (300, 290), (9000, 3000), ("ccd", "restitution", "friction", "rotation")),
+        ("a bullet with nothing in its way", None, (100, 100), (5000, 700), ("ccd",)))]
 
 
 def _state(body):
@@ -506,25 +479,17 @@ def reference_swept(c, name=None):
         bullet.pos += bullet.vel * STEP
         return _outcome(world, bullet)
     t, normal, other = hit
-    if name == "resolve_first":
-        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
-        bullet.pos += bullet.vel * STEP
-        return _outcome(world, bullet)
-    if name == "move_then_resolve":
-        bullet.pos += bullet.vel * STEP
-        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
-        return _outcome(world, bullet)
     start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
-    bullet.pos += velocity * t
-    if name != "no_impulse":
+    bullet.pos += velocity * {"resolve_first": 0.0, "move_then_resolve": STEP}.get(name, t)   # to the impact
+    if name != "no_impulse":   # the contact on the bullet's surface towards the other body
         side = -1 if name == "far_side" else 0 if name == "at_centre" else 1
         world.resolve(bullet, other, normal, bullet.pos + normal * (side * bullet.radius))
     if name == "old_velocity":
         bullet.pos = start + velocity * STEP
-    elif name == "whole_step":
+    elif name in ("whole_step", "resolve_first"):
         bullet.pos += bullet.vel * STEP
-    elif name != "stops":
-        bullet.pos += bullet.vel * (STEP - t)
+    elif name not in ("stops", "move_then_resolve"):
+        bullet.pos += bullet.vel * (STEP - t)   # the rest of the step with the new velocity
     return _outcome(world, bullet)
 
 
@@ -582,14 +547,9 @@ SWEPT_MOVE = Step(
 # ---------------------------------------------------------------- criteria 1 and 2: the shots
 
 def shoot(module, mode, speed, shots):
-    """`shots` bullets fired one at a time at the lab's wall in its BulletWorld set to `mode`.
-
-    Each starts 1 px plus 1 + k/shots steps' travel short of touching the wall,
-    at the wall's mid-height, flying along +x, with no gravity (the wall is
-    400 px tall: gravity cannot take a shot over it in 3 steps). A shot
-    tunnels when the bullet's centre ends past the wall's centre line.
-    Returns (tunnelled, physics seconds spent).
-    """
+    """`shots` bullets fired one at a time at the lab's wall in its BulletWorld set to `mode`: (tunnelled, physics
+    seconds spent). Each starts 1 px plus 1 + k/shots steps' travel short of the wall, at its mid-height, along +x,
+    with no gravity (nothing takes a shot over the 400 px wall); it tunnels if its centre ends past the wall's."""
     wall_x = float(module.WALL_X)
     half = float(module.WALL_WIDTH) / 2
     radius = float(module.BULLET_RADIUS)
@@ -611,26 +571,16 @@ def shoot(module, mode, speed, shots):
 
 
 def probe_shots(module, lab_path):
-    """Criterion 1: shots with CCD at every speed; criterion 2: shots at 12000 px/s with sub-steps x8 (and x1)."""
-    ccd = {}
-    cost = {}
-    for speed in SHOT_SPEEDS:
-        ccd[str(speed)], cost[f"ccd {speed}"] = shoot(module, "ccd", speed, SHOTS_PER_SPEED)
-    x8, cost["x8"] = shoot(module, "x8", FAST, SUBSTEP_SHOTS)
-    return {"ccd": ccd, "per_speed": SHOTS_PER_SPEED, "x8": x8, "x8_shots": SUBSTEP_SHOTS,
-            "ccd_seconds": sum(v for k, v in cost.items() if k.startswith("ccd")), "x8_seconds": cost["x8"],
-            "wall": float(module.WALL_WIDTH), "radius": float(module.BULLET_RADIUS)}
+    """Criterion 1: the shots tunnelled with CCD at each speed; criterion 2: those with sub-steps x8 at 12000 px/s."""
+    ccd = {str(speed): shoot(module, "ccd", speed, SHOTS_PER_SPEED)[0] for speed in SHOT_SPEEDS}
+    return {"ccd": ccd, "per_speed": SHOTS_PER_SPEED, "x8": shoot(module, "x8", FAST, SUBSTEP_SHOTS)[0]}
 
 
 # ---------------------------------------------------------------- criterion 4: momentum into a crate
 
 def probe_crate_hit(module, lab_path):
-    """A bullet at 9000 px/s hits a free 40 x 40 crate (mass 1.6) through its centre, with CCD, no gravity.
-
-    The lesson's answer for a central impact with restitution e = 0.2 (both
-    bodies' default): the crate leaves at (1 + e) m v / (m + M), so its momentum
-    is M (1 + e) m v / (m + M). The world runs 3 steps of 1/120 s.
-    """
+    """A bullet at 9000 px/s hits a free 40 x 40 crate (mass 1.6) through its centre, with CCD, no gravity, for 3
+    steps of 1/120 s; with e = 0.2 (both bodies' default) the lesson's crate leaves at (1 + e) m v / (m + M)."""
     bullet = module.make_bullet((300, 300), (9000, 0))
     crate = _crate(40, 40, (380, 300))
     given = (twin(bullet), twin(crate))   # the masses and restitutions as the world got them
