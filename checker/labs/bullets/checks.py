@@ -1,14 +1,10 @@
 """Bullets (Lesson 11, Going Further): the checks, their bounds and the hints.
 
-Order of checks (stable): loads, handout_unchanged, runtime_lines; the steps declared in probes.py:
-toi_matches_root (step 2, also done-criterion 3), bounding_circle (3), broad_test (4), swept_move_resolves (5);
-runs (the one scene, main() with scripted keys and clicks: the file runs); then the other done-criteria, from
-the probe (the lab's own BulletWorld stepped in the child): ccd_never_tunnels, substeps_still_tunnel,
-crate_momentum. Checks are worth 1 point, the criteria (toi_matches_root among them) 2 points each; the
-criteria run only when every function check passes.
-
-Bounds come from the issue (no tunnel with CCD in >= 100 shots at 3000-12000 px/s; some tunnel with sub-steps x8
-at 12000 px/s; 1e-9 s; 5 %); what solutions/bullets.py measures is noted beside each.
+Order (stable): loads, handout_unchanged, runtime_lines; the steps declared in probes.py (toi_matches_root, step 2
+and done-criterion 3; bounding_circle; broad_test; swept_move_resolves); runs (main() in its scene: the file runs);
+then, when every function check passes, the other criteria, measured by the probe in the lab's own BulletWorld.
+Checks are worth 1 point, criteria 2. Bounds come from the issue (no tunnel with CCD in >= 100 shots at 3000-12000
+px/s; some tunnel with sub-steps x8 at 12000 px/s; 1e-9 s; 5 %); what solutions/bullets.py measures is beside each.
 """
 import math
 

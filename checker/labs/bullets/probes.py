@@ -21,6 +21,7 @@ from checker.judging.declared import Form, Step
 from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import box, judging, ngon, reference, twin
 from checker.judging.tape import clock, run_rng
+
 REQUIRED = ("circle_toi", "bounding_radius", "time_of_impact", "swept_move", "apply_mode", "make_wall", "make_bullet",
             "BulletWorld", "main")
 STEP = 1 / 120                          # s
