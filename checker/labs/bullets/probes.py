@@ -11,6 +11,7 @@ calls, so a mistake is graded once, under its own step:
 Units: px, s, mass in the lab's units (area / 1000).
 """
 import math
+import threading
 
 from pygame import Vector2
 
@@ -331,20 +332,21 @@ def _plain_hit(hit):
         return {"bad": _short(hit)}
 
 
-_EXACT = [0]   # the exact swept tests of the time_of_impact() call being probed
+_EXACT = threading.local()   # .tests: the exact swept tests of the call being probed, per thread (files are
+# judged in parallel threads)
 
 
 def _exact_counted(*args):
     """The library's exact swept test in the handout's place, counted: the broad test must skip it."""
-    _EXACT[0] += 1
+    _EXACT.tests += 1
     return circle_polygon_toi(*args)
 
 
 def _impact(time_of_impact, c):
     """The student's hit (bodies given as twins of the case's) and how many exact swept tests it ran."""
-    _EXACT[0] = 0
+    _EXACT.tests = 0
     hit = _plain_hit(time_of_impact(twin(c["bullet"]), twin(c["other"]), c["dt"]))
-    return {"hit": hit, "exact_tests": _EXACT[0]}
+    return {"hit": hit, "exact_tests": _EXACT.tests}
 
 
 @reference
