@@ -59,3 +59,23 @@ def test_tunnelling_falls_with_sub_steps_and_ccd_stops_it():
     assert counts[0] >= counts[1] >= counts[2] >= counts[3] > 0 == counts[4], counts
     assert counts[0] >= 20   # a plain step moves 100 px: only a 10 px window of start points is caught
     assert shoot(module, "x8", 3000.0, 24)[0] == 0
+
+
+def test_the_exact_tests_are_counted_per_file_when_files_are_judged_in_parallel_threads():
+    """The checker judges a class's files in parallel threads: the broad test's count of exact swept tests is each
+    probe's own (a count shared between threads once failed a right file with broad_missing)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from checker.labs.bullets.probes import BROAD_TEST
+    spec = importlib.util.spec_from_file_location("bullets_solution", SOLUTION)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    alone = [case["got"]["exact_tests"] for case in BROAD_TEST.probe(module, SOLUTION)]
+
+    def counts(k):   # each thread its own copy of the file, as each graded file is its own module
+        own = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(own)
+        return [[case["got"]["exact_tests"] for case in BROAD_TEST.probe(own, SOLUTION)] for _ in range(40)]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        together = [run for runs in pool.map(counts, range(4)) for run in runs]
+    assert alone == [1, 1, 0, 0, 1, 1, 1] and all(run == alone for run in together)

@@ -149,3 +149,31 @@ def test_numbers_lays_vectors_flat_and_words_what_is_not_numbers():
     assert same([1.0, 2.0], [1.0 + 1e-12, 2.0]) and same(None, None)
     assert not same([1.0, 2.0], [1.0, 2.001]) and not same(None, [1.0]) and not same("(1, 2)", [1.0, 2.0])
     assert declared.listed([1, -0.001, 8]) == "(1.00, 0.00, 8.00)" and declared.listed(None) == "None"
+
+
+def test_stand_ins_are_in_place_while_the_step_is_probed_and_a_missing_name_is_put_in():
+    """The lesson's functions stand in for the student's other steps during the probe and are taken out after it; a
+    name the file lacks (a deleted import) gets its stand-in all the same, and is not put back."""
+    student = types.SimpleNamespace(helper=lambda x: 0)
+    seen = []
+
+    def double(x):
+        seen.append((student.helper(x), student.counted(x)))
+        return 2 * x
+    student.double = double
+    declared_step = step(FORMS)
+    declared_step.stand_ins = lambda module: {"helper": lambda x: x, "counted": lambda x: -x}
+    passed = declared_step.judge(declared_step.probe(student, "lab.py"), HINTS)
+    assert passed.message == "2 x in all 3 cases" and seen == [(1, -1), (2, -2), (3, -3)]
+    assert student.helper(5) == 0 and student.counted(5) == -5
+
+
+def test_answer_number_keeps_none_and_refuses_what_is_not_finite_when_asked():
+    import math
+
+    from checker.judging.common import answer_number
+    assert answer_number(2) == 2.0 and answer_number(None) == {"bad": "None"}   # as before: None is no number
+    assert answer_number(None, none=True) is None and answer_number(True, none=True) == {"bad": "True"}
+    assert math.isnan(answer_number(float("nan")))   # NaN passes as a number unless refused
+    assert answer_number(float("inf"), finite=True) == {"bad": "a number that is not finite: inf"}
+    assert answer_number("1.5", none=True, finite=True) == {"bad": "'1.5'"}

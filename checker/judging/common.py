@@ -179,12 +179,16 @@ def same_point(got, want):
     return isinstance(got, list) and len(got) == len(want) and all(close(g, w) for g, w in zip(got, want))
 
 
-def answer_number(value):
-    """A returned number as a float, or {"bad": what it is} (a string, a bool, a tuple, ...)."""
+def answer_number(value, none=False, finite=False):
+    """A returned number as a float, or {"bad": what it is} (a string, a bool, a tuple, ...); with `none`, None
+    stays None (an answer that may be "nothing"); with `finite`, NaN and infinity are bad too."""
+    if none and value is None:
+        return None
     try:
-        return real(value)
+        number = real(value)
     except (TypeError, ValueError):
         return {"bad": value_text(value)}
+    return number if not finite or math.isfinite(number) else {"bad": f"a number that is not finite: {number!r}"}
 
 
 def answer_point(value):

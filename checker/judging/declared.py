@@ -141,7 +141,7 @@ class Step:
     def probe(self, module, lab_path):
         """The student's answer in every case; in the grader also the lesson's and the wrong forms' answers."""
         stand_ins = self.stand_ins(module) if self.stand_ins else {}
-        own = {name: getattr(module, name) for name in stand_ins}
+        own = {name: getattr(module, name, None) for name in stand_ins}   # a name the file lacks: put in, not back
         try:
             for name, function in stand_ins.items():
                 setattr(module, name, function)
@@ -155,7 +155,8 @@ class Step:
             return out
         finally:
             for name, function in own.items():
-                setattr(module, name, function)
+                if function is not None:
+                    setattr(module, name, function)
 
     def probes(self):
         """This step's entry of a lab's PROBES: {probe name: (the function it needs, the probe)}."""

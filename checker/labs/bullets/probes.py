@@ -1,35 +1,25 @@
-"""Probes of a Bullets file's own functions, run inside the checker's child process.
+"""Bullets' probes, run in the checker's child; the lesson's answers are added in the grader only (@reference).
 
-Each probe calls the student's functions and returns plain data: the
-student's answer beside the analytic one (checker/labs/bullets/checks.py compares them
-and names the first case that differs). The analytic answers are added in the grader
-only (`judging`, checker/judging/probe_kit.py); the lesson's functions that stand in for the
-student's other steps (lesson_circle_toi, ...) run in the child too, as the student's code calls them.
-
-    circle_toi      (step 2) head-on, glancing, both moving, already touching, moving apart,
-                    parallel paths, missing, too far for this step; the analytic answer is the
-                    geometric one (closest approach, then back along the path), not the quadratic
-    bounding_radius (step 3) boxes, turned boxes and a triangle around their centres
-    time_of_impact  (step 4) crates hit, missed, grazed at a corner, a bullet already inside the
-                    bounding circle; the lesson's circle_toi and bounding_radius stand in for the
-                    student's, and the exact swept test is counted (the broad test must skip it);
-                    beside the answer, what each known wrong broad test gives (BROAD_MISTAKES)
-    swept_move      (step 5) one swept move against a wall, a crate and nothing, with the
-                    lesson's time_of_impact standing in for the student's
-    shots           (criteria 1 and 2) the lab's own BulletWorld with its wall: >= 100 shots
-                    at 3000-12000 px/s with CCD, and shots at 12000 px/s with sub-steps x8
-    crate_hit       (criterion 4) a bullet hits a free crate with CCD: the crate's momentum
-
+Steps 2-5 are declared (checker/judging/declared.py), each run with the lesson's code in place of the steps it
+calls, so a mistake is graded once, under its own step:
+    circle_toi      (step 2) against the geometric answer (closest approach, then back along the path)
+    bounding_radius (step 3) boxes, turned boxes, a triangle and a pentagon around their centres
+    time_of_impact  (step 4) crates hit, missed, grazed, reached from inside; its exact swept tests counted
+    swept_move      (step 5) one swept move against a wall, a crate and nothing
+    shots, crate_hit (criteria 1, 2 and 4) the lab's own BulletWorld: >= 100 shots at 3000-12000 px/s with CCD,
+                    shots at 12000 px/s with sub-steps x8, a bullet into a free crate
 Units: px, s, mass in the lab's units (area / 1000).
 """
 import math
+import threading
 
 from pygame import Vector2
 
 from lesson11.physics2d import Body, Circle, box_points, circle_polygon_toi
 
-from checker.judging.common import close, real, value_text
+from checker.judging.common import answer_number, close, real, same_point, value_text
 from checker.judging.declared import Form, Step
+from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import box, judging, ngon, reference, twin
 from checker.judging.tape import clock, run_rng
 
@@ -44,16 +34,8 @@ TOI_TOLERANCE = 1e-9                    # s (the issue); solution: at most 5e-16
 
 
 def answer_time(value):
-    """A returned time as a float, None, or {"bad": what it is}."""
-    if value is None:
-        return None
-    if isinstance(value, bool):
-        return {"bad": repr(value)}
-    try:
-        t = real(value)
-    except (TypeError, ValueError):
-        return {"bad": _short(value)}
-    return t if math.isfinite(t) else {"bad": f"a number that is not finite: {t!r}"}
+    """A returned time (or radius) as a float, None, or {"bad": what it is}."""
+    return answer_number(value, none=True, finite=True)
 
 
 _short = value_text   # repr cut to 60 characters; safe for a 5000-digit int
@@ -213,9 +195,9 @@ TOI = Step(
                      lambda a, b, c, dt: (a, b, c, 1 / 120, 2.0), hint="toi_apart")))
 
 
-@reference
-def _toi_with(a, b, c, dt, under):
-    """The lesson's circle_toi with a known wrong root, (-b - √disc) / (under · a), and the lesson's filters (s)."""
+def toi_root(a, b, c, dt, under=2.0):
+    """circle_toi from its quadratic (s): 0.0 when the circles already overlap (c <= 0), None when a == 0, the
+    discriminant is negative or t is outside [0, dt], else t = (-b - √disc) / (under · a); the lesson's: under 2."""
     if c <= 0:
         return 0.0
     disc = b * b - 4 * a * c
@@ -223,6 +205,18 @@ def _toi_with(a, b, c, dt, under):
         return None
     t = (-b - math.sqrt(disc)) / (under * a)
     return t if 0 <= t <= dt else None
+
+
+_toi_with = reference(toi_root)   # a known wrong root (_toi_form), in the grader only
+
+
+def lesson_circle_toi(p1, v1, r1, p2, v2, r2, dt):
+    """The lesson's circle_toi (the quadratic's earlier root); a stand-in under time_of_impact()."""
+    dp, dv = p2 - p1, v2 - v1
+    return toi_root(dv.dot(dv), 2 * dp.dot(dv), dp.dot(dp) - (r1 + r2) ** 2, dt)
+
+
+reference_circle_toi = reference(lesson_circle_toi)
 
 
 # ---------------------------------------------------------------- step 3: bounding_radius
@@ -265,12 +259,11 @@ def _bounding_form(name, text, answer):
     return Form(f"bounding_{name}", text, answer)
 
 
-def _sticks_out(cases, c):
-    """A named wrong radius, else "corners stick out" for a radius short of the farthest corner."""
-    named = BOUNDING.named(cases, c)
-    if named is None and isinstance(c["got"], float) and c["got"] < c["want"]:
-        return Form(None, "corners stick out of your circle, so bullets aimed at them are skipped")
-    return named
+def _sticks_out(c):
+    """The first line when no wrong radius is named: corners stick out of a radius short of the farthest one."""
+    if isinstance(c["got"], float) and c["got"] < c["want"]:
+        return "corners stick out of your circle, so bullets aimed at them are skipped"
+    return "bounding_radius() is not the farthest corner's distance from the centre"
 
 
 BOUNDING = Step(
@@ -278,9 +271,8 @@ BOUNDING = Step(
     "outline.", 3, "bounding_radius", _bounding_cases,
     lambda radius, c: answer_time(radius([Vector2(p) for p in c["points"]], Vector2(c["centre"]))),
     lambda c: reference_bounding_radius([Vector2(p) for p in c["points"]], Vector2(c["centre"])), hint="bounding",
-    same=lambda got, want: isinstance(got, float) and close(got, want), diagnose=_sticks_out,
+    same=lambda got, want: isinstance(got, float) and close(got, want), unnamed=_sticks_out,
     label=lambda c: f"bounding_radius() for {c['case']}", show=lambda r: "None" if r is None else f"{r:.6g} px",
-    unnamed="bounding_radius() is not the farthest corner's distance from the centre",
     wrong=(_bounding_form("squared", "the radius is the squared distance: take its square root",
                           lambda c: max(d * d for d in _distances(c))),
            _bounding_form("from_origin", "the radius is the farthest corner's distance from (0, 0); measure from "
@@ -296,24 +288,8 @@ BOUNDING = Step(
                           "farthest (max)", lambda c: sum(_distances(c)) / len(c["points"]))))
 
 
-# ---------------------------------------------------------------- step 4: time_of_impact
 
-def lesson_circle_toi(p1, v1, r1, p2, v2, r2, dt):
-    """The lesson's circle_toi (the quadratic's earlier root); a stand-in under time_of_impact()."""
-    dp, dv = p2 - p1, v2 - v1
-    c = dp.dot(dp) - (r1 + r2) ** 2
-    if c <= 0:
-        return 0.0
-    a, b = dv.dot(dv), 2 * dp.dot(dv)
-    disc = b * b - 4 * a * c
-    if a == 0 or disc < 0:
-        return None
-    t = (-b - math.sqrt(disc)) / (2 * a)
-    return t if 0 <= t <= dt else None
-
-
-reference_circle_toi = reference(lesson_circle_toi)
-
+# ---------------------------------------------------------------- step 4: time_of_impact, the broad test
 
 def _bullet(pos, vel, radius=3.0, mass=0.05):
     return Body(Circle(radius), pos, mass, vel=vel, bullet=True)
@@ -323,25 +299,27 @@ def _crate(w, h, pos, angle=0.0, mass=None):
     return Body(box_points(w, h), pos, w * h / 1000 if mass is None else mass, angle=math.radians(angle))
 
 
-def impact_cases():
-    """(name, bullet, other body, dt, does the bullet reach the bounding circle this step?)."""
-    return [
+def impact_cases(module=None):
+    """{"case", "bullet", "other", "dt", "needs_exact": does the bullet reach the bounding circle this step?}."""
+    cases = [
         ("a bullet at 12000 px/s hitting a 40 x 40 crate head-on", _bullet((300, 540), (12000, 0)),
-         _crate(40, 40, (380, 540)), STEP, True),
+         _crate(40, 40, (380, 540)), True),
         ("a bullet at 6000 px/s hitting a turned crate's corner", _bullet((330, 486), (6000, 0)),
-         _crate(50, 70, (380, 520), 30), STEP, True),
-        ("a bullet flying far above a crate", _bullet((300, 300), (12000, 0)), _crate(40, 40, (380, 540)), STEP, False),
+         _crate(50, 70, (380, 520), 30), True),
+        ("a bullet flying far above a crate", _bullet((300, 300), (12000, 0)), _crate(40, 40, (380, 540)), False),
         ("a bullet too slow to reach a crate this step", _bullet((100, 540), (3000, 0)),
-         _crate(40, 40, (380, 540)), STEP, False),
+         _crate(40, 40, (380, 540)), False),
         ("a bullet already inside a tall crate's bounding circle, 1 px from its side",
-         _bullet((518, 470), (4000, 0)), _crate(36, 100, (540, 510)), STEP, True),
+         _bullet((518, 470), (4000, 0)), _crate(36, 100, (540, 510)), True),
         ("a bullet crossing a tall crate's bounding circle 2 px above the crate",
-         _bullet((500, 455), (4000, 0)), _crate(36, 100, (540, 510)), STEP, True),
+         _bullet((500, 455), (4000, 0)), _crate(36, 100, (540, 510)), True),
         # its centre passes 29.5 px from the centre, 1.2 px outside the 28.3 px bounding circle: only the
         # bullet's own 3 px radius reaches the corner (a broad test without it lets the bullet tunnel)
         ("a bullet at 12000 px/s grazing the top corner of a 40 x 40 crate turned 45°",
-         _bullet((300, 540 - 29.5), (12000, 0)), _crate(40, 40, (380, 540), 45), STEP, True),
+         _bullet((300, 540 - 29.5), (12000, 0)), _crate(40, 40, (380, 540), 45), True),
     ]
+    return [{"case": name, "bullet": bullet, "other": other, "dt": STEP, "needs_exact": reaches}
+            for name, bullet, other, reaches in cases]
 
 
 def _plain_hit(hit):
@@ -354,63 +332,93 @@ def _plain_hit(hit):
         return {"bad": _short(hit)}
 
 
-def probe_impact(module, lab_path):
-    """time_of_impact() with the lesson's circle_toi and bounding_radius; counts the exact swept tests."""
-    own = module.circle_toi, module.bounding_radius, getattr(module, "circle_polygon_toi", None)
-    calls = [0]
-
-    def counted(*args):
-        calls[0] += 1
-        return circle_polygon_toi(*args)
-
-    module.circle_toi, module.bounding_radius = lesson_circle_toi, lesson_bounding_radius
-    module.circle_polygon_toi = counted
-    try:
-        cases = []
-        for name, bullet, other, dt, exact in impact_cases():
-            calls[0] = 0
-            given = (twin(bullet), twin(other))   # the bodies as time_of_impact() gets them
-            got = module.time_of_impact(bullet, other, dt)
-            cases.append({"case": name, "got": _plain_hit(got), "exact_tests": calls[0], "needs_exact": exact})
-            if judging(module):
-                cases[-1]["want"] = _plain_hit(reference_impact(*given, dt))
-                cases[-1]["forms"] = _broad_forms_reference(*given, dt)
-        return cases
-    finally:
-        module.circle_toi, module.bounding_radius = own[0], own[1]
-        if own[2] is not None:
-            module.circle_polygon_toi = own[2]
+_EXACT = threading.local()   # .tests: the exact swept tests of the call being probed, per thread (files are
+# judged in parallel threads)
 
 
-# step 4's known wrong broad tests: name -> (the bullet's radius in the broad test, when it returns None)
-BROAD_MISTAKES = {
-    "zero_is_falsy": (True, lambda t: not t),           # `if not circle_toi(...)`: 0.0 (inside) counts as a miss
-    "inverted": (True, lambda t: t is not None),        # returns None when the bounding circle IS reached
-    "point_bullet": (False, lambda t: t is None),       # the bullet as a point, radius 0
+def _exact_counted(*args):
+    """The library's exact swept test in the handout's place, counted: the broad test must skip it."""
+    _EXACT.tests += 1
+    return circle_polygon_toi(*args)
+
+
+def _impact(time_of_impact, c):
+    """The student's hit (bodies given as twins of the case's) and how many exact swept tests it ran."""
+    _EXACT.tests = 0
+    hit = _plain_hit(time_of_impact(twin(c["bullet"]), twin(c["other"]), c["dt"]))
+    return {"hit": hit, "exact_tests": _EXACT.tests}
+
+
+@reference
+def reference_impact(c, broad=None):
+    """{"hit", "exact_tests"} of the lesson's time_of_impact(): the exact swept test, where any number of exact
+    tests (None) is right if the bullet reaches the bounding circle, else none; with broad = (the bullet's radius
+    counts, skips(t)), one known wrong broad test (BROAD) with the lesson's circle_toi and bounding_radius first."""
+    bullet, other, dt = c["bullet"], c["other"], c["dt"]
+    if broad is not None:
+        t = reference_circle_toi(bullet.pos, bullet.vel, bullet.radius if broad[0] else 0.0, other.pos, Vector2(),
+                                 reference_bounding_radius(other.world_points(), other.pos), dt)
+        if broad[1](t):
+            return {"hit": None, "exact_tests": 0}
+    hit = _plain_hit(circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), dt))
+    return {"hit": hit, "exact_tests": 1 if broad else None if c["needs_exact"] else 0}
+
+
+BROAD = {   # step 4's known wrong broad tests: name -> (sentence, the bullet's radius counts, when it returns None)
+    "zero_is_falsy": ("the broad test counts t = 0.0 as no contact (`if not t`): return None only when circle_toi() "
+                      "gives None", True, lambda t: not t),
+    "inverted": ("the broad test is the wrong way round: it returns None when circle_toi() DOES reach the bounding "
+                 "circle", True, lambda t: t is not None),
+    "point_bullet": ("the broad test treats the bullet as a point (radius 0): give circle_toi() bullet.radius", False,
+                     lambda t: t is None),
 }
 
 
-@reference
-def _broad_forms_reference(bullet, other, dt):
-    """{name: {"hit": the answer, "exact_tests": 0 or 1}} of time_of_impact() with each known wrong broad test
-    (BROAD_MISTAKES), the lesson's circle_toi, bounding_radius and exact swept test around it."""
-    points = other.world_points()
-    forms = {}
-    for name, (with_radius, skips) in BROAD_MISTAKES.items():
-        t = reference_circle_toi(bullet.pos, bullet.vel, bullet.radius if with_radius else 0.0, other.pos, Vector2(),
-                                 reference_bounding_radius(points, other.pos), dt)
-        forms[name] = ({"hit": None, "exact_tests": 0} if skips(t) else
-                       {"hit": _plain_hit(reference_impact(bullet, other, dt)), "exact_tests": 1})
-    return forms
+def same_hit(got, want):
+    """Both None, or the same time (1e-7) and normal."""
+    if want is None:
+        return got is None
+    return isinstance(got, dict) and "t" in got and close(got["t"], want["t"]) and same_point(got["normal"],
+                                                                                             want["normal"])
+
+
+def hit_text(hit):
+    if hit is None:
+        return "None (no hit)"
+    return hit["bad"] if "bad" in hit else f"t = {hit['t']:.6g} s, normal {vec_text(hit['normal'])}"
+
+
+def _broad_evidence(c):
+    got, want = c["got"], c["want"]
+    if same_hit(got["hit"], want["hit"]):
+        return f"for {c['case']}, the answer is right but the exact swept test ran {got['exact_tests']} time(s)."
+    return f"for {c['case']}, time_of_impact() returned {hit_text(got['hit'])}; expected {hit_text(want['hit'])}."
+
+
+def _gave_up(c):
+    """The first line when no wrong broad test is named."""
+    if c["want"]["hit"] is not None and c["got"]["hit"] is None and c["got"]["exact_tests"] == 0:
+        return "the broad test gave up on a crate the bullet does hit"
+    return "time_of_impact() does not find the lesson's hit"
+
+
+BROAD_MISSING = Form("broad_missing", "the broad test should have returned None first: the bullet cannot reach "
+                     "the bounding circle", hint="broad_missing")
+
+BROAD_TEST = Step(
+    "broad_test", "Step 4: time_of_impact() skips a crate whose bounding circle the bullet cannot reach, and finds "
+    "every hit.", 4, "time_of_impact", impact_cases, _impact, reference_impact, hint="broad",
+    same=lambda got, want: same_hit(got["hit"], want["hit"]) and want["exact_tests"] in (None, got["exact_tests"]),
+    stand_ins=lambda module: {"circle_toi": lesson_circle_toi, "bounding_radius": lesson_bounding_radius,
+                              "circle_polygon_toi": _exact_counted},
+    diagnose=lambda cases, c: BROAD_MISSING if same_hit(c["got"]["hit"], c["want"]["hit"]) else None,
+    evidence=_broad_evidence, unnamed=_gave_up,
+    passed="the broad test skips the crates out of reach and keeps every hit in all {n} cases",
+    wrong=tuple(Form(f"broad_{name}", text, lambda c, broad=(radius, skips): reference_impact(c, broad))
+                for name, (text, radius, skips) in BROAD.items()))
 
 
 # ---------------------------------------------------------------- step 5: swept_move
-
-@reference
-def reference_impact(bullet, other, dt):
-    """The exact swept test of a bullet against a polygon: (t, normal) or None."""
-    return circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), dt)
-
 
 def lesson_time_of_impact(bullet, other, dt):
     """The lesson's time_of_impact (no broad test); a stand-in under swept_move()."""
@@ -420,59 +428,40 @@ def lesson_time_of_impact(bullet, other, dt):
     return circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), dt)
 
 
-@reference
-def reference_swept_move(world, bullet, dt):
-    first = None
-    for other in world.bodies:
-        if other is bullet:
-            continue
-        hit = lesson_time_of_impact(bullet, other, dt)
-        if hit is not None and (first is None or hit[0] < first[0]):
-            first = (hit[0], hit[1], other)
-    if first is None:
-        bullet.pos += bullet.vel * dt
-        return
-    t, normal, other = first
-    bullet.pos += bullet.vel * t
-    world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
-    bullet.pos += bullet.vel * (dt - t)
-
-
 def swept_cases(module):
-    """(name, a function making (world, bullet)) for one swept move of 1/120 s each."""
+    """{"case", "make": a function making a fresh (world, bullet)} for one swept move of 1/120 s each."""
     wall_x = float(getattr(module, "WALL_X", 640.0))
 
-    def wall_world(speed, y=240.0, vy=0.0):
-        def make():
-            wall = module.make_wall()
-            bullet = _bullet((wall_x - 60, y), (speed, vy))
-            return module.BulletWorld([wall, bullet], effects={"ccd", "restitution"}, substeps=1), bullet
+    def maker(other, pos, vel, effects=("ccd", "restitution")):
+        def make():   # the bullet against the lab's wall, a free 40 x 40 crate or nothing
+            bullet = _bullet(pos, vel)
+            first = [] if other is None else [module.make_wall() if other == "wall" else _crate(40, 40, (380, 300))]
+            return module.BulletWorld(first + [bullet], effects=set(effects), substeps=1), bullet
         return make
 
-    def crate_world():
-        crate = _crate(40, 40, (380, 300))
-        bullet = _bullet((300, 300), (9000, 0))
-        return module.BulletWorld([crate, bullet], effects={"ccd", "restitution"}, substeps=1), bullet
-
-    def slanted():   # off-centre and at a slant, with friction and spin: the contact point's lever arm counts
-        crate = _crate(40, 40, (380, 300))
-        bullet = _bullet((300, 290), (9000, 3000))
-        return module.BulletWorld([crate, bullet], effects={"ccd", "restitution", "friction", "rotation"},
-                                  substeps=1), bullet
-
-    def nothing():
-        bullet = _bullet((100, 100), (5000, 700))
-        return module.BulletWorld([bullet], effects={"ccd"}, substeps=1), bullet
-
-    return [("a bullet at 12000 px/s hitting the wall 60 px ahead", wall_world(12000.0)),
-            ("a bullet at 9000 px/s hitting the wall at a slant", wall_world(9000.0, 200.0, 3000.0)),
-            ("a bullet at 9000 px/s hitting a free crate head-on", crate_world),
-            ("a bullet at 9000 px/s striking a free crate 10 px off-centre at a slant (friction, spin)", slanted),
-            ("a bullet with nothing in its way", nothing)]
+    return [{"case": name, "make": maker(*how)} for name, *how in (
+        ("a bullet at 12000 px/s hitting the wall 60 px ahead", "wall", (wall_x - 60, 240.0), (12000.0, 0.0)),
+        ("a bullet at 9000 px/s hitting the wall at a slant", "wall", (wall_x - 60, 200.0), (9000.0, 3000.0)),
+        ("a bullet at 9000 px/s hitting a free crate head-on", "crate", (300, 300), (9000, 0)),
+        # off-centre and at a slant, with friction and spin: the contact point's lever arm counts
+        ("a bullet at 9000 px/s striking a free crate 10 px off-centre at a slant (friction, spin)", "crate",
+         (300, 290), (9000, 3000), ("ccd", "restitution", "friction", "rotation")),
+        ("a bullet with nothing in its way", None, (100, 100), (5000, 700), ("ccd",)))]
 
 
 def _state(body):
     return {"pos": [body.pos.x, body.pos.y], "vel": [body.vel.x, body.vel.y], "omega": body.omega}
+
+
+def _outcome(world, bullet):
+    return {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
+
+
+def _swept(swept_move, c):
+    """The outcome of one swept_move() of 1/120 s in a fresh world of the case's."""
+    world, bullet = c["make"]()
+    swept_move(world, bullet, STEP)
+    return _outcome(world, bullet)
 
 
 @reference
@@ -483,96 +472,87 @@ def first_hit(world, bullet):
                key=lambda h: h[0], default=None)
 
 
-def probe_swept(module, lab_path):
-    """One swept_move() of 1/120 s per case with the lesson's time_of_impact, beside the lesson's swept move.
-
-    Also the outcome of each usual mistake (SWEPT_MISTAKES), for the message.
-    """
-    own = module.time_of_impact
-    module.time_of_impact = lesson_time_of_impact
-    try:
-        cases = []
-        for name, make in swept_cases(module):
-            world, bullet = make()
-            module.swept_move(world, bullet, STEP)
-            others = [_state(b) for b in world.bodies if b is not bullet]
-            cases.append({"case": name, "got": {"bullet": _state(bullet), "others": others}})
-            if judging(module):
-                cases[-1].update(_swept_reference(make))
-        return cases
-    finally:
-        module.time_of_impact = own
-
-
 @reference
-def _swept_reference(make):
-    """The lesson's swept move in a fresh world from make(), and the outcome of each usual mistake (SWEPT_MISTAKES).
-
-    An outcome is {"bullet": state, "others": [state, ...]}: a mistake is named only when the whole
-    outcome is its own, so two mistakes that leave the bullet at the same place are told apart by
-    its velocity or the crate's.
-    """
-    world, bullet = make()
-    reference_swept_move(world, bullet, STEP)
-    want = _outcome(world, bullet)
-    world, bullet = make()
+def reference_swept(c, name=None):
+    """The outcome of one lesson's swept move in a fresh world from c["make"](), or with the usual mistake `name`
+    (SWEPT; without a hit every mistake moves the bullet as the lesson does)."""
+    world, bullet = c["make"]()
     hit = first_hit(world, bullet)
     if hit is None:
-        return {"want": want, "variants": {}, "t": None}
-    return {"want": want, "t": hit[0], "variants": {name: _swept_mistake(make, name) for name in SWEPT_MISTAKES}}
-
-
-def _outcome(world, bullet):
-    return {"bullet": _state(bullet), "others": [_state(b) for b in world.bodies if b is not bullet]}
-
-
-# the usual step-5 mistakes: "stops" (the rest of the step not spent), "old_velocity" (the rest spent with the
-# velocity from before the hit), "whole_step" (a whole dt after the impact), "no_impulse" (nothing changes at the
-# impact: no resolve(), or one given the normal reversed, which sees the bodies separating), "far_side" (the
-# contact point on the bullet's far side, pos - normal r), "resolve_first" (resolved where the step starts, at
-# pos + normal r there, then moved the whole dt with the new velocity)
-SWEPT_MISTAKES = ("stops", "old_velocity", "whole_step", "no_impulse", "far_side", "resolve_first", "at_centre",
-                  "move_then_resolve")   # issue 40: the contact at the bullet's centre; the whole dt, then resolve
-
-
-@reference
-def _swept_mistake(make, name):
-    """The outcome of one step of the swept move with the mistake `name`, in a fresh world from make()."""
-    world, bullet = make()
-    t, normal, other = first_hit(world, bullet)
-    if name == "resolve_first":
-        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
         bullet.pos += bullet.vel * STEP
         return _outcome(world, bullet)
-    if name == "move_then_resolve":
-        bullet.pos += bullet.vel * STEP
-        world.resolve(bullet, other, normal, bullet.pos + normal * bullet.radius)
-        return _outcome(world, bullet)
+    t, normal, other = hit
     start, velocity = Vector2(bullet.pos), Vector2(bullet.vel)
-    bullet.pos += velocity * t
-    if name != "no_impulse":
+    bullet.pos += velocity * {"resolve_first": 0.0, "move_then_resolve": STEP}.get(name, t)   # to the impact
+    if name != "no_impulse":   # the contact on the bullet's surface towards the other body
         side = -1 if name == "far_side" else 0 if name == "at_centre" else 1
         world.resolve(bullet, other, normal, bullet.pos + normal * (side * bullet.radius))
     if name == "old_velocity":
         bullet.pos = start + velocity * STEP
-    elif name == "whole_step":
+    elif name in ("whole_step", "resolve_first"):
         bullet.pos += bullet.vel * STEP
-    elif name != "stops":
-        bullet.pos += bullet.vel * (STEP - t)
+    elif name not in ("stops", "move_then_resolve"):
+        bullet.pos += bullet.vel * (STEP - t)   # the rest of the step with the new velocity
     return _outcome(world, bullet)
+
+
+SWEPT = {   # the usual step-5 mistakes (issue 40 added at_centre and move_then_resolve)
+    "stops": "the bullet stopped at the impact: the rest of the step (dt - t) was not spent",
+    "old_velocity": "the bullet was resolved at the impact but spent the step with its velocity from before the hit "
+                    "(it went on through)",
+    "no_impulse": "nothing changed at the impact: resolve() was not called there, or was given the normal "
+                  "reversed (-normal) and saw the bodies moving apart",
+    "whole_step": "after the impact the bullet moved a whole dt more instead of the rest, dt - t",
+    "far_side": "the impulse was applied on the far side of the bullet; the contact is on its surface towards "
+                "the crate, bullet.pos + normal * radius",
+    "resolve_first": "the hit was resolved where the bullet starts the step, then it moved the whole dt: it turned "
+                     "back before it reached the impact",
+    "at_centre": "the hit was resolved at the bullet's centre; the contact is on its surface, bullet.pos + "
+                 "normal * radius",
+    "move_then_resolve": "the bullet moved the whole step, then resolved: move it to the impact first, resolve "
+                         "there, then spend dt - t",
+}
+
+
+def same_outcome(got, want):
+    """The bullet's position and velocity and every other body's position, velocity and spin agree."""
+    return same_point(got["bullet"]["pos"], want["bullet"]["pos"]) and \
+        same_point(got["bullet"]["vel"], want["bullet"]["vel"]) and len(got["others"]) == len(want["others"]) and \
+        all(same_point(g["vel"], w["vel"]) and same_point(g["pos"], w["pos"]) and close(g["omega"], w["omega"])
+            for g, w in zip(got["others"], want["others"]))
+
+
+def _swept_evidence(c):
+    """A crate's spin when the bullet ends where the lesson's does, else the bullet's velocity, else its place."""
+    got, want = c["got"], c["want"]
+    where = f"in '{c['case']}'" + (f" (impact at {c['t'] * 1000:.3f} ms)" if c["t"] is not None else "")
+    spins = [(g["omega"], w["omega"]) for g, w in zip(got["others"], want["others"]) if not close(g["omega"],
+                                                                                                w["omega"])]
+    if spins and same_point(got["bullet"]["pos"], want["bullet"]["pos"]):
+        return f"{where}, the crate spins at {spins[0][0]:.3f} rad/s; expected {spins[0][1]:.3f}."
+    if not same_point(got["bullet"]["vel"], want["bullet"]["vel"]):   # the velocity says most: show it
+        return f"{where}, the bullet leaves at {vec_text(got['bullet']['vel'])} px/s; expected " \
+               f"{vec_text(want['bullet']['vel'])}."
+    return f"{where}, the bullet ends at {vec_text(got['bullet']['pos'])}; expected {vec_text(want['bullet']['pos'])}."
+
+
+SWEPT_MOVE = Step(
+    "swept_move_resolves", "Step 5: swept_move() moves a bullet to its time of impact, resolves there and spends the "
+    "rest of the step.", 5, "swept_move", swept_cases, _swept, reference_swept, hint="swept", same=same_outcome,
+    stand_ins=lambda module: {"time_of_impact": lesson_time_of_impact}, evidence=_swept_evidence,
+    extra={"t": lambda c: (first_hit(*c["make"]()) or (None,))[0]},
+    unnamed="after swept_move() the bullet or the crate is not where the lesson's is",
+    passed="the swept move matches the lesson in all {n} cases",
+    wrong=tuple(Form(f"swept_{name}", text, lambda c, name=name: reference_swept(c, name))
+                for name, text in SWEPT.items()))
 
 
 # ---------------------------------------------------------------- criteria 1 and 2: the shots
 
 def shoot(module, mode, speed, shots):
-    """`shots` bullets fired one at a time at the lab's wall in its BulletWorld set to `mode`.
-
-    Each starts 1 px plus 1 + k/shots steps' travel short of touching the wall,
-    at the wall's mid-height, flying along +x, with no gravity (the wall is
-    400 px tall: gravity cannot take a shot over it in 3 steps). A shot
-    tunnels when the bullet's centre ends past the wall's centre line.
-    Returns (tunnelled, physics seconds spent).
-    """
+    """`shots` bullets fired one at a time at the lab's wall in its BulletWorld set to `mode`: (tunnelled, physics
+    seconds spent). Each starts 1 px plus 1 + k/shots steps' travel short of the wall, at its mid-height, along +x,
+    with no gravity (nothing takes a shot over the 400 px wall); it tunnels if its centre ends past the wall's."""
     wall_x = float(module.WALL_X)
     half = float(module.WALL_WIDTH) / 2
     radius = float(module.BULLET_RADIUS)
@@ -594,26 +574,16 @@ def shoot(module, mode, speed, shots):
 
 
 def probe_shots(module, lab_path):
-    """Criterion 1: shots with CCD at every speed; criterion 2: shots at 12000 px/s with sub-steps x8 (and x1)."""
-    ccd = {}
-    cost = {}
-    for speed in SHOT_SPEEDS:
-        ccd[str(speed)], cost[f"ccd {speed}"] = shoot(module, "ccd", speed, SHOTS_PER_SPEED)
-    x8, cost["x8"] = shoot(module, "x8", FAST, SUBSTEP_SHOTS)
-    return {"ccd": ccd, "per_speed": SHOTS_PER_SPEED, "x8": x8, "x8_shots": SUBSTEP_SHOTS,
-            "ccd_seconds": sum(v for k, v in cost.items() if k.startswith("ccd")), "x8_seconds": cost["x8"],
-            "wall": float(module.WALL_WIDTH), "radius": float(module.BULLET_RADIUS)}
+    """Criterion 1: the shots tunnelled with CCD at each speed; criterion 2: those with sub-steps x8 at 12000 px/s."""
+    ccd = {str(speed): shoot(module, "ccd", speed, SHOTS_PER_SPEED)[0] for speed in SHOT_SPEEDS}
+    return {"ccd": ccd, "per_speed": SHOTS_PER_SPEED, "x8": shoot(module, "x8", FAST, SUBSTEP_SHOTS)[0]}
 
 
 # ---------------------------------------------------------------- criterion 4: momentum into a crate
 
 def probe_crate_hit(module, lab_path):
-    """A bullet at 9000 px/s hits a free 40 x 40 crate (mass 1.6) through its centre, with CCD, no gravity.
-
-    The lesson's answer for a central impact with restitution e = 0.2 (both
-    bodies' default): the crate leaves at (1 + e) m v / (m + M), so its momentum
-    is M (1 + e) m v / (m + M). The world runs 3 steps of 1/120 s.
-    """
+    """A bullet at 9000 px/s hits a free 40 x 40 crate (mass 1.6) through its centre, with CCD, no gravity, for 3
+    steps of 1/120 s; with e = 0.2 (both bodies' default) the lesson's crate leaves at (1 + e) m v / (m + M)."""
     bullet = module.make_bullet((300, 300), (9000, 0))
     crate = _crate(40, 40, (380, 300))
     given = (twin(bullet), twin(crate))   # the masses and restitutions as the world got them
@@ -641,11 +611,6 @@ def _crate_hit_reference(bullet, crate, v):
 PURE = ("circle_toi", "bounding_radius", "time_of_impact")
 
 # probe name -> (the lab function it needs, the probe)
-PROBES = {
-    **TOI.probes(),
-    **BOUNDING.probes(),
-    "time_of_impact": ("time_of_impact", probe_impact),
-    "swept_move": ("swept_move", probe_swept),
-    "shots": ("swept_move", probe_shots),
-    "crate_hit": ("swept_move", probe_crate_hit),
-}
+STEPS = (TOI, BOUNDING, BROAD_TEST, SWEPT_MOVE)
+PROBES = {**TOI.probes(), **BOUNDING.probes(), **BROAD_TEST.probes(), **SWEPT_MOVE.probes(),
+          "shots": ("swept_move", probe_shots), "crate_hit": ("swept_move", probe_crate_hit)}

@@ -13,7 +13,6 @@ import random
 import pygame
 from pygame import Vector2
 
-from checker.judging.lab_checks import vec_text
 from checker.replay.show_kit import (BACK, BLUE, GREY, LESSON, SIZE, STUDENT, TEXT, Case, arrow, close, cross,
                                      data, fit, footer, numbered, text_font, vec, view)
 from checker.replay.show_series import FASTEST
@@ -22,22 +21,7 @@ from . import probes
 SERIES = {"runs": FASTEST}
 
 
-def _hit_matches(got, want):
-    """True when a time_of_impact() answer is the lesson's: both None, or the same time and normal (as the check
-    judges it)."""
-    if want is None:
-        return got is None
-    return (isinstance(got, dict) and "t" in got and close(got["t"], want["t"]) and isinstance(got["normal"], list)
-            and len(got["normal"]) == len(want["normal"]) and all(map(close, got["normal"], want["normal"])))
-
-
-def _hit(hit):
-    """A time_of_impact() answer as text."""
-    if hit is None:
-        return "None (no hit)"
-    if isinstance(hit, dict) and "bad" in hit:
-        return hit["bad"]
-    return f"t = {hit['t']:.6g} s, normal {vec_text(hit['normal'])}"
+_hit = probes.hit_text   # a time_of_impact() answer written as the check writes it
 
 
 # ---------------------------------------------------------------- circle_toi() and swept_move()
@@ -111,12 +95,12 @@ class SweptCase(Case):
 
     def path(self):
         """(start, impact or None, lesson's end, student's end) in px, from the probe's data."""
-        variants, t = self.case.get("variants") or {}, self.case.get("t")
+        variants, t = self.case.get("forms") or {}, self.case.get("t")
         want = Vector2(self.case["want"]["bullet"]["pos"])
         got = Vector2(self.case["got"]["bullet"]["pos"])
-        if t is None or "stops" not in variants or "old_velocity" not in variants or self.step - t <= 0:
+        if t is None or "swept_stops" not in variants or "swept_old_velocity" not in variants or self.step - t <= 0:
             return None, None, want, got
-        impact, through = (Vector2(_bullet_pos(variants[name])) for name in ("stops", "old_velocity"))
+        impact, through = (Vector2(_bullet_pos(variants[name])) for name in ("swept_stops", "swept_old_velocity"))
         velocity = (through - impact) / (self.step - t)
         return impact - velocity * t, impact, want, got
 
@@ -237,14 +221,14 @@ class BroadCase(Case):
 
     def __init__(self, case, number, count, geometry):
         super().__init__(case, number, count)
-        self.geometry = geometry   # (bullet, other body, dt) from the probe's impact_cases()
+        self.geometry = geometry   # (bullet, other body, dt) from the case
 
     def lines(self):
         case = self.case
         reach = "the bullet reaches the bounding circle" if case["needs_exact"] else \
             "out of the bounding circle's reach: no exact test needed"
-        return [self.head(), f"yours (magenta): {_hit(case['got'])}, {case['exact_tests']} exact swept test(s)",
-                f"the lesson's (yellow): {_hit(case['want'])} ({reach})"]
+        return [self.head(), f"yours (magenta): {_hit(case['got']['hit'])}, {case['got']['exact_tests']} exact swept "
+                "test(s)", f"the lesson's (yellow): {_hit(case['want']['hit'])} ({reach})"]
 
     def draw(self, surface):
         surface.fill(BACK)
@@ -258,24 +242,23 @@ class BroadCase(Case):
         pygame.draw.circle(surface, GREY, at(other.pos), bounding * scale, 1)
         pygame.draw.line(surface, GREY, at(bullet.pos), at(end), 1)
         pygame.draw.circle(surface, TEXT, at(bullet.pos), max(3, bullet.radius * scale), 1)
-        for hit, colour, width in ((self.case["want"], LESSON, 4), (self.case["got"], STUDENT, 2)):
+        for hit, colour, width in ((self.case["want"]["hit"], LESSON, 4), (self.case["got"]["hit"], STUDENT, 2)):
             if hit is None:   # no hit: the bullet ends the step where its path ends
                 pygame.draw.circle(surface, colour, at(end), max(4, bullet.radius * scale) + width, width)
             elif isinstance(hit, dict) and "t" in hit and abs(hit["t"]) < 10 * dt:
                 where = at(bullet.pos + bullet.vel * hit["t"])
                 pygame.draw.circle(surface, colour, where, max(4, bullet.radius * scale), width)
                 arrow(surface, colour, where, where + Vector2(hit["normal"]) * 40, width)
-        for k in range(min(self.case["exact_tests"], 10)):
+        for k in range(min(self.case["got"]["exact_tests"], 10)):
             x = at(bullet.pos).x - 10 + 8 * k
             pygame.draw.line(surface, STUDENT, (x, at(bullet.pos).y - 30), (x, at(bullet.pos).y - 16), 3)
         self.finish(surface, "grey: the bounding circle and the path over dt, ticks: your exact tests")
 
 
 def broad_cases(functions, seed):
-    geometry = {name: (bullet, other, dt) for name, bullet, other, dt, _ in probes.impact_cases()}
-    wrong = [c for c in data(functions, "time_of_impact") or [] if "want" in c and c["case"] in geometry and
-             (not _hit_matches(c["got"], c["want"]) or (not c["needs_exact"] and c["exact_tests"]))]
-    return [BroadCase(c, k + 1, len(wrong), geometry[c["case"]]) for k, c in enumerate(wrong)]
+    wrong = [c for c in data(functions, "time_of_impact") or [] if "want" in c and
+             not probes.BROAD_TEST.same(c["got"], c["want"])]
+    return [BroadCase(c, k + 1, len(wrong), (c["bullet"], c["other"], c["dt"])) for k, c in enumerate(wrong)]
 
 
 def toi_cases(functions, seed):
