@@ -1,7 +1,7 @@
 """Three additions to declared steps (checker/judging/declared.py), on toy steps graded as a lab's are:
   - Step.accepts: a comparison that needs the case's own inputs (here a tolerance from the case's size) decides
     whether an answer is the lesson's, while the wrong forms still match by Step.same;
-  - declared_together.register_together: one check judging two Steps (two probes of one lesson step) in order,
+  - declared.register_together: one check judging two Steps (two probes of one lesson step) in order,
     the first failing Step's message its message, the pass worded from both Steps' judged cases;
   - answer_kinds: a returned number, point or list of points as plain data, else the text of what it is.
 """
@@ -12,7 +12,7 @@ from pygame import Vector2
 
 from checker.judging import answer_kinds, declared
 from checker.judging.checks import Fail, Hint, Passed, Registry
-from checker.judging.declared_together import register_together
+from checker.judging.declared import register_together
 
 HINTS = {"scale": Hint(2, "scaling", "Return x times the size."), "crash": Hint(1, "run the file", "Run it.")}
 

@@ -9,7 +9,8 @@ A lab writes a Step once, in its probes.py; the framework makes both halves of t
     wrong form only when it alone gives the student's answer in every case (causes.consistent_mistake), and
     words the failure as every lab does: two lines, what is wrong (the form's sentence, else the step's own
     words), then the evidence of the first case that differs.
-A step whose mistakes need more than a table (a whole scene, a spliced step) stays a hand-written check.
+register_together makes one check of several Steps (one lesson step seen through two functions). Steps that move
+bodies are declared_acts.Acting; steps read from a probe the lab already has, declared_shared.SharedStep.
 """
 from dataclasses import dataclass, field
 
@@ -193,6 +194,19 @@ class Step:
         differs from the lesson's in `case` can be named (causes.consistent_mistake)."""
         differs = [form for form in self.wrong if not self.same(case["forms"][form.id], case["want"])]
         return consistent_mistake(cases, lambda c, f: self.same(c["got"], c["forms"][f.id]), differs)
+
+
+def register_together(steps, registry, hints, check, doc, passed, depends=("loads",), after=(), max_score=1.0):
+    """Register check `check` (description `doc`) in `registry`: it judges `steps` (declared.Steps of one lesson
+    step) in order and returns passed(*their Passed); `hints`: the lab's HINTS (its "crash" hint for a probe that
+    raised). Each Step's own register() is not called: its probe still goes in the lab's PROBES (Step.probes())."""
+    def judged(sub, functions):
+        return passed(*[step.judge(lab_checks.function_data(sub, functions, step.probe_id, step.function, step.step,
+                                                            hints["crash"]), hints) for step in steps])
+    judged.__name__ = judged.__qualname__ = check
+    judged.__doc__ = doc
+    registry.check(depends=list(depends), after=list(after), max_score=max_score)(judged)
+    return judged
 
 
 @reference

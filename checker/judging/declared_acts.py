@@ -18,8 +18,7 @@ from . import lab_checks
 from .causes import mistake
 from .checks import Fail, Hint, Passed
 from .common import close
-from .declared import Step, lesson_answers
-from .declared_together import register_together
+from .declared import Step, lesson_answers, register_together
 from .tape import judging
 
 

@@ -16,7 +16,7 @@ import math
 
 from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
-from checker.judging.declared_together import register_together
+from checker.judging.declared import register_together
 from lesson11 import records as metrics
 from . import probes, scenes
 from checker.judging.checks import Hint, Passed, Registry
