@@ -126,7 +126,8 @@ class Acting(Step):
     """A declared.Step whose `call(function, given)` receives given(case): the call's arguments, fresh objects
     (Vector2s, Bodies) built from the case's plain inputs; `outcome(given, raw)`: the answer, read from the
     arguments after the call (None: `answer(raw)`). kept: the names in `given` (vectors, also in the case as
-    lists) the function must leave as it got them, `advice` what to do instead, `changed_hint` the hint's key or
+    lists) the function must leave as it got them, `advice` what to do instead, `user` who goes on using a changed
+    argument (for the message), `changed_hint` the hint's key or
     a Hint (None: the step's). hooks: {name of a module function: describe(given, args, named)}: each call of it
     during the call is noted in the record's "calls". function_of(module, lab_path): the function probed (e.g. a
     spliced one; None: the module's). also: more Steps judged in order under this check once its cases pass;
@@ -135,6 +136,7 @@ class Acting(Step):
     outcome: object = None
     kept: tuple = ()
     advice: str = "make a new vector"
+    user: str = "the caller goes on using it"
     changed_hint: object = None
     hooks: dict = field(default_factory=dict)
     function_of: object = None
@@ -169,7 +171,7 @@ class Acting(Step):
                 hint = self.changed_hint or self.hint
                 raise Fail(f"{self.function}() changed its argument {name} in place: {self.advice}.\n"
                            f"{self.named_case(case)}, {name} went from {lab_checks.vec_text(case[name])} to "
-                           f"{lab_checks.vec_text(now)}; the caller goes on using it.",
+                           f"{lab_checks.vec_text(now)}; {self.user}.",
                            hint if isinstance(hint, Hint) else hints[hint], mistake("argument_changed"))
         return super().judge(cases, hints)
 

@@ -316,7 +316,8 @@ SEPARATE = Acting(
     "separate", separate_cases, lambda separate, g: separate(g["a"], g["b"], g["normal"], g["depth"]), _pushed,
     given=lambda c: {"a": body_of(c["a"]), "b": body_of(c["b"]), "normal": Vector2(c["normal"]), "depth": c["depth"]},
     outcome=lambda g, raw: {k: answer_point(g[k].pos) for k in ("a", "b")}, kept=("normal",),
-    advice="scale a new vector, normal * share", label=lambda c: f"in '{c['case']}'", hint="split",
+    advice="scale a new vector, normal * share", user="the World goes on using it", hint="split",
+    label=lambda c: f"in '{c['case']}'",
     same=fields(same_point, "ab"), bad=lambda got: any("bad" in got[k] for k in "ab" if isinstance(got[k], dict)),
     malformed=lambda c: next(f"separate() left {k.upper()}'s position {c['got'][k]['bad']}.\n{_split_where(c)}."
                             for k in "ab" if isinstance(c["got"][k], dict)),
@@ -521,6 +522,7 @@ FRICTION = Acting(
                          rb=Vector2(c["point"]) - Vector2(c["b"]["pos"])),
     outcome=lambda g, raw: motions(a=g["a"], b=g["b"]), kept=("normal", "point"), label=lambda c: f"in '{c['case']}'",
     advice="make new vectors (normal.rotate(90), not t = normal then t.rotate_ip(90))",
+    user="the World goes on using it for its other contact points",
     changed_hint=arguments_hint(7, "resolve"), same=fields(same_motion, "ab"),
     hooks={"apply_impulse": lambda g, args, named: roles(g, ("a", "b", "impulse", "ra", "rb"), args, named,
                                                           ("a", "b", "ra", "rb"))},
