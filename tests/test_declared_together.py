@@ -3,14 +3,14 @@
     whether an answer is the lesson's, while the wrong forms still match by Step.same;
   - declared.register_together: one check judging two Steps (two probes of one lesson step) in order,
     the first failing Step's message its message, the pass worded from both Steps' judged cases;
-  - answer_kinds: a returned number, point or list of points as plain data, else the text of what it is.
+  - common.as_number/as_point/as_points: a returned number, point or list of points as plain data, else the text of what it is.
 """
 import types
 
 import pytest
 from pygame import Vector2
 
-from checker.judging import answer_kinds, declared
+from checker.judging import common as answer_kinds, declared
 from checker.judging.checks import Fail, Hint, Passed, Registry
 from checker.judging.declared import register_together
 

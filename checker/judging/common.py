@@ -208,3 +208,36 @@ def answer_point(value):
     if not (math.isfinite(point.x) and math.isfinite(point.y)):
         return {"bad": f"a point that is not finite: {value_text(value)}"}
     return [point.x, point.y]
+
+
+# ---------------------------------------------------------------- answers as plain data, else their text
+# (a declared Step's `answer`; a str answer is then malformed, bad=is_text, and its message shows the text)
+
+def is_text(answer):
+    """True for an answer that was not the kind asked for (these functions gave its text instead)."""
+    return isinstance(answer, str)
+
+
+def as_number(value):
+    """A number as a float (not a str, a bool or anything else float() would read), else its text."""
+    try:
+        return real(value)
+    except (TypeError, ValueError):
+        return value_text(value)
+
+
+def as_point(value):
+    """A point or vector, anything Vector2() takes, as [x, y], else its text."""
+    try:
+        v = Vector2(value)
+    except (TypeError, ValueError):
+        return value_text(value)
+    return [v.x, v.y]
+
+
+def as_points(value):
+    """A list of points as [[x, y], ...], else the list's text."""
+    try:
+        return [[float(Vector2(p).x), float(Vector2(p).y)] for p in value]
+    except (TypeError, ValueError):
+        return value_text(value)

@@ -17,7 +17,7 @@ from lesson11.physics2d import box_points, convex_polygon, cross, edge_normals, 
 from lesson11.physics2d import polygon_centroid, polygon_inertia, regular_polygon
 
 from checker.judging import probe_kit
-from checker.judging.answer_kinds import as_number, as_point, as_points, is_text
+from checker.judging.common import as_number, as_point, as_points, is_text
 from checker.judging.common import close, same_point
 from checker.judging.declared import Form, Step, forms_of
 from checker.judging.lab_checks import vec_text

@@ -10,7 +10,7 @@ The lesson's answers are computed in the grader only (each reference_* is a @ref
 
 from lesson11.physics2d import LESSON_EFFECTS, Body, World, box_points
 
-from checker.judging.common import real, value_text
+from checker.judging.common import as_number, value_text
 from checker.judging.declared import Form, Step
 from checker.judging.probe_kit import reference
 from checker.judging.tape import clock, run_rng
@@ -27,13 +27,6 @@ ABS = 1e-9          # s: the timer against the rule (same arithmetic, timer + dt
 
 
 _text = value_text   # repr cut to 60 characters; safe for a 5000-digit int
-
-
-def _number(value):
-    try:
-        return real(value)
-    except (TypeError, ValueError):
-        return _text(value)
 
 
 # ---------------------------------------------------------------- step 2: sleep_timer
@@ -86,7 +79,7 @@ def timer_cases(module):
 TIMER = Step(
     "timer_rule", "Step 2: sleep_timer() adds dt while speed < SLEEP_SPEED and |spin| < SLEEP_SPIN, else starts "
     "again from 0.", 2, "sleep_timer", timer_cases, lambda timer, c: timer(c["timer"], c["speed"], c["spin"], c["dt"]),
-    lambda c: reference_timer(c["timer"], c["speed"], c["spin"], c["dt"]), answer=_number, hint="timer",
+    lambda c: reference_timer(c["timer"], c["speed"], c["spin"], c["dt"]), answer=as_number, hint="timer",
     same=lambda got, want: not isinstance(got, str) and abs(got - want) <= ABS, bad=lambda got: isinstance(got, str),
     label=lambda c: f"sleep_timer({c['timer']:g}, {c['speed']:g}, {c['spin']:g}, {c['dt']:.4g}) ({c['case']})",
     show=lambda seconds: f"{seconds:.6g} s", kind="a number of seconds", unnamed="the timer does not follow the rule",
