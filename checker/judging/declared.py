@@ -69,6 +69,26 @@ def words(text):
     return text if callable(text) else (lambda case: text)
 
 
+class stood_in:
+    """While it is open, module.<name> is `function` for each {name: function}; then the module's own come back
+    (a name the module did not have keeps its stand-in)."""
+    missing = object()
+
+    def __init__(self, module, functions):
+        self.module, self.functions = module, functions
+        self.own = {name: getattr(module, name, self.missing) for name in functions}
+
+    def __enter__(self):
+        for name, function in self.functions.items():
+            setattr(self.module, name, function)
+
+    def __exit__(self, *exc):
+        for name, function in self.own.items():
+            if function is not self.missing:
+                setattr(self.module, name, function)
+        return False
+
+
 @dataclass
 class Step:
     """One function step of a lab, as data (see the module docstring).
@@ -141,11 +161,7 @@ class Step:
 
     def probe(self, module, lab_path):
         """The student's answer in every case; in the grader also the lesson's and the wrong forms' answers."""
-        stand_ins = self.stand_ins(module) if self.stand_ins else {}
-        own = {name: getattr(module, name, None) for name in stand_ins}   # a name the file lacks: put in, not back
-        try:
-            for name, function in stand_ins.items():
-                setattr(module, name, function)
+        with stood_in(module, self.stand_ins(module) if self.stand_ins else {}):
             out = []
             for case in self.cases(module):
                 raw = self.call(getattr(module, self.function), case)
@@ -154,10 +170,6 @@ class Step:
                     record.update(lesson_answers(self, case))
                 out.append(record)
             return out
-        finally:
-            for name, function in own.items():
-                if function is not None:
-                    setattr(module, name, function)
 
     def probes(self):
         """This step's entry of a lab's PROBES: {probe name: (the function it needs, the probe)}."""
@@ -167,13 +179,8 @@ class Step:
 
     def register(self, registry, hints, depends=("loads",), after=(), max_score=1.0):
         """Register this step's check in `registry`, in the order of the call; `hints`: the lab's HINTS."""
-        def check(sub, functions):
-            return self.judge(lab_checks.function_data(sub, functions, self.probe_id, self.function, self.step,
-                                                       hints["crash"]), hints)
-        check.__name__ = check.__qualname__ = self.check
-        check.__doc__ = self.doc
-        registry.check(depends=list(depends), after=list(after), max_score=max_score)(check)
-        return check
+        return register_together((self,), registry, hints, self.check, self.doc, lambda passed: passed, depends,
+                                 after, max_score)
 
     def judge(self, cases, hints):
         """Passed with the cases when every one is the lesson's, else Fail for the first that is not."""

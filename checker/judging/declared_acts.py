@@ -18,7 +18,7 @@ from . import lab_checks
 from .causes import mistake
 from .checks import Fail, Hint, Passed
 from .common import close
-from .declared import Step, lesson_answers, register_together
+from .declared import Step, lesson_answers, register_together, stood_in
 from .tape import judging
 
 
@@ -92,23 +92,6 @@ def _is(argument, value):
         return False
 
 
-class stood_in:
-    """While it is open, module.<name> is `function` for each {name: function}; the module's own come back."""
-
-    def __init__(self, module, functions):
-        self.module, self.functions = module, functions
-        self.own = {name: getattr(module, name) for name in functions}
-
-    def __enter__(self):
-        for name, function in self.functions.items():
-            setattr(self.module, name, function)
-
-    def __exit__(self, *exc):
-        for name, function in self.own.items():
-            setattr(self.module, name, function)
-        return False
-
-
 def noting(module, hooks, given, calls):
     """{name: a stand-in for module.<name>} that calls the module's own and appends describe(given, args, named)
     to `calls` first, for each {name: describe} in `hooks` whose function the module has."""
@@ -177,8 +160,7 @@ class Acting(Step):
 
     def register(self, registry, hints, depends=("loads",), after=(), max_score=1.0):
         """declared.Step.register, judging the `also` steps after this one under the same check."""
-        if not self.also:
-            return super().register(registry, hints, depends, after, max_score)
-        return register_together((self,) + tuple(self.also), registry, hints, self.check, self.doc,
-                                 lambda *passed: Passed(self.joint([p.value for p in passed]), value=passed[0].value),
-                                 depends, after, max_score)
+        joint = (lambda *passed: Passed(self.joint([p.value for p in passed]), value=passed[0].value)) if self.also \
+            else (lambda passed: passed)
+        return register_together((self,) + tuple(self.also), registry, hints, self.check, self.doc, joint, depends,
+                                 after, max_score)
