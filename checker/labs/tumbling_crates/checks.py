@@ -17,6 +17,7 @@ from . import scenes
 from checker.judging import criteria, lab_checks
 from checker.judging.criteria import Bound, Criterion
 from checker.judging.causes import SHARED, arguments_hint, mistake
+from checker.judging.common import close
 from lesson11 import records as metrics
 from lesson11.crate_scenes import (EXPLODED, GRAVITY, GRAVITY_TOLERANCE, MIN_TURN, PAIR_OVERLAP, PENETRATION,
                                    PILE_DRIFT, PILE_SPEED, RAMP_SLIDE, RAMP_SPEED, REST_OMEGA, REST_SPEED,
@@ -105,7 +106,7 @@ SCENE_SECONDS = {"pile": 4.6, "own_scene": 3.3, "ramp": 1.5, "corner": 0.9}
 # ---------------------------------------------------------------- helpers
 
 def _close(got, want):
-    return abs(got - want) <= ABS + REL * abs(want)
+    return close(got, want, REL, ABS)
 
 
 _vec = lab_checks.vec_text   # "(x, y)" for messages, shared by the labs
