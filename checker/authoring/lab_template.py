@@ -201,7 +201,7 @@ import math
 
 from pygame import Vector2
 
-from checker.judging.common import real, value_text
+from checker.judging.common import as_number
 from checker.judging.declared import Step, forms_of
 from checker.judging.lab_checks import vec_text
 from checker.judging.probe_kit import reference
@@ -221,13 +221,6 @@ CASES = (
     ("moving together", (75, -20), (75, -20), (0.8, -0.6)),
     ("both at rest", (0, 0), (0, 0), (1, 0)),
 )
-
-
-def _number(value):
-    try:
-        return real(value)
-    except (TypeError, ValueError):
-        return value_text(value)
 
 
 @reference
@@ -293,7 +286,7 @@ NORMAL_SPEED = Step(
     "normal_speed_right", "Step 2: normal_speed(va, vb, normal) is (vB - vA) · n, negative while the bodies approach.",
     2, "normal_speed", normal_speed_cases,
     lambda normal_speed, c: normal_speed(Vector2(c["va"]), Vector2(c["vb"]), Vector2(c["normal"])),
-    lambda c: reference_normal_speed(c["va"], c["vb"], c["normal"]), answer=_number, hint="normal",
+    lambda c: reference_normal_speed(c["va"], c["vb"], c["normal"]), answer=as_number, hint="normal",
     same=lambda got, want: not isinstance(got, str) and abs(got - want) <= RELATIVE * max(1.0, abs(want)),
     bad=lambda got: isinstance(got, str), kind="a number (px/s)", label=_label, show=lambda v: f"{v:.6g} px/s",
     unnamed="the speed along the normal is not (vB - vA) · n", extra={"how": lambda c: reference_approach(c)},
