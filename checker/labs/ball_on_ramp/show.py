@@ -20,7 +20,7 @@ from lesson11 import records
 from lesson11.physics2d import relative_velocity
 
 from checker.judging.declared_acts import body_of, fields, same_motion
-from checker.judging.declared_hits import same_hit
+from checker.judging.declared_hits import hit_text, same_hit
 from checker.replay.show_cases import ImpulseCase, PolygonCase
 from checker.replay.show_kit import (BACK, BLUE, GREY, LESSON, ORANGE, SIZE, STUDENT, TEXT, Case, arrow, close,
                                      cross, data, is_point, numbered, point_text, text_font, vec, view)
@@ -103,13 +103,8 @@ class CircleCase(Case):
 
     def lines(self):
         case = self.case
-
-        def said(hit):
-            if hit is None:
-                return "None (apart)"
-            return hit["bad"] if "bad" in hit else f"normal {vec(hit['normal'])}, depth {hit['depth']:.3f} px"
         return [f"{self.head()} (center {vec(case['center'])}, radius {case['radius']:g})",
-                f"yours (magenta): {said(case['got'])}", f"the lesson's (yellow): {said(case['want'])}"]
+                f"yours (magenta): {hit_text(case['got'])}", f"the lesson's (yellow): {hit_text(case['want'])}"]
 
     def draw(self, surface):
         surface.fill(BACK)
