@@ -67,3 +67,35 @@ def test_an_edit_that_no_longer_fits_fails_loudly_naming_the_entry():
         corpus.apply_edits("a = 1\na = 1\n", [("a = 1", "a = 2")], "entry_x")
     with pytest.raises(AssertionError, match="starter: step 3 has no"):
         corpus.regions("# --- step 2: x ---\n# --- end of step 2 ---\n", "starter")
+
+
+# ---------------------------------------------------------------- a report that does not depend on the run's seed
+
+def _raises_on(pairs):
+    """The pairs on which step 2's `continue` loop keeps no axis, so its sat() raises in step 3's test."""
+    from checker.labs.tumbling_crates.probes import _sat_mistakes_reference
+    return [name for name, pa, pb in pairs if _sat_mistakes_reference(pa, pb)["gap_continue"] == "raises"]
+
+
+def test_no_drawn_pair_makes_the_continue_loop_raise_whatever_the_seed():
+    """Before, 9 of 2,000 seeds drew a pair apart on every axis: sat_gap_continue then got a crash report (at
+    --seed 4) instead of its name, and its corpus verdict failed in about one run in 200."""
+    import random
+    from checker.judging.probe_kit import box, drawn_sat_pairs
+    assert _raises_on([("apart on every axis", box(40, 40, (0, 0)), box(40, 40, (100, 100)))])   # the check can fail
+    for seed in range(2000):   # as the grader draws them: tape.run_rng(module, "sat") with the run's seed
+        assert not _raises_on(drawn_sat_pairs(random.Random(f"{seed}:sat"))), seed
+
+
+def test_the_continue_loop_is_named_at_the_seed_that_once_drew_a_crash(tmp_path):
+    import json
+    import subprocess
+    import sys
+    path = tmp_path / "sat_gap_continue.py"
+    path.write_text(corpus.build("sat_gap_continue"), encoding="utf-8")
+    proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--seed", "4", str(path)],
+                          cwd=corpus.ROOT, capture_output=True, text=True, timeout=300,
+                          env=dict(__import__("os").environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy"))
+    checks = {c["id"]: c for c in json.loads(proc.stdout)["labs"][0]["criteria"]}
+    assert checks["sat_axes"]["status"] == "fail", checks["sat_axes"]
+    assert checks["sat_axes"]["mistake"]["id"] == "sat_gap_continue", checks["sat_axes"]["message"]
