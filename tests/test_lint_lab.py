@@ -236,10 +236,30 @@ def test_a_module_that_does_not_import_is_one_line_per_rule_that_reads_it(copy, 
     assert [rule.id for rule, _ in found] == ["checks_names"]   # the rules that read checks.py wait for it
 
 
+def test_a_count_kept_at_module_level_is_named_and_a_threading_local_is_not(copy):
+    """Bullets once counted its exact swept tests in a module-level list; files judged in parallel threads mixed
+    two files' counts and failed a right one."""
+    path = os.path.join(copy.folder, "probes.py")
+    kept = open(path, encoding="utf-8").read()
+    with open(path, "a", encoding="utf-8") as handle:
+        handle.write("\n_COUNT = [0]\n\n\ndef _counted(*args):\n    _COUNT[0] += 1\n")
+    ((rule, problem),) = lint_lab.lint(copy)
+    line = len(kept.splitlines()) + 6
+    assert rule.id == "no_module_state" and problem.what == f"line {line} writes the module-level _COUNT"
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(kept + "\nimport threading\n_COUNT = threading.local()\n\n\ndef _counted():\n"
+                     "    _COUNT.n = 0\n")
+    assert broken_rules(copy) == []
+    assert lab_rules.module_state_writes("S = {}\nL = []\nN = 0\ndef f(x):\n    global N\n    S.update(x)\n"
+                                         "    L.append(x)\n    x.append(1)\n    own = []\n    own.append(1)\n") == [
+        (5, "N"), (6, "S"), (7, "L")]
+
+
 def test_every_rule_has_its_broken_copy_here():
     """A rule added to lab_rules.py without a broken copy in this file fails here."""
     covered = set(MODULE_BREAKS) | set(SOURCE_BREAKS) | {
-        "reference_names", "lab_files", "no_own_paths", "corpus", "solution_and_starter", "placeholders"}
+        "reference_names", "lab_files", "no_own_paths", "corpus", "solution_and_starter", "placeholders",
+        "no_module_state"}
     assert covered == {rule.id for rule in lab_rules.RULES}
 
 

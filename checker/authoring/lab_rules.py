@@ -481,6 +481,49 @@ def reference_names(s):
         return broken(f"{_listing(unmarked)} not marked @reference", "decorate it with @reference")
 
 
+
+MUTATORS = ("append", "extend", "insert", "update", "setdefault", "pop", "popitem", "clear", "add", "remove",
+            "discard", "__setitem__")
+
+
+def module_state_writes(text):
+    """(line, name) of each place a function of `text` writes a module-level name: `global`, an item or attribute
+    set on it, or a mutating method called on it; a name bound to `threading.local()` is each thread's own."""
+    tree = ast.parse(text)
+    names = {target.id for node in tree.body if isinstance(node, (ast.Assign, ast.AnnAssign))
+             for target in (node.targets if isinstance(node, ast.Assign) else [node.target])
+             if isinstance(target, ast.Name) and not (isinstance(node.value, ast.Call)
+                                                        and ast.unparse(node.value.func).endswith("threading.local"))}
+    writes = []
+    for function in (node for node in ast.walk(tree) if isinstance(node, (ast.FunctionDef, ast.Lambda))):
+        for node in ast.walk(function):
+            if isinstance(node, ast.Global):
+                writes += [(node.lineno, name) for name in node.names]
+            targets = (node.targets if isinstance(node, ast.Assign) else [node.target]
+                       if isinstance(node, (ast.AugAssign, ast.AnnAssign)) else [])
+            calls = [node.func] if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                and node.func.attr in MUTATORS else []
+            for target in [t.value for t in targets if isinstance(t, (ast.Subscript, ast.Attribute))] + \
+                    [c.value for c in calls]:
+                if isinstance(target, ast.Name) and target.id in names:
+                    writes.append((node.lineno, target.id))
+    return sorted(set(writes))
+
+
+@rule("checker/labs/{id}/probes.py", tests="test_lint_lab.py")
+def no_module_state(s):
+    """`probes.py` and `checks.py` keep nothing at module level from one call to the next (`threading.local()`
+    if they must): the checker judges a class's files in parallel threads, so a shared count or cache mixes
+    two students' files."""
+    for name in ("probes.py", "checks.py"):
+        path = os.path.join(s.folder, name)
+        writes = module_state_writes(source.read(path)) if os.path.isfile(path) else []
+        if writes:
+            line, target = writes[0]
+            return broken(f"line {line} writes the module-level {target}", "keep it in a local, a case, or a "
+                          "threading.local()", relative(path))
+
+
 # ---------------------------------------------------------------- the solution and its starter
 
 @rule("solutions/{id}.py", needs=("solution_and_starter",), tests="test_assign.py, test_lab_starter.py")
