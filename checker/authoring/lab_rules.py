@@ -512,10 +512,10 @@ def module_state_writes(text):
 
 @rule("checker/labs/{id}/probes.py", tests="test_lint_lab.py")
 def no_module_state(s):
-    """`probes.py` and `checks.py` keep nothing at module level from one call to the next (`threading.local()`
-    if they must): the checker judges a class's files in parallel threads, so a shared count or cache mixes
-    two students' files."""
-    for name in ("probes.py", "checks.py"):
+    """`probes.py`, `checks.py` and `scenes.py` keep nothing at module level from one call to the next
+    (`threading.local()` if they must): the checker judges a class's files in parallel threads, so a shared count
+    or cache mixes two students' files."""
+    for name in ("probes.py", "checks.py", "scenes.py"):
         path = os.path.join(s.folder, name)
         writes = module_state_writes(source.read(path)) if os.path.isfile(path) else []
         if writes:
