@@ -71,6 +71,10 @@ def test_answer_kinds_give_plain_data_or_the_text_of_what_came_back():
     assert answer_kinds.is_text(answer_kinds.as_number(True)) and answer_kinds.is_text(answer_kinds.as_number(None))
     assert answer_kinds.as_point(Vector2(1, 2)) == [1.0, 2.0] and answer_kinds.as_point((3, 4)) == [3.0, 4.0]
     assert answer_kinds.is_text(answer_kinds.as_point([Vector2(1, 2)]))   # a point in a list is not a point
+    # a bare number is no point (Vector2(20.0) would read it as (20, 20): More Shapes' centroid once called a
+    # returned 20.0 a wrong centroid at (20, 20)); nor is a point that is not finite
+    assert answer_kinds.as_point(20.0) == "the number 20.0, not a point"
+    assert answer_kinds.as_point((float("nan"), 1)) == "a point that is not finite: (nan, 1)"
     assert answer_kinds.as_points([Vector2(1, 2), (3, 4)]) == [[1.0, 2.0], [3.0, 4.0]]
     assert answer_kinds.is_text(answer_kinds.as_points(Vector2(1, 2).x))
     assert answer_kinds.is_text(answer_kinds.as_points(["a"]))

@@ -219,20 +219,16 @@ def is_text(answer):
 
 
 def as_number(value):
-    """A number as a float (not a str, a bool or anything else float() would read), else its text."""
-    try:
-        return real(value)
-    except (TypeError, ValueError):
-        return value_text(value)
+    """answer_number's reading, with what is wrong as text: a float, else the text of what the value is."""
+    answer = answer_number(value)
+    return answer["bad"] if isinstance(answer, dict) else answer
 
 
 def as_point(value):
-    """A point or vector, anything Vector2() takes, as [x, y], else its text."""
-    try:
-        v = Vector2(value)
-    except (TypeError, ValueError):
-        return value_text(value)
-    return [v.x, v.y]
+    """answer_point's reading, with what is wrong as text: [x, y], else the text of what the value is (a bare
+    number or a point that is not finite included)."""
+    answer = answer_point(value)
+    return answer["bad"] if isinstance(answer, dict) else answer
 
 
 def as_points(value):
