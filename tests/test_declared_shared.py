@@ -68,7 +68,7 @@ def test_a_screen_fails_first_and_keeps_the_records_to_grade():
         run(step(screen=unchanged_arguments("push", "the caller goes on using its {name}", HINTS["args"])), changed)
     assert caught.value.mistake.id == "argument_changed" and caught.value.hint is HINTS["args"]
     assert caught.value.rationale.startswith("push() changed its argument normal in place")
-    assert "\nin 'case 0', normal became (0.00, -2.00): the caller goes on using its normal." in caught.value.rationale
+    assert "\nin 'case 0', normal became (0.00, -2.00); the caller goes on using its normal." in caught.value.rationale
     graded = step(screen=lambda cases, sub: [case for case in cases if case["j"] is not None])
     assert run(graded, records((1.0, 2.0), (5.0, None))).message == "j = 2 k in all 1 cases"
 

@@ -15,8 +15,7 @@ from pygame import Vector2
 from lesson11.physics2d import Body, Circle, box_points
 
 from . import lab_checks
-from .causes import mistake
-from .checks import Fail, Hint, Passed
+from .checks import Hint, Passed
 from .common import close
 from .declared import Step, lesson_answers, register_together, stood_in
 from .tape import judging
@@ -152,10 +151,9 @@ class Acting(Step):
         for case in cases:
             for name, now in (case.get("changed") or {}).items():
                 hint = self.changed_hint or self.hint
-                raise Fail(f"{self.function}() changed its argument {name} in place: {self.advice}.\n"
-                           f"{self.named_case(case)}, {name} went from {lab_checks.vec_text(case[name])} to "
-                           f"{lab_checks.vec_text(now)}; {self.user}.",
-                           hint if isinstance(hint, Hint) else hints[hint], mistake("argument_changed"))
+                raise lab_checks.argument_changed(self.function, name, self.advice, self.named_case(case), now,
+                                                  self.user, hint if isinstance(hint, Hint) else hints[hint],
+                                                  before=case[name])
         return super().judge(cases, hints)
 
     def register(self, registry, hints, depends=("loads",), after=(), max_score=1.0):

@@ -11,8 +11,6 @@ import inspect
 from dataclasses import dataclass
 
 from . import lab_checks
-from .causes import mistake
-from .checks import Fail
 from .declared import Step
 
 
@@ -70,8 +68,8 @@ def unchanged_arguments(function, why, hint):
     def screen(cases, sub=None, *given):
         for case in cases:
             for name, now in sorted((case.get("changed") or {}).items()):
-                raise Fail(f"{function}() changed its argument {name} in place: make new vectors (v * s, "
-                           f"v.rotate(90)), not v *= s or v.rotate_ip(90).\nin '{case['case']}', {name} became "
-                           f"{lab_checks.vec_text(now)}: {why.format(name=name)}.", hint, mistake("argument_changed"))
+                raise lab_checks.argument_changed(
+                    function, name, "make new vectors (v * s, v.rotate(90)), not v *= s or v.rotate_ip(90)",
+                    f"in '{case['case']}'", now, why.format(name=name), hint)
         return cases
     return screen

@@ -40,6 +40,15 @@ def vec_text(v):
     return f"({number_text(v[0])}, {number_text(v[1])})"
 
 
+def argument_changed(function, name, advice, where, now, user, hint, before=None):
+    """The Fail (mistake argument_changed) of a step function that changed its vector argument `name` in place:
+    `advice` says what to write instead, `where` names the case, `now` (and `before`, when the record kept it)
+    its value after (and before) the call, `user` who goes on using it."""
+    change = f"went from {vec_text(before)} to {vec_text(now)}" if before is not None else f"became {vec_text(now)}"
+    return Fail(f"{function}() changed its argument {name} in place: {advice}.\n{where}, {name} {change}; {user}.",
+                hint, mistake("argument_changed"))
+
+
 def loaded(sub, crash_hint, names_hint):
     """The probe's {probe name: data} when the file imported and defines every required function.
 
