@@ -149,14 +149,36 @@ def step_regions(lines):
     return {step: tuple(region) for step, region in regions.items()}
 
 
+def module_level_starts(source, regions):
+    """{step: 1-based line} of the first top-level statement that begins inside an indented step region.
+
+    A line dedented to column 0 in a region inside a function ends that function: it and every line after it
+    up to the end marker run at module level, so they are code outside the steps, not the step. {} when the
+    source does not parse (other checks say so).
+    """
+    try:
+        tree = ast.parse(source)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return {}
+    starts = [min([node.lineno] + [d.lineno for d in getattr(node, "decorator_list", [])]) for node in tree.body]
+    found = {}
+    for step, (start, end, indent) in regions.items():
+        inside = [line for line in starts if start + 1 < line < end + 1]
+        if indent and inside:
+            found[step] = min(inside)
+    return found
+
+
 def blank_steps(source):
     """The source with each step region's inside replaced by one placeholder line `__step_N__`.
 
-    Line numbers outside the regions shift; returns (text, line map) where the
+    Code a region dedents to module level (module_level_starts) is kept after the placeholder: it is
+    code outside the steps. Line numbers outside the regions shift; returns (text, line map) where the
     map takes a line of the new text (1-based) to the line of `source`.
     """
     lines = split_lines(source)
     regions = step_regions(lines)
+    outside = module_level_starts(source, regions)
     out, origin = [], []
     skip_until = -1
     starts = {start: (step, end, indent) for step, (start, end, indent) in regions.items()}
@@ -169,8 +191,9 @@ def blank_steps(source):
             step, end, indent = starts[index]
             out.append(f"{indent}__step_{step}__")
             origin.append(index + 2)
-            out.append(lines[end])
-            origin.append(end + 1)
+            for kept in range(outside.get(step, end + 1) - 1, end + 1):   # module-level lines, then the end marker
+                out.append(lines[kept])
+                origin.append(kept + 1)
             skip_until = end
     return "\n".join(out) + "\n", origin, sorted(regions)
 
@@ -361,6 +384,18 @@ def compare(submission, starter, submission_name="the file", starter_name="the h
     if not problems:
         problems.append("the code outside the steps differs from the handout")
     return Comparison(False, problems, added, warnings)
+
+
+def changed_statements(submission, starter):
+    """The 1-based lines of `submission` where a top-level statement starts that is none of the handout's (the
+    steps blanked, docstrings dropped): code added or edited outside the steps. None when either cannot be read."""
+    try:
+        theirs, _, _ = _parse(starter, "the handout")
+        mine, origin, _ = _parse(submission, "the file")
+    except MarkerError:
+        return None
+    known = {_dump(node) for node in theirs.body}
+    return {origin[node.lineno - 1] for node in mine.body if _dump(node) not in known}
 
 
 @dataclass

@@ -59,7 +59,8 @@ import os
 import re
 from dataclasses import dataclass
 
-from checker.reading.handout import MarkerError, reaching_fields, step_regions
+from checker.reading.handout import (MarkerError, changed_statements, module_level_starts, reaching_fields,
+                                     step_regions)
 from checker.reading.source import SourceError, read as read_source, lines as split_lines
 
 BUILTINS = frozenset({"exec", "eval", "compile", "open", "getattr", "setattr", "delattr", "globals", "vars",
@@ -120,21 +121,36 @@ class Breach:
     message: str = ""   # the whole sentence the step's check shows (scan_lab fills it in)
 
 
+def _binding(node, alias):
+    """(name, (module it comes from, is it a module itself)) that one alias of an import binds; name None for `*`."""
+    if isinstance(node, ast.Import):
+        name = alias.asname or alias.name.split(".")[0]
+        return name, (alias.name if alias.asname else alias.name.split(".")[0], True)
+    if alias.name == "*":
+        return None, ("", False)
+    # `from lesson11 import runtime as lab`: a module; `from x.y import name`: a module if x.y is a
+    # package whose attribute is lower case and known to be one (runtime, panel, draw, physics2d)
+    is_module = alias.name in ("runtime", "panel", "draw", "physics2d", "math", "collision", "world")
+    return alias.asname or alias.name, (f"{'.' * node.level}{node.module or ''}.{alias.name}", is_module)
+
+
 def _imports(tree):
     """{bound name: (module it comes from, is it a module itself)} for the top-level imports of a tree."""
-    bound = {}
-    for node in tree.body:
-        if isinstance(node, ast.Import):
-            for alias in node.names:
-                name = alias.asname or alias.name.split(".")[0]
-                bound[name] = (alias.name if alias.asname else alias.name.split(".")[0], True)
-        elif isinstance(node, ast.ImportFrom) and node.module:
-            for alias in node.names:
-                # `from lesson11 import runtime as lab`: a module; `from x.y import name`: a module if x.y is a
-                # package whose attribute is lower case and known to be one (runtime, panel, draw, physics2d)
-                is_module = alias.name in ("runtime", "panel", "draw", "physics2d", "math", "collision", "world")
-                bound[alias.asname or alias.name] = (f"{node.module}.{alias.name}", is_module)
-    return bound
+    return dict(_binding(node, alias) for node in tree.body if isinstance(node, (ast.Import, ast.ImportFrom))
+                and (isinstance(node, ast.Import) or node.module) for alias in node.names if alias.name != "*")
+
+
+def _module_imports(tree):
+    """[(bound name, (module, is a module))] for every import that binds a module-level name: at the top, or
+    inside a module-level if, try, with or loop (not in a def, lambda or class)."""
+    found, todo = [], list(tree.body)
+    while todo:
+        node = todo.pop()
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            found += [b for b in (_binding(node, alias) for alias in node.names) if b[0] is not None]
+        elif not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, ast.expr)):
+            todo += list(ast.iter_child_nodes(node))
+    return found
 
 
 class _Scope:
@@ -152,17 +168,20 @@ def _type_params(node):
 
 
 def _name_origins(tree):
-    """{id(Name node): where Python finds the name} for every name the file reads.
+    """({id(node): where}, the module-level names bound other than by an import).
 
-    "local" (a parameter or local of an enclosing function, lambda or comprehension),
-    "code" (a module-level def, class or assignment), "import" (a module-level import
-    only) or "free" (bound nowhere in the file: a builtin). A class body's names hide
-    nothing (its methods do not see them, and in the body itself a name may still be
-    read before the class binds it). The walk keeps its own stack, so no depth of
+    For every Name the file reads, where Python finds it: "local" (a parameter or local
+    of an enclosing function, lambda or comprehension), "code" (a module-level def,
+    class or assignment), "import" (a module-level import only) or "free" (bound
+    nowhere in the file: a builtin). For every binding (a Name stored or deleted, a
+    def, a class, an import alias in a function): "code" where it binds the module's
+    name (at module level, or declared `global`), else "local". A class body's names
+    hide nothing (its methods do not see them, and in the body itself a name may still
+    be read before the class binds it). The walk keeps its own stack, so no depth of
     nesting that Python compiles can stop it.
     """
     module = _Scope("module", None)
-    loads, binds = [], []              # (Name node read, its scope); (name bound, the scope it is bound in)
+    loads, binds = [], []              # (Name node read, its scope); (name bound, its scope, binding node or None)
     todo = [(statement, module) for statement in tree.body]
 
     def all_args(args):
@@ -183,7 +202,7 @@ def _name_origins(tree):
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
             todo += [(part, scope) for part in outer_parts(node)]
             if not isinstance(node, ast.Lambda):
-                binds.append((node.name, scope))
+                binds.append((node.name, scope, node))
             inner = _Scope("class" if isinstance(node, ast.ClassDef) else "function", scope)
             if not isinstance(node, ast.ClassDef):
                 inner.bound.update(a.arg for a in all_args(node.args))
@@ -202,7 +221,7 @@ def _name_origins(tree):
             target = scope
             while target.kind == "comprehension":
                 target = target.parent
-            binds.append((node.target.id, target))
+            binds.append((node.target.id, target, node.target))
         elif isinstance(node, ast.Global):
             scope.declared_global.update(node.names)
         elif isinstance(node, ast.Nonlocal):
@@ -210,19 +229,28 @@ def _name_origins(tree):
         elif isinstance(node, (ast.Import, ast.ImportFrom)):
             for alias in node.names:
                 name = (alias.asname or alias.name).split(".")[0]
-                (scope.imported if scope is module else scope.bound).add(name)
+                if scope is module:
+                    scope.imported.add(name)
+                else:                       # a `global` in the function makes it the module's
+                    binds.append((name, scope, alias))
         elif isinstance(node, ast.Name):
-            (loads if isinstance(node.ctx, ast.Load) else binds).append((node if isinstance(node.ctx, ast.Load)
-                                                                          else node.id, scope))
+            if isinstance(node.ctx, ast.Load):
+                loads.append((node, scope))
+            else:
+                binds.append((node.id, scope, node))
         else:
             if isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
-                binds.append((node.name, scope))
+                binds.append((node.name, scope, None))
             elif isinstance(node, ast.MatchMapping) and node.rest:
-                binds.append((node.rest, scope))
+                binds.append((node.rest, scope, None))
             todo += [(child, scope) for child in ast.iter_child_nodes(node)]
 
-    for name, scope in binds:     # after the walk: a `global x` anywhere in a function counts for all of it
-        (module if name in scope.declared_global else scope).bound.add(name)
+    found = {}
+    for name, scope, node in binds:     # after the walk: a `global x` anywhere in a function counts for all of it
+        target = module if name in scope.declared_global else scope
+        target.bound.add(name)
+        if node is not None:
+            found[id(node)] = "code" if target is module else "local"
 
     def origin(name, scope):
         while scope.kind != "module" and name not in scope.declared_global:
@@ -233,7 +261,8 @@ def _name_origins(tree):
             return "code"
         return "import" if name in module.imported else "free"
 
-    return {id(node): origin(node.id, scope) for node, scope in loads}
+    found.update({id(node): origin(node.id, scope) for node, scope in loads})
+    return found, module.bound
 
 
 def _free_aliases(tree):
@@ -262,6 +291,13 @@ def _top_level_names(tree):
             targets = node.targets if isinstance(node, ast.Assign) else [node.target]
             names.update(n.id for target in targets for n in ast.walk(target) if isinstance(n, ast.Name))
     return names
+
+
+def _bound_name(node):
+    """The name a binding node binds: a Name's id, a def's or class's name, an import alias's name."""
+    if isinstance(node, ast.alias):
+        return (node.asname or node.name).split(".")[0]
+    return getattr(node, "id", None) or node.name
 
 
 def _kept(node, origins):
@@ -310,7 +346,7 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
     library, allowed = library or {}, allowed or {}
     try:
         tree = ast.parse(source)
-        origins = _name_origins(tree)
+        origins, module_bound = _name_origins(tree)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return []
     lines = split_lines(source)
@@ -326,8 +362,24 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
     def step_of(line):
         return next((step for step, first, last in spans if first < line < last), None)
 
-    imported = _imports(tree)
-    handed = set(_imports(ast.parse(starter))) if starter else set(imported)
+    # a region's lines dedented to module level (and all after them up to its end marker) end the step's
+    # function: the rules read them as step code and as code outside the steps
+    module_lines = {line for step, first in module_level_starts(source, regions).items()
+                    for line in range(first, regions[step][1] + 1)}
+
+    def in_step(line):
+        return step_of(line) is not None and line not in module_lines
+
+    bindings = _module_imports(tree)
+    imported = {}
+    for name, binding in reversed(bindings):    # the last binding, or one that is not free
+        if name not in imported or not _free(binding[0]):
+            imported[name] = binding
+    handout_imports = _imports(ast.parse(starter)) if starter else dict(imported)
+    # a handout name is the handout's only while every binding of it is the handout's import
+    rebound = {name for name, binding in handout_imports.items()
+               if name in module_bound or any(n == name and b != binding for n, b in bindings)} if starter else set()
+    handed = set(handout_imports) - rebound
     aliases = _free_aliases(tree)
     found = {}
     called = {id(node.func) for node in ast.walk(tree) if isinstance(node, ast.Call)}
@@ -338,6 +390,67 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
         step = step_of(line)
         if step is not None and (line, rule, step) not in found:
             found[(line, rule, step)] = Breach(step, line, rule, what, lines[line - 1].strip())
+
+    def reaching(node):
+        """(rule, what) when `node`, outside the steps, reaches what a step may not (World, the lab runtime, the
+        library, a module, a name imported by the file or rebound), else None."""
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+            where = origins.get(id(node), "free")
+            binding = imported.get(node.id, ("", False))
+            if node.id in reach and where != "local":
+                return "reach", f"reaches {node.id}"
+            if node.id in every_library and where in ("import", "free"):
+                return "library", f"uses the library's {node.id}"
+            if node.id in rebound and where in ("code", "import"):
+                return "import", f"uses {node.id}, which the file binds again (the handout imports it)"
+            if where == "code" and node.id in tainted:
+                return tainted[node.id]
+            if where == "import" and node.id not in handed and not _free(binding[0]):
+                return "import", f"uses {node.id}, which the file imports itself"
+            if where == "import" and binding[1] and id(node) not in attribute_bases \
+                    and binding[0].split(".")[0] not in VALUE_SAFE:
+                return "module", f"uses the module {node.id} itself"
+        elif isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load):
+            if node.attr in every_library:
+                return "library", f"uses the library's {node.attr} (as .{node.attr})"
+            base = node.value.id if isinstance(node.value, ast.Name) else None
+            if origins.get(id(node.value)) == "import" and imported.get(base, ("", False))[1]:
+                module = imported[base][0]
+                if module in FREE_MODULES and node.attr not in FREE_NAMES[module] or \
+                        module not in FREE_MODULES and node.attr not in FREE_ATTRIBUTES.get(module.split(".")[0], ()):
+                    return "module", f"reaches into the module {base} (.{node.attr})"
+        elif isinstance(node, (ast.Import, ast.ImportFrom)) and not _step_import_is_free(node):
+            return "import", f"imports {', '.join(alias.name for alias in node.names)}"
+        return None
+
+    # names the file binds at module level outside the steps to code that reaches what a step may not: a step
+    # that reads one reaches it too (`lesson_sat = World().sat`, a helper def calling the library)
+    every_library = {name for names in library.values() for name in names}
+    tainted = {}
+    changed = changed_statements(source, starter) if starter else set()
+    changed = {node.lineno for node in tree.body} if changed is None else changed
+    while True:
+        grew = False
+        for statement in tree.body:
+            names = {_bound_name(n) for n in ast.walk(statement) if origins.get(id(n)) == "code"}
+            names -= set(tainted) | rebound
+            if not names:
+                continue
+            hit = None
+            for node in ast.walk(statement):
+                line = getattr(node, "lineno", None)
+                if line is None or in_step(line):
+                    continue
+                hit = reaching(node)
+                if hit and (statement.lineno in changed or isinstance(node, ast.Name)
+                            and node.id in set(tainted) | rebound):
+                    break
+                hit = None
+            if hit:
+                tainted.update({name: hit for name in names})
+                grew = True
+        if not grew:
+            break
 
     top = _top_level_names(tree)
     for node in ast.walk(tree):
@@ -360,7 +473,7 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
             where = origins.get(id(node), "free") if isinstance(node.ctx, ast.Load) else None
             if _is_dunder(node.id):
                 flag(node, "dunder", f"uses the dunder name {node.id}")
-            elif node.id in reach:
+            elif node.id in reach and (where or origins.get(id(node), "code")) != "local":   # a local is the step's
                 flag(node, "reach", f"reaches {node.id}")
             elif node.id in BUILTINS and where == "free":
                 flag(node, "builtin", f"uses {node.id}()")
@@ -373,6 +486,11 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
             elif where == "local" and node.id in aliases and aliases[node.id] not in VALUE_SAFE \
                     and id(node) not in attribute_bases:
                 flag(node, "module", f"uses the module {node.id} itself")
+            elif node.id in rebound and where in ("code", "import"):
+                flag(node, "import", f"uses {node.id}, which the file binds again (the handout imports it)")
+            elif where == "code" and node.id in tainted:
+                flag(node, tainted[node.id][0], f"uses {node.id}, bound outside the steps where it "
+                                                f"{tainted[node.id][1]}")
             elif where == "import" and node.id in imported and node.id not in handed \
                     and not _free(imported[node.id][0]):
                 flag(node, "import", f"uses {node.id}, which the file imports itself")
@@ -413,7 +531,7 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "type" \
                 and origins.get(id(node.func)) == "free" and len(node.args) + len(node.keywords) >= 3:
             flag(node, "builtin", "uses type() with three arguments (it makes a class)")
-    _outside(tree, lines, spans, starter, found, step_of, folder)
+    _outside(tree, lines, spans, starter, found, in_step, folder)
     return sorted(found.values(), key=lambda breach: (breach.line, breach.rule, breach.step))
 
 
@@ -446,8 +564,10 @@ def _unmarked(starter, lines, regions, line, what):
                                                   "handout)", text) for step in wanted if step not in regions]
 
 
-def _outside(tree, lines, spans, starter, found, step_of, folder=None):
-    """Flag edits outside the steps that can replace a step function (see the module docstring)."""
+def _outside(tree, lines, spans, starter, found, in_step, folder=None):
+    """Flag edits outside the steps that can replace a step function (see the module docstring).
+
+    in_step(line): True for a line of a step's own code (not one a region dedents to module level)."""
     steps_of = {}   # step function name -> its steps
     for index, node in enumerate(tree.body):
         if isinstance(node, ast.FunctionDef):
@@ -467,7 +587,6 @@ def _outside(tree, lines, spans, starter, found, step_of, folder=None):
                                                                lines[node.lineno - 1].strip())
 
     handout_imports = _imports(ast.parse(starter)) if starter else {}
-    handed_imports = set(handout_imports)
     handed_modules = {module.split(".")[0] for module, _ in handout_imports.values()}
     imported = _imports(tree)
     beside = _beside(folder) if folder else set()
@@ -482,9 +601,16 @@ def _outside(tree, lines, spans, starter, found, step_of, folder=None):
         if side or folder and getattr(node, "level", 0):
             flag_all(node, every, f"imports {side[0] if side else 'a module'} from the submission's own folder (a "
                                   "module beside the lab file is not graded and may change what a step does)")
+        # a closed module, at the top or in a def: only a name bound exactly as the handout's import binds it
+        closed = [m for m in modules if m.split(".")[0] in CLOSED_MODULES]
+        if closed and not in_step(node.lineno) and \
+                any(handout_imports.get(name) != binding for name, binding in
+                    (_binding(node, alias) for alias in node.names)):
+            flag_all(node, every, f"imports {closed[0]} outside the steps (it reaches the checker, the library "
+                                  "or the interpreter)")
     seen_defs = set()
     for node in tree.body:
-        if step_of(node.lineno) is not None:
+        if in_step(node.lineno):
             continue
         names = []
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
@@ -495,11 +621,6 @@ def _outside(tree, lines, spans, starter, found, step_of, folder=None):
             names = [node.name]
         elif isinstance(node, (ast.Import, ast.ImportFrom)):
             names = [(alias.asname or alias.name).split(".")[0] for alias in node.names]
-            module = (node.module or "") if isinstance(node, ast.ImportFrom) else node.names[0].name
-            if lines[node.lineno - 1].strip() not in handed and module.split(".")[0] in CLOSED_MODULES and \
-                    not set(names) <= handed_imports:
-                flag_all(node, every, f"imports {module} outside the steps (it reaches the checker, the library "
-                                      "or the interpreter)")
         elif isinstance(node, (ast.Assign, ast.AugAssign, ast.AnnAssign, ast.For, ast.With)):
             names = [n.id for n in ast.walk(node) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)]
             targets = node.targets if isinstance(node, ast.Assign) else [getattr(node, "target", None)]
@@ -516,7 +637,7 @@ def _outside(tree, lines, spans, starter, found, step_of, folder=None):
                                                 "write")
     for node in ast.walk(tree):
         line = getattr(node, "lineno", None)
-        if line is None or step_of(line) is not None or lines[line - 1].strip() in handed:
+        if line is None or in_step(line) or lines[line - 1].strip() in handed:
             continue
         what = None
         if isinstance(node, ast.Name) and (node.id in BUILTINS or _is_dunder(node.id)) and node.id != "__name__":
