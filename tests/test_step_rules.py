@@ -449,3 +449,201 @@ def test_a_marker_inside_a_string_is_no_marker():
     assert "looks like a step marker but is inside a string" in found[0].message
     with pytest.raises(handout.MarkerError, match="inside a string"):
         handout.compare(source, read("starters/tumbling_crates_starter.py"))
+
+
+# ---------------------------------------------------------------- attack round 2: a handed name rebound (hole A1),
+# code a region dedents to module level (A2), a local named like the lab runtime (F1)
+
+def outside_and_step(added, step, code):
+    """The solution with `added` after its last def (before the main guard) and step `step` replaced by `code`;
+    its text and the step's first line."""
+    solution = read("solutions/tumbling_crates.py")
+    guard = '\n\nif __name__ == "__main__":'
+    assert solution.count(guard) == 1
+    return in_step(solution.replace(guard, "\n\n" + added + guard), step, code)
+
+
+REBOUND = [   # (added outside the steps, step 2's code, the rule flagging step 2): the library under a name a step reads
+    ("from lesson11.physics2d import sat as project, effective_mass_inverse as edge_normals",
+     "return project(pa, pb)", "import"),                                 # the attacker's PoC: a handed name
+    ("project = World().sat", "return project(pa, pb)", "import"),        # assigned, not imported
+    ("from random import Random as project", "return project(pa, pb)", "import"),   # an open module: still rebound
+    ("def _bind():\n    global project\n    project = World().sat\n\n\n_bind()", "return project(pa, pb)", "import"),
+    ("def _bind():\n    global project\n    from lesson11.physics2d import sat as project\n\n\n_bind()",
+     "return project(pa, pb)", "import"),
+    ("lesson_sat = World().sat", "return lesson_sat(pa, pb)", "library"),  # a new name (the PoC's variant)
+    ("engine = World\nlesson_sat = engine().sat", "return lesson_sat(pa, pb)", "library"),   # through another name
+    ("lesson_sat = lab", "return lesson_sat.something(pa, pb)", "reach"),
+    ("def helper(pa, pb):\n    return World().manifolds()", "return helper(pa, pb)", "reach"),   # a helper def
+    ("def helper(pa, pb):\n    return solver(pa, pb)\n\n\nsolver = World().sat", "return helper(pa, pb)", "library"),
+    ("if True:\n    from statistics import sys as system", "return system.modules['x']", "import"),
+    ("shortcut = random._os", "return shortcut.sys.modules", "module"),
+]
+
+
+@pytest.mark.parametrize("added, code, rule", REBOUND)
+def test_a_name_bound_outside_the_steps_to_the_library_is_flagged_where_a_step_reads_it(added, code, rule):
+    """A handout-imported name is exempt only while every binding of it is the handout's import; a module-level
+    name the file binds outside the steps to code that reaches World, the runtime, the library or a module is
+    flagged in the step that reads it (attack report A1: 6/17 with no step written, 17/17 with --allow-edits)."""
+    lab = lab_by_id("tumbling_crates")
+    source, first = outside_and_step(added, 2, code)
+    found = step_rules.scan_lab(source, lab)
+    assert (2, first, rule) in [(b.step, b.line, b.rule) for b in found], [(b.step, b.line, b.rule) for b in found]
+    breach = next(b for b in found if (b.step, b.line) == (2, first))
+    assert breach.message.startswith(f"line {first} (step 2) uses ") and len(breach.message) < 300
+
+
+@pytest.mark.parametrize("lab_id, added, step, code", [
+    ("more_shapes", "from lesson11.physics2d import regular_polygon as draw_body", 2,
+     "return draw_body(sides, radius)"),
+    ("ball_on_ramp", "from lesson11.physics2d import circle_polygon as inside", 3,
+     "return inside(center, radius, points)"),
+])
+def test_a_library_import_under_a_handed_name_fails_every_step_in_every_lab(lab_id, added, step, code):
+    """README: an added import of the library fails every step (it was let through when it bound only names the
+    handout imports: `from lesson11.physics2d import circle_polygon as inside`)."""
+    lab = lab_by_id(lab_id)
+    solution = read(lab.solution)
+    source, first = in_step(solution + "\n" + added + "\n", step, code)
+    found = step_rules.scan_lab(source, lab)
+    line = len(source.splitlines())
+    assert {b.step for b in found if (b.line, b.rule) == (line, "outside")} == set(labs_found.steps(lab))
+    assert (step, first, "import") in [(b.step, b.line, b.rule) for b in found]
+
+
+@pytest.mark.parametrize("added, code", [
+    ("from lesson11.physics2d import project", "return project(pa, pb) if False else None"),   # as the handout binds it
+    ("import math\nimport random", None),
+    ("from lesson11.physics2d import Body, World, box_points, centre_of, cross, edge_normals, project, "
+     "spin_velocity", None),                                      # the handout's import line again
+    ("TAU = 2 * math.pi\nHALF = TAU / 4", "best_depth = min(best_depth, TAU * 1e9)"),     # a new name, plain numbers
+    ("def span(points, axis):\n    return project(points, axis)", "lo_hi = span(pa, pa[1] - pa[0])"),  # a helper
+])
+def test_a_name_bound_outside_the_steps_to_plain_code_is_not_flagged(added, code):
+    """Controls: a handed name bound again exactly as the handout binds it, or a new name bound to the file's own
+    arithmetic or to the handed functions, used in a step (handout_unchanged judges the edit, not the rules)."""
+    lab = lab_by_id("tumbling_crates")
+    solution = read("solutions/tumbling_crates.py")
+    source, _ = outside_and_step(added, 2, (code + "\n" if code else "") + step_code(solution, 2))
+    assert step_rules.scan_lab(source, lab) == []
+
+
+def test_the_attackers_step5only_file_no_longer_gets_full_marks_with_allow_edits(tmp_path):
+    """Attack report A1 through the command line: steps 2, 4 and 6 call the library under handed names bound by an
+    added import, only step 5 written; with --allow-edits (the platforms' option) it got 17/17."""
+    starter = read("starters/tumbling_crates_starter.py")
+    solution = read("solutions/tumbling_crates.py")
+    source, _ = in_step(starter, 2, "return project(pa, pb)")
+    source, _ = in_step(source, 4, "k = edge_normals(a, b, ra, rb, normal)")
+    source, _ = in_step(source, 5, step_code(solution, 5))
+    source, _ = in_step(source, 6, "a.omega += 0\ncentre_of(a, b, impulse * 0, ra, rb)")
+    guard = '\n\nif __name__ == "__main__":'
+    source = source.replace(guard, "\n\nfrom lesson11.physics2d import sat as project, effective_mass_inverse as "
+                                   "edge_normals, apply_impulse as centre_of  # noqa: E402" + guard)
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(source, encoding="utf-8")
+    env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYTHONPATH=ROOT)
+    proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--allow-edits", "--seed", "7",
+                           str(path)], cwd=ROOT, env=env, capture_output=True, text=True, timeout=600)
+    row = json.loads(proc.stdout)["labs"][0]
+    checks = {c["id"]: c["status"] for c in row["criteria"]}
+    assert all(checks[c] == "fail" for c in ("sat_axes", "resolve_k", "apply_impulse_spin")), checks
+    assert row["score"] <= 4 < row["max_score"], row["score"]   # the starter and step 5: loads, handout, runtime, 5
+
+
+def dedented(step, code):
+    """The solution with `code` at column 0 just above step `step`'s end marker (it runs at module level)."""
+    solution = read("solutions/tumbling_crates.py")
+    end = f"    # --- end of step {step} ---\n"
+    assert solution.count(end) == 1
+    source = solution.replace(end, code + "\n" + end)
+    return source, solution[:solution.index(end)].count("\n") + 1
+
+
+def test_a_handout_constant_changed_at_column_0_inside_a_step_region_fails_handout_unchanged():
+    """Attack report A2: `MAX_CRATES = 4` written at column 0 just above `# --- end of step 6 ---` runs at module
+    level; it was blanked with the region, so handout_unchanged passed with the handout's constant changed."""
+    source, line = dedented(6, "MAX_CRATES = 4\nRESTING_SPEED = 30")
+    starter = read("starters/tumbling_crates_starter.py")
+    comparison = handout.compare(source, starter)
+    assert not comparison.same
+    assert comparison.problems[0].startswith(f"line {line} `MAX_CRATES = 4`"), comparison.problems
+    assert handout.constant_edits(source, starter) is None          # no warning that puts the handout's line back
+    assert step_rules.scan_lab(source, lab_by_id("tumbling_crates")) == []   # handout_unchanged's, not a rule's
+
+
+@pytest.mark.parametrize("code, rule, steps", [
+    ("def sat(pa, pb):\n    return None", "outside", {2, 3}),              # a step function bound again
+    ("lesson_sat = World().sat", "reach", {6}),                             # the step rules still read it
+    ("import json", "outside", {2, 3, 4, 5, 6}),                            # a closed import at module level
+])
+def test_module_level_code_inside_a_step_region_is_code_outside_the_steps(code, rule, steps):
+    """What a region dedents to module level is judged as code outside the steps (and still as the step's)."""
+    lab = lab_by_id("tumbling_crates")
+    source, line = dedented(6, code)
+    found = step_rules.scan_lab(source, lab)
+    assert {b.step for b in found if (b.line, b.rule) == (line, rule)} == steps, [(b.line, b.rule, b.step)
+                                                                                   for b in found]
+    comparison = handout.compare(source, read("starters/tumbling_crates_starter.py"))
+    if code.startswith("import"):    # an added import binding a new name is allowed by the comparison, and listed
+        assert comparison.added_imports == [f"line {line}: {code}"]
+    else:
+        assert not comparison.same and f"line {line} " in comparison.problems[0], comparison.problems
+
+
+@pytest.mark.parametrize("code", [
+    '    note = """\nmulti-line text\nat column 0\n"""',                    # a string's lines at column 0
+    "    total = (1 +\n2)",                                                 # a bracket continued at column 0
+    "# a comment at column 0",
+    "def helper(x):\n    return x\nhelper(0)",                              # a def at the region's own indent
+])
+def test_a_step_s_own_lines_at_column_0_that_are_not_module_level_code_are_still_the_step(code):
+    """Controls: only a statement that starts at module level leaves the step; text at column 0 inside a string,
+    a bracket or a comment, or a def at the region's indent, stays the step's code."""
+    lab = lab_by_id("tumbling_crates")
+    solution = read("solutions/tumbling_crates.py")
+    if code.startswith("def "):
+        source, _ = in_step(solution, 6, code + "\n" + step_code(solution, 6))
+    else:
+        end = "    # --- end of step 6 ---\n"
+        source = solution.replace(end, code + "\n" + end)
+    compile(source, "lab.py", "exec")
+    assert handout.compare(source, read("starters/tumbling_crates_starter.py")).same
+    assert step_rules.scan_lab(source, lab) == []
+
+
+@pytest.mark.parametrize("code", [
+    "for lab in range(2):\n    panel = [lab]\nruntime = [w for w in panel]\nWorld = None",
+    "def helper(runtime, lab=2):\n    return runtime * lab\nkept = (lambda panel: panel)(1)\n"
+    "LabPanel = [make_world for make_world in (1, 2)]\n(runtime := 3)",
+])
+def test_a_local_named_like_the_lab_runtime_is_the_step_s_own(code):
+    """Attack report F1: a local named lab, panel, runtime or World (assigned, a parameter, a loop or comprehension
+    target) is the step's own; the rule "reach" is about the module's names."""
+    lab = lab_by_id("tumbling_crates")
+    solution = read(lab.solution)
+    source, _ = in_step(solution, 2, code + "\n" + step_code(solution, 2))
+    assert [(b.line, b.rule, b.what) for b in step_rules.scan_lab(source, lab)] == []
+
+
+def test_the_bullets_solution_with_a_local_runtime_is_not_flagged():
+    """The attacker's file (its step 5's last line through a local `runtime`): 7/15 before, "reaches runtime"."""
+    lab = lab_by_id("bullets")
+    solution = read(lab.solution)
+    lines = step_code(solution, 5).splitlines()
+    assert lines[-1] == "bullet.pos += bullet.vel * (dt - t)"
+    code = "\n".join(lines[:-1] + ["runtime = dt - t  # the part of the step still to run",
+                                   "bullet.pos += bullet.vel * runtime"])
+    source, _ = in_step(solution, 5, code)
+    assert step_rules.scan_lab(source, lab) == []
+
+
+@pytest.mark.parametrize("code", ["x = runtime", "def f(r=lab):\n    return r", "global panel\npanel = 1",
+                                  "class K:\n    def f(self):\n        return lab"])
+def test_the_module_s_runtime_or_panel_is_still_flagged(code):
+    """The module's `lab` read in a step (also as a default or in a method), or a name bound at module level."""
+    lab = lab_by_id("tumbling_crates")
+    source, first = in_step(read("solutions/tumbling_crates.py"), 2, code + "\nreturn None")
+    found = step_rules.scan_lab(source, lab)
+    assert any(b.rule == "reach" and b.step == 2 and first <= b.line for b in found), found
