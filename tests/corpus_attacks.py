@@ -62,6 +62,9 @@ Beyond the brief's list: attacks that reach the same answers around the step rul
                     grader's replay (references computed in the parent) stands between it and the points
   vacuous           the step is not written and the function does nothing the probe can see (resolve()
                     returns before any impulse): a check that skips what it cannot see would pass it
+  evade_handed      (attack report A1) the steps call a name the handout imports (project, draw_body, inside),
+                    which an import added at the end of the file binds to the library's function; or a new
+                    module-level name bound to World().sat; the rules once exempted every handed name
 
 The first round (merged in from tests/attack_corpus.py, names kept: <lab>_<kind>) adds kind
 
@@ -118,7 +121,7 @@ LISTED_KINDS = ("import", "world", "dunder", "forge", "rebind", "solution", "det
 MECHANISM_KINDS = ("line_breaks", "coding", "changed_inputs", "frame_read", "foreign_hook", "star_import",
                    "grader_stdout", "wrong_answer")   # issue 35
 EVASIONS = ("evade_alias", "evade_class", "evade_own_import", "evade_match", "evade_side_module", "forge_unflagged",
-            "vacuous")
+            "vacuous", "evade_handed")
 
 
 class Entry(NamedTuple):
@@ -1361,7 +1364,56 @@ def own_entries(lab):
 
 OWN = [entry for lab in LABS for entry in own_entries(lab)]
 
-ENTRIES = TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING + FIRST_ROUND + ISSUE35 + ISSUE39_JUDGE + OWN
+
+def _solution_step(lab, step):
+    module = LABS[lab]
+    with open(module.SOLUTION, encoding="utf-8") as handle:
+        return CorpusFiles(module.STARTER, module.SOLUTION, module.STEPS, {}, "").step_code(handle.read())[step]
+
+
+def _added_last(line):
+    """An edit that puts `line` after the last def, before the main guard (an import added at the end)."""
+    return ((MAIN_GUARD, "\n\n" + line + "  # noqa: E402\n" + MAIN_GUARD),)
+
+
+# attack report of 2026-11-28: a handed name rebound to the library (A1); a local named like the runtime (F1)
+ROUND2 = [
+    attack("tc_handed_names_library", "tumbling_crates", "evade_handed", {
+        2: "return project(pa, pb)",
+        4: "k = edge_normals(a, b, ra, rb, normal)",
+        6: "a.vel += impulse * a.inv_mass\nb.vel -= impulse * b.inv_mass\ncentre_of(a, b, impulse, ra, rb)"},
+        ["sat_axes", "resolve_k", "apply_impulse_spin"],
+        "steps 2, 4, 6 call project, edge_normals, centre_of, which an import added at the end binds to the "
+        "library's sat, effective_mass_inverse and apply_impulse", keeps_handout=False,
+        edits=_added_last("from lesson11.physics2d import sat as project, effective_mass_inverse as edge_normals, "
+                          "apply_impulse as centre_of")),
+    attack("tc_new_name_world_sat", "tumbling_crates", "evade_handed", {2: "return lesson_sat(pa, pb)"}, ["sat_axes"],
+           "step 2 calls lesson_sat, a module-level name added outside the steps as World().sat (the library's sat)",
+           keeps_handout=False, edits=_added_last("lesson_sat = World().sat")),
+    attack("ms_handed_names_library", "more_shapes", "evade_handed", {
+        2: "return draw_body(sides, radius)", 3: "return draw_contacts(points)", 4: "return draw_text(points, mass)"},
+        ["polygon_corners", "centroid", "inertia_sum"],
+        "steps 2-4 call the handed draw helpers, which an import added at the end binds to the library's "
+        "regular_polygon, polygon_centroid and polygon_inertia", keeps_handout=False,
+        edits=_added_last("from lesson11.physics2d import regular_polygon as draw_body, polygon_centroid as "
+                          "draw_contacts, polygon_inertia as draw_text")),
+    attack("br_handed_name_library", "ball_on_ramp", "evade_handed", {3: "return inside(center, radius, points)"},
+           ["inside_case"], "step 3 calls the handed inside(), which an import added at the end binds to the "
+                            "library's circle_polygon", keeps_handout=False,
+           edits=_added_last("from lesson11.physics2d import circle_polygon as inside")),
+    control("bu_control_local_runtime", "bullets", {5: _solution_step("bullets", 5).replace(
+        "bullet.pos += bullet.vel * (dt - t)",
+        "runtime = dt - t  # the part of the step still to run\nbullet.pos += bullet.vel * runtime")},
+        "step 5 names the rest of the step a local `runtime` (not the lab runtime)"),
+    control("tc_control_local_lab_panel", "tumbling_crates", {5: """
+        lab = mu * j
+        panel = (-lab, lab)
+        jt = max(panel[0], min(panel[1], jt))
+    """}, "step 5 clamps with locals named lab and panel (not the lab runtime or the solver panel)"),
+]
+
+ENTRIES = (TUMBLING + MORE_SHAPES + BALL_ON_RAMP + BULLETS + SLEEPING + FIRST_ROUND + ISSUE35 + ISSUE39_JUDGE + OWN
+           + ROUND2)
 BY_NAME = {entry.name: entry for entry in ENTRIES}
 assert len(BY_NAME) == len(ENTRIES), "duplicate entry names"
 BY_LAB = {lab: [entry for entry in ENTRIES if entry.lab == lab] for lab in LABS}
