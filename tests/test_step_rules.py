@@ -647,3 +647,19 @@ def test_the_module_s_runtime_or_panel_is_still_flagged(code):
     source, first = in_step(read("solutions/tumbling_crates.py"), 2, code + "\nreturn None")
     found = step_rules.scan_lab(source, lab)
     assert any(b.rule == "reach" and b.step == 2 and first <= b.line for b in found), found
+
+
+def test_a_constant_changed_at_column_0_in_a_step_region_fails_handout_unchanged_through_the_command_line(tmp_path):
+    """Attack report A2 as graded: the solution with `MAX_CRATES = 4` at column 0 above step 6's end marker passed
+    handout_unchanged (15/17, the scenes run with 4 crates); the check now names the line, and the scenes wait."""
+    source, line = dedented(6, "MAX_CRATES = 4")
+    path = tmp_path / "tumbling_crates.py"
+    path.write_text(source, encoding="utf-8")
+    env = dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYTHONPATH=ROOT)
+    proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--seed", "7", str(path)], cwd=ROOT,
+                          env=env, capture_output=True, text=True, timeout=600)
+    row = json.loads(proc.stdout)["labs"][0]
+    checks = {c["id"]: c for c in row["criteria"]}
+    assert checks["handout_unchanged"]["status"] == "fail"
+    assert f"line {line} `MAX_CRATES = 4` was added" in checks["handout_unchanged"]["message"]
+    assert checks["runs"]["status"] == "skip" and row["flags"] == []
