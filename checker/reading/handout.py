@@ -7,7 +7,8 @@ A lab's starter marks what the student writes with lines
     # --- end of step N ---
 
 `compare(submission, starter)` replaces the inside of every step region with a
-placeholder statement, parses both files and compares their syntax trees, so
+placeholder statement (but for lines a region dedents to module level: code
+outside the steps), parses both files and compares their syntax trees, so
 formatting, comments, blank lines and docstrings do not matter but any change
 to the code the student was handed does (gravity, a constant, the scene, the
 World's settings, the lab-runtime lines, the final print); an added print(...)

@@ -8,14 +8,17 @@ and classes only (not `statistics.sys`, not operator.attrgetter or
 functools.update_wrapper, which read attributes named by a string). The grader reads each step's
 syntax tree (never running it) and flags what reaches around the exercise:
 
-  import    an import inside a step, or a name the file imported itself (other than from FREE_MODULES)
+  import    an import inside a step, or a name the file imported itself (other than from FREE_MODULES), or a
+            name the handout imports that the file binds again (`from lesson11.physics2d import sat as
+            project`, `project = ...`, a `global project` in a function)
   dunder    a dunder name or attribute (__import__, __globals__, __class__, ...), also as a
             parameter, keyword or def name, or read by a match pattern (`case object(__globals__=g)`)
   builtin   exec, eval, compile, open, getattr, setattr, delattr, globals, vars, locals,
             __import__, breakpoint, input, memoryview, and type() with three arguments
   frame     a frame or traceback attribute (f_back, f_locals, gi_frame, tb_frame, ...)
   reach     World (or make_world and BulletWorld, which hand one out: `type(make_world(rng))`),
-            the lab runtime (`lab`) or the panel (`LabPanel`)
+            the lab runtime (`lab`) or the panel (`LabPanel`), where the name is the module's (a step's
+            own local `runtime` is not)
   module    a module other than FREE_MODULES, or an attribute of one (pygame.Vector2 aside); a free
             module's module-valued or string-named attribute; functools, operator, fractions or
             statistics as a value (their attributes reach further)
@@ -28,6 +31,11 @@ syntax tree (never running it) and flags what reaches around the exercise:
             {step: names}): called or taken by its imported name, or as an attribute
             (`world.sat(...)`, `f = Circle(r).inertia`, `case object(sat=f)`), unless the lab allows it
             (STEP_ALLOWED: {step: names})
+
+A module-level name the file binds outside the steps to code that reaches what a
+step may not (World, the runtime, the library, a module, a name the file imported or
+rebound: `lesson_sat = World().sat`, a helper def calling one) is flagged, with that
+rule, in the step that reads it.
 
 A name counts as the file's own only where Python would find the file's own
 binding (a parameter, a local, a module-level def or assignment): the scan
@@ -44,9 +52,12 @@ that uses exec, eval, compile, globals, vars, setattr, getattr, __import__,
 a dunder name or `sys.modules` (which can rebind any name). Under every step:
 `from X import *` anywhere (it can rebind every name a step reads), an added
 import of a closed module (the checker, the library, solutions, starters,
-the interpreter's machinery) and an import of a module that lies beside the
-submission (a .py file or package in its folder, which the handout does not
-import).
+the interpreter's machinery; at the top or in a def; under a handout name too
+unless it binds it exactly as the handout does) and an import of a module that
+lies beside the submission (a .py file or package in its folder, which the
+handout does not import). Lines a step region dedents to module level
+(handout.module_level_starts) are read both as the step's code and as code
+outside the steps.
 
 These forbid reaching around the exercise, not ways of writing it: every
 correct completion in the corpora passes (tests/test_step_rules.py).
