@@ -471,11 +471,11 @@ REBOUND = [   # (added outside the steps, step 2's code, the rule flagging step 
     ("def _bind():\n    global project\n    project = World().sat\n\n\n_bind()", "return project(pa, pb)", "import"),
     ("def _bind():\n    global project\n    from lesson11.physics2d import sat as project\n\n\n_bind()",
      "return project(pa, pb)", "import"),
-    ("lesson_sat = World().sat", "return lesson_sat(pa, pb)", "library"),  # a new name (the PoC's variant)
-    ("engine = World\nlesson_sat = engine().sat", "return lesson_sat(pa, pb)", "library"),   # through another name
+    ("lesson_sat = World().sat", "return lesson_sat(pa, pb)", "reach"),  # a new name (the PoC's variant)
+    ("engine = World\nlesson_sat = engine().sat", "return lesson_sat(pa, pb)", "reach"),   # through another name
     ("lesson_sat = lab", "return lesson_sat.something(pa, pb)", "reach"),
     ("def helper(pa, pb):\n    return World().manifolds()", "return helper(pa, pb)", "reach"),   # a helper def
-    ("def helper(pa, pb):\n    return solver(pa, pb)\n\n\nsolver = World().sat", "return helper(pa, pb)", "library"),
+    ("def helper(pa, pb):\n    return solver(pa, pb)\n\n\nsolver = Body.sat", "return helper(pa, pb)", "library"),
     ("if True:\n    from statistics import sys as system", "return system.modules['x']", "import"),
     ("shortcut = random._os", "return shortcut.sys.modules", "module"),
 ]
@@ -663,3 +663,14 @@ def test_a_constant_changed_at_column_0_in_a_step_region_fails_handout_unchanged
     assert checks["handout_unchanged"]["status"] == "fail"
     assert f"line {line} `MAX_CRATES = 4` was added" in checks["handout_unchanged"]["message"]
     assert checks["runs"]["status"] == "skip" and row["flags"] == []
+
+
+def test_a_name_bound_to_a_library_function_is_flagged_only_in_the_steps_that_ask_for_it():
+    """What a module-level name reaches is judged per step, as in the step itself: the library's sat under a new
+    name fails step 2 (which asks for sat), not step 6 (which asks for apply_impulse)."""
+    lab = lab_by_id("tumbling_crates")
+    solution = read("solutions/tumbling_crates.py")
+    source, first = outside_and_step("overlap_of = Body.sat", 2, "return overlap_of(pa, pb)")
+    assert [(b.step, b.line, b.rule) for b in step_rules.scan_lab(source, lab)] == [(2, first, "library")]
+    source, _ = outside_and_step("overlap_of = Body.sat", 6, "unused = overlap_of\n" + step_code(solution, 6))
+    assert step_rules.scan_lab(source, lab) == []

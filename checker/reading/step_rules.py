@@ -386,10 +386,14 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
     for name, binding in reversed(bindings):    # the last binding, or one that is not free
         if name not in imported or not _free(binding[0]):
             imported[name] = binding
-    handout_imports = _imports(ast.parse(starter)) if starter else dict(imported)
-    # a handout name is the handout's only while every binding of it is the handout's import
-    rebound = {name for name, binding in handout_imports.items()
-               if name in module_bound or any(n == name and b != binding for n, b in bindings)} if starter else set()
+    handout_imports, rebound = dict(imported), set()
+    if starter:
+        # a handout name is the handout's only while the file binds it only as the handout does
+        handout_tree = ast.parse(starter)
+        handout_imports, handout_bindings = _imports(handout_tree), set(_module_imports(handout_tree))
+        handout_bound = _name_origins(handout_tree)[1]
+        rebound = {name for name in handout_imports if name in module_bound - handout_bound
+                   or any(n == name and (n, b) not in handout_bindings for n, b in bindings)}
     handed = set(handout_imports) - rebound
     aliases = _free_aliases(tree)
     found = {}
@@ -403,65 +407,76 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
             found[(line, rule, step)] = Breach(step, line, rule, what, lines[line - 1].strip())
 
     def reaching(node):
-        """(rule, what) when `node`, outside the steps, reaches what a step may not (World, the lab runtime, the
-        library, a module, a name imported by the file or rebound), else None."""
+        """(rule, the library name or None, what) when `node`, outside the steps, reaches what a step may not
+        (World, the lab runtime, the library, a module, a name imported by the file or rebound), else None."""
         if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
             where = origins.get(id(node), "free")
             binding = imported.get(node.id, ("", False))
             if node.id in reach and where != "local":
-                return "reach", f"reaches {node.id}"
+                return "reach", None, f"reaches {node.id}"
             if node.id in every_library and where in ("import", "free"):
-                return "library", f"uses the library's {node.id}"
+                return "library", node.id, f"uses the library's {node.id}"
             if node.id in rebound and where in ("code", "import"):
-                return "import", f"uses {node.id}, which the file binds again (the handout imports it)"
-            if where == "code" and node.id in tainted:
-                return tainted[node.id]
+                return "import", None, f"uses {node.id}, which the file binds again (the handout imports it)"
             if where == "import" and node.id not in handed and not _free(binding[0]):
-                return "import", f"uses {node.id}, which the file imports itself"
+                return "import", None, f"uses {node.id}, which the file imports itself"
             if where == "import" and binding[1] and id(node) not in attribute_bases \
                     and binding[0].split(".")[0] not in VALUE_SAFE:
-                return "module", f"uses the module {node.id} itself"
+                return "module", None, f"uses the module {node.id} itself"
         elif isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load):
             if node.attr in every_library:
-                return "library", f"uses the library's {node.attr} (as .{node.attr})"
+                return "library", node.attr, f"uses the library's {node.attr} (as .{node.attr})"
             base = node.value.id if isinstance(node.value, ast.Name) else None
             if origins.get(id(node.value)) == "import" and imported.get(base, ("", False))[1]:
                 module = imported[base][0]
                 if module in FREE_MODULES and node.attr not in FREE_NAMES[module] or \
                         module not in FREE_MODULES and node.attr not in FREE_ATTRIBUTES.get(module.split(".")[0], ()):
-                    return "module", f"reaches into the module {base} (.{node.attr})"
+                    return "module", None, f"reaches into the module {base} (.{node.attr})"
         elif isinstance(node, (ast.Import, ast.ImportFrom)) and not _step_import_is_free(node):
-            return "import", f"imports {', '.join(alias.name for alias in node.names)}"
+            return "import", None, f"imports {', '.join(alias.name for alias in node.names)}"
         return None
 
     # names the file binds at module level outside the steps to code that reaches what a step may not: a step
-    # that reads one reaches it too (`lesson_sat = World().sat`, a helper def calling the library)
+    # that reads one reaches it too (`lesson_sat = World().sat`, a helper def calling the library). Each
+    # top-level statement once: what its own lines reach (if it is not the handout's, or where it reads a
+    # rebound name), the names it binds, the module-level names it reads; then reaching spreads along reads.
     every_library = {name for names in library.values() for name in names}
-    tainted = {}
     changed = changed_statements(source, starter) if starter else set()
     changed = {node.lineno for node in tree.body} if changed is None else changed
-    while True:
-        grew = False
-        for statement in tree.body:
-            names = {_bound_name(n) for n in ast.walk(statement) if origins.get(id(n)) == "code"}
-            names -= set(tainted) | rebound
-            if not names:
+    statement_hits, binds_of, readers = [], [], {}
+    for index, statement in enumerate(tree.body):
+        hits = {}
+        for node in ast.walk(statement):
+            line = getattr(node, "lineno", None)
+            if line is None or in_step(line):
                 continue
-            hit = None
-            for node in ast.walk(statement):
-                line = getattr(node, "lineno", None)
-                if line is None or in_step(line):
-                    continue
-                hit = reaching(node)
-                if hit and (statement.lineno in changed or isinstance(node, ast.Name)
-                            and node.id in set(tainted) | rebound):
-                    break
-                hit = None
-            if hit:
-                tainted.update({name: hit for name in names})
-                grew = True
-        if not grew:
-            break
+            if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and origins.get(id(node)) == "code":
+                readers.setdefault(node.id, set()).add(index)
+            hit = reaching(node)
+            if hit and (statement.lineno in changed or isinstance(node, ast.Name) and node.id in rebound):
+                hits.setdefault(hit[:2], hit[2])          # one of each (rule, library name): a bounded set
+        statement_hits.append(hits)
+        binds_of.append({_bound_name(n) for n in ast.walk(statement) if origins.get(id(n)) == "code"} - rebound)
+    tainted = {}    # name -> {(rule, library name): what}
+    queue = [index for index, hits in enumerate(statement_hits) if hits]
+    while queue:
+        index = queue.pop()
+        for name in binds_of[index]:
+            new = {key: what for key, what in statement_hits[index].items() if key not in tainted.get(name, {})}
+            if new:
+                tainted.setdefault(name, {}).update(new)
+                for reader in readers.get(name, ()):
+                    if not new.keys() <= statement_hits[reader].keys():
+                        statement_hits[reader] = {**new, **statement_hits[reader]}
+                        queue.append(reader)
+
+    def taint_in(name, step):
+        """(rule, what) of what `name` reaches that step `step` may not use, or None."""
+        order = {"reach": 0, "library": 1, "import": 2, "module": 3}
+        for (rule, used), what in sorted(tainted.get(name, {}).items(), key=lambda item: order[item[0][0]]):
+            if rule != "library" or used in library.get(step, ()) and used not in allowed.get(step, ()):
+                return rule, what
+        return None
 
     top = _top_level_names(tree)
     for node in ast.walk(tree):
@@ -499,9 +514,9 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
                 flag(node, "module", f"uses the module {node.id} itself")
             elif node.id in rebound and where in ("code", "import"):
                 flag(node, "import", f"uses {node.id}, which the file binds again (the handout imports it)")
-            elif where == "code" and node.id in tainted:
-                flag(node, tainted[node.id][0], f"uses {node.id}, bound outside the steps where it "
-                                                f"{tainted[node.id][1]}")
+            elif where == "code" and taint_in(node.id, step):
+                rule, what = taint_in(node.id, step)
+                flag(node, rule, f"uses {node.id}, bound outside the steps where it {what}")
             elif where == "import" and node.id in imported and node.id not in handed \
                     and not _free(imported[node.id][0]):
                 flag(node, "import", f"uses {node.id}, which the file imports itself")
