@@ -674,3 +674,12 @@ def test_a_name_bound_to_a_library_function_is_flagged_only_in_the_steps_that_as
     assert [(b.step, b.line, b.rule) for b in step_rules.scan_lab(source, lab)] == [(2, first, "library")]
     source, _ = outside_and_step("overlap_of = Body.sat", 6, "unused = overlap_of\n" + step_code(solution, 6))
     assert step_rules.scan_lab(source, lab) == []
+
+
+def test_an_expression_too_deep_to_compare_outside_the_steps_does_not_stop_the_scan():
+    """A line outside the steps that compiles but is too deep for the handout comparison's syntax-tree dump: the
+    rules still read the file (every top-level statement counts as changed) and find the step's breach."""
+    lab = lab_by_id("tumbling_crates")
+    source, first = outside_and_step("x = " + " + ".join(["1"] * 2500), 2, "return World().sat(pa, pb)")
+    compile(source, "deep.py", "exec")
+    assert (2, first, "reach") in [(b.step, b.line, b.rule) for b in step_rules.scan_lab(source, lab)]

@@ -441,7 +441,10 @@ def scan(source, library=None, starter=None, reach=REACH, allowed=None, folder=N
     # top-level statement once: what its own lines reach (if it is not the handout's, or where it reads a
     # rebound name), the names it binds, the module-level names it reads; then reaching spreads along reads.
     every_library = {name for names in library.values() for name in names}
-    changed = changed_statements(source, starter) if starter else set()
+    try:
+        changed = changed_statements(source, starter) if starter else set()
+    except (ValueError, RecursionError, MemoryError):   # too deep to compare: every statement counts as changed
+        changed = None
     changed = {node.lineno for node in tree.body} if changed is None else changed
     statement_hits, binds_of, readers = [], [], {}
     for index, statement in enumerate(tree.body):
