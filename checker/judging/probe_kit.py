@@ -115,17 +115,23 @@ def _clear_winner(pa, pb, margin=0.5):
 
 
 def drawn_sat_pairs(rng, count=DRAWN_PAIRS):
-    """`count` pairs drawn for this grading run, overlapping or apart, each with one right answer.
+    """`count` pairs drawn for this grading run, each with one right answer: overlapping and apart in turn (the
+    first overlaps), so a table of the fixed pairs' answers with one default for the rest (None, say) is wrong on
+    one of them at every seed.
 
     An apart pair shows a gap on some axes only, like the fixed apart pairs: on a pair apart on every axis a
     loop that keeps no axis (`continue` on a gap) raises, and its report would depend on the run's seed.
     """
     pairs = []
     while len(pairs) < count:
+        overlapping = len(pairs) % 2 == 0
         pa = random_shape(rng, (0, 0))
         pb = random_shape(rng, Vector2(rng.uniform(10, 80), 0).rotate(rng.uniform(0, 360)))
-        if _clear_winner(pa, pb) and any(lesson > 0 for _, lesson, _ in axis_overlaps(pa, pb)):
-            pairs.append((f"pair {len(pairs) + 1} drawn for this run", pa, pb))
+        overlaps = [lesson for _, lesson, _ in axis_overlaps(pa, pb)]
+        if any(lesson > 0 for lesson in overlaps) and all(lesson > 0 for lesson in overlaps) == overlapping \
+                and _clear_winner(pa, pb):
+            pairs.append((f"a pair drawn for this run, {'overlapping' if overlapping else 'apart'} "
+                          f"({len(pairs) + 1} of {count})", pa, pb))
     return pairs
 
 

@@ -11,7 +11,8 @@ checks.py's declared steps compare and name.
                    points, spinning bodies
     resolve        (steps 4, 5) the same kinds of pairs, sliding both ways, the Coulomb clamp active and not,
                    impacts above and below the 30 px/s resting cutoff; resolve() runs with the library's
-                   apply_impulse, recording each impulse, so steps 4 and 5 are graded before step 6 is written.
+                   apply_impulse, recording each impulse, so steps 4 and 5 are graded before step 6 is written;
+                   and two contacts drawn per run, one with friction clamped, one not
 
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
@@ -276,6 +277,66 @@ def resolve_cases():
     ]
 
 
+def drawn_resolve_cases(rng, count=2):
+    """`count` contacts drawn for this run, friction clamped and not in turn (the first clamped), so a table of
+    the fixed contacts' answers with one default for the rest (the unclamped jt, say) is wrong on one of them.
+
+    A crate B lands on a crate A (static one time in four) at a contact on A's top face, all of it turned by a
+    drawn angle; |the impulse that stops the slip| is over 1.5 × mu j (clamped) or under 0.6 × mu j (not): no
+    contact near the clamp's edge.
+    """
+    cases = []
+    while len(cases) < count:
+        clamped = len(cases) % 2 == 0
+        turn = rng.uniform(0, 360)
+        wa, ha, wb, hb = rng.uniform(60, 160), rng.uniform(20, 50), rng.uniform(24, 70), rng.uniform(20, 60)
+        offset = rng.uniform(-0.3, 0.3) * (wa - wb)
+        point = Vector2(offset + rng.uniform(-0.4, 0.4) * wb, -ha / 2)
+        slip = rng.choice((-1, 1)) * (rng.uniform(150, 400) if clamped else rng.uniform(3, 15))
+        spin = 1.0 if clamped else 0.05
+
+        def placed(v):
+            return Vector2(v).rotate(turn)
+
+        a = crate(wa, ha, (0, 0), 0 if rng.random() < 0.25 else rng.uniform(1.0, 8.0), angle=math.radians(turn),
+                  vel=placed((rng.uniform(-20, 20), rng.uniform(-20, 0))), omega=rng.uniform(-spin, spin),
+                  friction=rng.uniform(0.3, 0.9), restitution=rng.uniform(0.0, 0.5))
+        if a.mass == 0:
+            a.vel, a.omega = Vector2(), 0.0
+        b = crate(wb, hb, placed((offset, -(ha + hb) / 2 + 1)), rng.uniform(0.3, 3.0), angle=math.radians(turn),
+                  vel=placed((slip, rng.uniform(60, 250))), omega=rng.uniform(-spin, spin),
+                  friction=rng.uniform(0.3, 0.9), restitution=rng.uniform(0.0, 0.5))
+        ratios = [_stop_over_bound(a, b, placed((0, -1)), placed(point), spin) for spin in (True, False)]
+        if None not in ratios and (min(ratios) > 1.5 if clamped else max(ratios) < 0.6):
+            cases.append((f"a contact drawn for this run, friction {'clamped' if clamped else 'not clamped'} "
+                          f"({len(cases) + 1} of {count})", a, b, placed((0, -1)), placed(point)))
+    return cases
+
+
+def _stop_over_bound(a, b, normal, point, spin=True):
+    """|the impulse that stops the slip| / (mu j) after the lesson's normal impulse (spin=False: the handout's k,
+    without step 4's spin terms, as a step 5 written before step 4 sees it), or None when the contact does not
+    close or hardly slides: only to keep drawn contacts clear of the clamp's edge (the grader computes the
+    answers, _resolve_case)."""
+    a, b = twin(a), twin(b)
+    ra, rb = point - a.pos, point - b.pos
+    vn = relative_velocity(a, b, ra, rb).dot(normal)
+    if vn >= -1.0:
+        return None
+    e = min(a.restitution, b.restitution) if vn < -RESTING_SPEED else 0.0
+    ran, rbn = cross(ra, normal), cross(rb, normal)
+    j = -(1 + e) * vn / (a.inv_mass + b.inv_mass + spin * (ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia))
+    lesson_apply_impulse(a, b, normal * j, ra, rb)
+    rel = relative_velocity(a, b, ra, rb)
+    tangent = rel - normal * rel.dot(normal)
+    if tangent.length() < 2.0:
+        return None
+    t = tangent.normalize()
+    rat, rbt = cross(ra, t), cross(rb, t)
+    kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+    return abs(rel.dot(t)) / kt / (math.sqrt(a.friction * b.friction) * j)
+
+
 @reference
 def _k_forms(a, b, ra, rb, n):
     """The effective mass k of the lesson, and the k's of plausible mistakes (to name what is missing)."""
@@ -316,7 +377,7 @@ def probe_resolve(module, lab_path):
     resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
     own = module.apply_impulse
     try:
-        for name, a, b, normal, point in resolve_cases():
+        for name, a, b, normal, point in resolve_cases() + drawn_resolve_cases(run_rng(module, "resolve")):
             calls = []
 
             def stand_in(a_, b_, impulse, ra_, rb_, calls=calls):
