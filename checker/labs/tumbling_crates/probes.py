@@ -26,7 +26,7 @@ from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
 from checker.judging.probe_kit import (_plain, drawn_sat_pairs, judging, reference, reference_sat, sat_answer,
                                        sat_pairs, twin)
-from checker.judging.probe_kit import changed_vectors, with_reference_steps
+from checker.judging.probe_kit import changed_vectors, stop_over_bound, with_reference_steps
 from checker.judging.probe_kit import axis_overlaps, box, ngon   # noqa: F401 (the checks and the corpora read them here)
 from checker.judging.tape import run_rng
 
@@ -306,35 +306,11 @@ def drawn_resolve_cases(rng, count=2):
         b = crate(wb, hb, placed((offset, -(ha + hb) / 2 + 1)), rng.uniform(0.3, 3.0), angle=math.radians(turn),
                   vel=placed((slip, rng.uniform(60, 250))), omega=rng.uniform(-spin, spin),
                   friction=rng.uniform(0.3, 0.9), restitution=rng.uniform(0.0, 0.5))
-        ratios = [_stop_over_bound(a, b, placed((0, -1)), placed(point), spin) for spin in (True, False)]
+        ratios = [stop_over_bound(a, b, placed((0, -1)), placed(point), RESTING_SPEED, spin) for spin in (True, False)]
         if None not in ratios and (min(ratios) > 1.5 if clamped else max(ratios) < 0.6):
             cases.append((f"a contact drawn for this run, friction {'clamped' if clamped else 'not clamped'} "
                           f"({len(cases) + 1} of {count})", a, b, placed((0, -1)), placed(point)))
     return cases
-
-
-def _stop_over_bound(a, b, normal, point, spin=True):
-    """|the impulse that stops the slip| / (mu j) after the lesson's normal impulse (spin=False: the handout's k,
-    without step 4's spin terms, as a step 5 written before step 4 sees it), or None when the contact does not
-    close or hardly slides: only to keep drawn contacts clear of the clamp's edge (the grader computes the
-    answers, _resolve_case)."""
-    a, b = twin(a), twin(b)
-    ra, rb = point - a.pos, point - b.pos
-    vn = relative_velocity(a, b, ra, rb).dot(normal)
-    if vn >= -1.0:
-        return None
-    e = min(a.restitution, b.restitution) if vn < -RESTING_SPEED else 0.0
-    ran, rbn = cross(ra, normal), cross(rb, normal)
-    j = -(1 + e) * vn / (a.inv_mass + b.inv_mass + spin * (ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia))
-    lesson_apply_impulse(a, b, normal * j, ra, rb)
-    rel = relative_velocity(a, b, ra, rb)
-    tangent = rel - normal * rel.dot(normal)
-    if tangent.length() < 2.0:
-        return None
-    t = tangent.normalize()
-    rat, rbt = cross(ra, t), cross(rb, t)
-    kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
-    return abs(rel.dot(t)) / kt / (math.sqrt(a.friction * b.friction) * j)
 
 
 @reference
