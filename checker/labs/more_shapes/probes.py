@@ -533,10 +533,17 @@ BODY_ITEMS = (
 SIDES = {"triangle": 3, "pentagon": 5, "hexagon": 6}
 
 
+def drawn_body_items(rng):
+    """BODY_ITEMS with their sizes scaled by one factor drawn for this run (0.7-1.4) and their place drawn."""
+    scale, pos = rng.uniform(0.7, 1.4), [rng.uniform(50, 750), rng.uniform(50, 550)]
+    return [dict(item, pos=list(pos), **{key: round(item[key] * scale, 1) for key in ("size", "w", "h") if key in item})
+            for item in BODY_ITEMS]
+
+
 def probe_bodies(module, lab_path):
     """build() for each kind: the body's mass, inertia, corners' centroid and the analytic inertia (None for a house)."""
     cases = []
-    for item in BODY_ITEMS:
+    for item in drawn_body_items(run_rng(module, "bodies")):
         body = module.build(dict(item))
         local = [Vector2(p) for p in body.local]
         cases.append({"kind": item["kind"], "item": item, "mass": body.mass, "inertia": body.inertia,
