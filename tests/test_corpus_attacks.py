@@ -243,6 +243,27 @@ def test_each_entry_gets_its_verdict(mode, entry, graded):
             f"(the same file without the attack)\n{_show(row)}")
 
 
+# 102, 251: every pair Tumbling Crates drew was apart; 4, 7: every path Bullets drew missed (the report's seeds)
+TABLE_SEEDS = (1, 2, 3, 4, 5, 7, 102, 251)
+
+
+@pytest.mark.parametrize("entry", [entry for entry in corpus.ENTRIES if entry.kind == "table"], ids=lambda e: e.name)
+def test_a_table_of_the_fixed_answers_fails_its_step_at_every_seed(entry, tmp_path):
+    """The table attacks, a default right for one kind of answer included (None for a pair apart, the placeholder
+    where it happens to be right), fail their target checks at each of TABLE_SEEDS: the inputs each run draws hold
+    every kind of answer. In-process, as tests/test_probe_tape.py records and replays a probe (no step rules, no
+    scenes); the CLI run above grades each entry once, at a fresh seed."""
+    from test_probe_tape import function_results, lab_by_id, recorded
+    lab = lab_by_id(entry.lab)
+    path = corpus.write(tmp_path / "files", [entry])[entry.name]
+    passed = []
+    for seed in TABLE_SEEDS:
+        settings, result, source = recorded(lab, path, seed, tmp_path)
+        statuses, _ = function_results(lab, path, source, settings, result)
+        passed += [(seed, cid) for cid in entry.target if statuses.get(cid, ("missing",))[0] == "pass"]
+    assert not passed, f"{entry.name} ({entry.why}) passes (seed, check): {passed}"
+
+
 def test_without_the_step_rules_the_replay_still_fails_tables_and_forgery(tmp_path, monkeypatch, capsys):
     """(Was tests/test_attack_corpus.py's.) In-process, the step rules turned off: the attacks that need no
     forbidden construct in a step (the tables) or that work on the child (the forgeries) still fail on the

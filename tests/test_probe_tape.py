@@ -89,6 +89,30 @@ def test_a_tape_made_for_other_inputs_does_not_fit(lab_id, tmp_path):
     assert all(entry["ok"] for entry in same["functions"].values())
 
 
+@pytest.mark.parametrize("lab_id", [lab.id for lab in labs.LABS])
+def test_every_probe_gives_inputs_at_one_seed_it_never_gives_at_another(lab_id, tmp_path):
+    """Each probe of the lab's PROBES calls the lab's functions, at run seed 2, on some arguments it never passes
+    them at seed 1 (the tapes' argument digests): inputs drawn per run, which a table keyed on the probe's fixed
+    inputs cannot answer. A probe whose function takes nothing worth drawing is named in the lab's probes.py,
+    NOT_DRAWN = {probe name: why}. (That the drawn inputs hold each kind of answer is shown per lab by the table
+    attacks of tests/corpus_attacks.py, graded at several seeds in tests/test_corpus_attacks.py.)"""
+    import importlib
+    lab = lab_by_id(lab_id)
+    probes = importlib.import_module(lab.probes)
+    exempt = getattr(probes, "NOT_DRAWN", {})
+    assert set(exempt) <= set(probes.PROBES) and all(isinstance(why, str) and why.strip() for why in exempt.values())
+    path = os.path.join(ROOT, "solutions", f"{lab_id}.py")
+    calls = {}
+    for seed in (1, 2):
+        _, result, _ = recorded(lab, path, seed, tmp_path)
+        calls[seed] = {name: {entry["args"] for entry in tape.get("tape", []) if "args" in entry}
+                       for name, tape in result["tapes"].items()}
+    fixed = [name for name in probes.PROBES if name not in exempt and not calls[2].get(name, set()) - calls[1].get(
+        name, set())]
+    assert not fixed, (f"{lab_id}: probes {fixed} call the same arguments at every seed: a table of their fixed inputs' "
+                       "answers passes them (draw inputs with tape.run_rng, or name the probe in NOT_DRAWN with why)")
+
+
 def test_a_forged_argument_or_an_extra_call_is_an_error_not_data(tmp_path):
     lab = lab_by_id("tumbling_crates")
     path = os.path.join(ROOT, "solutions", "tumbling_crates.py")
