@@ -450,15 +450,17 @@ CONTACT = Step(
 
 # ---------------------------------------------------------------- step 7: friction in resolve
 
+def on_ramp(vel, omega, friction=0.6):
+    """(the ramp, a 20 px ball resting on its top face with this motion, the normal, the contact point)."""
+    centre = Vector2(230, 380) + UP * (12 + 20)
+    return (crate(420, 24, (230, 380), 0, angle=math.radians(RAMP_ANGLE)),
+            ball(20, centre, vel=vel, omega=omega, friction=friction), UP, centre - UP * 20)
+
+
 def resolve_cases(module):
     """{case, a, b: the bodies' descriptions, normal: unit A→B, point: the contact, resting: the handout's cutoff}:
     each a contact resolve() is called on. The ramp and the floor are A (the world lists static bodies first), so
     the normal points from them into the ball; a ball hitting a crate is A."""
-    centre, ramp = Vector2(230, 380) + UP * (12 + 20), crate(420, 24, (230, 380), 0, angle=math.radians(RAMP_ANGLE))
-
-    def on_ramp(vel, omega, friction=0.6):
-        return ramp, ball(20, centre, vel=vel, omega=omega, friction=friction), UP, centre - UP * 20
-
     resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
     return [{"case": name, "a": a, "b": b, "normal": list(normal), "point": list(point),
              "resting": resting} for name, (a, b, normal, point) in (
@@ -472,10 +474,10 @@ def resolve_cases(module):
          (ball(20, (575, 530), vel=(250, 30), omega=4.0, restitution=0.3),
           crate(30, 80, (610, 520), 2.4, vel=(0, 10), omega=0.2, restitution=0.3), Vector2(1, 0), Vector2(595, 530))),
         ("a ball on a frictionless ramp (mu = 0)", on_ramp(SLOPE * 120 - UP * 45, 0.0, friction=0.0)))
-        + drawn_contacts(run_rng(module, "resolve"), on_ramp, resting)]
+        + drawn_contacts(run_rng(module, "resolve"), resting)]
 
 
-def drawn_contacts(rng, on_ramp, resting):
+def drawn_contacts(rng, resting=RESTING_SPEED):
     """Two balls landing on the ramp, drawn for this run: one sliding fast (friction clamped), one slipping a little
     (not clamped), so a table of the fixed contacts' answers with one default for the rest (no clamp, say) is
     wrong on one of them. |the impulse that stops the slip| is over 1.5 mu j or under 0.6 mu j: clear of the
