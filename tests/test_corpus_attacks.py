@@ -23,7 +23,7 @@ caught only by the inputs the checker draws per run; the checker draws them
 today, so those entries are expected to fail like the others (no xfail).
 A last test turns the step rules off (in-process) and grades the tables and
 forgeries: the grader's own replay and drawn inputs still fail them.
-Grading (-n 0, root mode): 193 files (171 entries, 22 honest files), most stopping after their probe.
+Grading (-n 0, root mode): 218 files (193 entries, 25 honest files), most stopping after their probe.
 """
 import json
 import os
