@@ -303,6 +303,68 @@ TABLES = {"tumbling_crates": _sat_table(), "more_shapes": _corner_table(), "ball
           "bullets": _toi_table(), "sleeping_crates": _timer_table()}
 
 
+# Tables whose default is right for one kind of answer (the attack report of 2026-11-28, holes 1, 2, 4 and 5): the
+# fixed cases from the table, the placeholder (or None) for the rest. Only a run that draws each kind of answer
+# catches them, at every seed (tests/test_corpus_attacks.py grades them at several seeds).
+
+def _axes_table():
+    """More Shapes' separating_axes() for every fixed pair its probes call it on (sat() calls it too)."""
+    try:
+        from checker.judging.probe_kit import sat_pairs
+        from checker.labs.more_shapes.probes import axis_pairs, distinct_directions, edge_normals
+        table = {}
+        for _, pa, pb in axis_pairs() + sat_pairs():
+            for first, second in ((pa, pb), (pb, pa)):
+                table[_points_key(list(first) + list(second))] = \
+                    [(axis.x, axis.y) for axis in distinct_directions(edge_normals(first) + edge_normals(second))]
+        return table
+    except (ImportError, AttributeError, TypeError, ValueError):
+        return {}
+
+
+def _out_of_reach():
+    """Bullets' fixed time_of_impact() cases the broad test skips: (bullet x, y, vx, crate x), rounded."""
+    try:
+        from checker.labs.bullets.probes import impact_cases
+        return {(round(c["bullet"].pos.x), round(c["bullet"].pos.y), round(c["bullet"].vel.x), round(c["other"].pos.x))
+                for c in impact_cases() if not c["needs_exact"]}
+    except (ImportError, AttributeError, TypeError, ValueError, KeyError):
+        return set()
+
+
+def _resolve_tables():
+    """Tumbling Crates' fixed resolve() contacts, keyed (A's mass, B's mass, point x, point y): ({key: the lesson's
+    k}, {key: the lesson's clamped friction impulse jt})."""
+    try:
+        import math
+        from lesson11.physics2d import apply_impulse, cross, relative_velocity
+        from checker.labs.tumbling_crates.probes import RESTING_SPEED, resolve_cases, twin
+        ks, jts = {}, {}
+        for _, a, b, n, point in resolve_cases():
+            a, b = twin(a), twin(b)
+            key = _round_key((a.mass, b.mass, point.x, point.y), 6)
+            ra, rb = point - a.pos, point - b.pos
+            vn = relative_velocity(a, b, ra, rb).dot(n)
+            ran, rbn = cross(ra, n), cross(rb, n)
+            ks[key] = k = a.inv_mass + b.inv_mass + ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia
+            j = -(1 + (min(a.restitution, b.restitution) if vn < -RESTING_SPEED else 0.0)) * vn / k
+            apply_impulse(a, b, n * j, ra, rb)
+            rel = relative_velocity(a, b, ra, rb)
+            t = (rel - n * rel.dot(n)).normalize()
+            rat, rbt = cross(ra, t), cross(rb, t)
+            stop = -rel.dot(t) / (a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia)
+            bound = math.sqrt(a.friction * b.friction) * j
+            jts[key] = max(-bound, min(bound, stop))
+        return ks, jts
+    except (ImportError, AttributeError, TypeError, ValueError):
+        return {}, {}
+
+
+DEFAULT_TABLES = {"more_shapes": _axes_table(), "bullets": _out_of_reach(), "tumbling_crates_k": _resolve_tables()[0],
+                  "tumbling_crates_jt": _resolve_tables()[1]}
+RESOLVE_KEY = "(round(a.mass, 6), round(b.mass, 6), round(point.x, 6), round(point.y, 6))"
+
+
 # ================================================================ Tumbling Crates: sat, resolve, apply_impulse
 
 TUMBLING = [
@@ -346,6 +408,22 @@ TUMBLING = [
             return None if hit is None else (pygame.Vector2(hit[0], hit[1]), hit[2])
         return pygame.Vector2(1, 0), 1.0  # not in the table: a guess
     """}, ["sat_axes"], "step 2 answers the probes' fixed pairs from a table; a pair drawn for this run is not in it",
+        needs_random_inputs=True),
+    attack("tc_table_sat_none", "tumbling_crates", "table", {2: f"""
+        answers = {TABLES["tumbling_crates"]!r}
+        hit = answers.get(tuple(round(c, 6) for p in pa + pb for c in (p.x, p.y)))
+        return None if hit is None else (pygame.Vector2(hit[0], hit[1]), hit[2])  # not in the table: apart
+    """}, ["sat_axes"], "step 2 answers the fixed pairs from a table and None for the rest: right whenever every "
+                        "drawn pair is apart (report hole 5, seeds 102, 251), so a drawn pair overlaps at every seed",
+        needs_random_inputs=True),
+    attack("tc_table_resolve_k", "tumbling_crates", "table", {4: f"""
+        k = {DEFAULT_TABLES["tumbling_crates_k"]!r}.get({RESOLVE_KEY}, k)  # not in the table: no spin terms
+    """}, ["resolve_k"], "step 4 answers the fixed contacts' k from a table and keeps the handout's k for the rest "
+                         "(report hole 4): the contacts drawn for this run are not in it", needs_random_inputs=True),
+    attack("tc_table_friction", "tumbling_crates", "table", {5: f"""
+        jt = {DEFAULT_TABLES["tumbling_crates_jt"]!r}.get({RESOLVE_KEY}, jt)  # not in the table: unclamped
+    """}, ["resolve_friction"], "step 5 answers the fixed contacts' friction from a table and leaves jt unclamped for "
+                                "the rest (report hole 4): a contact drawn for this run is clamped",
         needs_random_inputs=True),
     attack("tc_alias_library_sat", "tumbling_crates", "evade_alias", {2: f"""
         library = {ALIAS}.sat
@@ -513,6 +591,13 @@ MORE_SHAPES = [
         return box_points(radius, radius)  # not in the table: the placeholder
     """}, ["polygon_corners"], "step 2 answers the probes' fixed (sides, radius) from a table; the polygon drawn for "
                                "this run is not in it", needs_random_inputs=True),
+    attack("ms_table_axes", "more_shapes", "table", {5: f"""
+        known = {DEFAULT_TABLES["more_shapes"]!r}
+        key = tuple(round(c, 6) for p in list(pa) + list(pb) for c in (p.x, p.y))
+        axes = [Vector2(x, y) for x, y in known[key]] if key in known else edge_normals(pa) + edge_normals(pb)
+    """}, ["parallel_axes"], "step 5 answers the fixed pairs' axes from a table and keeps the placeholder (every edge "
+                             "normal, which sat() still gets right) for the rest (report hole 1: 18/18): a pair drawn "
+                             "for this run has a direction to skip", needs_random_inputs=True),
     attack("ms_alias_library_polygon", "more_shapes", "evade_alias", {2: f"""
         library = {ALIAS}.regular_polygon
         return library(sides, radius)
@@ -730,6 +815,19 @@ BULLETS = [
         return 0.0  # not in the table: a guess
     """}, ["toi_matches_root"], "step 2 answers the probes' fixed paths from a table; the paths drawn for this run "
                                 "are not in it", needs_random_inputs=True),
+    attack("bu_table_toi_none", "bullets", "table", {2: f"""
+        times = {TABLES["bullets"]!r}
+        return times.get(tuple(round(x, 9) for x in (p1.x, p1.y, v1.x, v1.y, r1, p2.x, p2.y, v2.x, v2.y, r2, dt)))
+    """}, ["toi_matches_root"], "step 2 answers the fixed paths from a table and None for the rest: right whenever "
+                                "every drawn path misses (report hole 5, seeds 4, 7), so a drawn path hits at every "
+                                "seed", needs_random_inputs=True),
+    attack("bu_table_broad", "bullets", "table", {4: f"""
+        far = {DEFAULT_TABLES["bullets"]!r}
+        if (round(bullet.pos.x), round(bullet.pos.y), round(bullet.vel.x), round(other.pos.x)) in far:
+            return None  # the fixed bullets out of reach; the rest go to the exact test
+    """}, ["broad_test"], "step 4 skips the two fixed bullets out of reach by a table and runs the exact test for "
+                          "every other (report hole 2): a bullet drawn for this run is out of reach",
+        needs_random_inputs=True),
     attack("bu_super_swept_move", "bullets", "evade_class", {5: """
         library = super(BulletWorld, world).swept_move
         library(bullet, dt)

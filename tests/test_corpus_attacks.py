@@ -23,7 +23,7 @@ caught only by the inputs the checker draws per run; the checker draws them
 today, so those entries are expected to fail like the others (no xfail).
 A last test turns the step rules off (in-process) and grades the tables and
 forgeries: the grader's own replay and drawn inputs still fail them.
-Grading (-n 0, root mode): 218 files (193 entries, 25 distinct honest files), most stopping after their probe.
+Grading (-n 0, root mode): 224 files (199 entries, 25 distinct honest files), most stopping after their probe.
 """
 import json
 import os
@@ -241,6 +241,27 @@ def test_each_entry_gets_its_verdict(mode, entry, graded):
         assert row["score"] <= honest["score"], (
             f"{entry.name} scores {row['score']}, more than the {honest['score']} its honest work earns "
             f"(the same file without the attack)\n{_show(row)}")
+
+
+# 102, 251: every pair Tumbling Crates drew was apart; 4, 7: every path Bullets drew missed (the report's seeds)
+TABLE_SEEDS = (1, 2, 3, 4, 5, 7, 102, 251)
+
+
+@pytest.mark.parametrize("entry", [entry for entry in corpus.ENTRIES if entry.kind == "table"], ids=lambda e: e.name)
+def test_a_table_of_the_fixed_answers_fails_its_step_at_every_seed(entry, tmp_path):
+    """The table attacks, a default right for one kind of answer included (None for a pair apart, the placeholder
+    where it happens to be right), fail their target checks at each of TABLE_SEEDS: the inputs each run draws hold
+    every kind of answer. In-process, as tests/test_probe_tape.py records and replays a probe (no step rules, no
+    scenes); the CLI run above grades each entry once, at a fresh seed."""
+    from test_probe_tape import function_results, lab_by_id, recorded
+    lab = lab_by_id(entry.lab)
+    path = corpus.write(tmp_path / "files", [entry])[entry.name]
+    passed = []
+    for seed in TABLE_SEEDS:
+        settings, result, source = recorded(lab, path, seed, tmp_path)
+        statuses, _ = function_results(lab, path, source, settings, result)
+        passed += [(seed, cid) for cid in entry.target if statuses.get(cid, ("missing",))[0] == "pass"]
+    assert not passed, f"{entry.name} ({entry.why}) passes (seed, check): {passed}"
 
 
 def test_without_the_step_rules_the_replay_still_fails_tables_and_forgery(tmp_path, monkeypatch, capsys):

@@ -16,6 +16,7 @@ import math
 from pygame import Vector2
 
 from lesson11.physics2d import box_points, centre_of, cross, edge_normals, project, regular_polygon
+from lesson11.physics2d import apply_impulse as lesson_apply_impulse, relative_velocity
 
 from checker.judging.common import real, value_text
 from checker.judging.tape import judging, reference, splice_name   # noqa: F401 (the labs' probes import them from here)
@@ -63,6 +64,31 @@ def box(w, h, centre, angle_deg=0.0):
 def ngon(sides, radius, centre, angle_deg=0.0):
     """A regular polygon's world points (px)."""
     return _placed(regular_polygon(sides, radius), centre, angle_deg)
+
+
+def stop_over_bound(a, b, normal, point, resting, spin=True):
+    """|the impulse that stops the slip| / (mu j) after the lesson's normal impulse (e above `resting` px/s; with
+    spin=False, k without the spin terms, as a friction step written before Tumbling Crates' step 4 sees it), or
+    None when the contact does not close or hardly slides (< 2 px/s): only to keep the contacts drawn for a run
+    clear of Coulomb's clamp's edge (the grader computes the answers)."""
+    a, b = twin(a), twin(b)
+    ra, rb = point - a.pos, point - b.pos
+    vn = relative_velocity(a, b, ra, rb).dot(normal)
+    if vn >= -1.0:
+        return None
+    e = min(a.restitution, b.restitution) if vn < -resting else 0.0
+    ran, rbn = cross(ra, normal), cross(rb, normal)
+    j = -(1 + e) * vn / (a.inv_mass + b.inv_mass + spin * (ran * ran * a.inv_inertia + rbn * rbn * b.inv_inertia))
+    lesson_apply_impulse(a, b, normal * j, ra, rb)
+    rel = relative_velocity(a, b, ra, rb)
+    tangent = rel - normal * rel.dot(normal)
+    if tangent.length() < 2.0:
+        return None
+    t = tangent.normalize()
+    rat, rbt = cross(ra, t), cross(rb, t)
+    kt = a.inv_mass + b.inv_mass + rat * rat * a.inv_inertia + rbt * rbt * b.inv_inertia
+    bound = math.sqrt(a.friction * b.friction) * j
+    return abs(rel.dot(t)) / kt / bound if bound > 0 else None
 
 
 # ---------------------------------------------------------------- sat (steps 2 and 3)
@@ -115,17 +141,23 @@ def _clear_winner(pa, pb, margin=0.5):
 
 
 def drawn_sat_pairs(rng, count=DRAWN_PAIRS):
-    """`count` pairs drawn for this grading run, overlapping or apart, each with one right answer.
+    """`count` pairs drawn for this grading run, each with one right answer: overlapping and apart in turn (the
+    first overlaps), so a table of the fixed pairs' answers with one default for the rest (None, say) is wrong on
+    one of them at every seed.
 
     An apart pair shows a gap on some axes only, like the fixed apart pairs: on a pair apart on every axis a
     loop that keeps no axis (`continue` on a gap) raises, and its report would depend on the run's seed.
     """
     pairs = []
     while len(pairs) < count:
+        overlapping = len(pairs) % 2 == 0
         pa = random_shape(rng, (0, 0))
         pb = random_shape(rng, Vector2(rng.uniform(10, 80), 0).rotate(rng.uniform(0, 360)))
-        if _clear_winner(pa, pb) and any(lesson > 0 for _, lesson, _ in axis_overlaps(pa, pb)):
-            pairs.append((f"pair {len(pairs) + 1} drawn for this run", pa, pb))
+        overlaps = [lesson for _, lesson, _ in axis_overlaps(pa, pb)]
+        if any(lesson > 0 for lesson in overlaps) and all(lesson > 0 for lesson in overlaps) == overlapping \
+                and _clear_winner(pa, pb):
+            pairs.append((f"a pair drawn for this run, {'overlapping' if overlapping else 'apart'} "
+                          f"({len(pairs) + 1} of {count})", pa, pb))
     return pairs
 
 

@@ -28,7 +28,8 @@ from checker.judging.declared_acts import (Acting, body_of, described, fields, f
                                            motions, roles, rows, same_motion)
 from checker.judging.declared_hits import hit_difference, same_hit
 from checker.judging.lab_checks import vec_text
-from checker.judging.probe_kit import _plain, box, ngon, reference, sat_answer, with_reference_steps
+from checker.judging.probe_kit import _plain, box, ngon, random_shape, reference, sat_answer, stop_over_bound
+from checker.judging.probe_kit import with_reference_steps
 from checker.judging.tape import run_rng
 
 REQUIRED = ("closest_on_segment", "circle_polygon", "separate", "disc_inertia", "contact_point", "resolve", "main")
@@ -130,7 +131,8 @@ def _where(c):
 
 
 CLOSEST_OUTSIDE = Acting(
-    "closest_point", "", 2, "circle_polygon", lambda module: rows(CIRCLE, outside_cases()),
+    "closest_point", "", 2, "circle_polygon",
+    lambda module: rows(CIRCLE, outside_cases() + drawn_circle_cases(run_rng(module, "circle_outside"), inside=False)),
     lambda circle_polygon, g: circle_polygon(g["center"], g["radius"], g["points"]),
     _lesson_hit,
     given=lambda c: {"center": Vector2(c["center"]), "radius": c["radius"],
@@ -192,6 +194,45 @@ def inside_cases():
     ]
 
 
+def _segment_distance(p, a, b):
+    """px from p to the segment ab."""
+    ab = b - a
+    t = max(0.0, min(1.0, (p - a).dot(ab) / ab.dot(ab)))
+    return p.distance_to(a + ab * t)
+
+
+def drawn_circle_cases(rng, inside):
+    """Circles drawn for this run beside a drawn box or polygon (probe_kit.random_shape), each at one edge: with
+    inside=False one sunk 2-8 px into it and one 3-15 px clear of it (each kind of answer: so a table of the fixed
+    cases with one default for the rest, None say, is wrong on one of them); with inside=True one whose center is
+    3 px or more inside. Every other edge is at least 3 px farther than that edge: one right answer."""
+    kinds = ("inside",) if inside else ("sunk", "clear")
+    cases = []
+    while len(cases) < len(kinds):
+        kind = kinds[len(cases)]
+        points = random_shape(rng, (rng.uniform(-100, 100), rng.uniform(-100, 100)))
+        k = rng.randrange(len(points))
+        a, b = points[k], points[(k + 1) % len(points)]
+        middle = sum(points, Vector2()) / len(points)
+        edge = a + (b - a) * rng.uniform(0.25, 0.75)
+        out = Vector2(-(b - a).y, (b - a).x).normalize()
+        out = out if out.dot(edge - middle) > 0 else -out
+        radius = rng.uniform(8, 25)
+        offset = {"sunk": radius - rng.uniform(2, 8), "clear": radius + rng.uniform(3, 15),
+                  "inside": -rng.uniform(3, 12)}[kind]
+        center = edge + out * offset
+        near = abs(offset)
+        others = [_segment_distance(center, points[i], points[(i + 1) % len(points)]) if kind != "inside" else
+                  abs((center - points[i]).dot(Vector2(-(points[(i + 1) % len(points)] - points[i]).y,
+                                                       (points[(i + 1) % len(points)] - points[i]).x).normalize()))
+                  for i in range(len(points)) if i != k]
+        if all(d >= near + 3 for d in others):
+            what = {"sunk": "sunk into", "clear": "clear of", "inside": "with its center inside"}[kind]
+            cases.append((f"a ball drawn for this run {what} a shape ({len(cases) + 1} of {len(kinds)})", center,
+                          radius, points))
+    return cases
+
+
 def _inside_mistake(cases, case):
     """The inside case's mistake, read from this case: which of the normal and the depth are the outside case's."""
     got, want = case["got"], case["want"]
@@ -216,7 +257,8 @@ def _inside_mistake(cases, case):
 
 INSIDE = Acting(
     "inside_case", "Step 3: circle_polygon() pushes a ball whose center is inside the polygon back out the nearest "
-    "side.", 3, "circle_polygon", lambda module: rows(CIRCLE, inside_cases()),
+    "side.", 3, "circle_polygon",
+    lambda module: rows(CIRCLE, inside_cases() + drawn_circle_cases(run_rng(module, "circle_inside"), inside=True)),
     CLOSEST_OUTSIDE.call, _lesson_hit, given=CLOSEST_OUTSIDE.given, probe_name="circle_inside",
     stand_ins=lambda module: {"closest_on_segment": lesson_closest}, answer=sat_answer, same=same_hit,
     hint="inside", diagnose=_inside_mistake, passed="the inside case matches the lesson in all {n} circles",
@@ -408,17 +450,20 @@ CONTACT = Step(
 
 # ---------------------------------------------------------------- step 7: friction in resolve
 
+def on_ramp(vel, omega, friction=0.6):
+    """(the ramp, a 20 px ball resting on its top face with this motion, the normal, the contact point)."""
+    centre = Vector2(230, 380) + UP * (12 + 20)
+    return (crate(420, 24, (230, 380), 0, angle=math.radians(RAMP_ANGLE)),
+            ball(20, centre, vel=vel, omega=omega, friction=friction), UP, centre - UP * 20)
+
+
 def resolve_cases(module):
     """{case, a, b: the bodies' descriptions, normal: unit A→B, point: the contact, resting: the handout's cutoff}:
     each a contact resolve() is called on. The ramp and the floor are A (the world lists static bodies first), so
     the normal points from them into the ball; a ball hitting a crate is A."""
-    centre, ramp = Vector2(230, 380) + UP * (12 + 20), crate(420, 24, (230, 380), 0, angle=math.radians(RAMP_ANGLE))
-
-    def on_ramp(vel, omega, friction=0.6):
-        return ramp, ball(20, centre, vel=vel, omega=omega, friction=friction), UP, centre - UP * 20
-
+    resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
     return [{"case": name, "a": a, "b": b, "normal": list(normal), "point": list(point),
-             "resting": float(getattr(module, "RESTING_SPEED", RESTING_SPEED))} for name, (a, b, normal, point) in (
+             "resting": resting} for name, (a, b, normal, point) in (
         ("a ball landing on the ramp, slipping a little", on_ramp(SLOPE * 50 - UP * 40, 2.3)),
         ("a ball landing on the ramp, sliding fast (friction clamped)", on_ramp(SLOPE * 300 - UP * 35, 0.0)),
         ("a ball spinning backwards as it lands on the ramp", on_ramp(SLOPE * 20 - UP * 60, -9.0)),
@@ -428,7 +473,25 @@ def resolve_cases(module):
         ("a ball hitting a crate's left side while it spins",
          (ball(20, (575, 530), vel=(250, 30), omega=4.0, restitution=0.3),
           crate(30, 80, (610, 520), 2.4, vel=(0, 10), omega=0.2, restitution=0.3), Vector2(1, 0), Vector2(595, 530))),
-        ("a ball on a frictionless ramp (mu = 0)", on_ramp(SLOPE * 120 - UP * 45, 0.0, friction=0.0)))]
+        ("a ball on a frictionless ramp (mu = 0)", on_ramp(SLOPE * 120 - UP * 45, 0.0, friction=0.0)))
+        + drawn_contacts(run_rng(module, "resolve"), resting)]
+
+
+def drawn_contacts(rng, resting=RESTING_SPEED):
+    """Two balls landing on the ramp, drawn for this run: one sliding fast (friction clamped), one slipping a little
+    (not clamped), so a table of the fixed contacts' answers with one default for the rest (no clamp, say) is
+    wrong on one of them. |the impulse that stops the slip| is over 1.5 mu j or under 0.6 mu j: clear of the
+    clamp's edge."""
+    contacts = []
+    while len(contacts) < 2:
+        clamped = not contacts
+        slide = rng.uniform(150, 400) if clamped else rng.uniform(-60, 60)
+        contact = on_ramp(SLOPE * slide - UP * rng.uniform(35, 90), rng.uniform(-3, 3), rng.uniform(0.3, 0.9))
+        ratio = stop_over_bound(body_of(contact[0]), body_of(contact[1]), contact[2], contact[3], resting)
+        if ratio is not None and (ratio > 1.5 if clamped else ratio < 0.6):
+            contacts.append((f"a ball drawn for this run landing on the ramp, friction "
+                             f"{'clamped' if clamped else 'not clamped'} ({len(contacts) + 1} of 2)", contact))
+    return tuple(contacts)
 
 
 @reference

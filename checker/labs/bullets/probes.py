@@ -98,18 +98,22 @@ def toi_cases():
 
 
 def drawn_toi_cases(rng, count=3):
-    """`count` cases drawn for this run: a circle heading for another, hitting within the step or passing by."""
+    """`count` cases drawn for this run: a circle heading for another, hitting within the step and passing by in
+    turn (the first hits), so a table of the fixed cases' answers with one default for the rest (None, say) is
+    wrong on one of them. A hit passes at most 0.7 (r1 + r2) from the centre, a miss at least 1.3 (r1 + r2)."""
     cases = []
     for k in range(count):
+        hit = k % 2 == 0
         r1, r2 = rng.uniform(2, 8), rng.uniform(5, 20)
         p1 = Vector2(rng.uniform(-50, 50), rng.uniform(-50, 50))
         direction = Vector2(1, 0).rotate(rng.uniform(0, 360))
         gap = rng.uniform(20, 150)                 # px between the surfaces along the path
-        aim = rng.choice((rng.uniform(0, 0.7), rng.uniform(1.3, 2.0))) * (r1 + r2)   # miss distance: hit or pass
+        aim = (rng.uniform(0, 0.7) if hit else rng.uniform(1.3, 2.0)) * (r1 + r2)   # miss distance: hit or pass
         p2 = p1 + direction * (gap + r1 + r2) + direction.rotate(90) * aim
         speed = rng.uniform(300, 3000)
         dt = (gap + r1 + r2) / speed * rng.uniform(1.3, 3.0)
-        cases.append((f"a path drawn for this run ({k + 1} of {count})", p1, direction * speed, r1, p2,
+        cases.append((f"a path drawn for this run, {'hitting' if hit else 'passing by'} ({k + 1} of {count})", p1,
+                      direction * speed, r1, p2,
                        Vector2(), r2, dt))
     return cases
 
@@ -318,8 +322,39 @@ def impact_cases(module=None):
         ("a bullet at 12000 px/s grazing the top corner of a 40 x 40 crate turned 45°",
          _bullet((300, 540 - 29.5), (12000, 0)), _crate(40, 40, (380, 540), 45), True),
     ]
+    drawn = drawn_impact_cases(run_rng(module, "time_of_impact")) if module is not None else []
     return [{"case": name, "bullet": bullet, "other": other, "dt": STEP, "needs_exact": reaches}
-            for name, bullet, other, reaches in cases]
+            for name, bullet, other, reaches in cases + drawn]
+
+
+def drawn_impact_cases(rng):
+    """Two cases drawn for this run: a bullet that hits a crate this step and one that cannot reach its bounding
+    circle (passing beside it, or too slow), so a table of the fixed cases' answers with one default for the rest
+    (the exact test, say) is wrong on one of them. The hit comes before 0.8 of the step; the miss keeps 10 px
+    clear of the bounding circle."""
+    def crate_at():
+        w, h = rng.uniform(24, 90), rng.uniform(24, 90)
+        return _crate(w, h, (rng.uniform(300, 600), rng.uniform(200, 500)), rng.uniform(0, 90)), math.hypot(w, h) / 2
+
+    cases = []
+    while not cases:   # the hit: aimed near the centre from 8-70 % of a step's travel away from the surface
+        other, reach = crate_at()
+        direction, speed = Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(3000, 12000)
+        start = other.pos - direction * (reach + 3 + rng.uniform(0.08, 0.7) * speed * STEP)
+        bullet = _bullet(start + direction.rotate(90) * rng.uniform(-6, 6), direction * speed)
+        hit = circle_polygon_toi(bullet.pos, bullet.vel, bullet.radius, other.world_points(), STEP)
+        if hit is not None and hit[0] <= 0.8 * STEP:
+            cases.append(("a bullet drawn for this run hitting a crate (1 of 2)", bullet, other, True))
+    other, reach = crate_at()
+    direction, speed = Vector2(1, 0).rotate(rng.uniform(0, 360)), rng.uniform(3000, 12000)
+    if rng.random() < 0.5:   # beside the crate: its path 10-60 px clear of the bounding circle
+        side = direction.rotate(90) * (reach + 3 + rng.uniform(10, 60))
+        start, how = other.pos + side - direction * rng.uniform(0, speed * STEP), "passing beside"
+    else:   # towards the crate, 10-60 px short of the bounding circle at the step's end
+        start, how = other.pos - direction * (reach + 3 + speed * STEP + rng.uniform(10, 60)), "too slow to reach"
+    cases.append((f"a bullet drawn for this run {how} a crate (2 of 2)", _bullet(start, direction * speed), other,
+                  False))
+    return cases
 
 
 def _plain_hit(hit):
@@ -432,13 +467,25 @@ def swept_cases(module):
     """{"case", "make": a function making a fresh (world, bullet)} for one swept move of 1/120 s each."""
     wall_x = float(getattr(module, "WALL_X", 640.0))
 
-    def maker(other, pos, vel, effects=("ccd", "restitution")):
-        def make():   # the bullet against the lab's wall, a free 40 x 40 crate or nothing
+    def maker(other, pos, vel, effects=("ccd", "restitution"), at=(380, 300)):
+        def make():   # the bullet against the lab's wall, a free 40 x 40 crate (at `at`) or nothing
             bullet = _bullet(pos, vel)
-            first = [] if other is None else [module.make_wall() if other == "wall" else _crate(40, 40, (380, 300))]
+            first = [] if other is None else [module.make_wall() if other == "wall" else _crate(40, 40, at)]
             return module.BulletWorld(first + [bullet], effects=set(effects), substeps=1), bullet
         return make
 
+    # drawn for this run, each kind of swept move: a bullet hitting a free crate (from 30 px plus 10-70 % of a
+    # step's travel before its centre, off-centre and at a slant, up to 8 px and 20°), and one with nothing in its way
+    rng = run_rng(module, "swept_move")
+    speed, turn, off = rng.uniform(4000, 12000), rng.uniform(-20, 20), rng.uniform(-8, 8)
+    crate_at = Vector2(rng.uniform(300, 600), rng.uniform(150, 450))
+    heading = Vector2(1, 0).rotate(turn)
+    start = crate_at + heading.rotate(90) * off - heading * (30 + rng.uniform(0.1, 0.7) * speed * STEP)
+    drawn = (("a bullet drawn for this run striking a free crate (1 of 2)", "crate", tuple(start),
+              tuple(heading * speed), ("ccd", "restitution", "friction", "rotation"), tuple(crate_at)),
+             ("a bullet drawn for this run with nothing in its way (2 of 2)", None,
+              (rng.uniform(50, 700), rng.uniform(50, 500)), tuple(Vector2(rng.uniform(3000, 12000), 0).rotate(
+                  rng.uniform(0, 360))), ("ccd",)))
     return [{"case": name, "make": maker(*how)} for name, *how in (
         ("a bullet at 12000 px/s hitting the wall 60 px ahead", "wall", (wall_x - 60, 240.0), (12000.0, 0.0)),
         ("a bullet at 9000 px/s hitting the wall at a slant", "wall", (wall_x - 60, 200.0), (9000.0, 3000.0)),
@@ -446,7 +493,7 @@ def swept_cases(module):
         # off-centre and at a slant, with friction and spin: the contact point's lever arm counts
         ("a bullet at 9000 px/s striking a free crate 10 px off-centre at a slant (friction, spin)", "crate",
          (300, 290), (9000, 3000), ("ccd", "restitution", "friction", "rotation")),
-        ("a bullet with nothing in its way", None, (100, 100), (5000, 700), ("ccd",)))]
+        ("a bullet with nothing in its way", None, (100, 100), (5000, 700), ("ccd",))) + drawn]
 
 
 def _state(body):
@@ -549,10 +596,11 @@ SWEPT_MOVE = Step(
 
 # ---------------------------------------------------------------- criteria 1 and 2: the shots
 
-def shoot(module, mode, speed, shots):
+def shoot(module, mode, speed, shots, phase=0.5):
     """`shots` bullets fired one at a time at the lab's wall in its BulletWorld set to `mode`: (tunnelled, physics
-    seconds spent). Each starts 1 px plus 1 + k/shots steps' travel short of the wall, at its mid-height, along +x,
-    with no gravity (nothing takes a shot over the 400 px wall); it tunnels if its centre ends past the wall's."""
+    seconds spent). Each starts 1 px plus 1 + (k + phase)/shots steps' travel short of the wall, at its mid-height,
+    along +x, with no gravity (nothing takes a shot over the 400 px wall); it tunnels if its centre ends past the
+    wall's."""
     wall_x = float(module.WALL_X)
     half = float(module.WALL_WIDTH) / 2
     radius = float(module.BULLET_RADIUS)
@@ -560,7 +608,7 @@ def shoot(module, mode, speed, shots):
     steps = 3 + math.ceil((2 * radius + 2 * half + 2) / travel)
     tunnelled, spent = 0, 0.0
     for k in range(shots):
-        start_x = wall_x - half - radius - 1 - travel * (1 + (k + 0.5) / shots)
+        start_x = wall_x - half - radius - 1 - travel * (1 + (k + phase) / shots)
         wall = module.make_wall()
         bullet = module.make_bullet((start_x, (wall.pos.y)), (speed, 0))
         world = module.BulletWorld([wall, bullet], effects={"restitution", "correction"})
@@ -575,17 +623,23 @@ def shoot(module, mode, speed, shots):
 
 def probe_shots(module, lab_path):
     """Criterion 1: the shots tunnelled with CCD at each speed; criterion 2: those with sub-steps x8 at 12000 px/s."""
-    ccd = {str(speed): shoot(module, "ccd", speed, SHOTS_PER_SPEED)[0] for speed in SHOT_SPEEDS}
+    # the CCD shots' starts lie at a drawn place in their slots of a step's travel; the x8 shots' stay mid-slot, where
+    # the lesson's sub-steps are known to let some through (a drawn place might put every start outside that window)
+    phase = run_rng(module, "shots").uniform(0.05, 0.95)
+    ccd = {str(speed): shoot(module, "ccd", speed, SHOTS_PER_SPEED, phase)[0] for speed in SHOT_SPEEDS}
     return {"ccd": ccd, "per_speed": SHOTS_PER_SPEED, "x8": shoot(module, "x8", FAST, SUBSTEP_SHOTS)[0]}
 
 
 # ---------------------------------------------------------------- criterion 4: momentum into a crate
 
 def probe_crate_hit(module, lab_path):
-    """A bullet at 9000 px/s hits a free 40 x 40 crate (mass 1.6) through its centre, with CCD, no gravity, for 3
-    steps of 1/120 s; with e = 0.2 (both bodies' default) the lesson's crate leaves at (1 + e) m v / (m + M)."""
-    bullet = module.make_bullet((300, 300), (9000, 0))
-    crate = _crate(40, 40, (380, 300))
+    """A bullet at 7000-11000 px/s (drawn per run) hits a free 40 x 40 crate (mass 1.6) through its centre from 50-80
+    px before its face (drawn), with CCD, no gravity, for 3 steps of 1/120 s; with e = 0.2 (both bodies' default)
+    the lesson's crate leaves at (1 + e) m v / (m + M)."""
+    rng = run_rng(module, "crate_hit")
+    speed, y = rng.uniform(7000, 11000), rng.uniform(200, 400)
+    bullet = module.make_bullet((360 - rng.uniform(50, 80), y), (speed, 0))
+    crate = _crate(40, 40, (380, y))
     given = (twin(bullet), twin(crate))   # the masses and restitutions as the world got them
     world = module.BulletWorld([crate, bullet], effects={"ccd", "restitution"})
     module.apply_mode(world, "ccd")
@@ -594,7 +648,7 @@ def probe_crate_hit(module, lab_path):
     out = {"got": [crate.vel.x * given[1].mass, crate.vel.y * given[1].mass], "bullet_x": bullet.pos.x,
            "crate_x": crate.pos.x}
     if judging(module):
-        out.update(_crate_hit_reference(*given, 9000.0))
+        out.update(_crate_hit_reference(*given, speed))
     return out
 
 

@@ -4,8 +4,10 @@ Each Step holds its cases, the lesson's answer (computed in the grader only) and
     regular_polygon   (step 2) 3 to 12 sides, radii from 5 to 40 px, and one polygon drawn for the run
     polygon_centroid  (step 3) a right triangle, a house, a trapezoid, irregular outlines far from (0, 0), both windings
     polygon_inertia   (step 4) regular polygons and boxes (their analytic inertias), irregular centred outlines
-    separating_axes   (step 5) pairs aligned (parallel edges to skip), turned (none to skip), nearly parallel (keep)
-    sat               (step 5) the same pairs and Tumbling Crates' pairs, through the lab's sat() on the student's axes
+    separating_axes   (step 5) pairs aligned (parallel edges to skip), turned (none to skip), nearly parallel (keep);
+                      two drawn per run, one with a direction to skip and one without
+    sat               (step 5) the same pairs and Tumbling Crates' pairs, through the lab's sat() on the student's axes,
+                      and four drawn per run, overlapping and apart
     bodies            build() for every kind: the lab's bodies' mass and inertia (the inertia criterion)
 Units: px, s, rad; mass = area / 1000.
 """
@@ -335,10 +337,46 @@ def distinct_directions(axes, keep=lambda axis, kept: all(abs(cross(axis, other)
     return kept
 
 
-def _pairs(pairs):
-    """The cases of step 5's probes: each pair of world points, then the same pair with A and B swapped."""
+def drawn_axis_pairs(rng):
+    """Two pairs drawn for this run: odd-sided polygons with no edge directions in common (every normal is an axis)
+    and a box beside a box or a hexagon turned to share a direction (a parallel twin to skip), so a table of the
+    fixed pairs' axes with one rule for the rest (every normal, say) is wrong on one of them. Directions not
+    shared are at least 3° apart: no pair near the PARALLEL threshold."""
+    def clear(pa, pb, shared):
+        normals_a, normals_b = edge_normals(pa), edge_normals(pb)
+        sines = [abs(cross(u, v)) for u in normals_a for v in normals_b]
+        sines += [abs(cross(u, v)) for normals in (normals_a, normals_b) for i, u in enumerate(normals)
+                  for v in normals[i + 1:]]
+        return all(sine <= PARALLEL or sine > 0.05 for sine in sines) and \
+            any(abs(cross(u, v)) <= PARALLEL for u in normals_a for v in normals_b) == shared
+
+    def near():
+        return Vector2(rng.uniform(10, 80), 0).rotate(rng.uniform(0, 360))
+
+    pairs = []
+    while not pairs:
+        pa = probe_kit.ngon(rng.choice((3, 5, 7)), rng.uniform(15, 45), (0, 0), rng.uniform(0, 360))
+        pb = probe_kit.ngon(rng.choice((3, 5, 7)), rng.uniform(15, 45), near(), rng.uniform(0, 360))
+        if clear(pa, pb, shared=False):
+            pairs.append(("two odd-sided polygons drawn for this run, no edge parallel to another (1 of 2)", pa, pb))
+    while len(pairs) < 2:
+        angle = rng.uniform(0, 360)
+        pa = probe_kit.box(rng.uniform(24, 90), rng.uniform(24, 90), (0, 0), angle)
+        if rng.random() < 0.5:
+            pb = probe_kit.box(rng.uniform(24, 90), rng.uniform(24, 90), near(), angle + rng.choice((0, 90, 180)))
+        else:   # a hexagon's normals are 30° past its corners: turned so, one is along the box's first normal
+            pb = probe_kit.ngon(6, rng.uniform(15, 45), near(), angle - 30 + 60 * rng.randint(0, 5))
+        if clear(pa, pb, shared=True):
+            pairs.append(("a box drawn for this run and a shape sharing its edge directions (2 of 2)", pa, pb))
+    return pairs
+
+
+def _pairs(pairs, drawn, salt):
+    """The cases of step 5's probes: each pair of world points, fixed then drawn for this run (drawn(rng), rng from
+    the run's seed and `salt`), then the same pair with A and B swapped."""
     return lambda module: [{"pair": name, "order": order, "a": _plain(first), "b": _plain(second)}
-                           for name, pa, pb in pairs() for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa))]
+                           for name, pa, pb in pairs() + drawn(run_rng(module, salt))
+                           for order, first, second in (("A, B", pa, pb), ("B, A", pb, pa))]
 
 
 def _call_pair(function, case):
@@ -426,7 +464,8 @@ def axes_fault(case):
 
 
 AXES = Step(
-    "parallel_axes", "", 5, "separating_axes", _pairs(axis_pairs), _call_pair,
+    "parallel_axes", "", 5, "separating_axes", _pairs(axis_pairs, drawn_axis_pairs, "separating_axes"),
+    _call_pair,
     lambda c: _plain(distinct_directions(_normals(c, "a", plain=False) + _normals(c, "b", plain=False))),
     answer=as_points, hint="axes", bad=is_text, accepts=lambda c: axes_fault(c) is None,
     same=lambda got, want: not is_text(got) and len(got) == len(want) and all(map(same_point, got, want)),
@@ -473,7 +512,8 @@ def sat_fault(case):
 
 
 SAT = Step(
-    "parallel_axes", "", 5, "sat", _pairs(lambda: axis_pairs() + probe_kit.sat_pairs()), _call_pair,
+    "parallel_axes", "", 5, "sat", _pairs(lambda: axis_pairs() + probe_kit.sat_pairs(), probe_kit.drawn_sat_pairs,
+                                              "sat"), _call_pair,
     lambda c: _sat_reference(c)[0], answer=probe_kit.sat_answer, hint="axes",
     bad=lambda got: got is not None and "bad" in got, accepts=lambda c: sat_fault(c) is None,
     malformed=lambda c: f"sat() must return (normal, depth) or None.\n{_label(c)} it returned {c['got']['bad']}.",
@@ -493,10 +533,17 @@ BODY_ITEMS = (
 SIDES = {"triangle": 3, "pentagon": 5, "hexagon": 6}
 
 
+def drawn_body_items(rng):
+    """BODY_ITEMS with their sizes scaled by one factor drawn for this run (0.7-1.4) and their place drawn."""
+    scale, pos = rng.uniform(0.7, 1.4), [rng.uniform(50, 750), rng.uniform(50, 550)]
+    return [dict(item, pos=list(pos), **{key: round(item[key] * scale, 1) for key in ("size", "w", "h") if key in item})
+            for item in BODY_ITEMS]
+
+
 def probe_bodies(module, lab_path):
     """build() for each kind: the body's mass, inertia, corners' centroid and the analytic inertia (None for a house)."""
     cases = []
-    for item in BODY_ITEMS:
+    for item in drawn_body_items(run_rng(module, "bodies")):
         body = module.build(dict(item))
         local = [Vector2(p) for p in body.local]
         cases.append({"kind": item["kind"], "item": item, "mass": body.mass, "inertia": body.inertia,

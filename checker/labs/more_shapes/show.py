@@ -64,7 +64,7 @@ class AxesCase(Case):
 
     def __init__(self, case, number, count, shapes):
         super().__init__(case, number, count)
-        self.shapes = shapes   # (A's world points, B's) from the probe's axis_pairs(), or None
+        self.shapes = shapes   # (A's world points, B's) from the probe's pairs, or None
 
     def head(self):
         swapped = " with A and B swapped" if self.case.get("order") == "B, A" else ""
@@ -114,17 +114,26 @@ def _ordered(pair, order):
     return pair if order != "B, A" else (pair[1], pair[0])
 
 
+def _shapes(case, pairs):
+    """(A's world points, B's) of a step-5 case in its order: a fixed pair's, else (a pair drawn for the run) the
+    points the case holds; None when it holds none."""
+    if case["pair"] in pairs:
+        return _ordered(pairs[case["pair"]], case["order"])
+    if "a" in case and "b" in case:
+        return [Vector2(p) for p in case["a"]], [Vector2(p) for p in case["b"]]
+    return None
+
+
 def parallel_axes_cases(functions, seed):
     """The failing pairs of parallel_axes: the axes when they are wrong, else sat() on them, drawn as SAT cases."""
     pairs = _pairs()
     axes = [c for c in data(functions, "separating_axes") or [] if "want" in c and axes_wrong(c)]
     if axes:
-        return [AxesCase(c, k + 1, len(axes), _ordered(pairs[c["pair"]], c["order"]) if c["pair"] in pairs else None)
-                for k, c in enumerate(axes)]
-    sats = [c for c in data(functions, "sat") or [] if "want" in c and c["pair"] in pairs and sat_wrong(c)]
+        return [AxesCase(c, k + 1, len(axes), _shapes(c, pairs)) for k, c in enumerate(axes)]
+    sats = [c for c in data(functions, "sat") or [] if "want" in c and _shapes(c, pairs) and sat_wrong(c)]
     cases = []
     for k, c in enumerate(sats):
-        a, b = _ordered(pairs[c["pair"]], c["order"])
+        a, b = _shapes(c, pairs)
         cases.append(SatCase({"pair": c["pair"], "order": c["order"], "a": [list(p) for p in a],
                               "b": [list(p) for p in b], "got": c["got"], "lesson": c["want"]}, k + 1, len(sats)))
     return cases

@@ -169,9 +169,15 @@ PAIRS = (("awake", "asleep"), ("asleep", "awake"), ("static", "asleep"), ("aslee
          ("asleep", "asleep"), ("awake", "awake"), ("awake", "static"))
 
 
+def _pairs(rng):
+    """The cases: every pair of PAIRS, its dynamic crates' mass drawn for this run (0.3-6; their kind, not their
+    mass, decides the answer)."""
+    return [{"a": a, "b": b, "mass": rng.uniform(0.3, 6.0)} for a, b in PAIRS]
+
+
 def _woken(wake_on_contact, c):
     """Which of "a" and "b" the student's wake_on_contact(a, b) returns for a pair of c's kinds."""
-    a, b = _crate(*KINDS[c["a"]]), _crate(*KINDS[c["b"]])
+    a, b = (_crate(c["mass"] * KINDS[kind][0] / KINDS["awake"][0], KINDS[kind][1]) for kind in (c["a"], c["b"]))
     got = wake_on_contact(a, b)
     try:
         return sorted({"a" if body is a else "b" if body is b else "another body" for body in (got or ())})
@@ -204,7 +210,7 @@ def _wake_mistake(cases, c):
 
 WAKE = Step(
     "wakes_on_contact", "Step 4: wake_on_contact(a, b) returns the sleeping body of a pair whose other body is "
-    "dynamic and awake.", 4, "wake_on_contact", lambda module: [{"a": a, "b": b} for a, b in PAIRS], _woken,
+    "dynamic and awake.", 4, "wake_on_contact", lambda module: _pairs(run_rng(module, "wake_on_contact")), _woken,
     lambda c: reference_woken(c["a"], c["b"]), hint="wake", kind="a list of bodies (or [])",
     bad=lambda got: isinstance(got, str), diagnose=_wake_mistake,
     label=lambda c: f"wake_on_contact(a, b) with a {c['a']} and b {c['b']}",
@@ -214,19 +220,20 @@ WAKE = Step(
 
 # ---------------------------------------------------------------- the cost criterion
 
-def grid_items(asleep):
-    """40 crates in 4 rows of 10, each row resting on the one below (0.2 px of overlap, so they touch)."""
+def grid_items(asleep, shift=0.0):
+    """40 crates in 4 rows of 10, each row resting on the one below (0.2 px of overlap, so they touch), the grid
+    `shift` px to the right."""
     items = []
     for k in range(GRID_CRATES):
         row, column = divmod(k, GRID_COLUMNS)
-        items.append({"w": W, "h": H, "pos": [160 + column * W + (row % 2) * 10,
+        items.append({"w": W, "h": H, "pos": [160 + shift + column * W + (row % 2) * 10,
                                              FLOOR_TOP - H / 2 + 0.2 - row * (H - 0.2)], "asleep": asleep})
     return items
 
 
-def grid_world(module, asleep):
+def grid_world(module, asleep, shift=0.0):
     floor = Body(box_points(900, 40), (450, 580), 0)
-    world = World([floor] + [module.build(item) for item in grid_items(asleep)],
+    world = World([floor] + [module.build(item) for item in grid_items(asleep, shift)],
                   effects=LESSON_EFFECTS | {"sleep"}, sleep_timer=module.sleep_timer, moves=module.moves,
                   wake=module.wake_on_contact)
     if asleep:
@@ -236,9 +243,9 @@ def grid_world(module, asleep):
 
 def probe_narrow_work(module, lab_path):
     """One step of the 40-crate grid awake, then asleep: pair and narrow tests (World.counters) and CPU ms."""
-    out = {}
+    out, shift = {}, run_rng(module, "narrow_work").uniform(-40, 40)   # the grid's place on the floor, per run
     for name, asleep in (("awake", False), ("asleep", True)):
-        world = grid_world(module, asleep)
+        world = grid_world(module, asleep, shift)
         start = clock(module)
         world.step()
         out[name] = dict(world.counters, ms=(clock(module) - start) * 1000,

@@ -11,7 +11,8 @@ checks.py's declared steps compare and name.
                    points, spinning bodies
     resolve        (steps 4, 5) the same kinds of pairs, sliding both ways, the Coulomb clamp active and not,
                    impacts above and below the 30 px/s resting cutoff; resolve() runs with the library's
-                   apply_impulse, recording each impulse, so steps 4 and 5 are graded before step 6 is written.
+                   apply_impulse, recording each impulse, so steps 4 and 5 are graded before step 6 is written;
+                   and two contacts drawn per run, one with friction clamped, one not
 
 Units: px, s, rad, mass in the lab's units (area / 1000).
 """
@@ -25,7 +26,7 @@ from lesson11.physics2d import apply_impulse as lesson_apply_impulse
 
 from checker.judging.probe_kit import (_plain, drawn_sat_pairs, judging, reference, reference_sat, sat_answer,
                                        sat_pairs, twin)
-from checker.judging.probe_kit import changed_vectors, with_reference_steps
+from checker.judging.probe_kit import changed_vectors, stop_over_bound, with_reference_steps
 from checker.judging.probe_kit import axis_overlaps, box, ngon   # noqa: F401 (the checks and the corpora read them here)
 from checker.judging.tape import run_rng
 
@@ -276,6 +277,42 @@ def resolve_cases():
     ]
 
 
+def drawn_resolve_cases(rng, count=2):
+    """`count` contacts drawn for this run, friction clamped and not in turn (the first clamped), so a table of
+    the fixed contacts' answers with one default for the rest (the unclamped jt, say) is wrong on one of them.
+
+    A crate B lands on a crate A (static one time in four) at a contact on A's top face, all of it turned by a
+    drawn angle; |the impulse that stops the slip| is over 1.5 × mu j (clamped) or under 0.6 × mu j (not): no
+    contact near the clamp's edge.
+    """
+    cases = []
+    while len(cases) < count:
+        clamped = len(cases) % 2 == 0
+        turn = rng.uniform(0, 360)
+        wa, ha, wb, hb = rng.uniform(60, 160), rng.uniform(20, 50), rng.uniform(24, 70), rng.uniform(20, 60)
+        offset = rng.uniform(-0.3, 0.3) * (wa - wb)
+        point = Vector2(offset + rng.uniform(-0.4, 0.4) * wb, -ha / 2)
+        slip = rng.choice((-1, 1)) * (rng.uniform(150, 400) if clamped else rng.uniform(3, 15))
+        spin = 1.0 if clamped else 0.05
+
+        def placed(v):
+            return Vector2(v).rotate(turn)
+
+        a = crate(wa, ha, (0, 0), 0 if rng.random() < 0.25 else rng.uniform(1.0, 8.0), angle=math.radians(turn),
+                  vel=placed((rng.uniform(-20, 20), rng.uniform(-20, 0))), omega=rng.uniform(-spin, spin),
+                  friction=rng.uniform(0.3, 0.9), restitution=rng.uniform(0.0, 0.5))
+        if a.mass == 0:
+            a.vel, a.omega = Vector2(), 0.0
+        b = crate(wb, hb, placed((offset, -(ha + hb) / 2 + 1)), rng.uniform(0.3, 3.0), angle=math.radians(turn),
+                  vel=placed((slip, rng.uniform(60, 250))), omega=rng.uniform(-spin, spin),
+                  friction=rng.uniform(0.3, 0.9), restitution=rng.uniform(0.0, 0.5))
+        ratios = [stop_over_bound(a, b, placed((0, -1)), placed(point), RESTING_SPEED, spin) for spin in (True, False)]
+        if None not in ratios and (min(ratios) > 1.5 if clamped else max(ratios) < 0.6):
+            cases.append((f"a contact drawn for this run, friction {'clamped' if clamped else 'not clamped'} "
+                          f"({len(cases) + 1} of {count})", a, b, placed((0, -1)), placed(point)))
+    return cases
+
+
 @reference
 def _k_forms(a, b, ra, rb, n):
     """The effective mass k of the lesson, and the k's of plausible mistakes (to name what is missing)."""
@@ -316,7 +353,7 @@ def probe_resolve(module, lab_path):
     resting = float(getattr(module, "RESTING_SPEED", RESTING_SPEED))
     own = module.apply_impulse
     try:
-        for name, a, b, normal, point in resolve_cases():
+        for name, a, b, normal, point in resolve_cases() + drawn_resolve_cases(run_rng(module, "resolve")):
             calls = []
 
             def stand_in(a_, b_, impulse, ra_, rb_, calls=calls):

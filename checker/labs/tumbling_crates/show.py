@@ -5,6 +5,7 @@ from the probe's judged data: sat() as the SAT explorer draws it (show_cases.Sat
 (show_cases.ImpulseCase), and resolve() (ResolveCase below: the bodies come from the probe's fixed contacts).
 """
 import math
+import random
 
 import pygame
 from pygame import Vector2
@@ -91,7 +92,7 @@ class ResolveCase(Case):
     """One resolve() contact: both bodies, the contact point and normal; for step 4 each body's velocity
     change (arrows) and spin change (arcs) from the student's normal impulse j n and the lesson's; for
     step 5 the friction impulse on a bar from -mu j to mu j, with the impulse that stops the slip.
-    The bodies come from the probe's fixed contacts (probes.py resolve_cases())."""
+    The bodies come from the probe's contacts (probes.py resolve_cases(), drawn_resolve_cases())."""
 
     kind = "resolve"
 
@@ -203,8 +204,11 @@ class ResolveCase(Case):
         surface.blit(font.render("mu j", True, TEXT), (x_of(bound) - 12, bar.bottom + 16))
 
 
-def _resolve_geometry(name):
-    for case in probes.resolve_cases():
+def _resolve_geometry(name, seed=None):
+    """(A, B, normal, point) of a resolve() case: a fixed one from probes.resolve_cases(), a drawn one redrawn from
+    the grading seed as the probe drew it (drawn_resolve_cases with run_rng's Random); None when neither fits."""
+    drawn = probes.drawn_resolve_cases(random.Random(f"{seed}:resolve")) if seed is not None else []
+    for case in probes.resolve_cases() + drawn:
         if case[0] == name:
             return case[1], case[2], Vector2(case[3]), Vector2(case[4])
     return None
@@ -231,8 +235,8 @@ def impulse_cases(functions, seed):
 def resolve_cases(check_id):
     def cases(functions, seed):
         wrong = [case for case in data(functions, "resolve") or []
-                 if resolve_wrong(case, check_id) and _resolve_geometry(case["case"])]
-        return [ResolveCase(case, k + 1, len(wrong), check_id, _resolve_geometry(case["case"]))
+                 if resolve_wrong(case, check_id) and _resolve_geometry(case["case"], seed)]
+        return [ResolveCase(case, k + 1, len(wrong), check_id, _resolve_geometry(case["case"], seed))
                 for k, case in enumerate(wrong)]
     return cases
 
