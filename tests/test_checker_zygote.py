@@ -66,8 +66,10 @@ def grade(paths, zygote, mark):
     env = dict(os.environ, PYTHONPATH=ROOT, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy",
                CHECKER_ZYGOTE="1" if zygote else "0", CHECKER_TEST_MARK=mark)
     as_root = ["--child-user", "root"] if users.is_root() else []
+    # one seed for both runs: the probes' drawn inputs (and so a message's last digits) are then the same
     proc = subprocess.run([sys.executable, "-m", "checker", "--json", "--quiet", "--timeout", "8", "--memory", "512",
-                           *as_root, *paths], cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
+                           "--seed", "11", *as_root, *paths], cwd=ROOT, env=env, capture_output=True, text=True,
+                          timeout=900)
     document = json.loads(proc.stdout)
     return proc.returncode, without_seconds(document)
 
