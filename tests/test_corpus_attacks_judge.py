@@ -23,7 +23,9 @@ def test_without_the_step_rules_the_judging_still_fails_them(tmp_path):
     # the checker in a process of its own (no state of earlier tests in this one), its step rules turned off
     without_rules = ("import sys; from checker import cli; from checker.reading import step_rules; "
                      "step_rules.scan_lab = lambda source, module, path=None: []; sys.exit(cli.main(sys.argv[1:]))")
-    done = subprocess.run([sys.executable, "-c", without_rules, *paths.values(), "--json", "--quiet", "--jobs", "2"],
+    # at seed 1: the CCD shots start at a drawn phase, and bu_m393's trigger fires only at some (1, not 6)
+    done = subprocess.run([sys.executable, "-c", without_rules, *paths.values(), "--json", "--quiet", "--jobs", "2",
+                           "--seed", "1"],
                           cwd=ROOT, capture_output=True, text=True, timeout=900,
                           env=dict(os.environ, SDL_VIDEODRIVER="dummy", SDL_AUDIODRIVER="dummy", PYTHONPATH=ROOT))
     assert done.returncode in (0, 1), done.stderr[-2000:]
